@@ -1,0 +1,35 @@
+# eomgen_add_model(<target> MODEL <file.toml> [NAME <model name>])
+#
+# Regenerates <build>/eomgen_generated/eomgen/models/<name>.hpp from the model file whenever the model
+# file or the generator changes, and defines the INTERFACE target <target> that carries the header, the
+# runtime and Eigen. Link it and `#include "eomgen/models/<name>.hpp"`. NAME (default: <target>) is the
+# model's namespace, eomgen::models::<name>, and overrides the `name` in the model file.
+function(eomgen_add_model target)
+  cmake_parse_arguments(ARG "" "MODEL;NAME" "" ${ARGN})
+  if(NOT ARG_MODEL)
+    message(FATAL_ERROR "eomgen_add_model(${target}): MODEL <file.toml> is required")
+  endif()
+  if(NOT ARG_NAME)
+    set(ARG_NAME ${target})
+  endif()
+  get_filename_component(model_file "${ARG_MODEL}" ABSOLUTE)
+  set(include_dir "${CMAKE_BINARY_DIR}/eomgen_generated")
+  set(out_dir "${include_dir}/eomgen/models")
+  set(header "${out_dir}/${ARG_NAME}.hpp")
+  add_custom_command(
+    OUTPUT "${header}"
+    COMMAND eomgen generate "${model_file}" --name "${ARG_NAME}" -o "${out_dir}"
+    # generate leaves an unchanged file alone; touch it so the build sees it as up to date.
+    COMMAND ${CMAKE_COMMAND} -E touch "${header}"
+    DEPENDS "${model_file}" eomgen
+    COMMENT "eomgen: ${ARG_MODEL} -> eomgen/models/${ARG_NAME}.hpp"
+    VERBATIM)
+  add_custom_target(${target}_header DEPENDS "${header}")
+  add_library(${target} INTERFACE)
+  add_dependencies(${target} ${target}_header)
+  target_include_directories(${target} INTERFACE "${include_dir}")
+  target_link_libraries(${target} INTERFACE eomgen::runtime)
+  set_property(GLOBAL APPEND PROPERTY EOMGEN_MODEL_TARGETS ${target})
+  set_property(TARGET ${target} PROPERTY EOMGEN_MODEL_NAME ${ARG_NAME})
+  set_property(TARGET ${target} PROPERTY EOMGEN_MODEL_FILE "${model_file}")
+endfunction()

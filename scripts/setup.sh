@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs what eomgen needs from Debian's packages (only what is missing), then configures and builds.
+# Usage: scripts/setup.sh [extra cmake -D options...]   (build directory: $EOMGEN_BUILD_DIR, default build/)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2 libtomlplusplus-dev
+          libcli11-dev libfmt-dev libbenchmark-dev libboost-dev gnuplot-nox)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "setup: installing ${missing[*]}"
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+build="${EOMGEN_BUILD_DIR:-build}"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+cmake --build "$build" -j "$(nproc)"
