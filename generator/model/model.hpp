@@ -1,0 +1,79 @@
+/** @file model.hpp  The in-memory model: coordinates, parameters, T and V as GiNaC expressions. */
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace eomgen {
+
+/// A place in a model file, 1-based line and column (column counts bytes).
+struct SourceLocation {
+    std::string file;
+    int line = 0;
+    int column = 0;
+
+    /// "file:line:col" (or just "file" when the line is unknown).
+    std::string str() const;
+};
+
+/// Every problem with a model is reported as this, with where it is.
+class ModelError : public std::runtime_error {
+public:
+    ModelError(SourceLocation where, const std::string& message);
+    const SourceLocation& where() const { return where_; }
+    const std::string& message() const { return message_; }
+
+private:
+    SourceLocation where_;
+    std::string message_;
+};
+
+/// A generalized coordinate q_i with its velocity q̇_i and acceleration q̈_i as plain symbols
+/// (time derivatives are taken by the chain rule, see mechanics/lagrangian.hpp).
+struct Coordinate {
+    std::string name;   ///< identifier used in expressions and in generated code
+    std::string latex;  ///< LaTeX name, e.g. "\\psi"
+    GiNaC::symbol q, qd, qdd;
+    double initial = 0.0;  ///< default q(0)
+    double rate = 0.0;     ///< default q̇(0)
+    SourceLocation where;
+};
+
+/// A constant of the model, kept symbolic in the equations; `value` is the default for simulation.
+struct Parameter {
+    std::string name;
+    std::string latex;
+    std::string unit;
+    std::string description;
+    GiNaC::symbol symbol;
+    double value = 0.0;
+    SourceLocation where;
+};
+
+/// An expression from the model file with the place where its text starts.
+struct SourceExpression {
+    GiNaC::ex expr;
+    std::string text;
+    SourceLocation where;
+};
+
+struct Model {
+    std::string name;         ///< identifier: namespace of the generated code, file name
+    std::string title;        ///< human title
+    std::string source;       ///< bibliographic source, e.g. "Goldstein ch. 5, Ex. 30"
+    std::string description;  ///< free text
+    std::string path;         ///< model file it was read from
+
+    GiNaC::symbol t;  ///< time
+    std::vector<Coordinate> coordinates;
+    std::vector<Parameter> parameters;
+    SourceExpression T;  ///< kinetic energy T(q, q̇, t)
+    SourceExpression V;  ///< potential energy V(q, t)
+
+    std::size_t dof() const { return coordinates.size(); }
+};
+
+}  // namespace eomgen

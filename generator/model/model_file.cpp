@@ -1,0 +1,539 @@
+/** @file model_file.cpp  Model files: TOML via toml++, every problem located at file:line:col. */
+#include "model/model_file.hpp"
+
+#include "model/expression_parser.hpp"
+#include "model/names.hpp"
+
+// toml++ 3.3 asserts preconditions that malformed input breaks ("[\n" in a table header; upstream
+// marzer/tomlplusplus#301), aborting builds that compile its parser into this file (TOML_HEADER_ONLY=1)
+// without NDEBUG. The code after each of those asserts reports a parse_error, which is what we want.
+#ifndef TOML_ASSERT
+#define TOML_ASSERT(expr) static_assert(true)
+#endif
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <utility>
+
+namespace eomgen {
+
+namespace {
+
+/// The raw file text, to turn toml++ positions (1-based line, column in code points) and byte offsets
+/// into SourceLocations (column in bytes).
+class SourceText {
+  public:
+    SourceText(std::string_view text, std::string file) : text_(text), file_(std::move(file)) {
+        // toml++ skips a UTF-8 byte order mark without counting it as a column; so do we.
+        line_starts_.push_back(text_.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0);
+        for (std::size_t i = 0; i < text_.size(); ++i)
+            if (text_[i] == '\n') line_starts_.push_back(i + 1);
+    }
+
+    std::string_view text() const { return text_; }
+
+    /// Byte offset of a toml++ position, clamped to the text.
+    std::size_t offset_of(const toml::source_position& pos) const {
+        if (pos.line == 0) return 0;
+        if (pos.line > line_starts_.size()) return text_.size();
+        std::size_t i = line_starts_[pos.line - 1];
+        for (toml::source_index col = 1; col < pos.column && i < text_.size() && text_[i] != '\n'; ++col) {
+            ++i;  // over one code point: its lead byte and continuation bytes 10xxxxxx
+            while (i < text_.size() && (static_cast<unsigned char>(text_[i]) & 0xc0) == 0x80) ++i;
+        }
+        return i;
+    }
+
+    SourceLocation at_offset(std::size_t offset) const {
+        offset = std::min(offset, text_.size());
+        const auto line =
+            std::upper_bound(line_starts_.begin(), line_starts_.end(), offset) - line_starts_.begin();
+        const std::size_t start = line > 0 ? line_starts_[line - 1] : 0;
+        return {file_, static_cast<int>(std::max<std::ptrdiff_t>(line, 1)),
+                static_cast<int>(offset >= start ? offset - start + 1 : 1)};
+    }
+
+    SourceLocation at(const toml::source_position& pos) const { return at_offset(offset_of(pos)); }
+    SourceLocation at(const toml::node& node) const { return at(node.source().begin); }
+    SourceLocation file_only() const { return {file_, 0, 0}; }
+
+  private:
+    std::string_view text_;
+    std::string file_;
+    std::vector<std::size_t> line_starts_;
+};
+
+void append_utf8(std::string& out, unsigned long cp) {
+    if (cp < 0x80) {
+        out += static_cast<char>(cp);
+    } else if (cp < 0x800) {
+        out += static_cast<char>(0xc0 | (cp >> 6));
+        out += static_cast<char>(0x80 | (cp & 0x3f));
+    } else if (cp < 0x10000) {
+        out += static_cast<char>(0xe0 | (cp >> 12));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3f));
+        out += static_cast<char>(0x80 | (cp & 0x3f));
+    } else {
+        out += static_cast<char>(0xf0 | (cp >> 18));
+        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3f));
+        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3f));
+        out += static_cast<char>(0x80 | (cp & 0x3f));
+    }
+}
+
+/**
+ * Decodes the TOML string literal whose opening quote is at byte `quote` of `text`, recording for each
+ * byte of the value the byte offset in `text` it came from, plus one entry for the closing delimiter
+ * (where errors at the end of the value point). Handles "...", '...', """...""" and '''...''' with
+ * the first newline of multi-line strings trimmed, escapes (one value byte → the backslash), CRLF
+ * (toml++ gives "\n") and line-ending backslashes. Returns an empty vector when the decoded text is not
+ * `value`, so that a case this misses degrades to pointing at the quote rather than at a wrong place.
+ */
+std::vector<std::size_t> map_string_value(std::string_view text, std::size_t quote,
+                                          const std::string& value) {
+    std::vector<std::size_t> raw;
+    std::string out;
+    if (quote >= text.size() || (text[quote] != '"' && text[quote] != '\'')) return {};
+    const char delim = text[quote];
+    const bool basic = delim == '"';
+    const bool multi = text.substr(quote, 3) == std::string(3, delim);
+    std::size_t p = quote + (multi ? 3 : 1);
+    if (multi) {
+        if (text.substr(p, 1) == "\n")
+            p += 1;
+        else if (text.substr(p, 2) == "\r\n")
+            p += 2;
+    }
+    auto hex = [&](std::size_t from, std::size_t digits, unsigned long& cp) {
+        if (from + digits > text.size()) return false;
+        cp = 0;
+        for (std::size_t k = 0; k < digits; ++k) {
+            const char h = text[from + k];
+            const int v = h >= '0' && h <= '9'   ? h - '0'
+                          : h >= 'a' && h <= 'f' ? h - 'a' + 10
+                          : h >= 'A' && h <= 'F' ? h - 'A' + 10
+                                                 : -1;
+            if (v < 0) return false;
+            cp = cp * 16 + static_cast<unsigned long>(v);
+        }
+        return true;
+    };
+    while (p < text.size()) {
+        const char c = text[p];
+        if (c == delim && (!multi || text.substr(p, 3) == std::string(3, delim))) {
+            if (multi) {
+                // Up to two quotes right before the closing three belong to the value: """a"""" is a".
+                std::size_t run = 0;
+                while (p + run < text.size() && text[p + run] == delim) ++run;
+                for (std::size_t k = 0; k < std::min<std::size_t>(run - 3, 2); ++k) {
+                    out += delim;
+                    raw.push_back(p + k);
+                }
+                p += std::min<std::size_t>(run - 3, 2);
+            }
+            raw.push_back(p);
+            return out == value ? raw : std::vector<std::size_t>{};
+        }
+        if (basic && c == '\\' && p + 1 < text.size()) {
+            const char e = text[p + 1];
+            std::size_t length = 2;
+            unsigned long cp = 0;
+            switch (e) {
+                case 'b':
+                    out += '\b';
+                    break;
+                case 't':
+                    out += '\t';
+                    break;
+                case 'n':
+                    out += '\n';
+                    break;
+                case 'f':
+                    out += '\f';
+                    break;
+                case 'r':
+                    out += '\r';
+                    break;
+                case 'e':
+                    out += '\x1b';
+                    break;
+                case '"':
+                    out += '"';
+                    break;
+                case '\\':
+                    out += '\\';
+                    break;
+                case 'x':
+                    if (!hex(p + 2, 2, cp)) return {};
+                    append_utf8(out, cp);
+                    length = 4;
+                    break;
+                case 'u':
+                    if (!hex(p + 2, 4, cp)) return {};
+                    append_utf8(out, cp);
+                    length = 6;
+                    break;
+                case 'U':
+                    if (!hex(p + 2, 8, cp)) return {};
+                    append_utf8(out, cp);
+                    length = 10;
+                    break;
+                default: {
+                    if (!multi) return {};
+                    // Line-ending backslash: drop it, the newline and all whitespace after it.
+                    std::size_t q = p + 1;
+                    while (q < text.size() && (text[q] == ' ' || text[q] == '\t')) ++q;
+                    if (q >= text.size() || (text[q] != '\n' && text[q] != '\r')) return {};
+                    while (q < text.size() &&
+                           (text[q] == ' ' || text[q] == '\t' || text[q] == '\n' || text[q] == '\r'))
+                        ++q;
+                    length = q - p;
+                }
+            }
+            raw.resize(out.size(), p);
+            p += length;
+            continue;
+        }
+        if (multi && c == '\r' && text.substr(p, 2) == "\r\n") {
+            out += '\n';
+            raw.push_back(p);
+            p += 2;
+            continue;
+        }
+        if (!multi && c == '\n') return {};
+        out += c;
+        raw.push_back(p);
+        ++p;
+    }
+    return {};
+}
+
+std::string type_name(const toml::node& node) {
+    switch (node.type()) {
+        case toml::node_type::table:
+            return "a table";
+        case toml::node_type::array:
+            return "an array";
+        case toml::node_type::string:
+            return "a string";
+        case toml::node_type::integer:
+            return "an integer";
+        case toml::node_type::floating_point:
+            return "a floating-point number";
+        case toml::node_type::boolean:
+            return "a boolean";
+        case toml::node_type::date:
+            return "a date";
+        case toml::node_type::time:
+            return "a time";
+        case toml::node_type::date_time:
+            return "a date-time";
+        default:
+            return "nothing";
+    }
+}
+
+/// A name declared in the file, for the validity and uniqueness checks.
+struct Declaration {
+    std::string name;
+    std::string kind;  ///< "coordinate", "parameter", "model"
+    SourceLocation where;
+    std::size_t order;  ///< position in the file, for ordering; 0 for a name taken from the file name
+};
+
+/// A coordinate or parameter table, checked for keys and types, values still unevaluated.
+struct Entry {
+    const toml::table* table = nullptr;
+    std::string name;
+    SourceLocation where;
+};
+
+class Loader {
+  public:
+    Loader(std::string_view text, const std::string& path) : src_(text, path), path_(path) {}
+
+    Model load() {
+        toml::table root;
+        try {
+            root = toml::parse(src_.text(), std::string_view(path_));
+        } catch (const toml::parse_error& e) {
+            throw ModelError(src_.at(e.source().begin), "invalid TOML: " + std::string(e.description()));
+        }
+
+        Model model;
+        model.path = path_;
+        model.t = GiNaC::symbol("t", "t");
+        check_keys(root,
+                   {"name", "title", "source", "description", "coordinates", "parameters", "lagrangian"},
+                   "at the top level");
+
+        std::vector<Declaration> declarations;
+        if (const toml::node* name = root.get("name")) {
+            model.name = string_value(*name, "name");
+            const SourceLocation where = string_start(*name);
+            declarations.push_back({model.name, "model", where, order(where)});
+        } else {
+            model.name = std::filesystem::path(path_).stem().string();
+            declarations.push_back({model.name, "model", src_.file_only(), 0});
+        }
+        if (const toml::node* n = root.get("title")) model.title = string_value(*n, "title");
+        if (const toml::node* n = root.get("source")) model.source = string_value(*n, "source");
+        if (const toml::node* n = root.get("description"))
+            model.description = string_value(*n, "description");
+
+        const std::vector<Entry> coordinates =
+            entries(root, "coordinates", {"name", "latex", "initial", "rate"}, true);
+        const std::vector<Entry> parameters =
+            entries(root, "parameters", {"name", "value", "unit", "latex", "description"}, false);
+        for (const auto& c : coordinates)
+            declarations.push_back({c.name, "coordinate", c.where, order(c.where)});
+        for (const auto& p : parameters)
+            declarations.push_back({p.name, "parameter", p.where, order(p.where)});
+        check_names(declarations, coordinates);
+
+        SymbolTable symbols;
+        symbols.symbols["t"] = model.t;
+        for (const auto& c : coordinates) {
+            Coordinate coordinate;
+            coordinate.name = c.name;
+            coordinate.latex = optional_string(*c.table, "latex").value_or(default_latex(c.name));
+            coordinate.q = GiNaC::symbol(c.name, coordinate.latex);
+            coordinate.qd = GiNaC::symbol(c.name + "_dot", "\\dot{" + coordinate.latex + "}");
+            coordinate.qdd = GiNaC::symbol(c.name + "_ddot", "\\ddot{" + coordinate.latex + "}");
+            coordinate.where = c.where;
+            symbols.symbols[c.name] = coordinate.q;
+            symbols.velocities[c.name] = coordinate.qd;
+            model.coordinates.push_back(std::move(coordinate));
+        }
+        for (const auto& p : parameters) {
+            Parameter parameter;
+            parameter.name = p.name;
+            parameter.latex = optional_string(*p.table, "latex").value_or(default_latex(p.name));
+            parameter.unit = optional_string(*p.table, "unit").value_or("");
+            parameter.description = optional_string(*p.table, "description").value_or("");
+            parameter.symbol = GiNaC::symbol(p.name, parameter.latex);
+            parameter.where = p.where;
+            symbols.symbols[p.name] = parameter.symbol;
+            model.parameters.push_back(std::move(parameter));
+        }
+
+        // Numbers after all names exist, so that "pi/4" can say "'m' is not a constant" about a name.
+        for (std::size_t i = 0; i < coordinates.size(); ++i) {
+            model.coordinates[i].initial = constant(*coordinates[i].table, "initial", symbols, 0.0);
+            model.coordinates[i].rate = constant(*coordinates[i].table, "rate", symbols, 0.0);
+        }
+        for (std::size_t i = 0; i < parameters.size(); ++i)
+            model.parameters[i].value = constant(*parameters[i].table, "value", symbols, 0.0);
+
+        read_lagrangian(root, symbols, model);
+        return model;
+    }
+
+  private:
+    [[noreturn]] void fail(const SourceLocation& where, const std::string& message) const {
+        throw ModelError(where, message);
+    }
+
+    std::size_t offset_of(const toml::node& node) const { return src_.offset_of(node.source().begin); }
+    /// A key that sorts locations in file order (a location without a line first).
+    static std::size_t order(const SourceLocation& where) {
+        return static_cast<std::size_t>(where.line) * 1000000u + static_cast<std::size_t>(where.column);
+    }
+
+    /// Where the text of a string value starts (just inside its quotes), else where the node starts.
+    SourceLocation string_start(const toml::node& node) const {
+        if (const auto* s = node.as_string()) {
+            const auto map = map_string_value(src_.text(), offset_of(node), s->get());
+            if (!map.empty()) return src_.at_offset(map.front());
+        }
+        return src_.at(node);
+    }
+
+    /// Where byte `offset` of a string value is in the file.
+    SourceLocation inside_string(const toml::node& node, std::size_t offset) const {
+        const auto* s = node.as_string();
+        if (!s) return src_.at(node);
+        const auto map = map_string_value(src_.text(), offset_of(node), s->get());
+        if (map.empty()) return src_.at(node);
+        return src_.at_offset(map[std::min(offset, map.size() - 1)]);
+    }
+
+    void check_keys(const toml::table& table, std::vector<std::string> allowed,
+                    const std::string& context) const {
+        for (auto&& [key, node] : table) {
+            const std::string k(key.str());
+            if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
+            const std::string best = closest_name(k, allowed);
+            std::string message = "unknown key '" + k + "' " + context;
+            if (!best.empty()) {
+                message += "; did you mean '" + best + "'?";
+            } else {
+                message += " (expected one of:";
+                for (const auto& a : allowed) message += " " + a;
+                message += ")";
+            }
+            fail(src_.at(key.source().begin), message);
+        }
+    }
+
+    std::string string_value(const toml::node& node, const std::string& key) const {
+        if (const auto* s = node.as_string()) return s->get();
+        fail(src_.at(node), "'" + key + "' must be a string, not " + type_name(node));
+    }
+
+    std::optional<std::string> optional_string(const toml::table& table, const std::string& key) const {
+        if (const toml::node* n = table.get(key)) return string_value(*n, key);
+        return std::nullopt;
+    }
+
+    /// The tables of `[[key]]`, each with its keys checked and a string `name`.
+    std::vector<Entry> entries(const toml::table& root, const std::string& key,
+                               const std::vector<std::string>& allowed, bool required) const {
+        const std::string context = "in [[" + key + "]]";
+        std::vector<Entry> result;
+        const toml::node* node = root.get(key);
+        if (!node) {
+            if (required)
+                fail(src_.file_only(), "missing [[" + key + "]]: a model needs at least one coordinate");
+            return result;
+        }
+        const toml::array* array = node->as_array();
+        if (!array)
+            fail(src_.at(*node), "'" + key + "' must be an array of tables, written [[" + key + "]], not " +
+                                     type_name(*node));
+        if (array->empty() && required) fail(src_.at(*node), "a model needs at least one coordinate");
+        for (const toml::node& element : *array) {
+            const toml::table* table = element.as_table();
+            if (!table)
+                fail(src_.at(element),
+                     "each entry of '" + key + "' must be a table, not " + type_name(element));
+            check_keys(*table, allowed, context);
+            const toml::node* name = table->get("name");
+            if (!name) fail(src_.at(*table), "missing key 'name' " + context);
+            result.push_back({table, string_value(*name, "name"), string_start(*name)});
+            if (key == "parameters" && !table->get("value"))
+                fail(src_.at(*table), "missing key 'value' " + context + " (the parameter's default value)");
+        }
+        return result;
+    }
+
+    /// Each name valid and not reserved, and no name declared twice; reported in file order.
+    void check_names(std::vector<Declaration> declarations, const std::vector<Entry>& coordinates) const {
+        std::vector<std::string> coordinate_names;
+        for (const auto& c : coordinates) coordinate_names.push_back(c.name);
+        std::stable_sort(declarations.begin(), declarations.end(),
+                         [](const Declaration& a, const Declaration& b) { return a.order < b.order; });
+        std::map<std::string, const Declaration*> seen;
+        for (const auto& d : declarations) {
+            const std::string problem = name_problem(d.name, coordinate_names);
+            if (!problem.empty()) {
+                if (d.where.line == 0)
+                    fail(d.where, "no 'name' given, and the file name '" + d.name +
+                                      "' cannot be the model's name: " + problem + "; add name = \"...\"");
+                fail(d.where, "cannot use '" + d.name + "' as a " + d.kind + " name: " + problem);
+            }
+            const auto [it, inserted] = seen.emplace(d.name, &d);
+            if (inserted) continue;
+            const Declaration& first = *it->second;
+            const std::string what =
+                first.kind == "model" ? "the model's name" : "the name of a " + first.kind;
+            const std::string already = first.where.line == 0
+                                            ? what + " (taken from the file name)"
+                                            : what + " on line " + std::to_string(first.where.line);
+            fail(d.where, "duplicate name '" + d.name + "': already " + already);
+        }
+    }
+
+    /// A number, or a string with a constant expression such as "pi/4".
+    double constant(const toml::table& table, const std::string& key, const SymbolTable& symbols,
+                    double fallback) const {
+        const toml::node* node = table.get(key);
+        if (!node) return fallback;
+        double value = 0.0;
+        if (const auto* i = node->as_integer()) {
+            value = static_cast<double>(i->get());
+        } else if (const auto* f = node->as_floating_point()) {
+            value = f->get();
+            if (!std::isfinite(value)) fail(src_.at(*node), "'" + key + "' must be a finite number");
+        } else if (const auto* s = node->as_string()) {
+            try {
+                value = evaluate_constant(s->get(), symbols);
+            } catch (const ExpressionError& e) {
+                fail(inside_string(*node, e.offset()), e.message());
+            }
+        } else {
+            fail(src_.at(*node), "'" + key +
+                                     "' must be a number or a string with a constant expression such as "
+                                     "\"pi/4\", not " +
+                                     type_name(*node));
+        }
+        return value;
+    }
+
+    GiNaC::ex expression(const toml::node& node, const std::string& key, const SymbolTable& symbols,
+                         const ParseOptions& options) const {
+        const auto* s = node.as_string();
+        if (!s)
+            fail(src_.at(node), "'" + key + "' must be a string with an expression, not " + type_name(node));
+        try {
+            return parse_expression(s->get(), symbols, options);
+        } catch (const ExpressionError& e) {
+            fail(inside_string(node, e.offset()), e.message());
+        }
+    }
+
+    void read_lagrangian(const toml::table& root, const SymbolTable& symbols, Model& model) const {
+        const toml::node* node = root.get("lagrangian");
+        if (!node)
+            fail(src_.file_only(), "missing [lagrangian] with the kinetic energy T (and potential energy V)");
+        const toml::table* table = node->as_table();
+        if (!table)
+            fail(src_.at(*node),
+                 "'lagrangian' must be a table [lagrangian] with T and V, not " + type_name(*node));
+        check_keys(*table, {"T", "V"}, "in [lagrangian]");
+
+        const toml::node* T = table->get("T");
+        if (!T) fail(src_.at(*table), "missing key 'T' in [lagrangian] (the kinetic energy)");
+        model.T.expr = expression(*T, "T", symbols, {});
+        model.T.text = T->as_string()->get();
+        model.T.where = string_start(*T);
+
+        if (const toml::node* V = table->get("V")) {
+            ParseOptions options;
+            options.forbid_velocities = "the potential energy V(q, t) must not depend on velocities";
+            model.V.expr = expression(*V, "V", symbols, options);
+            model.V.text = V->as_string()->get();
+            model.V.where = string_start(*V);
+        } else {
+            model.V.expr = 0;
+            model.V.text = "0";
+            model.V.where = src_.at(*table);
+        }
+    }
+
+    SourceText src_;
+    std::string path_;
+};
+
+}  // namespace
+
+Model parse_model(std::string_view text, const std::string& path) {
+    return Loader(text, path).load();
+}
+
+Model load_model(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw ModelError({path, 0, 0}, "cannot open the model file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) throw ModelError({path, 0, 0}, "cannot read the model file");
+    return parse_model(text.str(), path);
+}
+
+}  // namespace eomgen
