@@ -1,0 +1,442 @@
+/** @file cpp_emitter.cpp  Common-subexpression elimination over the DAG and the header around it. */
+#include "codegen/cpp_emitter.hpp"
+
+#include "codegen/math_printer.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <functional>
+#include <set>
+#include <sstream>
+
+#ifndef EOMGEN_VERSION
+#define EOMGEN_VERSION "0.1.0"
+#endif
+
+namespace eomgen::codegen {
+namespace {
+
+constexpr int kSum = 1, kProduct = 2, kAtom = 4;
+
+std::string scalar_literal(const GiNaC::numeric& integer) {
+    // Exact integers within long long print as Scalar(k); larger ones as long double literals.
+    if (integer.is_integer() && GiNaC::abs(integer) < GiNaC::numeric(1L << 62))
+        return "Scalar(" + numeric_string(integer) + ")";
+    return "Scalar(" + fmt::format("{}", integer.to_double()) + "L)";
+}
+
+std::string number_literal(const GiNaC::numeric& v) {
+    if (v.is_integer()) return scalar_literal(v);
+    return scalar_literal(v.numer()) + "/" + scalar_literal(v.denom());
+}
+
+class BodyEmitter {
+public:
+    explicit BodyEmitter(ExprDag& dag) : dag_(dag), uses_(dag.size(), 0), name_(dag.size()) {}
+
+    FunctionBody run(const std::vector<Output>& outputs) {
+        std::vector<Term> roots;
+        for (const Output& o : outputs) roots.push_back(dag_.add(o.value));
+        uses_.assign(dag_.size(), 0);
+        name_.assign(dag_.size(), std::string());
+        std::vector<char> seen(dag_.size(), 0);
+        std::function<void(NodeId)> count = [&](NodeId id) {
+            if (seen[static_cast<std::size_t>(id)]) return;
+            seen[static_cast<std::size_t>(id)] = 1;
+            const Node& n = dag_.node(id);
+            if (n.op == Op::Symbol) used_.insert(n.symbol);
+            // x*x reads x twice: a composite base of a power is worth a temporary.
+            const int reads = n.op == Op::Pow ? static_cast<int>(n.value.to_int()) : 1;
+            for (NodeId a : n.args) {
+                uses_[static_cast<std::size_t>(a)] += reads;
+                count(a);
+            }
+        };
+        for (const Term& r : roots)
+            if (r.node != kOne) {
+                uses_[static_cast<std::size_t>(r.node)] += 1;
+                count(r.node);
+            }
+        for (const Term& r : roots)
+            if (r.node != kOne) declare(r.node);
+        for (std::size_t i = 0; i < outputs.size(); ++i) {
+            const std::string value = term(roots[i], kSum);
+            if (outputs[i].target == "return")
+                body_.lines.push_back("return " + value + ";");
+            else
+                body_.lines.push_back(outputs[i].target + " = " + value + ";");
+        }
+        body_.used_symbols.assign(used_.begin(), used_.end());
+        body_.functions.assign(functions_.begin(), functions_.end());
+        return body_;
+    }
+
+private:
+    bool wants_temporary(NodeId id) const {
+        const Node& n = dag_.node(id);
+        if (n.op == Op::Number || n.op == Op::Symbol) return false;
+        if (uses_[static_cast<std::size_t>(id)] >= 2) return true;
+        // sin/cos of a coordinate get a name of their own even when read once: code that reads like the math.
+        return n.op == Op::Func && n.args.size() == 1 && dag_.node(n.args[0]).op == Op::Symbol;
+    }
+
+    /// Emits temporaries for id's subtree, children first, in a deterministic order.
+    void declare(NodeId id) {
+        const std::size_t k = static_cast<std::size_t>(id);
+        if (!name_[k].empty() || declared_.count(id)) return;
+        declared_.insert(id);
+        for (NodeId a : dag_.node(id).args) declare(a);
+        if (!wants_temporary(id)) return;
+        const Node& n = dag_.node(id);
+        std::string name;
+        if (n.op == Op::Func && n.args.size() == 1 && dag_.node(n.args[0]).op == Op::Symbol &&
+            (n.name == "sin" || n.name == "cos"))
+            name = n.name + "_" + dag_.symbol(dag_.node(n.args[0]).symbol).name;
+        else
+            name = "t" + std::to_string(next_temp_++);
+        const std::string value = render(id, kSum);
+        body_.lines.push_back("const Scalar " + name + " = " + value + ";");
+        name_[k] = name;
+    }
+
+    std::string term(const Term& t, int context) {
+        if (t.node == kOne) return number_literal(t.coeff);
+        if (t.coeff.is_equal(1)) return ref(t.node, context);
+        std::string s;
+        const GiNaC::numeric a = GiNaC::abs(t.coeff);
+        if (a.is_equal(1)) {
+            s = "-" + ref(t.node, kProduct + 1);
+            ++body_.ops.additions;  // a negation costs like a subtraction
+        } else {
+            s = (t.coeff.is_negative() ? "-" : "") + number_literal(a) + "*" + ref(t.node, kProduct);
+            ++body_.ops.multiplications;
+            if (!a.is_integer()) ++body_.ops.divisions;
+        }
+        return context > kSum ? "(" + s + ")" : s;
+    }
+
+    /// A node as an operand: its temporary's name, or its code inline.
+    std::string ref(NodeId id, int context) {
+        const std::string& n = name_[static_cast<std::size_t>(id)];
+        if (!n.empty()) return n;
+        return render(id, context);
+    }
+
+    std::string render(NodeId id, int context) {
+        const Node& n = dag_.node(id);
+        std::string out;
+        int strength = kAtom;
+        switch (n.op) {
+            case Op::Number:
+                out = number_literal(n.value);
+                if (!n.value.is_integer()) strength = kProduct;
+                break;
+            case Op::Symbol:
+                out = dag_.symbol(n.symbol).name;
+                break;
+            case Op::Func: {
+                ++body_.ops.function_calls;
+                std::string args;
+                for (std::size_t i = 0; i < n.args.size(); ++i) args += (i ? ", " : "") + ref(n.args[i], kSum);
+                functions_.insert(n.name);
+                out = n.name + "(" + args + ")";
+                break;
+            }
+            case Op::Pow: {
+                const int k = n.value.to_int();
+                const std::string b = ref(n.args[0], kAtom);
+                out = b;
+                for (int i = 1; i < k; ++i) out += "*" + b;
+                body_.ops.multiplications += k - 1;
+                strength = kProduct;
+                break;
+            }
+            case Op::Mul: {
+                std::vector<std::string> num, den;
+                for (std::size_t i = 0; i < n.args.size(); ++i)
+                    (n.coeffs[i].is_negative() ? den : num).push_back(ref(n.args[i], kProduct + 1));
+                auto join = [&](const std::vector<std::string>& v) {
+                    std::string s;
+                    for (std::size_t i = 0; i < v.size(); ++i) s += (i ? "*" : "") + v[i];
+                    return s;
+                };
+                body_.ops.multiplications += static_cast<long>(std::max<std::size_t>(num.size(), 1) - 1);
+                if (den.empty()) {
+                    out = join(num);
+                } else {
+                    body_.ops.multiplications += static_cast<long>(den.size() - 1);
+                    ++body_.ops.divisions;
+                    out = (num.empty() ? std::string("Scalar(1)") : join(num)) + "/" +
+                          (den.size() > 1 ? "(" + join(den) + ")" : den[0]);
+                }
+                strength = kProduct;
+                break;
+            }
+            case Op::Add: {
+                for (std::size_t i = 0; i < n.args.size(); ++i) {
+                    const GiNaC::numeric c = n.coeffs[i];
+                    std::string t = term(Term{GiNaC::abs(c), n.args[i]}, kSum);
+                    if (i == 0)
+                        out = c.is_negative() ? "-" + (GiNaC::abs(c).is_equal(1) ? ref(n.args[i], kProduct + 1) : t) : t;
+                    else
+                        out += (c.is_negative() ? " - " : " + ") + t;
+                    if (i > 0 || c.is_negative()) ++body_.ops.additions;
+                }
+                if (!n.value.is_zero()) {
+                    out += (n.value.is_negative() ? " - " : " + ") + number_literal(GiNaC::abs(n.value));
+                    ++body_.ops.additions;
+                }
+                strength = kSum;
+                break;
+            }
+        }
+        if (strength < context) return "(" + out + ")";
+        return out;
+    }
+
+    ExprDag& dag_;
+    std::vector<int> uses_;
+    std::vector<std::string> name_;
+    std::set<NodeId> declared_;
+    std::set<int> used_;
+    std::set<std::string> functions_;
+    int next_temp_ = 0;
+    FunctionBody body_;
+};
+
+}  // namespace
+
+std::string shortest_decimal(double v) { return fmt::format("{}", v); }
+
+SymbolTable symbol_table(const Model& model) {
+    SymbolTable table;
+    auto put = [&table](SymbolInfo info, const GiNaC::ex& e) {
+        table.info.push_back(std::move(info));
+        table.exprs.push_back(e);
+    };
+    for (std::size_t i = 0; i < model.parameters.size(); ++i) {
+        const Parameter& p = model.parameters[i];
+        put({SymbolKind::Parameter, int(i), p.name, p.name, p.latex, "p_." + p.name}, p.symbol);
+    }
+    for (std::size_t i = 0; i < model.coordinates.size(); ++i) {
+        const Coordinate& c = model.coordinates[i];
+        const std::string k = std::to_string(i);
+        put({SymbolKind::Coordinate, int(i), c.name, c.name, c.latex, "q_(" + k + ")"}, c.q);
+        put({SymbolKind::Velocity, int(i), c.name + "_dot", c.name + "'", "\\dot{" + c.latex + "}", "qd_(" + k + ")"},
+            c.qd);
+        put({SymbolKind::Acceleration, int(i), c.name + "_ddot", c.name + "''", "\\ddot{" + c.latex + "}",
+             "qdd_(" + k + ")"},
+            c.qdd);
+    }
+    put({SymbolKind::Time, 0, "t", "t", "t", "t"}, model.t);
+    put({SymbolKind::Constant, 0, "pi_", "pi", "\\pi", "Scalar(3.141592653589793238462643383279502884L)"}, GiNaC::Pi);
+    return table;
+}
+
+FunctionBody emit_body(ExprDag& dag, const std::vector<Output>& outputs) {
+    BodyEmitter e(dag);
+    return e.run(outputs);
+}
+
+namespace {
+
+/// One static member function of the generated Model: signature, unused-argument markers, input locals, body.
+struct FunctionSpec {
+    std::string doc;
+    std::string return_type;  ///< "void" or "Scalar"
+    std::string name;
+    std::vector<std::pair<std::string, std::string>> inputs;  ///< (type, name)
+    std::vector<std::pair<std::string, std::string>> outputs;
+    std::vector<Output> values;
+};
+
+std::string emit_function(const FunctionSpec& f, const SymbolTable& table) {
+    ExprDag dag(table.info, table.exprs, true);
+    FunctionBody body = emit_body(dag, f.values);
+    std::ostringstream os;
+    os << "    /// " << f.doc << "\n";
+    os << "    static " << f.return_type << " " << f.name << "(";
+    std::vector<std::string> params;
+    for (const auto& [type, name] : f.inputs) params.push_back("const " + type + "& " + name);
+    for (const auto& [type, name] : f.outputs) params.push_back(type + "& " + name);
+    for (std::size_t i = 0; i < params.size(); ++i) os << (i ? ", " : "") << params[i];
+    os << ") {\n";
+    // Which arguments the body reads, through the locals it declares.
+    std::set<std::string> read;
+    std::vector<std::string> locals;
+    for (int s : body.used_symbols) {
+        const SymbolInfo& info = table.info[static_cast<std::size_t>(s)];
+        const std::string& src = info.source;
+        if (info.kind == SymbolKind::Time) {
+            read.insert("t");
+            continue;
+        }
+        if (info.kind == SymbolKind::Constant) {
+            locals.push_back("const Scalar " + info.name + " = " + src + ";");
+            continue;
+        }
+        read.insert(src.substr(0, src.find_first_of("(.")));
+        locals.push_back("const Scalar " + info.name + " = " + src + ";");
+    }
+    for (const auto& [type, name] : f.inputs)
+        if (!read.count(name)) os << "        static_cast<void>(" << name << ");\n";
+    // using-declarations so that overloads for long double (and other scalars, by ADL) are found.
+    for (const std::string& fn : body.functions) os << "        using std::" << fn << ";\n";
+    for (const std::string& l : locals) os << "        " << l << "\n";
+    for (const std::string& l : body.lines) os << "        " << l << "\n";
+    os << "    }\n";
+    return os.str();
+}
+
+std::string quoted(const std::string& s) {
+    std::string out = "\"";
+    for (char c : s) {
+        if (c == '"' || c == '\\') out += '\\';
+        if (c == '\n') {
+            out += "\\n";
+            continue;
+        }
+        out += c;
+    }
+    return out + "\"";
+}
+
+std::string string_array(const std::vector<std::string>& names) {
+    std::string s = "{";
+    for (std::size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + quoted(names[i]);
+    return s + "}";
+}
+
+std::string double_literal(double v) {
+    std::string s = shortest_decimal(v);
+    const bool integral = s.find_first_of(".eEn") == std::string::npos;  // n: nan, inf
+    return "Scalar(" + s + (integral ? "" : "L") + ")";
+}
+
+}  // namespace
+
+std::string emit_model_header(const Model& model, const Equations& eq, const std::string& model_file) {
+    const SymbolTable table = symbol_table(model);
+    MathPrinter printer(table);
+    const std::size_t n = model.dof();
+
+    std::vector<std::string> coords, states, params, conserved;
+    for (const Coordinate& c : model.coordinates) coords.push_back(c.name);
+    states = coords;
+    for (const Coordinate& c : model.coordinates) states.push_back(c.name + "_dot");
+    for (const Parameter& p : model.parameters) params.push_back(p.name);
+    for (const ConservedQuantity& c : eq.conserved) conserved.push_back(c.name);
+
+    std::ostringstream os;
+    os << "/** @file " << model.name << ".hpp  Equations of motion of \"" << model.title << "\". */\n";
+    os << "// Generated by eomgen " << EOMGEN_VERSION << " from " << model_file << ": do not edit, regenerate.\n";
+    if (!model.source.empty()) os << "// Source: " << model.source << "\n";
+    os << "//\n";
+    os << "// T = " << printer.print(eq.T, MathStyle::Text) << "\n";
+    os << "// V = " << printer.print(eq.V, MathStyle::Text) << "\n";
+    std::string equations;
+    for (std::size_t i = 0; i < n; ++i)
+        equations += "//   " + printer.print_equation(eq.euler_lagrange[i].expand(), MathStyle::Text) + " = 0\n";
+    // Large systems' equations are for `eomgen show`, not for a comment nobody reads.
+    if (equations.size() <= 4000)
+        os << "//\n// Euler-Lagrange equations, d/dt(dL/dq') - dL/dq = 0:\n" << equations;
+    else
+        os << "//\n// Euler-Lagrange equations: see `eomgen show " << model_file << "`.\n";
+    os << "//\n// Conserved: ";
+    if (eq.conserved.empty()) os << "nothing found";
+    for (std::size_t i = 0; i < eq.conserved.size(); ++i)
+        os << (i ? "; " : "") << eq.conserved[i].name << " (" << eq.conserved[i].reason << ")";
+    os << "\n#pragma once\n\n";
+    os << "#include \"eomgen/linear_solve.hpp\"\n\n";
+    os << "#include <Eigen/Core>\n\n#include <array>\n#include <cmath>\n#include <string_view>\n\n";
+    os << "namespace eomgen::models::" << model.name << " {\n\n";
+    os << "/// x = [q, q'] with q = " << string_array(coords) << "; M(q,t) q'' = f(q,q',t) solved in rhs().\n";
+    os << "template <class Scalar>\nstruct Model {\n";
+    os << "    static constexpr const char* name = " << quoted(model.name) << ";\n";
+    os << "    static constexpr const char* title = " << quoted(model.title) << ";\n";
+    os << "    static constexpr const char* source = " << quoted(model.source) << ";\n";
+    os << "    static constexpr int nq = " << n << ";\n";
+    os << "    static constexpr int nx = " << 2 * n << ";\n";
+    os << "    static constexpr int n_params = " << params.size() << ";\n";
+    os << "    static constexpr int n_conserved = " << conserved.size() << ";\n";
+    os << "    static constexpr bool explicit_time = " << (eq.explicit_time ? "true" : "false") << ";\n\n";
+    os << "    using Config = Eigen::Matrix<Scalar, nq, 1>;\n";
+    os << "    using State = Eigen::Matrix<Scalar, nx, 1>;\n";
+    os << "    using MassMatrix = Eigen::Matrix<Scalar, nq, nq>;\n";
+    os << "    using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;\n\n";
+    os << "    /// Parameters with the model file's defaults.\n    struct Params {\n";
+    for (const Parameter& p : model.parameters) {
+        os << "        Scalar " << p.name << " = " << double_literal(p.value) << ";";
+        std::string note = p.description;
+        if (!p.unit.empty()) note += (note.empty() ? "" : " ") + std::string("[") + p.unit + "]";
+        if (!note.empty()) os << "  ///< " << note;
+        os << "\n";
+    }
+    os << "    };\n\n";
+    os << "    static constexpr std::array<const char*, nq> coordinate_names" << string_array(coords) << ";\n";
+    os << "    static constexpr std::array<const char*, nx> state_names" << string_array(states) << ";\n";
+    os << "    static constexpr std::array<const char*, n_params> param_names" << string_array(params) << ";\n";
+    os << "    static constexpr std::array<const char*, n_conserved> conserved_names" << string_array(conserved)
+       << ";\n\n";
+    os << "    /// Sets the parameter called `name`; false when there is none.\n";
+    os << "    static bool set_param(Params& p_, std::string_view name_, const Scalar& value_) {\n";
+    for (const Parameter& p : model.parameters)
+        os << "        if (name_ == " << quoted(p.name) << ") return p_." << p.name << " = value_, true;\n";
+    if (model.parameters.empty()) os << "        static_cast<void>(p_);\n        static_cast<void>(name_);\n        static_cast<void>(value_);\n";
+    os << "        return false;\n    }\n\n";
+    os << "    static std::array<Scalar, n_params> param_values(const Params& p_) {\n";
+    os << "        static_cast<void>(p_);\n        return {";
+    for (std::size_t i = 0; i < params.size(); ++i) os << (i ? ", " : "") << "p_." << params[i];
+    os << "};\n    }\n\n";
+    os << "    /// The model file's initial values and rates.\n";
+    os << "    static State default_state() {\n        State x_;\n        x_ << ";
+    for (std::size_t i = 0; i < n; ++i) os << double_literal(model.coordinates[i].initial) << ", ";
+    for (std::size_t i = 0; i < n; ++i) os << (i ? ", " : "") << double_literal(model.coordinates[i].rate);
+    os << ";\n        return x_;\n    }\n\n";
+
+    const std::pair<std::string, std::string> t_in{"Scalar", "t"}, q_in{"Config", "q_"}, qd_in{"Config", "qd_"},
+        p_in{"Params", "p_"};
+    std::vector<Output> mass, force, momenta, grad, cons;
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = 0; j < n; ++j)
+            mass.push_back({fmt::format("M_({}, {})", i, j), eq.M(static_cast<unsigned>(i), static_cast<unsigned>(j))});
+        force.push_back({fmt::format("f_({})", i), eq.f[i]});
+        momenta.push_back({fmt::format("out_({})", i), eq.momenta[i]});
+        grad.push_back({fmt::format("out_({})", i), eq.dLdq[i]});
+    }
+    for (std::size_t i = 0; i < eq.conserved.size(); ++i)
+        cons.push_back({fmt::format("out_({})", i), eq.conserved[i].value});
+    std::vector<Output> both = mass;
+    both.insert(both.end(), force.begin(), force.end());
+
+    std::vector<FunctionSpec> functions = {
+        {"Mass matrix M = d2L/dq'dq' (symmetric).", "void", "mass_matrix", {t_in, q_in, p_in}, {{"MassMatrix", "M_"}}, mass},
+        {"Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f.", "void", "forcing",
+         {t_in, q_in, qd_in, p_in}, {{"Config", "f_"}}, force},
+        {"M and f together, sharing their subexpressions.", "void", "dynamics", {t_in, q_in, qd_in, p_in},
+         {{"MassMatrix", "M_"}, {"Config", "f_"}}, both},
+        {"Kinetic energy T.", "Scalar", "kinetic_energy", {t_in, q_in, qd_in, p_in}, {}, {{"return", eq.T}}},
+        {"Potential energy V.", "Scalar", "potential_energy", {t_in, q_in, qd_in, p_in}, {}, {{"return", eq.V}}},
+        {"Lagrangian L = T - V.", "Scalar", "lagrangian", {t_in, q_in, qd_in, p_in}, {}, {{"return", eq.L}}},
+        {"Energy function h = sum q' dL/dq' - L.", "Scalar", "energy", {t_in, q_in, qd_in, p_in}, {},
+         {{"return", eq.energy}}},
+        {"Generalized momenta p = dL/dq'.", "void", "momenta", {t_in, q_in, qd_in, p_in}, {{"Config", "out_"}}, momenta},
+        {"dL/dq.", "void", "lagrangian_gradient", {t_in, q_in, qd_in, p_in}, {{"Config", "out_"}}, grad},
+        {"Conserved quantities, in the order of conserved_names.", "void", "conserved", {t_in, q_in, qd_in, p_in},
+         {{"Conserved", "out_"}}, cons},
+    };
+    for (const FunctionSpec& f : functions) os << emit_function(f, table) << "\n";
+
+    os << "    /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.\n";
+    os << "    static void rhs(const Scalar& t, const State& x_, const Params& p_, State& xdot_) {\n";
+    os << "        const Config q_ = x_.template head<nq>();\n";
+    os << "        const Config qd_ = x_.template tail<nq>();\n";
+    os << "        MassMatrix M_;\n        Config f_;\n        dynamics(t, q_, qd_, p_, M_, f_);\n";
+    os << "        Config qdd_;\n        eomgen::solve_mass_matrix(M_, f_, qdd_, t, x_);\n";
+    os << "        xdot_.template head<nq>() = qd_;\n        xdot_.template tail<nq>() = qdd_;\n    }\n";
+    os << "};\n\n}  // namespace eomgen::models::" << model.name << "\n";
+    return os.str();
+}
+
+}  // namespace eomgen::codegen

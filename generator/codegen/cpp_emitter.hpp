@@ -1,0 +1,54 @@
+/** @file cpp_emitter.hpp  C++ for a model: CSE'd straight-line code in a header that needs only Eigen and the runtime. */
+#pragma once
+
+#include "codegen/expr_dag.hpp"
+#include "mechanics/lagrangian.hpp"
+#include "model/model.hpp"
+
+#include <string>
+#include <vector>
+
+namespace eomgen::codegen {
+
+/// Arithmetic in emitted code, counted as it is printed (a−b counts as one addition).
+struct OpCount {
+    long additions = 0;
+    long multiplications = 0;
+    long divisions = 0;
+    long function_calls = 0;
+    long total() const { return additions + multiplications + divisions + function_calls; }
+};
+
+/// One value a generated function computes: `target = value;` (target "return" for a return statement).
+struct Output {
+    std::string target;
+    GiNaC::ex value;
+};
+
+/// Straight-line code for several outputs together: shared subexpressions become `const Scalar tK = ...;`
+/// (computed once), integer powers products, each sin/cos of an argument evaluated once.
+struct FunctionBody {
+    std::vector<std::string> lines;  ///< statements, without indentation
+    std::vector<int> used_symbols;   ///< symbol-table indices the statements read
+    std::vector<std::string> functions;  ///< math functions called (sin, cos, sqrt, ...), sorted
+    OpCount ops;
+};
+
+/// The symbol table generated code reads: parameters (p_.name), coordinates q_(i), velocities qd_(i),
+/// accelerations, time t and the constant pi; `exprs` are the matching GiNaC symbols.
+struct SymbolTable {
+    std::vector<SymbolInfo> info;
+    std::vector<GiNaC::ex> exprs;
+};
+SymbolTable symbol_table(const Model& model);
+
+FunctionBody emit_body(ExprDag& dag, const std::vector<Output>& outputs);
+
+/// The whole generated header for a model (see docs/generated_code.md). Deterministic: the same model
+/// gives the same bytes in every process. `model_file` is the name printed in the header.
+std::string emit_model_header(const Model& model, const Equations& eq, const std::string& model_file);
+
+/// Shortest round-trip decimal for a double, as generated code and docs print defaults.
+std::string shortest_decimal(double v);
+
+}  // namespace eomgen::codegen

@@ -1,0 +1,168 @@
+/** @file lagrangian.cpp  Euler–Lagrange equations by the chain rule on plain symbols. */
+#include "mechanics/lagrangian.hpp"
+
+#include <Eigen/Dense>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+
+namespace eomgen {
+namespace {
+
+double to_double(const GiNaC::ex& e) {
+    const GiNaC::ex v = GiNaC::evalf(e);
+    if (!GiNaC::is_a<GiNaC::numeric>(v)) throw std::runtime_error("expression did not evaluate to a number");
+    const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(v);
+    if (!n.is_real()) return std::nan("");
+    return n.to_double();
+}
+
+Eigen::MatrixXd evaluate(const GiNaC::matrix& m, const GiNaC::exmap& at) {
+    Eigen::MatrixXd out(m.rows(), m.cols());
+    for (unsigned i = 0; i < m.rows(); ++i)
+        for (unsigned j = 0; j < m.cols(); ++j) out(i, j) = to_double(m(i, j).subs(at));
+    return out;
+}
+
+/// The velocity-dependence check: every entry of ∂²T/∂q̇² must be free of velocities.
+void check_quadratic_in_velocities(const Model& model, const GiNaC::matrix& M) {
+    for (unsigned i = 0; i < M.rows(); ++i)
+        for (unsigned j = 0; j < M.cols(); ++j)
+            for (const Coordinate& c : model.coordinates) {
+                if (!M(i, j).has(c.qd)) continue;
+                if (GiNaC::diff(M(i, j), c.qd).expand().is_zero()) continue;
+                throw ModelError(model.T.where,
+                                 "T is not quadratic + linear + zero order in the velocities: ∂²T/∂" +
+                                     model.coordinates[i].name + "'∂" + model.coordinates[j].name +
+                                     "' still depends on " + c.name + "'");
+            }
+}
+
+}  // namespace
+
+GiNaC::exmap random_point(const Model& model, unsigned seed) {
+    std::mt19937 rng(seed);
+    // Rationals, not floats, so that exact zeros stay exact after substitution.
+    std::uniform_int_distribution<int> pick(500, 1500);
+    auto value = [&] { return GiNaC::numeric(pick(rng), 1000); };
+    GiNaC::exmap at;
+    at[model.t] = value();
+    for (const Coordinate& c : model.coordinates) {
+        at[c.q] = value();
+        at[c.qd] = value();
+        at[c.qdd] = value();
+    }
+    for (const Parameter& p : model.parameters) at[p.symbol] = value();
+    return at;
+}
+
+bool is_zero(const GiNaC::ex& e, const Model& model) {
+    const GiNaC::ex x = e.expand();
+    if (x.is_zero()) return true;
+    if (GiNaC::normal(x).is_zero()) return true;
+    for (unsigned seed = 1; seed <= 3; ++seed) {
+        const double v = to_double(x.subs(random_point(model, seed)));
+        // Scale by the magnitude of the terms so that round-off in a large sum is not taken for non-zero.
+        double scale = 1.0;
+        if (GiNaC::is_a<GiNaC::add>(x))
+            for (const GiNaC::ex& term : x) scale = std::max(scale, std::abs(to_double(term.subs(random_point(model, seed)))));
+        if (!(std::abs(v) <= 1e-12 * scale)) return false;
+    }
+    return true;
+}
+
+GiNaC::ex time_derivative(const GiNaC::ex& e, const Model& model) {
+    GiNaC::ex d = GiNaC::diff(e, model.t);
+    for (const Coordinate& c : model.coordinates) d += GiNaC::diff(e, c.q) * c.qd + GiNaC::diff(e, c.qd) * c.qdd;
+    return d;
+}
+
+Equations derive_equations(const Model& model) {
+    const std::size_t n = model.dof();
+    Equations eq;
+    eq.T = model.T.expr;
+    eq.V = model.V.expr;
+    eq.L = eq.T - eq.V;
+
+    eq.momenta.resize(n);
+    eq.dLdq.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        eq.momenta[i] = GiNaC::diff(eq.L, model.coordinates[i].qd);
+        eq.dLdq[i] = GiNaC::diff(eq.L, model.coordinates[i].q);
+    }
+
+    // M = ∂p/∂q̇; for T quadratic in q̇ it is free of q̇, which is checked before anything else relies on it.
+    eq.M = GiNaC::matrix(n, n);
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = i; j < n; ++j) {
+            const GiNaC::ex mij = GiNaC::diff(eq.momenta[i], model.coordinates[j].qd);
+            eq.M(i, j) = mij;
+            eq.M(j, i) = mij;
+        }
+    check_quadratic_in_velocities(model, eq.M);
+
+    // f = ∂L/∂q − (∂p/∂q) q̇ − ∂p/∂t: everything of d/dt p − ∂L/∂q but the q̈ terms, moved to the right.
+    eq.f.resize(n);
+    eq.euler_lagrange.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        GiNaC::ex fi = eq.dLdq[i] - GiNaC::diff(eq.momenta[i], model.t);
+        for (const Coordinate& c : model.coordinates) fi -= GiNaC::diff(eq.momenta[i], c.q) * c.qd;
+        eq.f[i] = fi;
+        eq.euler_lagrange[i] = time_derivative(eq.momenta[i], model) - eq.dLdq[i];
+    }
+
+    // M must be invertible somewhere; positive definite wherever T is a proper kinetic energy.
+    bool singular_everywhere = true;
+    Eigen::MatrixXd last;
+    for (unsigned seed = 11; seed <= 13; ++seed) {
+        last = evaluate(eq.M, random_point(model, seed));
+        Eigen::FullPivLU<Eigen::MatrixXd> lu(last);
+        lu.setThreshold(1e-10);
+        if (lu.rank() == static_cast<Eigen::Index>(n)) {
+            singular_everywhere = false;
+            Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(last);
+            if (es.eigenvalues().minCoeff() <= 0) {
+                std::ostringstream os;
+                os << "the mass matrix is not positive definite at a sample point (eigenvalues "
+                   << es.eigenvalues().transpose() << "): check the signs in T";
+                eq.warnings.push_back(os.str());
+            }
+        }
+    }
+    if (n > 0 && singular_everywhere) {
+        Eigen::FullPivLU<Eigen::MatrixXd> lu(last);
+        lu.setThreshold(1e-10);
+        const Eigen::MatrixXd kernel = lu.kernel();
+        std::ostringstream os;
+        os << "the mass matrix ∂²T/∂q̇² is singular for every q (rank " << lu.rank() << " of " << n
+           << "): T does not involve the velocity combination";
+        for (std::size_t i = 0; i < n; ++i) {
+            const double k = kernel(i, 0) / kernel.col(0).cwiseAbs().maxCoeff();
+            if (std::abs(k) > 1e-9) os << " " << (k < 0 ? "-" : "+") << std::abs(k) << "*" << model.coordinates[i].name << "'";
+        }
+        throw ModelError(model.T.where, os.str());
+    }
+
+    // h = Σ q̇ ∂L/∂q̇ − L is conserved when L has no explicit t (no non-conservative forces here).
+    eq.energy = -eq.L;
+    for (std::size_t i = 0; i < n; ++i) eq.energy += model.coordinates[i].qd * eq.momenta[i];
+    // Expanded, the T₁ terms cancel and h reads T₂ − T₀ + V, as a person would write it.
+    eq.energy = eq.energy.expand();
+    eq.explicit_time = !GiNaC::diff(eq.L, model.t).expand().is_zero();
+    if (!eq.explicit_time)
+        eq.conserved.push_back({"h", "h", "L does not depend on t explicitly", eq.energy});
+
+    eq.cyclic.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        eq.cyclic[i] = is_zero(eq.dLdq[i], model);
+        if (eq.cyclic[i]) {
+            const Coordinate& c = model.coordinates[i];
+            eq.conserved.push_back({"p_" + c.name, "p_{" + c.latex + "}", c.name + " is cyclic (∂L/∂" + c.name + " = 0)",
+                                    eq.momenta[i]});
+        }
+    }
+    return eq;
+}
+
+}  // namespace eomgen

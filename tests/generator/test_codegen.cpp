@@ -1,0 +1,95 @@
+/** @file test_codegen.cpp  The canonical DAG, CSE and the C++ emitter. */
+#include "codegen/cpp_emitter.hpp"
+#include "codegen/expr_dag.hpp"
+#include "codegen/math_printer.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+namespace {
+
+using namespace eomgen::codegen;
+
+/// A symbol table of three "parameters" a, b, c and two "coordinates" x, y.
+struct Fixture {
+    GiNaC::symbol a{"a"}, b{"b"}, c{"c"}, x{"x"}, y{"y"}, t{"t"};
+    SymbolTable table;
+    Fixture() {
+        auto put = [this](SymbolKind k, int i, const std::string& n, const GiNaC::symbol& s) {
+            table.info.push_back({k, i, n, n, n, n});
+            table.exprs.push_back(s);
+        };
+        put(SymbolKind::Parameter, 0, "a", a);
+        put(SymbolKind::Parameter, 1, "b", b);
+        put(SymbolKind::Parameter, 2, "c", c);
+        put(SymbolKind::Coordinate, 0, "x", x);
+        put(SymbolKind::Coordinate, 1, "y", y);
+        put(SymbolKind::Time, 0, "t", t);
+    }
+    std::string body(const std::vector<Output>& outputs) {
+        ExprDag dag(table.info, table.exprs, true);
+        std::string s;
+        for (const std::string& l : emit_body(dag, outputs).lines) s += l + "\n";
+        return s;
+    }
+};
+
+}  // namespace
+
+TEST_CASE("GiNaC's sign choices do not change the emitted code", "[cse][determinism]") {
+    Fixture f;
+    // (c − a b)³ and −(a b − c)³ are the same number; GiNaC keeps them as different trees.
+    const GiNaC::ex e1 = GiNaC::pow(f.c - f.a * f.b, 3);
+    const GiNaC::ex e2 = -GiNaC::pow(f.a * f.b - f.c, 3);
+    REQUIRE(f.body({{"r", e1}}) == f.body({{"r", e2}}));
+    // sin(x − y) = −sin(y − x), cos(x − y) = cos(y − x).
+    REQUIRE(f.body({{"r", GiNaC::sin(f.x - f.y)}}) == f.body({{"r", -GiNaC::sin(f.y - f.x)}}));
+    REQUIRE(f.body({{"r", GiNaC::cos(f.x - f.y) * f.a}}) == f.body({{"r", f.a * GiNaC::cos(f.y - f.x)}}));
+}
+
+TEST_CASE("shared subexpressions are computed once, powers are products", "[cse]") {
+    Fixture f;
+    const GiNaC::ex s = GiNaC::sin(f.x);
+    const std::string code = f.body({{"r0", f.a * s * GiNaC::pow(f.b + f.c, 2)}, {"r1", s * (f.b + f.c) + f.y}});
+    INFO(code);
+    // sin(x) once, named; b + c once, as a temporary; its square as a product.
+    REQUIRE(code.find("const Scalar sin_x = sin(x);") != std::string::npos);
+    REQUIRE(code.find("const Scalar t0 = b + c;") != std::string::npos);
+    REQUIRE(code.find("t0*t0") != std::string::npos);
+    REQUIRE(code.find("pow(") == std::string::npos);
+    // x⁴ shares x² and is a square of it.
+    const std::string quartic = f.body({{"r", GiNaC::pow(f.x, 4) + GiNaC::pow(f.x, 2)}});
+    INFO(quartic);
+    REQUIRE(quartic.find("x*x") != std::string::npos);
+    REQUIRE(quartic.find("pow(") == std::string::npos);
+}
+
+TEST_CASE("rational coefficients and reciprocals are exact in the emitted code", "[cse]") {
+    Fixture f;
+    const std::string code = f.body({{"r", f.a / 6 - GiNaC::numeric(3, 4) * f.b / (f.x * f.y)}});
+    INFO(code);
+    REQUIRE(code.find("Scalar(1)/Scalar(6)") != std::string::npos);
+    REQUIRE(code.find("Scalar(3)/Scalar(4)") != std::string::npos);
+    REQUIRE(code.find("/(x*y)") != std::string::npos);
+}
+
+TEST_CASE("op counts count what the code does", "[cse]") {
+    Fixture f;
+    ExprDag dag(f.table.info, f.table.exprs, true);
+    const FunctionBody body = emit_body(dag, {{"r", f.a * f.b + GiNaC::sin(f.x)}});
+    REQUIRE(body.ops.multiplications == 1);
+    REQUIRE(body.ops.additions == 1);
+    REQUIRE(body.ops.function_calls == 1);
+    REQUIRE(body.ops.divisions == 0);
+}
+
+TEST_CASE("the math printer writes the model language and LaTeX", "[printer]") {
+    Fixture f;
+    MathPrinter p(f.table);
+    REQUIRE(p.print(GiNaC::numeric(1, 6) * f.a * GiNaC::pow(f.x, 2), MathStyle::Text) == "1/6*a*x^2");
+    REQUIRE(p.print(GiNaC::numeric(1, 6) * f.a * GiNaC::pow(f.x, 2), MathStyle::Latex) == "\\frac{1}{6} a x^{2}");
+    REQUIRE(p.print(f.a - f.b, MathStyle::Text) == "a - b");
+    REQUIRE(p.print(f.a / (f.b * f.c), MathStyle::Text) == "a/(b*c)");
+    REQUIRE(p.print(GiNaC::pow(GiNaC::sin(f.x), 2), MathStyle::Latex) == "\\sin^{2} x");
+}
