@@ -117,6 +117,7 @@ int run(const Options& o) {
     };
     auto f = [&params](const double& t, const State& x, State& xdot) { M::rhs(t, x, params, xdot); };
 
+    std::cout.precision(15);
     std::cout << "model:   " << M::name << " (" << M::title << (std::string(M::source).empty() ? "" : "; ")
               << M::source << ")\n";
     std::cout << "params: ";

@@ -135,12 +135,22 @@ Equations derive_equations(const Model& model) {
         lu.setThreshold(1e-10);
         const Eigen::MatrixXd kernel = lu.kernel();
         std::ostringstream os;
-        os << "the mass matrix ∂²T/∂q̇² is singular for every q (rank " << lu.rank() << " of " << n
-           << "): T does not involve the velocity combination";
+        os << "the mass matrix ∂²T/∂q̇² is singular for every q (rank " << lu.rank() << " of " << n << "): ";
+        // Name the velocity combination T cannot see, e.g. "y'" or "x' - y'".
+        Eigen::VectorXd k = kernel.col(0) / kernel.col(0).cwiseAbs().maxCoeff();
+        if (k.sum() < 0) k = -k;
+        std::string combination;
+        int terms = 0;
         for (std::size_t i = 0; i < n; ++i) {
-            const double k = kernel(i, 0) / kernel.col(0).cwiseAbs().maxCoeff();
-            if (std::abs(k) > 1e-9) os << " " << (k < 0 ? "-" : "+") << std::abs(k) << "*" << model.coordinates[i].name << "'";
+            const double c = k(Eigen::Index(i));
+            if (std::abs(c) < 1e-9) continue;
+            std::ostringstream term;
+            if (std::abs(std::abs(c) - 1) > 1e-9) term << std::abs(c) << "*";
+            term << model.coordinates[i].name << "'";
+            combination += (terms == 0 ? (c < 0 ? "-" : "") : (c < 0 ? " - " : " + ")) + term.str();
+            ++terms;
         }
+        os << (terms == 1 ? "T does not involve " : "T does not involve the combination ") << combination;
         throw ModelError(model.T.where, os.str());
     }
 
