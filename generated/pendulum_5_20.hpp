@@ -7,7 +7,7 @@
 //
 // Euler-Lagrange equations, d/dt(dL/dq') - dL/dq = 0:
 //   1/2*m*l*g*sin(theta) + 1/3*m*l^2*theta'' + l*M*a*phi'^2*sin(theta - phi) + l*M*a*phi''*cos(theta - phi) + l*M*g*sin(theta) + l^2*M*theta'' = 0
-//   l*M*a*theta'^2*sin(theta - phi) - l*M*a*theta''*cos(theta - phi) - M*a*g*sin(phi) - 3/2*M*a^2*phi'' = 0
+//   -l*M*a*theta'^2*sin(theta - phi) + l*M*a*theta''*cos(theta - phi) + M*a*g*sin(phi) + 3/2*M*a^2*phi'' = 0
 //
 // Conserved: h (L does not depend on t explicitly)
 #pragma once

@@ -85,7 +85,6 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     using eomgen::codegen::MathStyle;
     eomgen::codegen::MathPrinter pr(eomgen::codegen::symbol_table(model));
     auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), MathStyle::Text); };
-    auto PE = [&pr](const GiNaC::ex& e) { return pr.print_equation(e.expand(), MathStyle::Text); };
     os << model.name << ": " << model.title;
     if (!model.source.empty()) os << " (" << model.source << ")";
     os << "\n";
@@ -101,7 +100,7 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     os << "  T = " << P(eq.T) << "\n  V = " << P(eq.V) << "\n  L = T - V = " << P(eq.L) << "\n";
     os << rule("Euler-Lagrange equations  d/dt(dL/dq') - dL/dq = 0");
     for (std::size_t i = 0; i < model.dof(); ++i)
-        os << "  [" << model.coordinates[i].name << "]  " << PE(eq.euler_lagrange[i]) << " = 0\n";
+        os << "  [" << model.coordinates[i].name << "]  " << P(eq.euler_lagrange[i]) << " = 0\n";
     os << rule("Mass-matrix form  M(q,t) q'' = f(q,q',t)");
     for (std::size_t i = 0; i < model.dof(); ++i)
         for (std::size_t j = i; j < model.dof(); ++j)
@@ -129,7 +128,6 @@ void show_latex(const eomgen::Model& model, const eomgen::Equations& eq, std::os
     using eomgen::codegen::MathStyle;
     eomgen::codegen::MathPrinter pr(eomgen::codegen::symbol_table(model));
     auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), MathStyle::Latex); };
-    auto PE = [&pr](const GiNaC::ex& e) { return pr.print_equation(e.expand(), MathStyle::Latex); };
     os << "% " << model.name << ": " << model.title << (model.source.empty() ? "" : " (" + model.source + ")") << "\n";
     os << "\\begin{align}\n";
     os << "T &= " << P(eq.T) << " \\\\\n";
@@ -137,7 +135,7 @@ void show_latex(const eomgen::Model& model, const eomgen::Equations& eq, std::os
     os << "L &= " << P(eq.L) << "\n\\end{align}\n";
     os << "% Euler-Lagrange equations\n\\begin{align}\n";
     for (std::size_t i = 0; i < model.dof(); ++i)
-        os << PE(eq.euler_lagrange[i]) << " &= 0" << (i + 1 < model.dof() ? " \\\\" : "") << "\n";
+        os << P(eq.euler_lagrange[i]) << " &= 0" << (i + 1 < model.dof() ? " \\\\" : "") << "\n";
     os << "\\end{align}\n% energy function and momenta\n\\begin{align}\n";
     os << "h &= " << P(eq.energy);
     for (std::size_t i = 0; i < model.dof(); ++i)

@@ -337,7 +337,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "// V = " << printer.print(eq.V, MathStyle::Text) << "\n";
     std::string equations;
     for (std::size_t i = 0; i < n; ++i)
-        equations += "//   " + printer.print_equation(eq.euler_lagrange[i].expand(), MathStyle::Text) + " = 0\n";
+        equations += "//   " + printer.print(eq.euler_lagrange[i].expand(), MathStyle::Text) + " = 0\n";
     // Large systems' equations are for `eomgen show`, not for a comment nobody reads.
     if (equations.size() <= 4000)
         os << "//\n// Euler-Lagrange equations, d/dt(dL/dq') - dL/dq = 0:\n" << equations;

@@ -25,12 +25,6 @@ MathPrinter::MathPrinter(const SymbolTable& table) : dag_(table.info, table.expr
 
 std::string MathPrinter::print(const GiNaC::ex& e, MathStyle style) { return term(dag_.add(e), style); }
 
-std::string MathPrinter::print_equation(const GiNaC::ex& e, MathStyle style) {
-    Term t = dag_.add(e);
-    t.coeff = GiNaC::abs(t.coeff);
-    return term(t, style);
-}
-
 std::string MathPrinter::sum(const Node& n, const GiNaC::numeric& factor, MathStyle style) {
     std::string out;
     for (std::size_t i = 0; i < n.args.size(); ++i) {
@@ -92,8 +86,8 @@ std::string MathPrinter::node(NodeId id, MathStyle style, int context) {
             } else if (latex && n.name == "pow") {
                 out = "{" + node(n.args[0], style, kAtom) + "}^{" + args[1] + "}";
             } else if (latex && n.args.size() == 1 && dag_.node(n.args[0]).op == Op::Symbol) {
+                // \sin \theta: functions sort after symbols in a product, so no parentheses are needed.
                 out = latex_function(n.name) + " " + args[0];
-                strength = kProduct;
             } else {
                 std::string joined;
                 for (std::size_t i = 0; i < args.size(); ++i) joined += (i ? ", " : "") + args[i];

@@ -17,8 +17,6 @@ class MathPrinter {
 public:
     explicit MathPrinter(const SymbolTable& table);
     std::string print(const GiNaC::ex& e, MathStyle style);
-    /// e for "e = 0": the overall sign is dropped so the equation starts with a positive term.
-    std::string print_equation(const GiNaC::ex& e, MathStyle style);
 
 private:
     std::string term(const Term& t, MathStyle style);

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# The main job: set up, regenerate every model into generated/, show what was derived, simulate the
+# door (Ex. 30) and the plane pendulum (5-20), and print the results. CSV output goes to out/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/setup.sh
+build="${EOMGEN_BUILD_DIR:-build}"
+mkdir -p out
+
+echo "== eomgen generate models/*.toml -o generated"
+"$build/generator/eomgen" generate models/*.toml -o generated
+git status --short generated 2>/dev/null | sed 's/^/   changed: /' || true
+
+for model in models/door.toml models/pendulum_5_20.toml; do
+  echo
+  echo "== eomgen show $model"
+  "$build/generator/eomgen" show "$model"
+done
+
+echo
+echo "== the door closing: simulated with event location vs the closed form"
+"$build/examples/door_closing"
+
+echo
+echo "== eomgen-sim door --until psi=-pi/2"
+"$build/simulator/eomgen-sim" door --until psi=-pi/2 --t-end 100 --rtol 1e-12 --atol 1e-14 --csv out/door.csv
+
+echo
+echo "== eomgen-sim pendulum_5_20, 100 s, dopri5 at rtol 1e-12"
+"$build/simulator/eomgen-sim" pendulum_5_20 --t-end 100 --rtol 1e-12 --atol 1e-14 --init theta_dot=0.5 \
+  --init phi_dot=2 --csv out/pendulum_5_20.csv
+
+echo
+echo "== eomgen-sim pendulum_5_20, 1000 s, symplectic (variational midpoint) at dt = 0.01"
+"$build/simulator/eomgen-sim" pendulum_5_20 --t-end 1000 --method symplectic --dt 0.01 --init theta_dot=0.5 \
+  --init phi_dot=2 --csv out/pendulum_5_20_symplectic.csv
