@@ -1,0 +1,236 @@
+/** @file integrate.hpp  The integration driver: steps, events, samples at requested times, one result. */
+#pragma once
+/*
+ * Reference (namespace eomgen). Scalar = typename State::Scalar; State an Eigen column vector;
+ * f(const Scalar& t, const State& x, State& xdot) any callable.
+ *
+ *   integrate(f, t0, x0, t_end, options = {}, events = {}, sample_times = {}, observer = {})
+ *       -> IntegrationResult<State>; adaptive Dormand–Prince 5(4) (dopri5.hpp), options a
+ *       Dopri5Options<Scalar> {rtol, atol, h0, hmin, hmax, max_steps, safety, min_factor, max_factor, beta}.
+ *   integrate_rk4(f, t0, x0, t_end, dt, events = {}, sample_times = {}, observer = {})
+ *       -> IntegrationResult<State>; classic RK4 on the fixed grid t0 + k·dt (rk4.hpp).
+ *
+ *   events:       std::vector<Event<State>>, Event{name, g(t, x) -> Scalar, direction, action} with
+ *                 EventDirection::{Rising, Falling, Both} and EventAction::{Stop, Record}.
+ *   sample_times: std::vector<Scalar>, ordered in the direction of integration, within [t0, t_end].
+ *   observer:     Observer<State> = std::function<void(const Scalar& t, const State& x)>.
+ *   result:       t, x (where it ended), accepted_steps, rejected_steps, rhs_evaluations,
+ *                 events (EventHit{name, t, x}, in time order), samples (Sample{t, x}),
+ *                 stop_reason (StopReason::ReachedEnd or TerminalEvent), stopped_by (terminal event's name).
+ *
+ * Samples come from the stepper's dense output, so they cost no extra steps and do not shorten the steps.
+ * With an observer, each sample goes to observer(t, x) instead of result.samples (for streaming output);
+ * with an observer and no sample_times, the observer sees t0 and the end of every accepted step.
+ */
+
+#include "eomgen/dopri5.hpp"
+#include "eomgen/errors.hpp"
+#include "eomgen/events.hpp"
+#include "eomgen/rk4.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace eomgen {
+
+/// Why a run ended.
+enum class StopReason { ReachedEnd, TerminalEvent };
+
+/// The state at a requested time.
+template <class State>
+struct Sample {
+    typename State::Scalar t;
+    State x;
+};
+
+/// Called with (t, x) for each sample, or for each accepted step when no sample times are given.
+template <class State>
+using Observer = std::function<void(const typename State::Scalar& t, const State& x)>;
+
+/// Everything a run produced.
+template <class State>
+struct IntegrationResult {
+    using Scalar = typename State::Scalar;
+    Scalar t;  ///< where the run ended: t_end, or the terminal event's time
+    State x;   ///< the state there
+    std::size_t accepted_steps = 0;
+    std::size_t rejected_steps = 0;
+    std::size_t rhs_evaluations = 0;      ///< calls of f, including start-up and rejected trials
+    std::vector<EventHit<State>> events;  ///< located events, in time order, up to the end of the run
+    std::vector<Sample<State>> samples;   ///< at the requested times up to the end (empty with an observer)
+    StopReason stop_reason = StopReason::ReachedEnd;
+    std::string stopped_by;  ///< the terminal event's name; empty when t_end was reached
+};
+
+namespace detail {
+
+/// Keeps a parameter out of template argument deduction, so a lambda converts to the Observer.
+template <class T>
+struct NonDeduced {
+    using type = T;
+};
+
+/**
+ * The loop shared by both integrators, over any stepper with step(f), done(), t(), x(), t_prev(),
+ * dense(t, x) and the counters. After each accepted step [ta, tb]: every event whose g changed sign in
+ * its direction is located on the dense output by Brent's method to a few ulp of t; the earliest terminal
+ * one (ties: the first declared) cuts the step at t_stop; hits and samples up to t_stop are reported.
+ */
+template <class Stepper, class System, class State>
+IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State::Scalar& t0, const State& x0,
+                               const typename State::Scalar& t_end, const std::vector<Event<State>>& events,
+                               const std::vector<typename State::Scalar>& sample_times,
+                               const Observer<State>& observer) {
+    using Scalar = typename State::Scalar;
+    using std::abs;
+    using std::max;
+    const Scalar dir = t_end >= t0 ? Scalar(1) : Scalar(-1);
+    // "a is at or before b" in the direction of integration
+    const auto not_after = [dir](const Scalar& a, const Scalar& b) { return (a - b) * dir <= Scalar(0); };
+
+    for (std::size_t i = 0; i < sample_times.size(); ++i) {
+        const Scalar& s = sample_times[i];
+        if (!not_after(t0, s) || !not_after(s, t_end) || (i > 0 && !not_after(sample_times[i - 1], s)))
+            throw std::invalid_argument(
+                "integrate: sample times must lie in [t0, t_end] and be ordered in the direction of "
+                "integration");
+    }
+    for (const auto& event : events)
+        if (!event.g) throw std::invalid_argument("integrate: event '" + event.name + "' has no function g");
+
+    IntegrationResult<State> result;
+    result.t = t0;
+    result.x = x0;
+    const bool per_step = sample_times.empty() && observer;
+    const auto emit = [&](const Scalar& t, const State& x) {
+        if (observer)
+            observer(t, x);
+        else
+            result.samples.push_back({t, x});
+    };
+    const auto evaluate_g = [&](const Event<State>& event, const Scalar& t, const State& x) {
+        const Scalar value = event.g(t, x);
+        if (!std::isfinite(value))
+            throw NonFiniteState(describe_state("event '" + event.name + "' function is not finite", t, x),
+                                 double(t));
+        return value;
+    };
+
+    std::size_t next_sample = 0;
+    while (next_sample < sample_times.size() && sample_times[next_sample] == t0) emit(t0, x0), ++next_sample;
+    if (per_step) observer(t0, x0);
+
+    std::vector<Scalar> g_prev(events.size()), g_now(events.size());
+    for (std::size_t i = 0; i < events.size(); ++i) g_prev[i] = evaluate_g(events[i], t0, x0);
+
+    struct Crossing {
+        std::size_t index;
+        Scalar t;
+    };
+    std::vector<Crossing> crossings;
+    State x_tmp = x0;
+    const Scalar eps = std::numeric_limits<Scalar>::epsilon();
+
+    while (!stepper.done()) {
+        stepper.step(f);
+        const Scalar ta = stepper.t_prev(), tb = stepper.t();
+
+        crossings.clear();
+        for (std::size_t i = 0; i < events.size(); ++i) {
+            g_now[i] = evaluate_g(events[i], tb, stepper.x());
+            if (!crosses(g_prev[i], g_now[i], events[i].direction)) continue;
+            const auto g_dense = [&](const Scalar& s) {
+                stepper.dense(s, x_tmp);
+                return events[i].g(s, x_tmp);
+            };
+            const Scalar tol = Scalar(2) * eps * max(abs(ta), abs(tb));
+            crossings.push_back({i, find_root_brent(g_dense, ta, g_prev[i], tb, g_now[i], tol)});
+        }
+        std::stable_sort(crossings.begin(), crossings.end(), [dir](const Crossing& a, const Crossing& b) {
+            return (a.t - b.t) * dir < Scalar(0);
+        });
+
+        Scalar t_stop = tb;
+        const Crossing* terminal = nullptr;
+        for (const auto& c : crossings)
+            if (events[c.index].action == EventAction::Stop) {
+                terminal = &c;
+                t_stop = c.t;
+                break;
+            }
+        for (const auto& c : crossings) {
+            if (!not_after(c.t, t_stop)) break;
+            stepper.dense(c.t, x_tmp);
+            result.events.push_back({events[c.index].name, c.t, x_tmp});
+        }
+        for (; next_sample < sample_times.size() && not_after(sample_times[next_sample], t_stop);
+             ++next_sample) {
+            stepper.dense(sample_times[next_sample], x_tmp);
+            emit(sample_times[next_sample], x_tmp);
+        }
+        if (terminal) {
+            stepper.dense(t_stop, x_tmp);
+            if (per_step) observer(t_stop, x_tmp);
+            result.t = t_stop;
+            result.x = x_tmp;
+            result.stop_reason = StopReason::TerminalEvent;
+            result.stopped_by = events[terminal->index].name;
+            break;
+        }
+        if (per_step) observer(tb, stepper.x());
+        std::swap(g_prev, g_now);
+    }
+    if (result.stop_reason == StopReason::ReachedEnd) {
+        result.t = stepper.t();
+        result.x = stepper.x();
+    }
+    result.accepted_steps = stepper.accepted_steps();
+    result.rejected_steps = stepper.rejected_steps();
+    result.rhs_evaluations = stepper.rhs_evaluations();
+    return result;
+}
+
+}  // namespace detail
+
+/**
+ * Integrates x' = f(t, x) from (t0, x0) to t_end (t_end < t0 runs backwards) with adaptive Dormand–Prince
+ * 5(4) (see Dopri5 for the error control, the dense output and the errors thrown), locating `events` and
+ * sampling the dense output at `sample_times` (ordered, within [t0, t_end]; those after a terminal event
+ * are not produced). See the reference at the top of this file.
+ */
+template <class System, class State>
+IntegrationResult<State> integrate(System&& f, const typename State::Scalar& t0, const State& x0,
+                                   const typename State::Scalar& t_end,
+                                   const Dopri5Options<typename State::Scalar>& options = {},
+                                   const std::vector<Event<State>>& events = {},
+                                   const std::vector<typename State::Scalar>& sample_times = {},
+                                   const typename detail::NonDeduced<Observer<State>>::type& observer = {}) {
+    Dopri5<State> stepper(f, t0, x0, t_end, options);
+    return detail::drive(stepper, f, t0, x0, t_end, events, sample_times, observer);
+}
+
+/**
+ * As integrate(), with classic RK4 on the fixed grid t0 + k·dt (the last step shortened to end at t_end;
+ * see Rk4Stepper). Events and samples use RK4's cubic Hermite dense output. Throws NonFiniteState when
+ * the state or f becomes NaN or infinite.
+ */
+template <class System, class State>
+IntegrationResult<State> integrate_rk4(
+    System&& f, const typename State::Scalar& t0, const State& x0, const typename State::Scalar& t_end,
+    const typename State::Scalar& dt, const std::vector<Event<State>>& events = {},
+    const std::vector<typename State::Scalar>& sample_times = {},
+    const typename detail::NonDeduced<Observer<State>>::type& observer = {}) {
+    Rk4Stepper<State> stepper(f, t0, x0, t_end, dt);
+    return detail::drive(stepper, f, t0, x0, t_end, events, sample_times, observer);
+}
+
+}  // namespace eomgen

@@ -1,0 +1,127 @@
+/** @file output.hpp  Samples as CSV at full precision, written to a temporary file and renamed into place. */
+#pragma once
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <system_error>
+#include <type_traits>
+#include <vector>
+
+namespace eomgen {
+
+/// A CSV field, quoted per RFC 4180 when it holds a comma, a quote or a line break.
+inline std::string csv_field(const std::string& text) {
+    if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (const char c : text) {
+        if (c == '"') quoted += '"';
+        quoted += c;
+    }
+    return quoted + "\"";
+}
+
+/**
+ * Writes `t,<state names...>,<extra names...>` and then one row per call of write_row, every number at
+ * std::numeric_limits<Scalar>::max_digits10 significant digits (so each value reads back exactly).
+ *
+ * Rows go to `<path>.tmp` and commit() renames that over `path` (atomic on POSIX within one directory),
+ * so a reader never sees a half-written file; if the writer is destroyed without commit(), e.g. because
+ * the simulation threw, the temporary file is removed and `path` is left as it was. Throws
+ * std::runtime_error when the file cannot be opened, written or renamed.
+ */
+template <class Scalar>
+class CsvWriter {
+  public:
+    CsvWriter(const std::string& path, const std::vector<std::string>& state_names,
+              const std::vector<std::string>& extra_names = {})
+        : path_(path), tmp_path_(path + ".tmp"), columns_(state_names.size() + extra_names.size()) {
+        out_.open(tmp_path_, std::ios::out | std::ios::trunc);
+        if (!out_) throw std::runtime_error("cannot open '" + tmp_path_ + "' for writing");
+        out_.precision(std::numeric_limits<Scalar>::max_digits10);
+        out_ << "t";
+        for (const auto& name : state_names) out_ << ',' << csv_field(name);
+        for (const auto& name : extra_names) out_ << ',' << csv_field(name);
+        out_ << '\n';
+        n_state_ = state_names.size();
+    }
+    CsvWriter(const CsvWriter&) = delete;
+    CsvWriter& operator=(const CsvWriter&) = delete;
+
+    ~CsvWriter() {
+        if (committed_) return;
+        out_.close();
+        std::error_code ignored;
+        std::filesystem::remove(tmp_path_, ignored);
+    }
+
+    /// One row: t, the state x (size = number of state names) and the extras (any indexable, e.g. an
+    /// Eigen vector or std::array, size = number of extra names).
+    template <class Derived, class Extra>
+    void write_row(const Scalar& t, const Eigen::MatrixBase<Derived>& x, const Extra& extra) {
+        const std::size_t n_extra = static_cast<std::size_t>(extra.size());
+        if (static_cast<std::size_t>(x.size()) != n_state_ || n_state_ + n_extra != columns_)
+            throw std::invalid_argument("CsvWriter: row does not match the header of '" + path_ + "'");
+        out_ << t;
+        for (Eigen::Index i = 0; i < x.size(); ++i) out_ << ',' << Scalar(x(i));
+        for (std::size_t i = 0; i < n_extra; ++i) out_ << ',' << Scalar(extra[i]);
+        out_ << '\n';
+        if (!out_) throw std::runtime_error("error writing '" + tmp_path_ + "'");
+    }
+
+    /// A row without extra columns.
+    template <class Derived>
+    void write_row(const Scalar& t, const Eigen::MatrixBase<Derived>& x) {
+        write_row(t, x, std::vector<Scalar>{});
+    }
+
+    /// Flushes, closes and renames the temporary file over `path`.
+    void commit() {
+        out_.flush();
+        const bool ok = static_cast<bool>(out_);
+        out_.close();
+        if (!ok || out_.fail()) throw std::runtime_error("error writing '" + tmp_path_ + "'");
+        std::error_code ec;
+        std::filesystem::rename(tmp_path_, path_, ec);
+        if (ec)
+            throw std::runtime_error("cannot rename '" + tmp_path_ + "' to '" + path_ + "': " + ec.message());
+        committed_ = true;
+    }
+
+  private:
+    std::string path_, tmp_path_;
+    std::ofstream out_;
+    std::size_t columns_, n_state_ = 0;
+    bool committed_ = false;
+};
+
+/**
+ * Writes `samples` (a range of objects with members t and x, e.g. IntegrationResult::samples) to `path`
+ * as CSV, with extra columns from extra(t, x), which returns something indexable of extra_names.size()
+ * values (e.g. std::array{energy}). Atomic as CsvWriter: on any error `path` is untouched.
+ */
+template <class Samples, class Extra>
+void write_csv(const std::string& path, const std::vector<std::string>& state_names,
+               const std::vector<std::string>& extra_names, const Samples& samples, Extra&& extra) {
+    using Scalar = std::decay_t<decltype(std::begin(samples)->t)>;
+    CsvWriter<Scalar> writer(path, state_names, extra_names);
+    for (const auto& sample : samples) writer.write_row(sample.t, sample.x, extra(sample.t, sample.x));
+    writer.commit();
+}
+
+/// write_csv with the state columns only.
+template <class Samples>
+void write_csv(const std::string& path, const std::vector<std::string>& state_names, const Samples& samples) {
+    using Scalar = std::decay_t<decltype(std::begin(samples)->t)>;
+    CsvWriter<Scalar> writer(path, state_names);
+    for (const auto& sample : samples) writer.write_row(sample.t, sample.x);
+    writer.commit();
+}
+
+}  // namespace eomgen
