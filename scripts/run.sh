@@ -34,3 +34,16 @@ echo
 echo "== eomgen-sim pendulum_5_20, 1000 s, symplectic (variational midpoint) at dt = 0.01"
 "$build/simulator/eomgen-sim" pendulum_5_20 --t-end 1000 --method symplectic --dt 0.01 --init theta_dot=0.5 \
   --init phi_dot=2 --csv out/pendulum_5_20_symplectic.csv
+
+echo
+echo "== eomgen show models/rolling_sphere.toml (constraints, multipliers, integrability)"
+"$build/generator/eomgen" show models/rolling_sphere.toml | sed -n '/^Constraints/,/^Energy function/p'
+
+echo
+echo "== eomgen-sim rolling_sphere, 200 s: invariants and constraint residuals (CSV: out/rolling_sphere.csv)"
+"$build/simulator/eomgen-sim" rolling_sphere --t-end 200 --samples 400 --rtol 1e-12 --atol 1e-14 \
+  --csv out/rolling_sphere.csv
+
+echo
+echo "== eomgen-sim dumbbell_5_18: the drive's torque (multiplier of 'tilt') = -2 m l^2 omega^2 sin(theta) cos(theta)"
+"$build/simulator/eomgen-sim" dumbbell_5_18 --t-end 5 | grep -E "multiplier|residuals"

@@ -1,5 +1,6 @@
 /** @file main.cpp  eomgen-sim: integrate a generated model, print what happened, optionally write CSV. */
 #include "eomgen/integrate.hpp"
+#include "eomgen/constraints.hpp"
 #include "eomgen/output.hpp"
 #include "eomgen/symplectic.hpp"
 #include "model_list.hpp"
@@ -13,6 +14,7 @@
 #include <limits>
 #include <map>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace {
@@ -23,6 +25,12 @@ struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
+/// Models with constraints have n_constraints, multipliers() and constraint_residuals().
+template <class M, class = void>
+struct is_constrained : std::false_type {};
+template <class M>
+struct is_constrained<M, std::void_t<decltype(M::n_constraints)>> : std::true_type {};
+
 struct Options {
     std::string model;
     double t_end = 10;
@@ -32,6 +40,7 @@ struct Options {
     std::string csv, until;
     int samples = 200;
     std::size_t max_steps = 10000000;
+    bool project_initial = false;
 };
 
 /// A number as written on the command line: "0.5", "-pi/2", "2*pi", "pi/4", "1e-3".
@@ -93,6 +102,44 @@ std::string list(const Array& names) {
     return s;
 }
 
+/// Writes the samples with energy, conserved quantities and, for constrained models, the constraint
+/// residuals and multipliers as extra columns.
+template <class M>
+void write_samples(const Options& o, const typename M::Params& params,
+                   const std::vector<eomgen::Sample<typename M::State>>& samples) {
+    using State = typename M::State;
+    using Config = typename M::Config;
+    if (o.csv.empty()) return;
+    std::vector<std::string> names(M::state_names.begin(), M::state_names.end());
+    std::vector<std::string> extra{"energy"};
+    for (const char* c : M::conserved_names)
+        if (std::string(c) != "h") extra.push_back(c);
+    if constexpr (is_constrained<M>::value)
+        for (const char* c : M::constraint_names) {
+            extra.push_back(std::string("residual_") + c);
+            extra.push_back(std::string("lambda_") + c);
+        }
+    eomgen::write_csv(o.csv, names, extra, samples, [&params](double t, const State& x) {
+        const Config q = x.template head<M::nq>(), qd = x.template tail<M::nq>();
+        typename M::Conserved c;
+        M::conserved(t, q, qd, params, c);
+        std::vector<double> row{M::energy(t, q, qd, params)};
+        for (int k = 0; k < M::n_conserved; ++k)
+            if (std::string(M::conserved_names[std::size_t(k)]) != "h") row.push_back(c(k));
+        if constexpr (is_constrained<M>::value) {
+            typename M::ConstraintVector g, v, lambda;
+            M::constraint_residuals(t, q, qd, params, g, v);
+            M::multipliers(t, x, params, lambda);
+            for (int k = 0; k < M::n_constraints; ++k) {
+                row.push_back(std::max(std::abs(g(k)), std::abs(v(k))));
+                row.push_back(lambda(k));
+            }
+        }
+        return row;
+    });
+    std::cout << "csv:     " << o.csv << " (" << samples.size() << " rows)\n";
+}
+
 template <class M>
 int run(const Options& o) {
     using State = typename M::State;
@@ -138,8 +185,44 @@ int run(const Options& o) {
     double t_final = 0;
     State x_final = x0;
     std::string how;
+    if constexpr (is_constrained<M>::value) {
+        if (o.method == "dopri5") {
+            if (!o.until.empty()) throw UsageError("--until is not available for models with constraints yet");
+            eomgen::Dopri5Options<double> opt;
+            opt.rtol = o.rtol;
+            opt.atol = o.atol;
+            opt.max_steps = o.max_steps;
+            const auto r = eomgen::integrate_constrained<M>(params, 0.0, x0, sample_times, opt, o.project_initial);
+            // Energy drift from the (possibly projected) start, not from the state given.
+            const double h_start = h(r.run.samples.front().t, r.run.samples.front().x);
+            for (const auto& s : r.run.samples)
+                max_drift = std::max(max_drift, std::abs(h(s.t, s.x) - h_start) / std::max(std::abs(h_start), 1e-300));
+            samples = r.run.samples;
+            typename M::ConstraintVector lambda;
+            M::multipliers(r.run.t, r.run.x, params, lambda);
+            std::cout << "method:  dopri5 with projection onto the constraints after each of " << o.samples
+                      << " segments, rtol " << o.rtol << ", atol " << o.atol << "\n";
+            std::cout << "steps:   " << r.run.accepted_steps << " accepted, " << r.run.rejected_steps << " rejected, "
+                      << r.run.rhs_evaluations << " right-hand sides\n";
+            std::cout << "constraint residuals before projection: position " << r.max_position_residual
+                      << ", velocity " << r.max_velocity_residual << "\n";
+            for (int k = 0; k < M::n_constraints; ++k)
+                std::cout << "multiplier " << M::constraint_names[std::size_t(k)] << " = " << lambda(k) << " at the end\n";
+            t_final = r.run.t;
+            x_final = r.run.x;
+            std::cout << "t:       " << t_final << "\n";
+            for (int i = 0; i < M::nx; ++i)
+                std::cout << "  " << M::state_names[std::size_t(i)] << " = " << x_final(i) << "\n";
+            std::cout << "energy h: " << h_start << " at t = 0, " << h(t_final, x_final)
+                      << " at the end; max |dh|/|h0| = " << max_drift << "\n";
+            write_samples<M>(o, params, samples);
+            return kExitOk;
+        }
+    }
     if (o.method == "symplectic") {
         if (!(o.dt > 0)) throw UsageError("--method symplectic needs --dt");
+        if (is_constrained<M>::value || M::has_generalized_forces)
+            throw UsageError("--method symplectic integrates unconstrained models without forces; use dopri5");
         if (!o.until.empty()) throw UsageError("--until needs --method dopri5 or rk4 (events use dense output)");
         eomgen::VariationalIntegrator<M> vi(params, o.dt);
         vi.set_state(0.0, x0.template head<M::nq>(), x0.template tail<M::nq>());
@@ -149,7 +232,8 @@ int run(const Options& o) {
         for (std::size_t k = 1; k <= steps; ++k) {
             vi.step();
             State x;
-            x << vi.q(), vi.velocity();
+            x.template head<M::nq>() = vi.q();  // not `x << q, qd`: g++ 12 warns falsely for 1×1 blocks
+            x.template tail<M::nq>() = vi.velocity();
             track(vi.t(), x);
             if (k % every == 0 || k == steps) samples.push_back({vi.t(), x});
             x_final = x;
@@ -202,22 +286,7 @@ int run(const Options& o) {
     for (int i = 0; i < M::nx; ++i) std::cout << "  " << M::state_names[std::size_t(i)] << " = " << x_final(i) << "\n";
     std::cout << "energy h: " << h0 << " at t = 0, " << h(t_final, x_final) << " at the end; max |dh|/|h0| = "
               << max_drift << (M::explicit_time ? "  (L depends on t: h need not be conserved)" : "") << "\n";
-    if (!o.csv.empty()) {
-        std::vector<std::string> names(M::state_names.begin(), M::state_names.end());
-        std::vector<std::string> extra{"energy"};
-        for (const char* c : M::conserved_names)
-            if (std::string(c) != "h") extra.push_back(c);
-        eomgen::write_csv(o.csv, names, extra, samples, [&params](double t, const State& x) {
-            const Config q = x.template head<M::nq>(), qd = x.template tail<M::nq>();
-            typename M::Conserved c;
-            M::conserved(t, q, qd, params, c);
-            std::vector<double> row{M::energy(t, q, qd, params)};
-            for (int k = 0; k < M::n_conserved; ++k)
-                if (std::string(M::conserved_names[std::size_t(k)]) != "h") row.push_back(c(k));
-            return row;
-        });
-        std::cout << "csv:     " << o.csv << " (" << samples.size() << " rows)\n";
-    }
+    write_samples<M>(o, params, samples);
     return kExitOk;
 }
 
@@ -242,6 +311,8 @@ int main(int argc, char** argv) {
     app.add_option("--csv", o.csv, "Write samples (state, energy, conserved quantities) to this CSV file");
     app.add_option("--samples", o.samples, "Number of sample intervals on [0, t_end] for the CSV")->capture_default_str();
     app.add_option("--max-steps", o.max_steps, "Largest number of steps (dopri5)")->capture_default_str();
+    app.add_flag("--project-initial", o.project_initial,
+                 "Project inconsistent initial conditions onto the constraints instead of refusing them");
     CLI11_PARSE(app, argc, argv);
 
     const std::vector<std::string> known = {

@@ -281,6 +281,11 @@ std::string emit_function(const FunctionSpec& f, const SymbolTable& table) {
     }
     for (const auto& [type, name] : f.inputs)
         if (!read.count(name)) os << "        static_cast<void>(" << name << ");\n";
+    // An output with nothing to hold (e.g. no conserved quantity) is still a parameter.
+    for (const auto& [type, name] : f.outputs)
+        if (std::none_of(f.values.begin(), f.values.end(),
+                         [&](const Output& o) { return o.target.rfind(name + "(", 0) == 0; }))
+            os << "        static_cast<void>(" << name << ");\n";
     // using-declarations so that overloads for long double (and other scalars, by ADL) are found.
     for (const std::string& fn : body.functions) os << "        using std::" << fn << ";\n";
     for (const std::string& l : locals) os << "        " << l << "\n";
@@ -343,12 +348,16 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         os << "//\n// Euler-Lagrange equations, d/dt(dL/dq') - dL/dq = 0:\n" << equations;
     else
         os << "//\n// Euler-Lagrange equations: see `eomgen show " << model_file << "`.\n";
+    for (const ConstraintEquations& c : eq.constraints)
+        os << "// Constraint " << c.name << " (" << (c.kind == ConstraintKind::Holonomic ? "holonomic" : "nonholonomic")
+           << "): " << printer.print(c.kind == ConstraintKind::Holonomic ? c.position : c.velocity, MathStyle::Text)
+           << " = 0\n";
     os << "//\n// Conserved: ";
     if (eq.conserved.empty()) os << "nothing found";
     for (std::size_t i = 0; i < eq.conserved.size(); ++i)
         os << (i ? "; " : "") << eq.conserved[i].name << " (" << eq.conserved[i].reason << ")";
     os << "\n#pragma once\n\n";
-    os << "#include \"eomgen/linear_solve.hpp\"\n\n";
+    os << (eq.constraints.empty() ? "#include \"eomgen/linear_solve.hpp\"\n\n" : "#include \"eomgen/constraints.hpp\"\n\n");
     os << "#include <Eigen/Core>\n\n#include <array>\n#include <cmath>\n#include <string_view>\n\n";
     os << "namespace eomgen::models::" << model.name << " {\n\n";
     os << "/// x = [q, q'] with q = " << string_array(coords) << "; M(q,t) q'' = f(q,q',t) solved in rhs().\n";
@@ -360,11 +369,30 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "    static constexpr int nx = " << 2 * n << ";\n";
     os << "    static constexpr int n_params = " << params.size() << ";\n";
     os << "    static constexpr int n_conserved = " << conserved.size() << ";\n";
-    os << "    static constexpr bool explicit_time = " << (eq.explicit_time ? "true" : "false") << ";\n\n";
+    os << "    static constexpr bool explicit_time = " << (eq.explicit_time ? "true" : "false") << ";\n";
+    const bool forced = std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(),
+                                    [](const GiNaC::ex& q) { return !q.is_zero(); });
+    os << "    /// Generalized forces Q or dissipation R act (the variational integrator does not apply).\n";
+    os << "    static constexpr bool has_generalized_forces = " << (forced ? "true" : "false") << ";\n";
+    const std::size_t nc = eq.constraints.size();
+    std::vector<std::string> constraint_names;
+    for (const ConstraintEquations& c : eq.constraints) constraint_names.push_back(c.name);
+    if (nc > 0) {
+        os << "    static constexpr int n_constraints = " << nc << ";\n";
+        os << "    /// Baumgarte stabilisation used by rhs(): A q'' = gamma - 2 alpha (A q' + b) - beta^2 g.\n";
+        os << "    static constexpr double baumgarte_alpha = " << shortest_decimal(model.baumgarte_alpha) << ";\n";
+        os << "    static constexpr double baumgarte_beta = " << shortest_decimal(model.baumgarte_beta) << ";\n";
+    }
+    os << "\n";
     os << "    using Config = Eigen::Matrix<Scalar, nq, 1>;\n";
     os << "    using State = Eigen::Matrix<Scalar, nx, 1>;\n";
     os << "    using MassMatrix = Eigen::Matrix<Scalar, nq, nq>;\n";
-    os << "    using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;\n\n";
+    os << "    using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;\n";
+    if (nc > 0) {
+        os << "    using ConstraintVector = Eigen::Matrix<Scalar, n_constraints, 1>;\n";
+        os << "    using ConstraintJacobian = Eigen::Matrix<Scalar, n_constraints, nq>;\n";
+    }
+    os << "\n";
     os << "    /// Parameters with the model file's defaults.\n    struct Params {\n";
     for (const Parameter& p : model.parameters) {
         os << "        Scalar " << p.name << " = " << double_literal(p.value) << ";";
@@ -378,7 +406,16 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "    static constexpr std::array<const char*, nx> state_names" << string_array(states) << ";\n";
     os << "    static constexpr std::array<const char*, n_params> param_names" << string_array(params) << ";\n";
     os << "    static constexpr std::array<const char*, n_conserved> conserved_names" << string_array(conserved)
-       << ";\n\n";
+       << ";\n";
+    if (nc > 0) {
+        os << "    static constexpr std::array<const char*, n_constraints> constraint_names" << string_array(constraint_names)
+           << ";\n";
+        os << "    static constexpr std::array<bool, n_constraints> constraint_is_holonomic{";
+        for (std::size_t k = 0; k < nc; ++k)
+            os << (k ? ", " : "") << (eq.constraints[k].kind == ConstraintKind::Holonomic ? "true" : "false");
+        os << "};\n";
+    }
+    os << "\n";
     os << "    /// Sets the parameter called `name`; false when there is none.\n";
     os << "    static bool set_param(Params& p_, std::string_view name_, const Scalar& value_) {\n";
     for (const Parameter& p : model.parameters)
@@ -426,15 +463,62 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         {"Conserved quantities, in the order of conserved_names.", "void", "conserved", {t_in, q_in, qd_in, p_in},
          {{"Conserved", "out_"}}, cons},
     };
+    if (nc > 0) {
+        std::vector<Output> jac_gamma, residuals, all = both;
+        for (std::size_t k = 0; k < nc; ++k) {
+            const ConstraintEquations& c = eq.constraints[k];
+            for (std::size_t i = 0; i < n; ++i) jac_gamma.push_back({fmt::format("A_({}, {})", k, i), c.jacobian[i]});
+            jac_gamma.push_back({fmt::format("gamma_({})", k), c.gamma});
+        }
+        for (std::size_t k = 0; k < nc; ++k) {
+            residuals.push_back({fmt::format("position_({})", k), eq.constraints[k].position});
+            residuals.push_back({fmt::format("velocity_({})", k), eq.constraints[k].velocity});
+        }
+        all.insert(all.end(), jac_gamma.begin(), jac_gamma.end());
+        all.insert(all.end(), residuals.begin(), residuals.end());
+        const std::pair<std::string, std::string> A_out{"ConstraintJacobian", "A_"}, gamma_out{"ConstraintVector", "gamma_"},
+            pos_out{"ConstraintVector", "position_"}, vel_out{"ConstraintVector", "velocity_"};
+        functions.push_back({"Constraint Jacobian A (c = A q' + b) and acceleration level A q'' = gamma.", "void",
+                             "constraints", {t_in, q_in, qd_in, p_in}, {A_out, gamma_out}, jac_gamma});
+        functions.push_back({"Residuals: g(q,t) of holonomic constraints (0 for nonholonomic ones) and c = A q' + b.",
+                             "void", "constraint_residuals", {t_in, q_in, qd_in, p_in}, {pos_out, vel_out}, residuals});
+        functions.push_back({"M, f, A, gamma and the residuals together, sharing their subexpressions.", "void",
+                             "constrained_dynamics", {t_in, q_in, qd_in, p_in},
+                             {{"MassMatrix", "M_"}, {"Config", "f_"}, A_out, gamma_out, pos_out, vel_out}, all});
+    }
     for (const FunctionSpec& f : functions) os << emit_function(f, table) << "\n";
 
-    os << "    /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.\n";
-    os << "    static void rhs(const Scalar& t, const State& x_, const Params& p_, State& xdot_) {\n";
-    os << "        const Config q_ = x_.template head<nq>();\n";
-    os << "        const Config qd_ = x_.template tail<nq>();\n";
-    os << "        MassMatrix M_;\n        Config f_;\n        dynamics(t, q_, qd_, p_, M_, f_);\n";
-    os << "        Config qdd_;\n        eomgen::solve_mass_matrix(M_, f_, qdd_, t, x_);\n";
-    os << "        xdot_.template head<nq>() = qd_;\n        xdot_.template tail<nq>() = qdd_;\n    }\n";
+    if (nc == 0) {
+        os << "    /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.\n";
+        os << "    static void rhs(const Scalar& t, const State& x_, const Params& p_, State& xdot_) {\n";
+        os << "        const Config q_ = x_.template head<nq>();\n";
+        os << "        const Config qd_ = x_.template tail<nq>();\n";
+        os << "        MassMatrix M_;\n        Config f_;\n        dynamics(t, q_, qd_, p_, M_, f_);\n";
+        os << "        Config qdd_;\n        eomgen::solve_mass_matrix(M_, f_, qdd_, t, x_);\n";
+        os << "        xdot_.template head<nq>() = qd_;\n        xdot_.template tail<nq>() = qdd_;\n    }\n";
+    } else {
+        os << "    /// q'' and the multipliers lambda of M q'' = f + A^T lambda, A q'' = gamma - 2 alpha c - beta^2 g,\n"
+              "    /// by a Schur complement on M's Cholesky factor (eomgen::solve_constrained). lambda_k is the\n"
+              "    /// generalized force of constraint k, its sign that of the constraint as written.\n";
+        os << "    static void accelerations(const Scalar& t, const State& x_, const Params& p_, const Scalar& alpha_,\n"
+              "                              const Scalar& beta_, Config& qdd_, ConstraintVector& lambda_) {\n";
+        os << "        const Config q_ = x_.template head<nq>();\n";
+        os << "        const Config qd_ = x_.template tail<nq>();\n";
+        os << "        MassMatrix M_;\n        Config f_;\n        ConstraintJacobian A_;\n"
+              "        ConstraintVector gamma_, position_, velocity_;\n";
+        os << "        constrained_dynamics(t, q_, qd_, p_, M_, f_, A_, gamma_, position_, velocity_);\n";
+        os << "        gamma_ -= Scalar(2) * alpha_ * velocity_ + beta_ * beta_ * position_;\n";
+        os << "        eomgen::solve_constrained(M_, f_, A_, gamma_, qdd_, lambda_, t, x_);\n    }\n\n";
+        os << "    /// x' = [q', q''] with the model's Baumgarte parameters.\n";
+        os << "    static void rhs(const Scalar& t, const State& x_, const Params& p_, State& xdot_) {\n";
+        os << "        Config qdd_;\n        ConstraintVector lambda_;\n";
+        os << "        accelerations(t, x_, p_, Scalar(baumgarte_alpha), Scalar(baumgarte_beta), qdd_, lambda_);\n";
+        os << "        xdot_.template head<nq>() = x_.template tail<nq>();\n        xdot_.template tail<nq>() = qdd_;\n    }\n\n";
+        os << "    /// The multipliers at state x (with the model's Baumgarte parameters).\n";
+        os << "    static void multipliers(const Scalar& t, const State& x_, const Params& p_, ConstraintVector& lambda_) {\n";
+        os << "        Config qdd_;\n";
+        os << "        accelerations(t, x_, p_, Scalar(baumgarte_alpha), Scalar(baumgarte_beta), qdd_, lambda_);\n    }\n";
+    }
     os << "};\n\n}  // namespace eomgen::models::" << model.name << "\n";
     return os.str();
 }

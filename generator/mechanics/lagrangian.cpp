@@ -1,8 +1,11 @@
 /** @file lagrangian.cpp  Euler–Lagrange equations by the chain rule on plain symbols. */
 #include "mechanics/lagrangian.hpp"
 
+#include "mechanics/constraints.hpp"
+
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <sstream>
@@ -102,15 +105,23 @@ Equations derive_equations(const Model& model) {
         }
     check_quadratic_in_velocities(model, eq.M);
 
-    // f = ∂L/∂q − (∂p/∂q) q̇ − ∂p/∂t: everything of d/dt p − ∂L/∂q but the q̈ terms, moved to the right.
+    // f = ∂L/∂q − (∂p/∂q) q̇ − ∂p/∂t + Q − ∂R/∂q̇: everything of d/dt p − ∂L/∂q − Q + ∂R/∂q̇ but the
+    // q̈ terms, moved to the right.
     eq.f.resize(n);
     eq.euler_lagrange.resize(n);
+    eq.generalized_forces.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        GiNaC::ex fi = eq.dLdq[i] - GiNaC::diff(eq.momenta[i], model.t);
+        const Coordinate& ci = model.coordinates[i];
+        const GiNaC::ex Qi = (i < model.forces.size() ? model.forces[i].expr : GiNaC::ex(0)) -
+                             GiNaC::diff(model.R.expr, ci.qd);
+        eq.generalized_forces[i] = Qi;
+        GiNaC::ex fi = eq.dLdq[i] - GiNaC::diff(eq.momenta[i], model.t) + Qi;
         for (const Coordinate& c : model.coordinates) fi -= GiNaC::diff(eq.momenta[i], c.q) * c.qd;
         eq.f[i] = fi;
         eq.euler_lagrange[i] = time_derivative(eq.momenta[i], model) - eq.dLdq[i];
     }
+    eq.constraints = derive_constraints(model);
+    eq.frobenius = analyse_integrability(model, eq.constraints);
 
     // M must be invertible somewhere; positive definite wherever T is a proper kinetic energy.
     bool singular_everywhere = true;
@@ -160,13 +171,28 @@ Equations derive_equations(const Model& model) {
     // Expanded, the T₁ terms cancel and h reads T₂ − T₀ + V, as a person would write it.
     eq.energy = eq.energy.expand();
     eq.explicit_time = !GiNaC::diff(eq.L, model.t).expand().is_zero();
-    if (!eq.explicit_time)
-        eq.conserved.push_back({"h", "h", "L does not depend on t explicitly", eq.energy});
+    // dh/dt = −∂L/∂t + q̇·(Q − ∂R/∂q̇) − λ·b (constraint forces do work only through b = ∂g/∂t).
+    const bool forced = std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(),
+                                    [&](const GiNaC::ex& q) { return !is_zero(q, model); });
+    const bool moving_constraints = std::any_of(eq.constraints.begin(), eq.constraints.end(), [&](const auto& c) {
+        return !is_zero(c.bias, model) ||
+               std::any_of(c.jacobian.begin(), c.jacobian.end(), [&](const GiNaC::ex& a) { return a.has(model.t); });
+    });
+    if (!eq.explicit_time && !forced && !moving_constraints)
+        eq.conserved.push_back({"h", "h",
+                                eq.constraints.empty() ? "L does not depend on t explicitly"
+                                                       : "L and the constraints do not depend on t, no forces",
+                                eq.energy});
 
     eq.cyclic.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
         eq.cyclic[i] = is_zero(eq.dLdq[i], model);
-        if (eq.cyclic[i]) {
+        // p_i is conserved when nothing else acts along q_i: no force, no constraint involving q̇_i.
+        const bool free_direction =
+            is_zero(eq.generalized_forces[i], model) &&
+            std::none_of(eq.constraints.begin(), eq.constraints.end(),
+                         [&](const auto& c) { return !is_zero(c.jacobian[i], model); });
+        if (eq.cyclic[i] && free_direction) {
             const Coordinate& c = model.coordinates[i];
             eq.conserved.push_back({"p_" + c.name, "p_{" + c.latex + "}", c.name + " is cyclic (∂L/∂" + c.name + " = 0)",
                                     eq.momenta[i]});

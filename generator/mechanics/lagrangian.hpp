@@ -18,6 +18,20 @@ struct ConservedQuantity {
     GiNaC::ex value;     ///< function of q, q̇, t
 };
 
+/// One constraint, at every level the equations and the generated code need it.
+struct ConstraintEquations {
+    std::string name;
+    ConstraintKind kind;
+    GiNaC::ex position;               ///< g(q, t) for a holonomic constraint; 0 for a nonholonomic one
+    GiNaC::ex velocity;               ///< c = A q̇ + b: d/dt g, or the Pfaffian form itself
+    std::vector<GiNaC::ex> jacobian;  ///< A = ∂c/∂q̇ (= ∂g/∂q for a holonomic constraint), one row
+    GiNaC::ex bias;                   ///< b = c − A q̇ (= ∂g/∂t)
+    GiNaC::ex gamma;                  ///< acceleration level A q̈ = γ: γ = −(dc/dt − A q̈)
+    bool exact = true;                ///< nonholonomic: the form a·dq + b dt is closed (dω = 0)
+    bool integrable = true;           ///< nonholonomic: ω ∧ dω = 0 (integrable with a factor)
+    std::string verdict;              ///< integrability, with a witness when it fails, for `eomgen show`
+};
+
 /**
  * The Euler–Lagrange equations d/dt(∂L/∂q̇_i) − ∂L/∂q_i = 0 of L = T − V, written as
  * \f[ M(q,t)\,\ddot q = f(q,\dot q,t), \quad M = \frac{\partial^2 L}{\partial\dot q\,\partial\dot q},\quad
@@ -25,6 +39,10 @@ struct ConservedQuantity {
  *         - \frac{\partial^2 L}{\partial\dot q\,\partial t} \f]
  * (the total time derivative expanded by the chain rule on the plain symbols q, q̇, q̈; Goldstein §1.4, §2.3).
  * Also h = Σ q̇_i ∂L/∂q̇_i − L (Goldstein §2.7), p = ∂L/∂q̇, the cyclic coordinates and what is conserved.
+ *
+ * With generalized forces Q and a Rayleigh function R, f gains Q − ∂R/∂q̇ (Goldstein §1.5). With
+ * constraints (Goldstein §2.4) the equations are M q̈ = f + Aᵀλ and A q̈ = γ: λ_k is the generalized force
+ * that constraint k exerts, its sign fixed by the constraint as written (c_k = A_k q̇ + b_k = 0).
  */
 struct Equations {
     GiNaC::ex T, V, L;
@@ -32,7 +50,10 @@ struct Equations {
     std::vector<GiNaC::ex> f;               ///< n forcing terms
     std::vector<GiNaC::ex> momenta;         ///< p_i = ∂L/∂q̇_i
     std::vector<GiNaC::ex> dLdq;            ///< ∂L/∂q_i
-    std::vector<GiNaC::ex> euler_lagrange;  ///< d/dt(∂L/∂q̇_i) − ∂L/∂q_i (in q, q̇, q̈, t), = 0
+    std::vector<GiNaC::ex> euler_lagrange;  ///< d/dt(∂L/∂q̇_i) − ∂L/∂q_i (in q, q̇, q̈, t)
+    std::vector<GiNaC::ex> generalized_forces;  ///< Q_i − ∂R/∂q̇_i: euler_lagrange = these + Aᵀλ
+    std::vector<ConstraintEquations> constraints;  ///< M q̈ = f + Aᵀλ, A q̈ = γ
+    std::string frobenius;                  ///< verdict on the nonholonomic constraints together ("" if < 2)
     GiNaC::ex energy;                       ///< h
     std::vector<bool> cyclic;               ///< ∂L/∂q_i ≡ 0
     bool explicit_time = false;             ///< ∂L/∂t ≢ 0

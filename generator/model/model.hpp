@@ -60,6 +60,17 @@ struct SourceExpression {
     SourceLocation where;
 };
 
+/// A constraint on the motion. Holonomic: g(q,t) = 0. Nonholonomic (Pfaffian): a(q,t)·q̇ + b(q,t) = 0,
+/// linear in the velocities. Its multiplier λ carries its name.
+enum class ConstraintKind { Holonomic, Nonholonomic };
+
+struct Constraint {
+    std::string name;
+    ConstraintKind kind = ConstraintKind::Holonomic;
+    SourceExpression expr;  ///< g(q,t) or a(q,t)·q̇ + b(q,t), "= 0" understood
+    SourceLocation where;   ///< of the name
+};
+
 struct Model {
     std::string name;         ///< identifier: namespace of the generated code, file name
     std::string title;        ///< human title
@@ -72,6 +83,13 @@ struct Model {
     std::vector<Parameter> parameters;
     SourceExpression T;  ///< kinetic energy T(q, q̇, t)
     SourceExpression V;  ///< potential energy V(q, t)
+    SourceExpression R;  ///< Rayleigh dissipation function R(q, q̇, t); contributes −∂R/∂q̇ (0 when absent)
+    std::vector<SourceExpression> forces;  ///< generalized force Q_i(q, q̇, t) per coordinate (0 when absent)
+    std::vector<Constraint> constraints;
+
+    /// Baumgarte stabilisation of the constraints, A q̈ = γ − 2α(A q̇ + b) − β² g (0, 0: none).
+    double baumgarte_alpha = 0.0;
+    double baumgarte_beta = 0.0;
 
     std::size_t dof() const { return coordinates.size(); }
 };

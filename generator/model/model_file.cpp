@@ -270,7 +270,8 @@ class Loader {
         model.path = path_;
         model.t = GiNaC::symbol("t", "t");
         check_keys(root,
-                   {"name", "title", "source", "description", "coordinates", "parameters", "lagrangian"},
+                   {"name", "title", "source", "description", "coordinates", "parameters", "lagrangian",
+                    "constraints", "forces", "stabilization"},
                    "at the top level");
 
         std::vector<Declaration> declarations;
@@ -291,6 +292,9 @@ class Loader {
             entries(root, "coordinates", {"name", "latex", "initial", "rate"}, true);
         const std::vector<Entry> parameters =
             entries(root, "parameters", {"name", "value", "unit", "latex", "description"}, false);
+        const std::vector<Entry> constraints = entries(root, "constraints", {"name", "kind", "expr"}, false);
+        for (const auto& c : constraints)
+            declarations.push_back({c.name, "constraint", c.where, order(c.where)});
         for (const auto& c : coordinates)
             declarations.push_back({c.name, "coordinate", c.where, order(c.where)});
         for (const auto& p : parameters)
@@ -332,6 +336,9 @@ class Loader {
             model.parameters[i].value = constant(*parameters[i].table, "value", symbols, 0.0);
 
         read_lagrangian(root, symbols, model);
+        read_constraints(constraints, symbols, model);
+        read_forces(root, symbols, model);
+        read_stabilization(root, model);
         return model;
     }
 
@@ -496,7 +503,7 @@ class Loader {
         if (!table)
             fail(src_.at(*node),
                  "'lagrangian' must be a table [lagrangian] with T and V, not " + type_name(*node));
-        check_keys(*table, {"T", "V"}, "in [lagrangian]");
+        check_keys(*table, {"T", "V", "R"}, "in [lagrangian]");
 
         const toml::node* T = table->get("T");
         if (!T) fail(src_.at(*table), "missing key 'T' in [lagrangian] (the kinetic energy)");
@@ -515,6 +522,76 @@ class Loader {
             model.V.text = "0";
             model.V.where = src_.at(*table);
         }
+        model.R.expr = 0;
+        model.R.text = "0";
+        model.R.where = src_.at(*table);
+        if (const toml::node* R = table->get("R")) {
+            model.R.expr = expression(*R, "R", symbols, {});
+            model.R.text = R->as_string()->get();
+            model.R.where = string_start(*R);
+        }
+    }
+
+    /// [[constraints]]: name, kind = "holonomic" (g(q,t) = 0) or "nonholonomic" (a·q' + b = 0), expr.
+    void read_constraints(const std::vector<Entry>& entries, const SymbolTable& symbols, Model& model) const {
+        for (const Entry& e : entries) {
+            Constraint c;
+            c.name = e.name;
+            c.where = e.where;
+            const toml::node* kind = e.table->get("kind");
+            const std::string k = kind ? string_value(*kind, "kind") : "holonomic";
+            if (k == "holonomic") {
+                c.kind = ConstraintKind::Holonomic;
+            } else if (k == "nonholonomic") {
+                c.kind = ConstraintKind::Nonholonomic;
+            } else {
+                fail(string_start(*kind), "constraint kind '" + k + "' is neither \"holonomic\" (g(q, t) = 0) nor "
+                                          "\"nonholonomic\" (a(q, t)·q' + b(q, t) = 0)");
+            }
+            const toml::node* expr = e.table->get("expr");
+            if (!expr) fail(src_.at(*e.table), "missing key 'expr' in [[constraints]] (the constraint, = 0)");
+            ParseOptions options;
+            if (c.kind == ConstraintKind::Holonomic)
+                options.forbid_velocities =
+                    "a holonomic constraint g(q, t) = 0 has no velocities (declare kind = \"nonholonomic\")";
+            c.expr.expr = expression(*expr, "expr", symbols, options);
+            c.expr.text = expr->as_string()->get();
+            c.expr.where = string_start(*expr);
+            model.constraints.push_back(std::move(c));
+        }
+    }
+
+    /// [forces]: coordinate = "Q(q, q', t)", the generalized force on that coordinate.
+    void read_forces(const toml::table& root, const SymbolTable& symbols, Model& model) const {
+        model.forces.assign(model.coordinates.size(), SourceExpression{0, "0", src_.file_only()});
+        const toml::node* node = root.get("forces");
+        if (!node) return;
+        const toml::table* table = node->as_table();
+        if (!table) fail(src_.at(*node), "'forces' must be a table [forces] of coordinate = \"Q\", not " + type_name(*node));
+        std::vector<std::string> names;
+        for (const Coordinate& c : model.coordinates) names.push_back(c.name);
+        check_keys(*table, names, "in [forces] (keys are coordinates)");
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (const toml::node* q = table->get(names[i])) {
+                model.forces[i].expr = expression(*q, names[i], symbols, {});
+                model.forces[i].text = q->as_string()->get();
+                model.forces[i].where = string_start(*q);
+            }
+    }
+
+    /// [stabilization]: alpha, beta of Baumgarte's method (defaults 0: none).
+    void read_stabilization(const toml::table& root, Model& model) const {
+        const toml::node* node = root.get("stabilization");
+        if (!node) return;
+        const toml::table* table = node->as_table();
+        if (!table) fail(src_.at(*node), "'stabilization' must be a table with alpha and beta, not " + type_name(*node));
+        check_keys(*table, {"alpha", "beta"}, "in [stabilization]");
+        const SymbolTable none;
+        model.baumgarte_alpha = constant(*table, "alpha", none, 0.0);
+        model.baumgarte_beta = constant(*table, "beta", none, 0.0);
+        for (const char* key : {"alpha", "beta"})
+            if (const toml::node* n = table->get(key); n && constant(*table, key, none, 0.0) < 0)
+                fail(src_.at(*n), std::string("'") + key + "' must not be negative");
     }
 
     SourceText src_;

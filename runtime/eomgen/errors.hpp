@@ -45,6 +45,19 @@ public:
     using SimulationError::SimulationError;
 };
 
+/// The constraints' Jacobian A has lost rank at this state (redundant or singular constraints), so
+/// the multipliers are not determined.
+class SingularConstraints : public SimulationError {
+public:
+    using SimulationError::SimulationError;
+};
+
+/// Initial conditions that violate a constraint (the message names it).
+class InconsistentInitialConditions : public SimulationError {
+public:
+    using SimulationError::SimulationError;
+};
+
 /// Formats "message at t = ... with state [...]" at full precision.
 template <class Scalar, class Derived>
 std::string describe_state(const std::string& message, const Scalar& t, const Eigen::MatrixBase<Derived>& x) {
