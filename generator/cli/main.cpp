@@ -1,13 +1,16 @@
 /** @file main.cpp  The `eomgen` command: generate C++ from model files, show the derived mechanics. */
+#include "checker/check_command.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/lagrangian.hpp"
+#include "model/families.hpp"
 #include "model/model_file.hpp"
 #include "model/names.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -53,11 +56,19 @@ void write_atomically(const std::filesystem::path& path, const std::string& text
     }
 }
 
-int generate(const std::vector<std::string>& models, const std::string& out_dir, const std::string& name) {
+int generate(const std::vector<std::string>& models, const std::vector<std::string>& families,
+             const std::string& out_dir, const std::string& name) {
     // Derive everything first: one bad model writes nothing at all.
     std::vector<std::pair<std::filesystem::path, std::string>> outputs;
-    for (const std::string& path : models) {
-        eomgen::Model model = eomgen::load_model(path);
+    std::vector<std::string> sources = models;
+    for (const std::string& f : families) sources.push_back("--family " + f);
+    for (const std::string& path : sources) {
+        // A family (--family pendulum:n=20) is model-file text made in memory, read like a file.
+        const bool family = path.rfind("--family ", 0) == 0;
+        eomgen::Model model = family ? eomgen::parse_model(eomgen::family_model_text(eomgen::parse_family_spec(
+                                                               path.substr(9))),
+                                                           path)
+                                     : eomgen::load_model(path);
         if (!name.empty()) model.name = name;
         const eomgen::Equations eq = eomgen::derive_equations(model);
         for (const std::string& w : eq.warnings) std::cerr << path << ": warning: " << w << "\n";
@@ -81,9 +92,54 @@ int generate(const std::vector<std::string>& models, const std::string& out_dir,
 
 std::string rule(const std::string& title) { return "\n" + title + "\n" + std::string(title.size(), '-') + "\n"; }
 
+/// The model's symbols plus one λ per constraint, for printing the equations with multipliers.
+struct MultiplierTable {
+    eomgen::codegen::SymbolTable table;
+    std::vector<GiNaC::symbol> lambda;
+};
+
+MultiplierTable multiplier_table(const eomgen::Model& model, const eomgen::Equations& eq) {
+    MultiplierTable m{eomgen::codegen::symbol_table(model), {}};
+    for (std::size_t k = 0; k < eq.constraints.size(); ++k) {
+        const std::string& name = eq.constraints[k].name;
+        m.lambda.emplace_back("lambda_" + name);
+        m.table.info.push_back({eomgen::codegen::SymbolKind::Constant, int(k + 1), "lambda_" + name,
+                                "lambda_" + name, "\\lambda_{\\mathrm{" + name + "}}", ""});
+        m.table.exprs.push_back(m.lambda.back());
+    }
+    return m;
+}
+
+void show_constraints(const eomgen::Model& model, const eomgen::Equations& eq, eomgen::codegen::MathPrinter& pr,
+                      const std::vector<GiNaC::symbol>& lambda, std::ostream& os) {
+    using eomgen::codegen::MathStyle;
+    auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), MathStyle::Text); };
+    os << rule("Constraints  M q'' = f + A^T lambda,  A q'' = gamma  (c = A q' + b = 0)");
+    for (const eomgen::ConstraintEquations& c : eq.constraints) {
+        const bool holonomic = c.kind == eomgen::ConstraintKind::Holonomic;
+        os << "  " << c.name << " (" << (holonomic ? "holonomic" : "nonholonomic") << "): "
+           << P(holonomic ? c.position : c.velocity) << " = 0\n";
+        if (holonomic) os << "    velocity level: " << P(c.velocity) << " = 0\n";
+        os << "    A = [";
+        for (std::size_t i = 0; i < c.jacobian.size(); ++i) os << (i ? ", " : "") << P(c.jacobian[i]);
+        os << "]  over (";
+        for (std::size_t i = 0; i < model.dof(); ++i) os << (i ? ", " : "") << model.coordinates[i].name << "'";
+        os << ")\n    gamma = " << P(c.gamma) << "\n";
+        if (!holonomic) os << "    integrability: " << c.verdict << "\n";
+    }
+    if (!eq.frobenius.empty()) os << "  " << eq.frobenius << "\n";
+    os << rule("Equations of motion with multipliers  d/dt(dL/dq') - dL/dq = Q - dR/dq' + A^T lambda");
+    for (std::size_t i = 0; i < model.dof(); ++i) {
+        GiNaC::ex rhs = eq.generalized_forces[i];
+        for (std::size_t k = 0; k < eq.constraints.size(); ++k) rhs += eq.constraints[k].jacobian[i] * lambda[k];
+        os << "  [" << model.coordinates[i].name << "]  " << P(eq.euler_lagrange[i]) << " = " << P(rhs) << "\n";
+    }
+}
+
 void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ostream& os) {
     using eomgen::codegen::MathStyle;
-    eomgen::codegen::MathPrinter pr(eomgen::codegen::symbol_table(model));
+    MultiplierTable mt = multiplier_table(model, eq);
+    eomgen::codegen::MathPrinter pr(mt.table);
     auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), MathStyle::Text); };
     os << model.name << ": " << model.title;
     if (!model.source.empty()) os << " (" << model.source << ")";
@@ -108,16 +164,24 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
                << "] = " << P(eq.M(unsigned(i), unsigned(j))) << "\n";
     for (std::size_t i = 0; i < model.dof(); ++i)
         os << "  f[" << model.coordinates[i].name << "] = " << P(eq.f[i]) << "\n";
+    if (!eq.constraints.empty() || std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(),
+                                                [](const GiNaC::ex& q) { return !q.is_zero(); }))
+        show_constraints(model, eq, pr, mt.lambda, os);
     os << rule("Energy function and momenta");
     os << "  h = sum q' dL/dq' - L = " << P(eq.energy) << "\n";
     for (std::size_t i = 0; i < model.dof(); ++i)
         os << "  p_" << model.coordinates[i].name << " = dL/d" << model.coordinates[i].name << "' = " << P(eq.momenta[i])
            << "\n";
     os << rule("Conserved quantities");
-    if (eq.conserved.empty()) os << "  none found (L depends on t explicitly and no coordinate is cyclic)\n";
+    if (eq.conserved.empty()) os << "  none found\n";
     for (const eomgen::ConservedQuantity& c : eq.conserved) os << "  " << c.name << ": " << c.reason << "\n";
     for (std::size_t i = 0; i < model.dof(); ++i)
-        if (!eq.cyclic[i]) os << "  " << model.coordinates[i].name << " is not cyclic\n";
+        if (!eq.cyclic[i])
+            os << "  " << model.coordinates[i].name << " is not cyclic\n";
+        else if (std::none_of(eq.conserved.begin(), eq.conserved.end(),
+                              [&](const auto& c) { return c.name == "p_" + model.coordinates[i].name; }))
+            os << "  " << model.coordinates[i].name << " is cyclic, but p_" << model.coordinates[i].name
+               << " is not conserved: a force or a constraint acts along it\n";
     if (!eq.warnings.empty()) {
         os << rule("Warnings");
         for (const std::string& w : eq.warnings) os << "  " << w << "\n";
@@ -126,16 +190,32 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
 
 void show_latex(const eomgen::Model& model, const eomgen::Equations& eq, std::ostream& os) {
     using eomgen::codegen::MathStyle;
-    eomgen::codegen::MathPrinter pr(eomgen::codegen::symbol_table(model));
+    MultiplierTable mt = multiplier_table(model, eq);
+    eomgen::codegen::MathPrinter pr(mt.table);
     auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), MathStyle::Latex); };
     os << "% " << model.name << ": " << model.title << (model.source.empty() ? "" : " (" + model.source + ")") << "\n";
     os << "\\begin{align}\n";
     os << "T &= " << P(eq.T) << " \\\\\n";
     os << "V &= " << P(eq.V) << " \\\\\n";
     os << "L &= " << P(eq.L) << "\n\\end{align}\n";
+    if (!eq.constraints.empty()) {
+        os << "% constraints\n\\begin{align}\n";
+        for (std::size_t k = 0; k < eq.constraints.size(); ++k) {
+            const auto& c = eq.constraints[k];
+            const bool holonomic = c.kind == eomgen::ConstraintKind::Holonomic;
+            os << P(holonomic ? c.position : c.velocity) << " &= 0 && \\text{" << c.name << " ("
+               << (holonomic ? "holonomic" : "nonholonomic") << ")}" << (k + 1 < eq.constraints.size() ? " \\\\" : "")
+               << "\n";
+        }
+        os << "\\end{align}\n";
+    }
+    // Euler-Lagrange equations, with Q - dR/dq' + A^T lambda on the right when forces or constraints act.
     os << "% Euler-Lagrange equations\n\\begin{align}\n";
-    for (std::size_t i = 0; i < model.dof(); ++i)
-        os << P(eq.euler_lagrange[i]) << " &= 0" << (i + 1 < model.dof() ? " \\\\" : "") << "\n";
+    for (std::size_t i = 0; i < model.dof(); ++i) {
+        GiNaC::ex rhs = eq.generalized_forces[i];
+        for (std::size_t k = 0; k < eq.constraints.size(); ++k) rhs += eq.constraints[k].jacobian[i] * mt.lambda[k];
+        os << P(eq.euler_lagrange[i]) << " &= " << P(rhs) << (i + 1 < model.dof() ? " \\\\" : "") << "\n";
+    }
     os << "\\end{align}\n% energy function and momenta\n\\begin{align}\n";
     os << "h &= " << P(eq.energy);
     for (std::size_t i = 0; i < model.dof(); ++i)
@@ -155,7 +235,17 @@ int main(int argc, char** argv) {
     std::vector<std::string> gen_models;
     std::string out_dir = "generated";
     CLI::App* gen = app.add_subcommand("generate", "Derive each model and write <out>/<name>.hpp");
-    gen->add_option("models", gen_models, "Model files (.toml)")->required()->check(CLI::ExistingFile);
+    gen->add_option("models", gen_models, "Model files (.toml)")->check(CLI::ExistingFile);
+    std::vector<std::string> gen_families;
+    gen->add_option("--family", gen_families, "A model family instead of a file: pendulum:n=N or rods:n=N (n-link chains)")
+        ->check([](const std::string& s) {
+            try {
+                eomgen::parse_family_spec(s);
+                return std::string();
+            } catch (const std::invalid_argument& e) {
+                return std::string(e.what());
+            }
+        });
     gen->add_option("-o,--output", out_dir, "Output directory")->capture_default_str();
     std::string gen_name;
     gen->add_option("--name", gen_name, "Model name (namespace, file name) instead of the file's; one model only");
@@ -166,6 +256,8 @@ int main(int argc, char** argv) {
     show->add_option("model", show_model, "Model file (.toml)")->required()->check(CLI::ExistingFile);
     show->add_flag("--latex", latex, "Print LaTeX instead of plain text");
 
+    const eomgen::checker::CheckCommand check(app);  // `eomgen check MODEL DERIVATION.md`, see docs/checker.md
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -175,7 +267,11 @@ int main(int argc, char** argv) {
 
     try {
         if (*gen) {
-            if (!gen_name.empty() && gen_models.size() != 1) {
+            if (gen_models.empty() && gen_families.empty()) {
+                std::cerr << "eomgen generate: give model files or --family\n";
+                return kExitUsage;
+            }
+            if (!gen_name.empty() && gen_models.size() + gen_families.size() != 1) {
                 std::cerr << "eomgen generate: --name needs exactly one model file\n";
                 return kExitUsage;
             }
@@ -183,7 +279,7 @@ int main(int argc, char** argv) {
                 std::cerr << "eomgen generate: --name " << gen_name << ": " << eomgen::name_problem(gen_name) << "\n";
                 return kExitUsage;
             }
-            return generate(gen_models, out_dir, gen_name);
+            return generate(gen_models, gen_families, out_dir, gen_name);
         }
         if (*show) {
             const eomgen::Model model = eomgen::load_model(show_model);
@@ -194,6 +290,7 @@ int main(int argc, char** argv) {
                 show_text(model, eq, std::cout);
             return kExitOk;
         }
+        if (check.selected()) return check.run();
     } catch (const eomgen::ModelError& e) {
         std::cerr << e.what() << "\n";
         return kExitModelError;

@@ -1,0 +1,1639 @@
+/** @file checker.cpp  Equation by equation: labels, identities, Euler–Lagrange equations, integrals of
+ * motion. */
+#include "checker/checker.hpp"
+
+#include "checker/latex_parser.hpp"
+#include "codegen/cpp_emitter.hpp"
+#include "codegen/math_printer.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdlib>
+#include <functional>
+#include <map>
+#include <optional>
+#include <random>
+#include <set>
+#include <sstream>
+
+namespace eomgen::checker {
+
+const char* verdict_name(Verdict v) {
+    switch (v) {
+        case Verdict::Agrees:
+            return "agrees";
+        case Verdict::Disagrees:
+            return "disagrees";
+        case Verdict::NotComparable:
+            return "not comparable";
+    }
+    return "";
+}
+
+int CheckReport::count(Verdict v) const {
+    return int(std::count_if(equations.begin(), equations.end(),
+                             [v](const EquationCheck& e) { return e.verdict == v; }));
+}
+
+namespace {
+
+using Complex = std::complex<double>;
+using ExSet = std::set<GiNaC::ex, GiNaC::ex_is_less>;
+template <class V>
+using ExMap = std::map<GiNaC::ex, V, GiNaC::ex_is_less>;
+
+std::string m(const std::string& latex) {
+    return "$" + latex + "$";
+}
+
+enum class Tri { No, Yes, Unknown };
+
+/// The exact rational a model's double default stands for ("0.3" is 3/10, not the binary float).
+GiNaC::numeric exact_decimal(double v) {
+    const std::string s = codegen::shortest_decimal(v);
+    GiNaC::numeric mant(0);
+    long exponent = 0;
+    bool neg = false, point = false;
+    std::size_t i = 0;
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) neg = s[i++] == '-';
+    for (; i < s.size(); ++i) {
+        const char c = s[i];
+        if (c >= '0' && c <= '9') {
+            mant = mant * 10 + (c - '0');
+            if (point) --exponent;
+        } else if (c == '.') {
+            point = true;
+        } else if (c == 'e' || c == 'E') {
+            exponent += std::strtol(s.c_str() + i + 1, nullptr, 10);
+            break;
+        }
+    }
+    GiNaC::numeric r = mant * GiNaC::pow(GiNaC::numeric(10), GiNaC::numeric(exponent));
+    return neg ? -r : r;
+}
+
+bool has_integral(const GiNaC::ex& e) {
+    if (GiNaC::is_a<GiNaC::integral>(e)) return true;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (has_integral(e.op(i))) return true;
+    return false;
+}
+
+std::optional<Complex> as_complex(const GiNaC::ex& v) {
+    if (!GiNaC::is_a<GiNaC::numeric>(v)) return std::nullopt;
+    const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(v);
+    const Complex c(n.real().to_double(), n.imag().to_double());
+    if (!std::isfinite(c.real()) || !std::isfinite(c.imag())) return std::nullopt;
+    return c;
+}
+
+/**
+ * ∫_a^b f(x) dx by tanh–sinh quadrature (Takahasi & Mori 1974), which copes with the integrable endpoint
+ * singularities of derivations such as ∫ dψ/√(sin ψ). Nodes are placed by their distance from the nearer end
+ * so that points next to a singular end are not rounded onto it.
+ */
+template <class F>
+std::optional<Complex> tanh_sinh(F f, double a, double b) {
+    const double half = (b - a) / 2, mid = (a + b) / 2;
+    if (half == 0) return Complex(0);
+    std::optional<Complex> previous;
+    for (int level = 2; level <= 7; ++level) {
+        const double h = std::ldexp(1.0, -level);
+        Complex sum = 0;
+        bool ok = true;
+        for (double t = -4.0; t <= 4.0 + 1e-12; t += h) {
+            const double u = M_PI / 2 * std::sinh(t);
+            const double w = M_PI / 2 * std::cosh(t) / (std::cosh(u) * std::cosh(u));
+            if (w < 1e-300) continue;
+            const double dist = 2 / (std::exp(2 * std::abs(u)) + 1);  // 1 − tanh|u|, accurately
+            const double x = t > 0 ? b - half * dist : (t < 0 ? a + half * dist : mid);
+            if (x == a || x == b) continue;
+            const std::optional<Complex> fx = f(x);
+            if (!fx) {
+                ok = false;
+                break;
+            }
+            sum += w * *fx;
+        }
+        if (!ok) return std::nullopt;
+        const Complex value = half * h * sum;
+        if (previous && std::abs(value - *previous) <= 1e-11 * std::max(1.0, std::abs(value))) return value;
+        previous = value;
+    }
+    return previous;
+}
+
+/// Numbers for the comparisons: random points for every symbol, values with integrals evaluated.
+class Numbers {
+  public:
+    Numbers(const Model& model, const LatexContext& ctx) : model_(model), ctx_(ctx) {}
+
+    /// Parameters (and free names) from `param_seed`, coordinates, velocities, accelerations and t from
+    /// `state_seed`; each a rational in (0.5, 1.5).
+    GiNaC::exmap point(unsigned param_seed, unsigned state_seed) const {
+        GiNaC::exmap at;
+        std::mt19937 pr(param_seed * 7919u + 17u), sr(state_seed * 104729u + 5u);
+        std::uniform_int_distribution<int> pick(500, 1500);
+        auto value = [&](std::mt19937& r) { return GiNaC::numeric(pick(r), 1000); };
+        for (const Parameter& p : model_.parameters) at[p.symbol] = value(pr);
+        for (const auto& [name, f] : ctx_.free_names) at[f.symbol] = value(pr);
+        at[model_.t] = value(sr);
+        for (const Coordinate& c : model_.coordinates) {
+            at[c.q] = value(sr);
+            at[c.qd] = value(sr);
+            at[c.qdd] = value(sr);
+        }
+        return at;
+    }
+    GiNaC::exmap point(unsigned seed) const { return point(seed, seed); }
+
+    std::optional<Complex> value(const GiNaC::ex& e, const GiNaC::exmap& at) {
+        try {
+            GiNaC::ex v = e.subs(at);
+            v = integrals(v);
+            return as_complex(GiNaC::evalf(v));
+        } catch (...) {
+            return std::nullopt;
+        }
+    }
+
+    /// Σ |term| over the terms of e expanded: the scale against which a difference is small.
+    double scale(const GiNaC::ex& e, const GiNaC::exmap& at) {
+        GiNaC::ex x = e;
+        try {
+            x = e.expand();
+        } catch (...) {
+        }
+        double s = 0;
+        if (GiNaC::is_a<GiNaC::add>(x)) {
+            for (const GiNaC::ex& t : x)
+                if (auto v = value(t, at)) s += std::abs(*v);
+        } else if (auto v = value(x, at)) {
+            s = std::abs(*v);
+        }
+        return s;
+    }
+
+  private:
+    GiNaC::ex integrals(const GiNaC::ex& e) {
+        if (!has_integral(e)) return e;
+        if (GiNaC::is_a<GiNaC::integral>(e)) {
+            auto hit = cache_.find(e);
+            if (hit != cache_.end()) return hit->second;
+            const GiNaC::ex x = e.op(0);
+            const GiNaC::ex lo = integrals(e.op(1)), hi = integrals(e.op(2)), f = integrals(e.op(3));
+            const auto a = as_complex(GiNaC::evalf(lo)), b = as_complex(GiNaC::evalf(hi));
+            if (!a || !b || a->imag() != 0 || b->imag() != 0) throw std::runtime_error("limits");
+            auto integrand = [&](double xv) -> std::optional<Complex> {
+                try {
+                    return as_complex(GiNaC::evalf(f.subs(x == GiNaC::numeric(xv))));
+                } catch (...) {
+                    return std::nullopt;
+                }
+            };
+            const auto v = tanh_sinh(integrand, a->real(), b->real());
+            if (!v) throw std::runtime_error("integral");
+            const GiNaC::ex r = GiNaC::numeric(v->real()) + GiNaC::I * GiNaC::numeric(v->imag());
+            cache_[e] = r;
+            return r;
+        }
+        struct Each : GiNaC::map_function {
+            Numbers* self;
+            explicit Each(Numbers* n) : self(n) {}
+            GiNaC::ex operator()(const GiNaC::ex& x) override { return self->integrals(x); }
+        } each(this);
+        return e.map(each);
+    }
+
+    const Model& model_;
+    const LatexContext& ctx_;
+    ExMap<GiNaC::ex> cache_;
+};
+
+/// A side of a link with where its row starts in the file.
+struct PSide {
+    const Side* side = nullptr;
+    std::size_t base = 0;
+};
+
+/// A chain a = b = c, continued across rows that start with "=".
+struct FullChain {
+    std::vector<PSide> sides;
+    std::vector<Relation> relations;
+    std::vector<std::size_t> relation_offsets;  ///< file offsets
+    int section = -1;
+    bool display = false;
+};
+
+/// A side made ready for comparison: labels replaced, d/dt and ∂ evaluated, free names listed.
+struct Prepared {
+    bool ok = false;
+    std::string problem;  ///< when !ok
+    GiNaC::ex value;
+    std::vector<const FreeName*> unknown, vectors, units;
+    bool has_truth_label = false;  ///< refers to eomgen's T, V, L, ...
+    bool has_part = false;         ///< uses a part T_{x} whose value came from the text
+    std::vector<std::string> notes;
+    bool comparable() const { return ok && unknown.empty() && vectors.empty(); }
+};
+
+/// Terms grouped by their monomial in the velocities and accelerations (the shape of a mechanics equation).
+struct Group {
+    GiNaC::ex monomial;
+    std::vector<GiNaC::ex> terms;  ///< whole terms, monomial included
+    GiNaC::ex coefficient = 0;     ///< Σ terms / monomial
+};
+
+struct Diagnosis {
+    std::string difference;
+    std::vector<std::string> lines;
+};
+
+class Checker {
+  public:
+    Checker(const Model& model, const Equations& eq, const Derivation& d, const CheckOptions& options)
+        : model_(model),
+          eq_(eq),
+          d_(d),
+          options_(options),
+          numbers_(model, ctx_),
+          printer_table_(codegen::symbol_table(model)) {}
+
+    CheckReport run();
+
+  private:
+    // ----- setup
+    void add_name(const std::string& latex, const GiNaC::ex& value) {
+        std::string c = canonical_name(latex);
+        if (c.empty()) c = latex;
+        ctx_.names.emplace(c, value);
+    }
+    void add_label(const std::string& name, const GiNaC::ex& truth, const std::string& what) {
+        if (ctx_.names.count(name)) return;  // the model's own names come first
+        const GiNaC::symbol s(name, name);
+        ctx_.names[name] = s;
+        truth_[s] = truth;
+        label_what_[s] = what;
+    }
+    void setup_names();
+    void apply_map();
+
+    // ----- evaluation
+    GiNaC::ex resolve_operators(const GiNaC::ex& e) const;
+    Prepared prepare(const PSide& s, const GiNaC::ex* exclude_part = nullptr);
+    std::string where(std::size_t file_offset) const {
+        const SourcePos p = d_.position(file_offset);
+        return std::to_string(p.line) + ":" + std::to_string(p.column);
+    }
+    bool is_part(const GiNaC::ex& e, std::string* name = nullptr, GiNaC::ex* whole = nullptr) const;
+
+    Tri equal(const GiNaC::ex& a, const GiNaC::ex& b, double tol);
+    std::vector<Complex> signature(const GiNaC::ex& e);
+    bool same_signature(const std::vector<Complex>& a, const std::vector<Complex>& b, double tol) const;
+
+    // ----- what an equation can be
+    bool has_acceleration(const GiNaC::ex& e) const {
+        for (const Coordinate& c : model_.coordinates)
+            if (e.has(c.qdd)) return true;
+        return false;
+    }
+    bool has_velocity(const GiNaC::ex& e) const {
+        for (const Coordinate& c : model_.coordinates)
+            if (e.has(c.qd)) return true;
+        return false;
+    }
+    bool has_root(const GiNaC::ex& e) const;
+    bool depends_on_state(const GiNaC::ex& e) const {
+        for (const Coordinate& c : model_.coordinates)
+            if (e.has(c.q) || e.has(c.qd)) return true;
+        return false;
+    }
+    /// "the left side is k times the right side", from the factors the two sides do not share.
+    std::vector<std::string> factor_analysis(const GiNaC::ex& a, const GiNaC::ex& b, double tol,
+                                             std::string* ratio);
+    /// r = Σ c_i EL_i with c from the acceleration coefficients: a consequence of the equations of motion.
+    Tri euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor);
+    /// r = c·target with c free of the state: the integral of motion written with the model's initial state.
+    bool proportional_in_state(const GiNaC::ex& r, const GiNaC::ex& target, double tol, GiNaC::ex* c);
+
+    // ----- diagnosis
+    std::vector<Group> groups(const GiNaC::ex& e) const;
+    std::string group_name(const GiNaC::ex& monomial) const;
+    Diagnosis compare_to(const GiNaC::ex& text, const GiNaC::ex& truth, double tol);
+    std::string pair_kind(const GiNaC::ex& t, const GiNaC::ex& u, double tol, int* score);
+    /// The factor c making c·truth closest to text group by group; the number of groups that then agree.
+    int best_factor(const GiNaC::ex& text, const GiNaC::ex& truth, double tol, GiNaC::ex* c);
+    std::string latex(const GiNaC::ex& e);
+
+    // ----- checking
+    void collect_parts(const std::vector<FullChain>& chains);
+    void check_chain(const FullChain& c, std::vector<EquationCheck>& out);
+    EquationCheck check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge);
+    /// check_link, with anything GiNaC throws on a strange input turned into a "not comparable" verdict.
+    EquationCheck safe_check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
+        try {
+            return check_link(c, i, j, bridge);
+        } catch (const std::exception& e) {
+            EquationCheck r;
+            r.where = d_.position(c.relation_offsets[j - 1]);
+            if (c.section >= 0) r.section = d_.sections[std::size_t(c.section)].title;
+            r.equation = c.sides[i].side->source + " = " + c.sides[j].side->source;
+            r.reason = std::string("cannot be evaluated: ") + e.what();
+            return r;
+        }
+    }
+    void check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other, double tol,
+                    EquationCheck& r);
+    /// T (or V) minus the text's other parts of it, when the text defines other parts.
+    std::optional<GiNaC::ex> expected_part(const GiNaC::ex& part) const {
+        std::string name;
+        GiNaC::ex whole;
+        if (!is_part(part, &name, &whole)) return std::nullopt;
+        GiNaC::ex others = 0;
+        bool any = false;
+        for (const auto& [sym, value] : part_value_) {
+            std::string n2;
+            if (sym.is_equal(part) || !is_part(sym, &n2) || n2[0] != name[0]) continue;
+            others += value;
+            any = true;
+        }
+        if (!any) return std::nullopt;
+        return whole - others;
+    }
+    void check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a, const Prepared& b,
+                      double tol, EquationCheck& r);
+    void diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
+                                 EquationCheck& out);
+
+    const Model& model_;
+    const Equations& eq_;
+    const Derivation& d_;
+    const CheckOptions& options_;
+    LatexContext ctx_;
+    Numbers numbers_;
+    codegen::SymbolTable printer_table_;
+    ExMap<GiNaC::ex> truth_;          ///< label symbol → eomgen's value
+    ExMap<std::string> label_what_;   ///< label symbol → what it is, for the report
+    ExSet bare_only_;                 ///< labels that count only as a whole side (h, H)
+    ExMap<GiNaC::ex> part_value_;     ///< part symbol → its value in the text
+    ExMap<std::string> part_origin_;  ///< part symbol → "line N"
+    std::vector<GiNaC::ex> motion_;   ///< the equations of motion, = 0
+    std::vector<std::pair<GiNaC::ex, std::string>> integrals_of_motion_;
+    ExMap<std::vector<Complex>> signatures_;
+};
+
+// ------------------------------------------------------------------------------------------------ setup
+
+void Checker::setup_names() {
+    ctx_.time = model_.t;
+    ctx_.names["t"] = model_.t;
+    for (const Coordinate& c : model_.coordinates) {
+        add_name(c.latex, c.q);
+        add_name("\\dot{" + c.latex + "}", c.qd);
+        add_name("\\ddot{" + c.latex + "}", c.qdd);
+    }
+    for (const Parameter& p : model_.parameters) add_name(p.latex, p.symbol);
+
+    // Labels for eomgen's quantities, unless the model uses the letter for something of its own.
+    add_label("T", eq_.T, "T");
+    add_label("V", eq_.V, "V");
+    add_label("L", eq_.L, "L");
+    add_label("\\mathcal{L}", eq_.L, "L");
+    add_label("E", eq_.T + eq_.V, "E = T + V");
+    add_label("H", eq_.energy, "h");
+    add_label("h", eq_.energy, "h");
+    for (const char* b : {"H", "h"})
+        if (truth_.count(ctx_.names.at(b))) bare_only_.insert(ctx_.names.at(b));
+    for (std::size_t i = 0; i < model_.dof(); ++i) {
+        std::string c = canonical_name(model_.coordinates[i].latex);
+        if (c.empty()) c = model_.coordinates[i].latex;
+        add_label("p_{" + c + "}", eq_.momenta[i], "p_{" + c + "}");
+    }
+
+    // h(0) and p(0) at the model's initial state, for the integrals of motion a derivation writes out.
+    GiNaC::exmap init;
+    init[model_.t] = 0;
+    for (const Coordinate& c : model_.coordinates) {
+        init[c.q] = exact_decimal(c.initial);
+        init[c.qd] = exact_decimal(c.rate);
+    }
+    for (const ConservedQuantity& c : eq_.conserved)
+        integrals_of_motion_.push_back(
+            {c.value - c.value.subs(init),
+             "the conservation of " + m(c.latex) + " with the model's initial state (" + c.reason + ")"});
+    // The equations of motion: d/dt(∂L/∂q̇) − ∂L/∂q − Q = 0 (Q: generalized and dissipative forces).
+    for (std::size_t i = 0; i < model_.dof(); ++i)
+        motion_.push_back(i < eq_.generalized_forces.size()
+                              ? eq_.euler_lagrange[i] - eq_.generalized_forces[i]
+                              : eq_.euler_lagrange[i]);
+}
+
+void Checker::apply_map() {
+    for (const MapEntry& e : options_.map) {
+        std::string name = canonical_name(e.name);
+        // A bare word stands for \text{word}: the map key "Trod" names the text's \text{ Trod }.
+        if (name.empty() && !e.name.empty() && std::all_of(e.name.begin(), e.name.end(), [](char ch) {
+                return std::isalpha(static_cast<unsigned char>(ch));
+            }))
+            name = e.name;
+        if (name.empty())
+            throw CheckError(e.origin + ": '" + e.name +
+                             "' is not a single LaTeX name (such as I_{0} or \\omega_{a})");
+        const Side s = parse_expression(e.value, ctx_);
+        if (!s.ok)
+            throw CheckError(e.origin + ": cannot read '" + e.value + "' at column " +
+                             std::to_string(s.error_offset + 1) + ": " + s.error);
+        ctx_.names[name] = s.value;
+    }
+}
+
+// ------------------------------------------------------------------------------------------- evaluation
+
+GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
+    if (is_ex_the_function(e, ddt)) return time_derivative(resolve_operators(e.op(0)), model_);
+    if (is_ex_the_function(e, pdiff)) {
+        const GiNaC::ex inner = resolve_operators(e.op(0));
+        if (!GiNaC::is_a<GiNaC::symbol>(e.op(1)))
+            throw std::runtime_error("a derivative with respect to an expression");
+        return GiNaC::diff(inner, GiNaC::ex_to<GiNaC::symbol>(e.op(1)));
+    }
+    if (e.nops() == 0) return e;
+    struct Each : GiNaC::map_function {
+        const Checker* self;
+        explicit Each(const Checker* c) : self(c) {}
+        GiNaC::ex operator()(const GiNaC::ex& x) override { return self->resolve_operators(x); }
+    } each(this);
+    return e.map(each);
+}
+
+bool Checker::is_part(const GiNaC::ex& e, std::string* name, GiNaC::ex* whole) const {
+    const FreeName* f = ctx_.free_name_of(e);
+    if (!f || f->kind != NameKind::Unknown) return false;
+    const std::string& n = f->name;
+    if (n.size() < 4 || (n[0] != 'T' && n[0] != 'V') || n[1] != '_') return false;
+    if (name) *name = n;
+    if (whole) *whole = n[0] == 'T' ? eq_.T : eq_.V;
+    return true;
+}
+
+Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
+    Prepared p;
+    const Side& side = *s.side;
+    if (side.empty()) {
+        p.problem = "a side is empty (an incomplete equation)";
+        return p;
+    }
+    if (!side.ok) {
+        p.problem =
+            "cannot read " + m(side.source) + " at " + where(s.base + side.error_offset) + ": " + side.error;
+        return p;
+    }
+    for (const std::string& n : side.notes) p.notes.push_back(n);
+    try {
+        GiNaC::exmap subs;
+        ExSet symbols;
+        std::vector<GiNaC::ex> stack{side.value};
+        while (!stack.empty()) {
+            GiNaC::ex x = stack.back();
+            stack.pop_back();
+            if (GiNaC::is_a<GiNaC::symbol>(x)) symbols.insert(x);
+            for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
+        }
+        for (const GiNaC::ex& sym : symbols) {
+            auto t = truth_.find(sym);
+            // h and H are common letters (a height): they stand for the energy function only as a whole side.
+            if (t != truth_.end() && bare_only_.count(sym) && !side.value.is_equal(sym)) {
+                subs[sym] = ctx_.free_symbol(GiNaC::ex_to<GiNaC::symbol>(sym).get_name(), NameKind::Unknown);
+                continue;
+            }
+            if (t != truth_.end()) {
+                subs[sym] = t->second;
+                p.has_truth_label = true;
+                continue;
+            }
+            std::string pname;
+            if (is_part(sym, &pname) && !(exclude_part && exclude_part->is_equal(sym))) {
+                auto pv = part_value_.find(sym);
+                if (pv != part_value_.end()) {
+                    subs[sym] = pv->second;
+                    p.has_part = true;
+                    p.notes.push_back("uses " + m(pname) + " as the text gives it at " +
+                                      part_origin_.at(sym));
+                }
+            }
+        }
+        GiNaC::ex v = subs.empty() ? side.value : side.value.subs(subs);
+        v = resolve_operators(v);
+        p.value = v;
+        // Free names left over.
+        ExSet left;
+        std::vector<GiNaC::ex> stack2{v};
+        while (!stack2.empty()) {
+            GiNaC::ex x = stack2.back();
+            stack2.pop_back();
+            if (GiNaC::is_a<GiNaC::symbol>(x)) left.insert(x);
+            for (std::size_t i = 0; i < x.nops(); ++i) stack2.push_back(x.op(i));
+        }
+        for (const GiNaC::ex& sym : left) {
+            const FreeName* f = ctx_.free_name_of(sym);
+            if (!f) continue;
+            if (exclude_part && exclude_part->is_equal(sym)) continue;
+            if (f->kind == NameKind::Vector)
+                p.vectors.push_back(f);
+            else if (f->kind == NameKind::Unit)
+                p.units.push_back(f);
+            else
+                p.unknown.push_back(f);
+        }
+        auto by_name = [](const FreeName* x, const FreeName* y) { return x->name < y->name; };
+        std::sort(p.vectors.begin(), p.vectors.end(), by_name);
+        std::sort(p.units.begin(), p.units.end(), by_name);
+        std::sort(p.unknown.begin(), p.unknown.end(), by_name);
+        std::sort(p.notes.begin(), p.notes.end());
+        p.ok = true;
+    } catch (const std::exception& e) {
+        p.problem = "cannot evaluate " + m(side.source) + ": " + e.what();
+    }
+    return p;
+}
+
+std::vector<Complex> Checker::signature(const GiNaC::ex& e) {
+    auto hit = signatures_.find(e);
+    if (hit != signatures_.end()) return hit->second;
+    std::vector<Complex> s;
+    for (unsigned seed = 201; seed <= 203; ++seed) {
+        const auto v = numbers_.value(e, numbers_.point(seed));
+        s.push_back(v ? *v : Complex(std::nan(""), 0));
+    }
+    signatures_[e] = s;
+    return s;
+}
+
+bool Checker::same_signature(const std::vector<Complex>& a, const std::vector<Complex>& b, double tol) const {
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (std::isnan(a[i].real()) || std::isnan(b[i].real())) return false;
+        if (std::abs(a[i] - b[i]) > tol * std::max({std::abs(a[i]), std::abs(b[i]), 1e-300})) return false;
+    }
+    return true;
+}
+
+Tri Checker::equal(const GiNaC::ex& a, const GiNaC::ex& b, double tol) {
+    const GiNaC::ex diff = a - b;
+    if (tol <= 1e-9) {  // exact numbers: a symbolic zero settles it
+        try {
+            if (diff.expand().is_zero()) return Tri::Yes;
+        } catch (...) {
+        }
+        try {
+            if (GiNaC::normal(diff).is_zero()) return Tri::Yes;
+        } catch (...) {
+        }
+    }
+    int good = 0;
+    for (unsigned seed = 1; seed <= 10 && good < 4; ++seed) {
+        const GiNaC::exmap at = numbers_.point(seed);
+        const auto va = numbers_.value(a, at), vb = numbers_.value(b, at);
+        if (!va || !vb) continue;
+        const double scale =
+            std::max({numbers_.scale(a, at), numbers_.scale(b, at), std::abs(*va), std::abs(*vb)});
+        if (std::abs(*va - *vb) > tol * scale + 1e-300) return Tri::No;
+        ++good;
+    }
+    return good >= 2 ? Tri::Yes : Tri::Unknown;
+}
+
+bool Checker::has_root(const GiNaC::ex& e) const {
+    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+        !GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer())
+        return true;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (has_root(e.op(i))) return true;
+    return false;
+}
+
+Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor) {
+    const std::size_t n = model_.dof();
+    std::vector<GiNaC::ex> a(n);
+    for (std::size_t j = 0; j < n; ++j) {
+        a[j] = GiNaC::diff(r, model_.coordinates[j].qdd);
+        for (std::size_t k = 0; k < n; ++k)
+            if (!GiNaC::diff(a[j], model_.coordinates[k].qdd).expand().is_zero())
+                return Tri::No;  // not linear in q̈
+    }
+    int good = 0;
+    std::vector<bool> used(n, false);
+    std::vector<double> first_c;
+    for (unsigned seed = 1; seed <= 10 && good < 3; ++seed) {
+        const GiNaC::exmap at = numbers_.point(seed);
+        Eigen::VectorXcd av(static_cast<Eigen::Index>(n));
+        Eigen::MatrixXcd Mv(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+        bool ok = true;
+        for (std::size_t j = 0; j < n && ok; ++j) {
+            auto v = numbers_.value(a[j], at);
+            ok = ok && v;
+            if (v) av(Eigen::Index(j)) = *v;
+            for (std::size_t k = 0; k < n && ok; ++k) {
+                auto mv = numbers_.value(eq_.M(unsigned(j), unsigned(k)), at);
+                ok = ok && mv;
+                if (mv) Mv(Eigen::Index(j), Eigen::Index(k)) = *mv;
+            }
+        }
+        if (!ok) continue;
+        const Eigen::VectorXcd c = Mv.fullPivLu().solve(av);
+        auto rv = numbers_.value(r, at);
+        if (!rv) continue;
+        Complex res = *rv;
+        double scale = numbers_.scale(r, at);
+        bool ok2 = true;
+        for (std::size_t i = 0; i < n; ++i) {
+            auto ev = numbers_.value(motion_[i], at);
+            if (!ev) {
+                ok2 = false;
+                break;
+            }
+            res -= c(Eigen::Index(i)) * *ev;
+            scale += std::abs(c(Eigen::Index(i))) * numbers_.scale(motion_[i], at);
+        }
+        if (!ok2) continue;
+        if (std::abs(res) > tol * scale + 1e-300) return Tri::No;
+        const double cmax = c.cwiseAbs().maxCoeff();
+        if (cmax == 0) return Tri::No;
+        for (std::size_t i = 0; i < n; ++i)
+            if (std::abs(c(Eigen::Index(i))) > 1e-9 * cmax) used[i] = true;
+        ++good;
+    }
+    if (good < 2) return Tri::Unknown;
+    const auto count = std::count(used.begin(), used.end(), true);
+    *only = -1;
+    if (count == 1) *only = int(std::find(used.begin(), used.end(), true) - used.begin());
+    if (*only >= 0) {
+        // The factor, symbolically when it is simple: the ratio of the q̈_i coefficients.
+        const GiNaC::symbol& qi = model_.coordinates[std::size_t(*only)].qdd;
+        try {
+            const GiNaC::ex c =
+                GiNaC::normal(GiNaC::diff(r, qi) / GiNaC::diff(motion_[std::size_t(*only)], qi));
+            if (!c.is_equal(1)) {
+                std::ostringstream os;
+                os << GiNaC::latex << c;
+                *factor = os.str();
+            }
+        } catch (...) {
+        }
+    }
+    return Tri::Yes;
+}
+
+bool Checker::proportional_in_state(const GiNaC::ex& r, const GiNaC::ex& target, double tol, GiNaC::ex* c) {
+    int settled = 0;
+    for (unsigned ps = 1; ps <= 4 && settled < 2; ++ps) {
+        std::vector<Complex> ratios;
+        for (unsigned ss = 1; ss <= 6 && ratios.size() < 3; ++ss) {
+            const GiNaC::exmap at = numbers_.point(ps, 100 + ss);
+            const auto tv = numbers_.value(target, at), rv = numbers_.value(r, at);
+            if (!tv || !rv) continue;
+            const double ts = numbers_.scale(target, at);
+            if (std::abs(*tv) <= 1e-9 * ts) continue;
+            ratios.push_back(*rv / *tv);
+        }
+        if (ratios.size() < 3) continue;
+        for (const Complex& q : ratios)
+            if (std::abs(q - ratios[0]) > std::max(tol, 1e-8) * std::max(std::abs(ratios[0]), 1e-300))
+                return false;
+        if (std::abs(ratios[0]) < 1e-12) return false;
+        ++settled;
+    }
+    if (settled < 2) return false;
+    try {
+        *c = GiNaC::normal(r / target);
+        if (has_velocity(*c) || has_acceleration(*c)) *c = GiNaC::ex(1);
+    } catch (...) {
+        *c = 1;
+    }
+    return true;
+}
+
+// -------------------------------------------------------------------------------------------- diagnosis
+
+std::string Checker::latex(const GiNaC::ex& e) {
+    // Integrals become placeholders printed from their parts, so that everything goes through the canonical
+    // printer: GiNaC's own order changes from process to process.
+    GiNaC::exmap placeholders;
+    std::function<GiNaC::ex(const GiNaC::ex&)> hide = [&](const GiNaC::ex& x) -> GiNaC::ex {
+        if (GiNaC::is_a<GiNaC::integral>(x)) {
+            const std::string var = GiNaC::ex_to<GiNaC::symbol>(x.op(0)).get_TeX_name();
+            const std::string text =
+                "\\int_{" + latex(x.op(1)) + "}^{" + latex(x.op(2)) + "} " + latex(x.op(3)) + " \\, d" + var;
+            return GiNaC::symbol(text, text);
+        }
+        if (x.nops() == 0) return x;
+        GiNaC::ex out = x;
+        struct Each : GiNaC::map_function {
+            std::function<GiNaC::ex(const GiNaC::ex&)>& f;
+            explicit Each(std::function<GiNaC::ex(const GiNaC::ex&)>& g) : f(g) {}
+            GiNaC::ex operator()(const GiNaC::ex& y) override { return f(y); }
+        } each(hide);
+        return x.map(each);
+    };
+    try {
+        const GiNaC::ex shown = has_integral(e) ? hide(e) : e;
+        codegen::SymbolTable table = printer_table_;
+        auto add = [&](const GiNaC::ex& sym, const std::string& name) {
+            table.info.push_back(
+                {codegen::SymbolKind::Constant, int(table.info.size()), name, name, name, name});
+            table.exprs.push_back(sym);
+        };
+        for (const auto& [name, f] : ctx_.free_names) add(f.symbol, name);
+        // Placeholders, bound variables of integrals and anything else the table does not know, by their TeX
+        // names, in the order of those names (the table's order is the printed order).
+        ExSet known(table.exprs.begin(), table.exprs.end());
+        std::vector<std::pair<std::string, GiNaC::ex>> others;
+        std::vector<GiNaC::ex> stack{shown};
+        while (!stack.empty()) {
+            const GiNaC::ex x = stack.back();
+            stack.pop_back();
+            if (GiNaC::is_a<GiNaC::symbol>(x) && !known.count(x)) {
+                others.push_back({GiNaC::ex_to<GiNaC::symbol>(x).get_TeX_name(), x});
+                known.insert(x);
+            }
+            for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
+        }
+        std::sort(others.begin(), others.end(),
+                  [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (const auto& [name, sym] : others) add(sym, name);
+        codegen::MathPrinter printer(table);
+        return printer.print(shown.expand(), codegen::MathStyle::Latex);
+    } catch (...) {
+    }
+    std::ostringstream os;
+    os << GiNaC::latex << e;
+    return os.str();
+}
+
+std::vector<Group> Checker::groups(const GiNaC::ex& e) const {
+    std::vector<GiNaC::ex> terms;
+    const GiNaC::ex x = e.expand();
+    if (GiNaC::is_a<GiNaC::add>(x)) {
+        for (const GiNaC::ex& t : x) terms.push_back(t);
+    } else if (!x.is_zero()) {
+        terms.push_back(x);
+    }
+    ExSet motion;
+    for (const Coordinate& c : model_.coordinates) {
+        motion.insert(c.qd);
+        motion.insert(c.qdd);
+    }
+    auto is_motion = [&](const GiNaC::ex& f) {
+        if (motion.count(f)) return true;
+        return GiNaC::is_a<GiNaC::power>(f) && motion.count(f.op(0)) &&
+               f.op(1).info(GiNaC::info_flags::integer);
+    };
+    std::vector<Group> out;
+    for (const GiNaC::ex& t : terms) {
+        GiNaC::ex mono = 1, coeff = 1;
+        if (GiNaC::is_a<GiNaC::mul>(t)) {
+            for (const GiNaC::ex& f : t) (is_motion(f) ? mono : coeff) *= f;
+        } else if (is_motion(t)) {
+            mono = t;
+        } else {
+            coeff = t;
+        }
+        auto it =
+            std::find_if(out.begin(), out.end(), [&](const Group& g) { return g.monomial.is_equal(mono); });
+        if (it == out.end()) {
+            out.push_back({mono, {}, 0});
+            it = out.end() - 1;
+        }
+        it->terms.push_back(t);
+        it->coefficient += coeff;
+    }
+    // Accelerations first, then higher powers of velocities; coordinates in model order.
+    auto key = [&](const GiNaC::ex& mono) {
+        std::vector<int> k;
+        int acc = 0, vel = 0;
+        for (const Coordinate& c : model_.coordinates) {
+            acc += mono.degree(c.qdd);
+            vel += mono.degree(c.qd);
+        }
+        k.push_back(-acc);
+        k.push_back(-vel);
+        for (const Coordinate& c : model_.coordinates) {
+            k.push_back(-mono.degree(c.qdd));
+            k.push_back(-mono.degree(c.qd));
+        }
+        return k;
+    };
+    std::stable_sort(out.begin(), out.end(),
+                     [&](const Group& a, const Group& b) { return key(a.monomial) < key(b.monomial); });
+    return out;
+}
+
+std::string Checker::group_name(const GiNaC::ex& monomial) const {
+    if (monomial.is_equal(1)) return "the terms without velocities";
+    std::string s = const_cast<Checker*>(this)->latex(monomial);
+    return "the " + m(s) + " terms";
+}
+
+std::string Checker::pair_kind(const GiNaC::ex& t, const GiNaC::ex& u, double tol, int* score) {
+    const auto su = signature(u);
+    if (same_signature(signature(-t), su, tol)) {
+        *score = 1;
+        return "a flipped sign";
+    }
+    // One sine or cosine at a time turned into the other.
+    std::vector<std::pair<GiNaC::ex, std::string>> swaps;
+    {
+        ExSet trig;
+        std::vector<GiNaC::ex> stack{t};
+        while (!stack.empty()) {
+            const GiNaC::ex x = stack.back();
+            stack.pop_back();
+            if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(x) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(x))
+                trig.insert(x);
+            for (std::size_t k = 0; k < x.nops(); ++k) stack.push_back(x.op(k));
+        }
+        for (const GiNaC::ex& f : trig) {
+            const bool is_sin = GiNaC::is_the_function<GiNaC::sin_SERIAL>(f);
+            const GiNaC::ex other = is_sin ? GiNaC::cos(f.op(0)) : GiNaC::sin(f.op(0));
+            swaps.push_back({t.subs(f == other), is_sin ? m("\\sin") + " where " + m("\\cos") + " belongs"
+                                                        : m("\\cos") + " where " + m("\\sin") + " belongs"});
+        }
+    }
+    for (const auto& [x, what] : swaps) {
+        if (x.is_equal(t)) continue;
+        if (same_signature(signature(x), su, tol)) {
+            *score = 2;
+            return what;
+        }
+        if (same_signature(signature(-x), su, tol)) {
+            *score = 2;
+            return what + ", and a flipped sign";
+        }
+    }
+    std::vector<std::pair<GiNaC::ex, std::string>> names;
+    for (const Parameter& p : model_.parameters) names.push_back({p.symbol, p.latex});
+    for (const Coordinate& c : model_.coordinates) names.push_back({c.q, c.latex});
+    for (const auto& [a, la] : names)
+        for (const auto& [b, lb] : names) {
+            if (a.is_equal(b) || !t.has(a)) continue;
+            if (same_signature(signature(t.subs(a == b)), su, tol)) {
+                *score = 2;
+                return m(la) + " where " + m(lb) + " belongs";
+            }
+        }
+    try {
+        const GiNaC::ex q = GiNaC::normal(t / u);
+        if (GiNaC::is_a<GiNaC::numeric>(q)) {
+            *score = 3;
+            return "off by a factor " + m(latex(q));
+        }
+    } catch (...) {
+    }
+    *score = 9;
+    return "";
+}
+
+Diagnosis Checker::compare_to(const GiNaC::ex& text, const GiNaC::ex& truth, double tol) {
+    Diagnosis d;
+    const GiNaC::ex diff = (text - truth).expand();
+    d.difference = latex(diff);
+    const std::vector<Group> tg = groups(text), ug = groups(truth);
+    std::vector<GiNaC::ex> keys;
+    for (const Group& g : tg) keys.push_back(g.monomial);
+    for (const Group& g : ug)
+        if (std::none_of(keys.begin(), keys.end(),
+                         [&](const GiNaC::ex& k) { return k.is_equal(g.monomial); }))
+            keys.push_back(g.monomial);
+    auto find = [](const std::vector<Group>& gs, const GiNaC::ex& k) -> const Group* {
+        for (const Group& g : gs)
+            if (g.monomial.is_equal(k)) return &g;
+        return nullptr;
+    };
+    // Order keys as groups() would: use a combined expression of monomials.
+    {
+        GiNaC::ex probe = 0;
+        GiNaC::symbol marker("__k");
+        for (const GiNaC::ex& k : keys) probe += marker * k;
+        std::vector<GiNaC::ex> sorted;
+        for (const Group& g : groups(probe)) sorted.push_back(g.monomial);
+        if (sorted.size() == keys.size()) keys = sorted;
+    }
+    for (const GiNaC::ex& k : keys) {
+        const Group* a = find(tg, k);
+        const Group* b = find(ug, k);
+        const GiNaC::ex ca = a ? a->coefficient : GiNaC::ex(0), cb = b ? b->coefficient : GiNaC::ex(0);
+        if (equal(ca * k, cb * k, tol) == Tri::Yes) continue;
+        const std::string group = group_name(k);
+        // The whole group off by a constant factor (a dropped 1/3, a flipped sign): say so once.
+        if (a && b) {
+            try {
+                const GiNaC::ex q = GiNaC::normal(ca / cb);
+                if (GiNaC::is_a<GiNaC::numeric>(q)) {
+                    d.lines.push_back(
+                        group + ": " + m(latex(ca * k)) + " where " + m(latex(cb * k)) + " belongs (" +
+                        (q.is_equal(-1) ? std::string("a flipped sign") : "off by a factor " + m(latex(q))) +
+                        ")");
+                    continue;
+                }
+            } catch (...) {
+            }
+        }
+        std::vector<GiNaC::ex> ts = a ? a->terms : std::vector<GiNaC::ex>{};
+        std::vector<GiNaC::ex> us = b ? b->terms : std::vector<GiNaC::ex>{};
+        // In a printed order, not GiNaC's (which changes from process to process).
+        auto printed = [this](std::vector<GiNaC::ex>& v) {
+            std::vector<std::pair<std::string, GiNaC::ex>> keyed;
+            for (const GiNaC::ex& x : v) keyed.push_back({latex(x), x});
+            std::stable_sort(keyed.begin(), keyed.end(),
+                             [](const auto& x, const auto& y) { return x.first < y.first; });
+            for (std::size_t i = 0; i < v.size(); ++i) v[i] = keyed[i].second;
+        };
+        printed(ts);
+        printed(us);
+        // Terms equal on both sides are not the problem.
+        for (std::size_t i = 0; i < ts.size();) {
+            bool removed = false;
+            for (std::size_t j = 0; j < us.size(); ++j)
+                if (same_signature(signature(ts[i]), signature(us[j]), std::max(tol, 1e-9))) {
+                    us.erase(us.begin() + long(j));
+                    ts.erase(ts.begin() + long(i));
+                    removed = true;
+                    break;
+                }
+            if (!removed) ++i;
+        }
+        // Pair what is left, best explanations first.
+        struct Cand {
+            int score;
+            std::size_t i, j;
+            std::string kind;
+        };
+        std::vector<Cand> cands;
+        for (std::size_t i = 0; i < ts.size(); ++i)
+            for (std::size_t j = 0; j < us.size(); ++j) {
+                int score = 9;
+                std::string kind = pair_kind(ts[i], us[j], std::max(tol, 1e-9), &score);
+                cands.push_back({score, i, j, kind});
+            }
+        std::stable_sort(cands.begin(), cands.end(),
+                         [](const Cand& x, const Cand& y) { return x.score < y.score; });
+        std::vector<bool> ti(ts.size(), false), uj(us.size(), false);
+        for (const Cand& c : cands) {
+            if (ti[c.i] || uj[c.j]) continue;
+            // A lone pair is explained even without a kind; among several, only recognised kinds pair up.
+            if (c.score == 9 && !(ts.size() == 1 && us.size() == 1)) continue;
+            ti[c.i] = uj[c.j] = true;
+            d.lines.push_back(group + ": " + m(latex(ts[c.i])) + " where " + m(latex(us[c.j])) + " belongs" +
+                              (c.kind.empty() ? "" : " (" + c.kind + ")"));
+        }
+        for (std::size_t j = 0; j < us.size(); ++j)
+            if (!uj[j]) d.lines.push_back(group + ": missing " + m(latex(us[j])));
+        for (std::size_t i = 0; i < ts.size(); ++i)
+            if (!ti[i]) d.lines.push_back(group + ": " + m(latex(ts[i])) + " should not be there");
+        if (ts.empty() && us.empty())  // equal term by term within the tolerance, not as a sum: say so
+            d.lines.push_back(group + ": " + m(latex(ca * k)) + " where " + m(latex(cb * k)) + " belongs");
+    }
+    if (d.lines.empty()) d.lines.push_back("the two differ by " + m(d.difference));
+    return d;
+}
+
+int Checker::best_factor(const GiNaC::ex& text, const GiNaC::ex& truth, double tol, GiNaC::ex* c) {
+    const std::vector<Group> tg = groups(text), ug = groups(truth);
+    std::vector<GiNaC::ex> candidates;
+    for (const Group& a : tg)
+        for (const Group& b : ug)
+            if (a.monomial.is_equal(b.monomial)) {
+                try {
+                    const GiNaC::ex q = GiNaC::normal(a.coefficient / b.coefficient);
+                    if (!q.is_zero()) candidates.push_back(q);
+                } catch (...) {
+                }
+            }
+    if (candidates.empty()) candidates.push_back(1);
+    int best = -1;
+    for (const GiNaC::ex& q : candidates) {
+        int agree = 0;
+        for (const Group& a : tg) {
+            GiNaC::ex cb = 0;
+            for (const Group& b : ug)
+                if (b.monomial.is_equal(a.monomial)) cb = b.coefficient;
+            if (equal(a.coefficient, q * cb, tol) == Tri::Yes) ++agree;
+        }
+        const bool better = agree > best || (agree == best && GiNaC::is_a<GiNaC::numeric>(q) &&
+                                             !GiNaC::is_a<GiNaC::numeric>(*c));
+        if (better) {
+            best = agree;
+            *c = q;
+        }
+    }
+    return best;
+}
+
+// ---------------------------------------------------------------------------------------------- checking
+
+void Checker::collect_parts(const std::vector<FullChain>& chains) {
+    for (const FullChain& c : chains) {
+        if (c.sides.size() < 2 || !c.sides[0].side->ok) continue;
+        const GiNaC::ex head = c.sides[0].side->value;
+        if (!is_part(head) || part_value_.count(head)) continue;
+        for (std::size_t k = c.sides.size(); k-- > 1;) {
+            Prepared p = prepare(c.sides[k], &head);
+            if (!p.comparable() || !p.units.empty() || p.value.has(head) || p.has_part) continue;
+            part_value_[head] = p.value;
+            part_origin_[head] =
+                "line " + std::to_string(d_.position(c.sides[k].base + c.sides[k].side->begin).line);
+            break;
+        }
+    }
+}
+
+void Checker::check_chain(const FullChain& c, std::vector<EquationCheck>& out) {
+    const std::size_t n = c.sides.size();
+    std::vector<bool> comparable(n, false);
+    for (std::size_t k = 0; k < n; ++k) {
+        Prepared p = prepare(c.sides[k]);
+        comparable[k] = p.comparable() || is_part(c.sides[k].side->value);
+    }
+    for (std::size_t k = 0; k + 1 < n; ++k) out.push_back(safe_check_link(c, k, k + 1, false));
+    // Across sides that cannot be compared (an integral over a region, an unknown function): compare the
+    // comparable sides on either side of them, so that a claim is not lost behind a step the checker cannot
+    // read.
+    std::size_t last = n;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (!comparable[k]) continue;
+        if (last != n && k > last + 1) {
+            bool all_equal = true;
+            for (std::size_t q = last; q < k; ++q)
+                all_equal = all_equal && c.relations[q] != Relation::Inequality;
+            if (all_equal) out.push_back(safe_check_link(c, last, k, true));
+        }
+        last = k;
+    }
+}
+
+EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
+    EquationCheck r;
+    const PSide& L = c.sides[i];
+    const PSide& R = c.sides[j];
+    const std::size_t rel_at = c.relation_offsets[j - 1];
+    r.where = d_.position(bridge ? c.relation_offsets[i] : rel_at);
+    if (c.section >= 0) r.section = d_.sections[std::size_t(c.section)].title;
+    Relation rel = Relation::Equal;
+    for (std::size_t q = i; q < j; ++q)
+        if (c.relations[q] != Relation::Equal) rel = c.relations[q];
+    const std::string sign =
+        rel == Relation::Approx ? " \\approx " : (rel == Relation::Inequality ? " \\;?\\; " : " = ");
+    r.equation = (L.side->source.empty() ? std::string("\\ldots") : L.side->source) + sign +
+                 (R.side->source.empty() ? std::string("\\ldots") : R.side->source);
+    if (bridge) r.notes.push_back("compared across the step(s) between them that cannot be compared");
+    if (rel == Relation::Inequality) {
+        r.reason = "an inequality or a relation other than equality is not compared";
+        return r;
+    }
+    // A part of T or V defined by this link: compare it with its share of eomgen's T or V.
+    for (int side = 0; side < 2; ++side) {
+        const PSide& P = side == 0 ? L : R;
+        const PSide& O = side == 0 ? R : L;
+        if (!P.side->ok || !is_part(P.side->value)) continue;
+        const GiNaC::ex part = P.side->value;
+        Prepared o = prepare(O, &part);
+        if (!o.ok) {
+            r.reason = o.problem;
+            return r;
+        }
+        if (o.value.has(part)) break;  // T_{a} = T_{a}: an identity, handled below
+        if (!o.comparable() || !o.units.empty()) break;
+        const double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
+        r.notes.insert(r.notes.end(), o.notes.begin(), o.notes.end());
+        check_part(part, P.side->source, o, tol, r);
+        return r;
+    }
+    Prepared a = prepare(L), b = prepare(R);
+    if (!a.ok || !b.ok) {
+        r.reason = !a.ok ? a.problem : b.problem;
+        return r;
+    }
+    for (const Prepared* p : {&a, &b}) r.notes.insert(r.notes.end(), p->notes.begin(), p->notes.end());
+    std::sort(r.notes.begin(), r.notes.end());
+    r.notes.erase(std::unique(r.notes.begin(), r.notes.end()), r.notes.end());
+    double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
+    if (rel == Relation::Approx) tol = std::max(tol, 1e-2);
+    check_values(c, i, j, a, b, tol, r);
+    return r;
+}
+
+std::vector<std::string> Checker::factor_analysis(const GiNaC::ex& a, const GiNaC::ex& b, double tol,
+                                                  std::string* ratio) {
+    std::vector<std::string> out;
+    auto factors = [](const GiNaC::ex& e) {
+        std::vector<GiNaC::ex> f;
+        if (GiNaC::is_a<GiNaC::mul>(e))
+            for (const GiNaC::ex& x : e) f.push_back(x);
+        else
+            f.push_back(e);
+        return f;
+    };
+    std::vector<GiNaC::ex> fa = factors(a), fb = factors(b);
+    // Factors equal on both sides (numerically: two integrals with the same value count as equal) cancel.
+    for (std::size_t i = 0; i < fa.size();) {
+        bool removed = false;
+        for (std::size_t j = 0; j < fb.size(); ++j)
+            if (same_signature(signature(fa[i]), signature(fb[j]), std::max(tol, 1e-9))) {
+                fa.erase(fa.begin() + long(i));
+                fb.erase(fb.begin() + long(j));
+                removed = true;
+                break;
+            }
+        if (!removed) ++i;
+    }
+    GiNaC::ex A = 1, B = 1;
+    for (const GiNaC::ex& x : fa) A *= x;
+    for (const GiNaC::ex& x : fb) B *= x;
+    try {
+        // A number?
+        const auto sa = signature(A / B);
+        bool constant = !std::isnan(sa[0].real());
+        for (const Complex& v : sa) constant = constant && std::abs(v - sa[0]) <= 1e-9 * std::abs(sa[0]);
+        if (constant && std::abs(sa[0].imag()) < 1e-12 * std::abs(sa[0])) {
+            const double k = sa[0].real();
+            std::ostringstream os;
+            os.precision(6);
+            os << k;
+            const bool minus_one = std::abs(k + 1) <= std::max(tol, 1e-9);
+            out.push_back(minus_one
+                              ? std::string("the two sides have opposite signs") +
+                                    (std::abs(k + 1) > 1e-9 ? " (the left side is " + os.str() +
+                                                                  " times the right side; equal in size "
+                                                                  "within the rounding of the numbers)"
+                                                            : "")
+                              : "the left side is " + os.str() + " times the right side");
+            *ratio = minus_one ? "-" : os.str();
+            return out;
+        }
+        GiNaC::ex q = GiNaC::normal(A / B);
+        std::string shown;
+        if (!has_root(q) && !has_integral(q)) {
+            shown = latex(q);
+        } else {
+            const GiNaC::ex q2 = GiNaC::normal(GiNaC::pow(A / B, 2));
+            if (!has_root(q2) && !has_integral(q2)) shown = "\\sqrt{" + latex(q2) + "}";
+        }
+        if (!shown.empty()) {
+            out.push_back("the left side is " + m(shown) + " times the right side");
+            *ratio = shown;
+        }
+        if (fa.size() == 1 && fb.size() == 1)
+            out.push_back("the factor " + m(latex(fa[0])) + " where the right side has " + m(latex(fb[0])));
+    } catch (...) {
+    }
+    return out;
+}
+
+void Checker::check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other,
+                         double tol, EquationCheck& r) {
+    std::string name;
+    GiNaC::ex whole;
+    is_part(part, &name, &whole);
+    const std::string whole_name = name.substr(0, 1);
+    r.compared_with = m(name) + ", a part of " + m(whole_name);
+    // Its terms are terms of T (or V): then it is a part of it.
+    std::vector<GiNaC::ex> wt, pt;
+    const GiNaC::ex we = whole.expand(), pe = other.value.expand();
+    if (GiNaC::is_a<GiNaC::add>(we))
+        for (const GiNaC::ex& t : we) wt.push_back(t);
+    else
+        wt.push_back(we);
+    if (GiNaC::is_a<GiNaC::add>(pe))
+        for (const GiNaC::ex& t : pe) pt.push_back(t);
+    else
+        pt.push_back(pe);
+    bool subset = !pe.is_zero();
+    std::vector<bool> used(wt.size(), false);
+    for (const GiNaC::ex& t : pt) {
+        bool found = false;
+        for (std::size_t k = 0; k < wt.size() && !found; ++k)
+            if (!used[k] && same_signature(signature(t), signature(wt[k]), tol)) found = used[k] = true;
+        subset = subset && found;
+    }
+    if (subset) {
+        r.verdict = Verdict::Agrees;
+        r.reason = "its terms are terms of eomgen's " + m(whole_name);
+        return;
+    }
+    // Otherwise it should be T minus the other parts the text defines.
+    GiNaC::ex others = 0;
+    std::vector<std::string> names;
+    for (const auto& [sym, value] : part_value_) {
+        std::string n2;
+        GiNaC::ex w2;
+        if (sym.is_equal(part) || !is_part(sym, &n2, &w2) || n2[0] != name[0]) continue;
+        others += value;
+        names.push_back(m(n2) + " (" + part_origin_.at(sym) + ")");
+    }
+    std::sort(names.begin(), names.end());
+    GiNaC::ex expected;
+    if (!names.empty()) {
+        expected = whole - others;
+        std::string list;
+        for (std::size_t k = 0; k < names.size(); ++k) list += (k ? ", " : "") + names[k];
+        if (equal(other.value, expected, tol) == Tri::Yes) {
+            r.verdict = Verdict::Agrees;
+            r.reason = "it is eomgen's " + m(whole_name) + " minus the text's other parts: " + list;
+            return;
+        }
+        r.notes.push_back("compared with eomgen's " + m(whole_name) +
+                          " minus the text's other parts: " + list);
+    } else {
+        // No other parts: its share of T is the terms of T of the same kinds (velocity monomials).
+        expected = 0;
+        for (const Group& g : groups(whole))
+            for (const Group& h : groups(other.value))
+                if (g.monomial.is_equal(h.monomial)) expected += g.coefficient * g.monomial;
+        r.notes.push_back("compared with the terms of eomgen's " + m(whole_name) + " of the same kinds");
+    }
+    r.verdict = Verdict::Disagrees;
+    const Diagnosis dg = compare_to(other.value, expected, tol);
+    r.difference = dg.difference;
+    r.wrong_terms = dg.lines;
+    r.corrected = part_source + " = " + latex(expected);
+}
+
+void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a,
+                           const Prepared& b, double tol, EquationCheck& r) {
+    const PSide& L = c.sides[i];
+    const PSide& R = c.sides[j];
+    auto label_of = [&](const PSide& s) -> std::string {
+        if (!s.side->ok) return "";
+        auto it = label_what_.find(s.side->value);
+        return it == label_what_.end() ? "" : it->second;
+    };
+    const std::string ll = label_of(L), rl = label_of(R);
+    r.compared_with = !ll.empty() ? m(ll) : (!rl.empty() ? m(rl) : "");
+    const bool rounded = tol > 1e-9;
+    const std::string within = rounded ? " within the rounding of its numbers (" +
+                                             [&] {
+                                                 std::ostringstream os;
+                                                 os.precision(2);
+                                                 os << tol * 100 << "%)";
+                                                 return os.str();
+                                             }()
+                                       : "";
+
+    // Free names: an identity still agrees, anything else cannot be judged.
+    if (!a.comparable() || !b.comparable()) {
+        // Vectors are not scalars: a×b = −b×a, so only identities in scalar unknowns are claimed.
+        if (a.vectors.empty() && b.vectors.empty() && equal(a.value, b.value, tol) == Tri::Yes) {
+            r.verdict = Verdict::Agrees;
+            r.compared_with = "an identity";
+            r.reason = "both sides are equal (in the text's own symbols)" + within;
+            return;
+        }
+        std::vector<std::string> unknown, vectors;
+        auto describe = [&](const PSide& s, const Prepared& p) {
+            for (const FreeName* f : p.vectors) {
+                const std::string x = m(f->name);
+                if (std::find(vectors.begin(), vectors.end(), x) == vectors.end()) vectors.push_back(x);
+            }
+            for (const FreeName* f : p.unknown) {
+                std::string x = m(f->name);
+                for (const NameUse& u : s.side->uses)
+                    if (u.name == f->name) {
+                        x += " (" + where(s.base + u.offset) + ")";
+                        break;
+                    }
+                if (f->name == "d") x += " (a differential?)";
+                if (std::find(unknown.begin(), unknown.end(), x) == unknown.end()) unknown.push_back(x);
+            }
+        };
+        describe(L, a);
+        describe(R, b);
+        auto join = [](const std::vector<std::string>& v) {
+            std::string s;
+            for (std::size_t k = 0; k < v.size(); ++k) s += (k ? ", " : "") + v[k];
+            return s;
+        };
+        if (!unknown.empty())
+            r.reason = "unknown symbol" + std::string(unknown.size() > 1 ? "s " : " ") + join(unknown) +
+                       ": not a symbol of the model (--map can say what it stands for)";
+        else
+            r.reason = "vector quantities (" + join(vectors) + ") are not compared";
+        return;
+    }
+    if (!a.units.empty() || !b.units.empty()) {
+        if (equal(a.value, b.value, tol) == Tri::Yes) {
+            r.verdict = Verdict::Agrees;
+            r.compared_with = "an identity";
+            r.reason = "both sides are equal, units included" + within;
+            return;
+        }
+        r.reason = "a quantity with units that do not cancel";
+        return;
+    }
+    const GiNaC::ex r_ex = a.value - b.value;
+    // 1. An identity: equal as they stand (a label and its value, two steps of a chain, T = T_{1} + T_{2}).
+    const Tri same = equal(a.value, b.value, tol);
+    if (same == Tri::Yes) {
+        r.verdict = Verdict::Agrees;
+        if (r.compared_with.empty()) r.compared_with = "an identity";
+        r.reason = (ll.empty() && rl.empty() ? std::string("both sides are equal")
+                                             : "equal to eomgen's " + (ll.empty() ? m(rl) : m(ll))) +
+                   within;
+        return;
+    }
+    if (same == Tri::Unknown) {
+        r.reason = "could not be evaluated at enough points to decide";
+        return;
+    }
+    // 2. An equation of motion: a combination of the Euler–Lagrange equations.
+    if (has_acceleration(r_ex)) {
+        int only = -1;
+        std::string factor;
+        if (euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor) == Tri::Yes) {
+            r.verdict = Verdict::Agrees;
+            if (only >= 0) {
+                r.compared_with =
+                    "the Euler–Lagrange equation for " + m(model_.coordinates[std::size_t(only)].latex);
+                r.reason = factor.empty() ? "the same equation" + within
+                                          : "the same equation times " + m(factor) + within;
+            } else {
+                r.compared_with = "the Euler–Lagrange equations";
+                r.reason = "a combination of them" + within;
+            }
+            return;
+        }
+    }
+    // 3. An integral of motion with the model's initial state (also after squaring a square root).
+    if (!has_acceleration(r_ex) && depends_on_state(r_ex)) {
+        std::vector<std::pair<GiNaC::ex, std::string>> forms{{r_ex, ""}};
+        if (has_root(a.value) || has_root(b.value))
+            forms.push_back({(a.value * a.value - b.value * b.value).expand(),
+                             " after squaring both sides (the sign of the root is not checked)"});
+        for (const auto& [form, how] : forms)
+            for (const auto& [target, what] : integrals_of_motion_) {
+                GiNaC::ex factor;
+                if (proportional_in_state(form, target, tol, &factor)) {
+                    r.verdict = Verdict::Agrees;
+                    r.compared_with = what;
+                    r.reason = "proportional to it" + how + within;
+                    return;
+                }
+            }
+    }
+    // A formula set equal to a number is evaluated for particular data, which the model keeps symbolic.
+    auto constant = [&](const GiNaC::ex& x) {
+        for (const Parameter& p : model_.parameters)
+            if (x.has(p.symbol)) return false;
+        return !depends_on_state(x) && !has_acceleration(x) && !x.has(model_.t);
+    };
+    const GiNaC::ex& varying = constant(a.value) ? b.value : a.value;
+    if (constant(a.value) != constant(b.value) && !(constant(a.value) ? a.value : b.value).is_zero() &&
+        !has_velocity(varying) && !has_acceleration(varying)) {
+        r.reason = "a value for particular data (the model's parameters are symbols): not compared";
+        return;
+    }
+    // 4. It disagrees with what it tries to be.
+    const bool left_ref = a.has_truth_label && !a.has_part;
+    const bool right_ref = b.has_truth_label && !b.has_part;
+    if (left_ref || right_ref) {
+        const bool left_is_truth = left_ref;
+        const PSide& ref = left_is_truth ? L : R;
+        const Prepared& truth = left_is_truth ? a : b;
+        const Prepared& text = left_is_truth ? b : a;
+        if (has_acceleration(r_ex) && !has_acceleration(truth.value)) {
+            // "... = 0" against d/dt(∂L/∂q̇) − ∂L/∂q written with L: fall through to the equation-of-motion
+            // check.
+        } else {
+            r.verdict = Verdict::Disagrees;
+            if (r.compared_with.empty()) r.compared_with = "eomgen's value of " + m(ref.side->source);
+            const Diagnosis dg = compare_to(text.value, truth.value, tol);
+            r.difference = dg.difference;
+            r.wrong_terms = dg.lines;
+            r.corrected = ref.side->source + " = " + latex(truth.value);
+            return;
+        }
+    }
+    if (has_acceleration(r_ex)) {
+        diagnose_euler_lagrange(L, R, r_ex, tol, r);
+        return;
+    }
+    const bool chain_link = c.sides.size() >= 3;
+    if (chain_link) {
+        r.verdict = Verdict::Disagrees;
+        r.compared_with = "the previous step of the chain";
+        const bool sums =
+            GiNaC::is_a<GiNaC::add>(a.value.expand()) || GiNaC::is_a<GiNaC::add>(b.value.expand());
+        // What the chain is about (T = ..., T_{disk} = ...): when the right side equals it, the slip is on
+        // the left.
+        bool slip_left = false;
+        if (c.sides[0].side->ok) {
+            std::optional<GiNaC::ex> subject;
+            auto t = truth_.find(c.sides[0].side->value);
+            if (t != truth_.end()) subject = t->second;
+            if (!subject && is_part(c.sides[0].side->value)) subject = expected_part(c.sides[0].side->value);
+            if (subject && equal(b.value, *subject, tol) == Tri::Yes) {
+                slip_left = true;
+                r.notes.push_back("the right side is right (it equals eomgen's value of " +
+                                  m(c.sides[0].side->source) + "): the slip is in the left side");
+            }
+        }
+        std::string ratio;
+        const std::vector<std::string> factors =
+            sums ? std::vector<std::string>{} : factor_analysis(a.value, b.value, tol, &ratio);
+        const Diagnosis dg =
+            slip_left ? compare_to(a.value, b.value, tol) : compare_to(b.value, a.value, tol);
+        r.difference = dg.difference;
+        r.wrong_terms = factors;
+        if (factors.empty()) r.wrong_terms.insert(r.wrong_terms.end(), dg.lines.begin(), dg.lines.end());
+        if (slip_left)
+            r.corrected = latex(b.value) + " = " + R.side->source;
+        else
+            r.corrected = !ratio.empty()
+                              ? L.side->source + " = " + ratio + " \\left(" + R.side->source + "\\right)"
+                              : L.side->source + " = " + latex(a.value);
+        return;
+    }
+    if (has_velocity(r_ex) && !integrals_of_motion_.empty()) {
+        GiNaC::ex cf = 1;
+        const GiNaC::ex target = integrals_of_motion_.front().first;
+        if (best_factor(r_ex, target, tol, &cf) >= 1) {
+            r.verdict = Verdict::Disagrees;
+            r.compared_with = integrals_of_motion_.front().second;
+            const Diagnosis dg = compare_to(r_ex, (cf * target).expand(), tol);
+            r.difference = dg.difference;
+            r.wrong_terms = dg.lines;
+            r.corrected = latex((cf * target).expand()) + " = 0";
+            return;
+        }
+    }
+    r.reason =
+        "not an identity, and not an equation of this model (a condition or an assumption, such as a "
+        "particular value)";
+}
+
+void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
+                                      EquationCheck& out) {
+    (void)left;
+    (void)right;
+    int best_i = -1, best_count = -1;
+    GiNaC::ex best_c = 1;
+    for (std::size_t i = 0; i < model_.dof(); ++i) {
+        GiNaC::ex c = 1;
+        const int count = best_factor(r, motion_[i], tol, &c);
+        // Ties: the coordinate whose own acceleration the text's equation has.
+        const bool better = count > best_count || (count == best_count && r.has(model_.coordinates[i].qdd) &&
+                                                   !r.has(model_.coordinates[std::size_t(best_i)].qdd));
+        if (better) {
+            best_count = count;
+            best_i = int(i);
+            best_c = c;
+        }
+    }
+    const std::size_t i = std::size_t(best_i);
+    const Coordinate& q = model_.coordinates[i];
+    out.verdict = Verdict::Disagrees;
+    out.compared_with = "the Euler–Lagrange equation for " + m(q.latex);
+    if (!best_c.is_equal(1))
+        out.notes.push_back("compared after scaling eomgen's equation by " + m(latex(best_c)));
+    const GiNaC::ex truth = (best_c * motion_[i]).expand();
+    const Diagnosis dg = compare_to(r, truth, tol);
+    out.difference = dg.difference;
+    out.wrong_terms = dg.lines;
+    out.corrected = latex(truth) + " = 0";
+    // d/dt(X) − (Y) = 0 written out: say which of ∂L/∂q̇ and ∂L/∂q is wrong.
+    for (const PSide* s : {&left, &right}) {
+        if (!s->side->ok) continue;
+        std::vector<GiNaC::ex> found;
+        std::vector<GiNaC::ex> stack{s->side->value};
+        while (!stack.empty()) {
+            GiNaC::ex x = stack.back();
+            stack.pop_back();
+            if (is_ex_the_function(x, ddt)) found.push_back(x);
+            for (std::size_t k = 0; k < x.nops(); ++k) stack.push_back(x.op(k));
+        }
+        if (found.size() != 1) continue;
+        try {
+            const GiNaC::ex D = found[0];
+            const GiNaC::symbol z("__d");
+            GiNaC::exmap labels;
+            for (const auto& [sym, val] : truth_) labels[sym] = val;
+            const GiNaC::ex side_z = s->side->value.subs(D == z).subs(labels);
+            const GiNaC::ex k = GiNaC::diff(side_z, z);
+            if (has_velocity(k) || k.has(z)) continue;
+            const double sign = s == &left ? 1 : -1;
+            const GiNaC::ex X = resolve_operators(D.op(0).subs(labels));
+            const GiNaC::ex rest = resolve_operators(side_z.subs(z == 0));
+            const GiNaC::ex other = resolve_operators(prepare(s == &left ? right : left).value);
+            // side = k·d/dt X + rest. With sign +1 on the left, −1 on the right, the equation matches
+            // c·(d/dt p − ∂L/∂q) when sign·k·X = c·p and −sign·(rest − other side) = c·∂L/∂q.
+            const GiNaC::ex p_text = (sign * k * X).expand();
+            const GiNaC::ex dLdq_text = (-sign * (rest - other)).expand();
+            const GiNaC::ex p_true = (best_c * eq_.momenta[i]).expand();
+            const GiNaC::ex dLdq_true =
+                (best_c * (time_derivative(eq_.momenta[i], model_) - motion_[i])).expand();
+            const std::string pl = m("\\partial L/\\partial \\dot{" + q.latex + "}");
+            const std::string ql = m("\\partial L/\\partial " + q.latex);
+            if (equal(p_text, p_true, tol) == Tri::Yes) {
+                out.notes.push_back("inside " + m("\\frac{d}{dt}") + ": the text's " + pl + " agrees");
+            } else {
+                const Diagnosis dp = compare_to(p_text, p_true, tol);
+                for (const std::string& line : dp.lines)
+                    out.wrong_terms.push_back("inside " + m("\\frac{d}{dt}") + " (" + pl + "), " + line);
+            }
+            if (equal(dLdq_text, dLdq_true, tol) == Tri::Yes) {
+                out.notes.push_back("the text's " + ql + " agrees");
+            } else {
+                const Diagnosis dq = compare_to(dLdq_text, dLdq_true, tol);
+                for (const std::string& line : dq.lines) out.wrong_terms.push_back("in " + ql + ", " + line);
+            }
+            out.corrected = "\\frac{d}{dt}\\left(" + latex(p_true) + "\\right) - \\left(" + latex(dLdq_true) +
+                            "\\right) = 0";
+        } catch (...) {
+        }
+    }
+}
+
+CheckReport Checker::run() {
+    CheckReport report;
+    report.model_path = model_.path;
+    report.model_title = model_.title;
+    report.derivation_path = d_.path;
+    report.map = options_.map;
+    const std::vector<int> selected = select_sections(d_, options_.sections);
+    if (!options_.sections.empty() && selected.empty()) {
+        std::string list;
+        for (const Section& s : d_.sections) list += "\n  " + s.title;
+        throw CheckError("no heading of " + d_.path + " contains '" + options_.sections.front() +
+                         "'; headings:" + list);
+    }
+    const bool whole = options_.sections.empty();
+    if (!whole)
+        for (int k : selected) report.sections.push_back(d_.sections[std::size_t(k)].title);
+
+    setup_names();
+    apply_map();
+
+    // Pass 1: parse every selected row; rows that start with "=" continue the chain above them.
+    struct Parsed {
+        const MathRow* row;
+        std::vector<Chain> chains;
+    };
+    std::vector<Parsed> parsed;
+    for (const MathRow& row : d_.rows) {
+        if (!row_selected(d_, row, selected, whole)) continue;
+        parsed.push_back({&row, parse_math(row.text, ctx_)});
+    }
+    std::vector<FullChain> chains;
+    const MathRow* previous_display = nullptr;
+    for (const Parsed& p : parsed) {
+        for (std::size_t k = 0; k < p.chains.size(); ++k) {
+            const Chain& ch = p.chains[k];
+            const bool continues =
+                k == 0 && p.row->display && ch.sides.size() >= 2 && ch.sides[0].empty() && previous_display &&
+                !chains.empty() && chains.back().display && chains.back().section == p.row->section && [&] {
+                    const std::size_t from = previous_display->offset + previous_display->text.size();
+                    for (std::size_t q = from; q < p.row->offset && q < d_.text.size(); ++q)
+                        if (!std::isspace(static_cast<unsigned char>(d_.text[q])) &&
+                            std::string("$\\[]").find(d_.text[q]) == std::string::npos)
+                            return false;
+                    return true;
+                }();
+            if (!continues) {
+                FullChain f;
+                f.section = p.row->section;
+                f.display = p.row->display;
+                f.sides.push_back({&ch.sides[0], p.row->offset});
+                chains.push_back(f);
+            }
+            FullChain& f = chains.back();
+            for (std::size_t s = 1; s < ch.sides.size(); ++s) {
+                f.sides.push_back({&ch.sides[s], p.row->offset});
+                f.relations.push_back(ch.relations[s - 1]);
+                f.relation_offsets.push_back(p.row->offset + ch.relation_offsets[s - 1]);
+            }
+        }
+        if (p.row->display) previous_display = p.row;
+    }
+    collect_parts(chains);
+    for (const FullChain& c : chains) {
+        if (c.sides.size() < 2) continue;  // an expression, not an equation
+        check_chain(c, report.equations);
+    }
+    std::stable_sort(report.equations.begin(), report.equations.end(),
+                     [](const EquationCheck& x, const EquationCheck& y) {
+                         return std::make_pair(x.where.line, x.where.column) <
+                                std::make_pair(y.where.line, y.where.column);
+                     });
+    return report;
+}
+
+}  // namespace
+
+CheckReport check_derivation(const Model& model, const Equations& eq, const Derivation& derivation,
+                             const CheckOptions& options) {
+    Checker c(model, eq, derivation, options);
+    return c.run();
+}
+
+}  // namespace eomgen::checker

@@ -1,0 +1,92 @@
+/** @file checker.hpp  Compares each equation of a derivation text with what eomgen derived for the model. */
+#pragma once
+
+#include "checker/derivation.hpp"
+#include "mechanics/lagrangian.hpp"
+#include "model/model.hpp"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace eomgen::checker {
+
+enum class Verdict {
+    Agrees,         ///< equal to eomgen's quantity, an identity, or a consequence of the equations of motion
+    Disagrees,      ///< wrong: with the difference, the wrong terms and the corrected equation
+    NotComparable,  ///< with the reason: unknown symbol, not an equation of this model, cannot be read
+};
+
+/// "agrees", "disagrees", "not comparable".
+const char* verdict_name(Verdict v);
+
+/**
+ * The verdict on one equation: a link `a = b` of a chain `a = b = c` (each link is checked on its own), at
+ * the place of its relation sign. LaTeX in the strings is wrapped in `$...$` so that every format can show
+ * it.
+ */
+struct EquationCheck {
+    Verdict verdict = Verdict::NotComparable;
+    std::string section;   ///< title of the innermost section holding it
+    SourcePos where;       ///< line:col of the relation sign
+    std::string equation;  ///< the link as the text writes it, LaTeX without $: "T = \frac{1}{2} ..."
+    std::string
+        compared_with;  ///< what it was compared with: "T", "the Euler–Lagrange equation for $\theta$", ...
+    std::string reason;      ///< agrees: on what grounds; not comparable: why
+    std::string difference;  ///< disagrees: text − eomgen (after scaling), LaTeX without $
+    std::vector<std::string>
+        wrong_terms;        ///< disagrees: each wrong, missing or extra term, one sentence each
+    std::string corrected;  ///< disagrees: the corrected equation, LaTeX without $
+    std::vector<std::string>
+        notes;  ///< readings worth knowing (a map entry used, a part of T taken from line N)
+};
+
+/// One entry of the per-derivation symbol map: a LaTeX name stands for a LaTeX expression of the model.
+struct MapEntry {
+    std::string name;    ///< e.g. "I_{0}"
+    std::string value;   ///< e.g. "M a^{2}/2"
+    std::string origin;  ///< where it was given, for messages: "--map", "pendulum.map.toml:4"
+};
+
+struct CheckOptions {
+    std::vector<std::string>
+        sections;               ///< --section patterns (case-insensitive substrings of headings); empty: all
+    std::vector<MapEntry> map;  ///< applied in order; later entries may use earlier ones
+};
+
+/// A map entry or a --section that cannot be used; the message says which and why.
+class CheckError : public std::runtime_error {
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+struct CheckReport {
+    std::string model_path;
+    std::string model_title;
+    std::string derivation_path;
+    std::vector<std::string> sections;  ///< titles of the sections checked (empty: the whole file)
+    std::vector<MapEntry> map;
+    std::vector<EquationCheck> equations;
+
+    int count(Verdict v) const;
+};
+
+/**
+ * Checks every equation in the selected sections of `derivation` against the model.
+ *
+ * Each link a = b of each chain (display rows, and inline math containing a relation) is compared as follows,
+ * symbolically first and at random points when simplification is inconclusive (GiNaC has no trigonometric
+ * simplifier): the labels T, V, L, E (= T + V), H, p_q and ∂L/∂q, d/dt written with them stand for eomgen's
+ * values; T_{x} and V_{x} are parts of T and V, taken from where the text defines them; a link that is an
+ * identity agrees; one with accelerations agrees when it is a combination of the Euler–Lagrange equations
+ * (equal up to a non-zero factor, terms moved across `=`); one without agrees when it is proportional to
+ * h − h(0) or p − p(0) for a conserved momentum (also after squaring a square root). Otherwise it disagrees
+ * when it can be matched with what it tries to be (a label, an Euler–Lagrange equation, the energy integral,
+ * the neighbouring side of a chain), else it is not comparable.
+ *
+ * @throws CheckError for a map entry that does not parse or a --section that matches no heading
+ */
+CheckReport check_derivation(const Model& model, const Equations& eq, const Derivation& derivation,
+                             const CheckOptions& options);
+
+}  // namespace eomgen::checker

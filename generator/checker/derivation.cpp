@@ -1,0 +1,368 @@
+/** @file derivation.cpp  Finding headings, display and inline math, and the rows of aligned environments. */
+#include "checker/derivation.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace eomgen::checker {
+namespace {
+
+bool starts_with(const std::string& s, std::size_t i, const char* p) {
+    const std::string_view v(p);
+    return s.compare(i, v.size(), v) == 0;
+}
+
+/// Environments whose rows are equations of their own.
+bool is_row_environment(const std::string& name) {
+    static const char* const names[] = {"aligned", "align",    "align*",    "gathered", "gather",
+                                        "gather*", "array",    "split",     "eqnarray", "eqnarray*",
+                                        "alignat", "alignat*", "alignedat", "multline", "multline*",
+                                        "flalign", "flalign*"};
+    for (const char* n : names)
+        if (name == n) return true;
+    return false;
+}
+
+bool is_display_environment(const std::string& name) {
+    return is_row_environment(name) || name == "equation" || name == "equation*" || name == "displaymath" ||
+           name == "math";
+}
+
+/// Reads `\begin{name}` or `\end{name}` at i; returns the name and sets `after`, or "" when there is none.
+std::string environment_at(const std::string& s, std::size_t i, const char* cmd, std::size_t& after) {
+    if (!starts_with(s, i, cmd)) return "";
+    std::size_t j = i + std::string_view(cmd).size();
+    while (j < s.size() && s[j] == ' ') ++j;
+    if (j >= s.size() || s[j] != '{') return "";
+    const std::size_t close = s.find('}', j);
+    if (close == std::string::npos) return "";
+    after = close + 1;
+    return s.substr(j + 1, close - j - 1);
+}
+
+/// Skips a balanced {...} at i (s[i] == '{'); returns the index after it.
+std::size_t skip_group(const std::string& s, std::size_t i) {
+    int depth = 0;
+    for (; i < s.size(); ++i) {
+        if (s[i] == '\\') {
+            ++i;
+            continue;
+        }
+        if (s[i] == '{') ++depth;
+        if (s[i] == '}' && --depth == 0) return i + 1;
+    }
+    return s.size();
+}
+
+void blank(std::string& s, std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i < to && i < s.size(); ++i)
+        if (s[i] != '\n') s[i] = ' ';
+}
+
+struct Block {
+    std::size_t begin, end;  ///< content, without the delimiters
+    bool display;
+};
+
+/// Splits the content of a display block into rows (file offsets), blanking what is not math.
+void split_display(const std::string& file, const Block& b, int block, std::vector<MathRow>& rows) {
+    std::string s = file.substr(b.begin, b.end - b.begin);
+    // The outermost environment, if the block is one (text around it, like a final '.', is kept).
+    std::size_t i = 0;
+    while (i < s.size() && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
+    std::size_t body_begin = 0, body_end = s.size();
+    bool rows_env = false;
+    std::size_t after = 0;
+    const std::string env = environment_at(s, i, "\\begin", after);
+    if (!env.empty() && is_display_environment(env)) {
+        // Find the matching \end{env}, counting nested environments of the same name.
+        int depth = 0;
+        std::size_t end_at = std::string::npos, end_after = 0;
+        for (std::size_t k = i; k < s.size(); ++k) {
+            std::size_t a = 0;
+            if (environment_at(s, k, "\\begin", a) == env) ++depth;
+            if (environment_at(s, k, "\\end", a) == env && --depth == 0) {
+                end_at = k;
+                end_after = a;
+                break;
+            }
+        }
+        if (end_at != std::string::npos) {
+            blank(s, i, after);
+            std::size_t body = after;
+            // Column specifications: \begin{array}{ccc}, \begin{alignat}{2}.
+            if ((env == "array" || env.rfind("alignat", 0) == 0 || env == "alignedat") && body < s.size()) {
+                std::size_t k = body;
+                while (k < s.size() && s[k] == ' ') ++k;
+                if (k < s.size() && s[k] == '{') {
+                    const std::size_t e = skip_group(s, k);
+                    blank(s, body, e);
+                    body = e;
+                }
+            }
+            blank(s, end_at, end_after);
+            body_begin = body;
+            body_end = end_at;
+            rows_env = is_row_environment(env);
+        }
+    }
+    // Split at top-level \\ (outside braces and nested environments) and blank top-level &.
+    std::vector<std::pair<std::size_t, std::size_t>> pieces;
+    std::size_t start = 0;
+    int brace = 0, envs = 0;
+    for (std::size_t k = body_begin; k < body_end; ++k) {
+        const char c = s[k];
+        std::size_t a = 0;
+        if (c == '\\' && !environment_at(s, k, "\\begin", a).empty()) {
+            ++envs;
+            k = a - 1;
+            continue;
+        }
+        if (c == '\\' && !environment_at(s, k, "\\end", a).empty()) {
+            if (envs > 0) --envs;
+            k = a - 1;
+            continue;
+        }
+        if (c == '%') {  // a LaTeX comment: its \\ and & do not count
+            while (k < body_end && s[k] != '\n') ++k;
+            continue;
+        }
+        if (c == '\\' && k + 1 < body_end && s[k + 1] == '\\') {
+            if (brace == 0 && envs == 0 && rows_env) {
+                pieces.push_back({start, k});
+                std::size_t e = k + 2;
+                // \\[2pt]
+                std::size_t q = e;
+                while (q < body_end && s[q] == ' ') ++q;
+                if (q < body_end && s[q] == '[') {
+                    const std::size_t close = s.find(']', q);
+                    if (close != std::string::npos && close < body_end) e = close + 1;
+                }
+                blank(s, k, e);
+                start = e;
+                k = e - 1;
+            } else {
+                ++k;
+            }
+            continue;
+        }
+        if (c == '\\') {
+            ++k;
+            continue;
+        }
+        if (c == '{') ++brace;
+        if (c == '}' && brace > 0) --brace;
+        if (c == '&' && brace == 0 && envs == 0 && rows_env) s[k] = ' ';
+    }
+    pieces.push_back({start, s.size()});
+    int n = 0;
+    for (const auto& [pb, pe] : pieces) {
+        const std::string text = s.substr(pb, pe - pb);
+        if (text.find_first_not_of(" \t\r\n.,;") == std::string::npos) continue;
+        MathRow r;
+        r.offset = b.begin + pb;
+        r.text = text;
+        r.display = true;
+        r.block = block;
+        r.row_in_block = n++;
+        rows.push_back(std::move(r));
+    }
+}
+
+}  // namespace
+
+SourcePos Derivation::position(std::size_t offset) const {
+    if (line_starts.empty()) return {1, int(offset) + 1};
+    auto it = std::upper_bound(line_starts.begin(), line_starts.end(), offset);
+    const std::size_t line = std::size_t(it - line_starts.begin());  // 1-based
+    const std::size_t start = line_starts[line - 1];
+    return {int(line), int(offset - start) + 1};
+}
+
+Derivation parse_derivation(std::string text, std::string path) {
+    Derivation d;
+    d.path = std::move(path);
+    d.text = std::move(text);
+    const std::string& s = d.text;
+    d.line_starts.push_back(0);
+    for (std::size_t i = 0; i < s.size(); ++i)
+        if (s[i] == '\n') d.line_starts.push_back(i + 1);
+
+    std::vector<Block> blocks;
+    bool fence = false;
+    std::size_t i = 0;
+    while (i < s.size()) {
+        const bool line_start = i == 0 || s[i - 1] == '\n';
+        if (line_start) {
+            std::size_t k = i;
+            while (k < s.size() && k - i < 4 && s[k] == ' ') ++k;
+            if (starts_with(s, k, "```") || starts_with(s, k, "~~~")) {
+                fence = !fence;
+                i = s.find('\n', k);
+                if (i == std::string::npos) break;
+                ++i;
+                continue;
+            }
+            if (!fence && k < s.size() && s[k] == '#' && k - i < 4) {
+                std::size_t h = k;
+                while (h < s.size() && s[h] == '#') ++h;
+                const int level = int(h - k);
+                if (level <= 6 && (h >= s.size() || s[h] == ' ' || s[h] == '\t' || s[h] == '\n')) {
+                    std::size_t e = s.find('\n', h);
+                    if (e == std::string::npos) e = s.size();
+                    std::string title = s.substr(h, e - h);
+                    while (!title.empty() &&
+                           (title.back() == ' ' || title.back() == '#' || title.back() == '\r'))
+                        title.pop_back();
+                    std::size_t f = title.find_first_not_of(" \t");
+                    title = f == std::string::npos ? "" : title.substr(f);
+                    d.sections.push_back({title, level, d.position(i).line, i, s.size()});
+                    i = e;
+                    continue;
+                }
+            }
+        }
+        if (fence) {
+            const std::size_t e = s.find('\n', i);
+            if (e == std::string::npos) break;
+            i = e + 1;
+            continue;
+        }
+        const char c = s[i];
+        if (c == '`') {  // inline code
+            const std::size_t e = s.find('`', i + 1);
+            const std::size_t nl = s.find("\n\n", i + 1);
+            if (e != std::string::npos && (nl == std::string::npos || e < nl)) {
+                i = e + 1;
+                continue;
+            }
+            ++i;
+            continue;
+        }
+        if (c == '\\' && i + 1 < s.size() && s[i + 1] == '$') {
+            i += 2;
+            continue;
+        }
+        if (starts_with(s, i, "$$")) {
+            const std::size_t e = s.find("$$", i + 2);
+            if (e == std::string::npos) break;
+            blocks.push_back({i + 2, e, true});
+            i = e + 2;
+            continue;
+        }
+        if (starts_with(s, i, "\\[")) {
+            const std::size_t e = s.find("\\]", i + 2);
+            if (e != std::string::npos) {
+                blocks.push_back({i + 2, e, true});
+                i = e + 2;
+                continue;
+            }
+        }
+        std::size_t after = 0;
+        const std::string env = environment_at(s, i, "\\begin", after);
+        if (!env.empty() && is_display_environment(env) && env != "array" && env != "aligned" &&
+            env != "gathered") {
+            const std::string closing = "\\end{" + env + "}";
+            const std::size_t e = s.find(closing, after);
+            if (e != std::string::npos) {
+                blocks.push_back({i, e + closing.size(), true});
+                i = e + closing.size();
+                continue;
+            }
+        }
+        if (c == '$' || starts_with(s, i, "\\(")) {
+            const bool dollar = c == '$';
+            const std::size_t from = i + (dollar ? 1 : 2);
+            std::size_t e = from;
+            const std::size_t para = s.find("\n\n", from);
+            while (true) {
+                e = dollar ? s.find('$', e) : s.find("\\)", e);
+                if (e == std::string::npos || (para != std::string::npos && e > para)) {
+                    e = std::string::npos;
+                    break;
+                }
+                if (dollar && e > 0 && s[e - 1] == '\\') {
+                    ++e;
+                    continue;
+                }
+                break;
+            }
+            if (e == std::string::npos || e == from) {
+                i = from;
+                continue;
+            }
+            blocks.push_back({from, e, false});
+            i = e + (dollar ? 1 : 2);
+            continue;
+        }
+        ++i;
+    }
+
+    // Section ends: the next heading of the same or a higher level.
+    for (std::size_t k = 0; k < d.sections.size(); ++k)
+        for (std::size_t j = k + 1; j < d.sections.size(); ++j)
+            if (d.sections[j].level <= d.sections[k].level) {
+                d.sections[k].end = d.sections[j].begin;
+                break;
+            }
+
+    int block = 0;
+    for (const Block& b : blocks) {
+        if (b.display) {
+            split_display(s, b, block, d.rows);
+        } else {
+            MathRow r;
+            r.offset = b.begin;
+            r.text = s.substr(b.begin, b.end - b.begin);
+            r.display = false;
+            r.block = block;
+            d.rows.push_back(std::move(r));
+        }
+        ++block;
+    }
+    for (MathRow& r : d.rows) {
+        // Innermost section: the last heading before the row whose range contains it.
+        for (std::size_t k = 0; k < d.sections.size(); ++k)
+            if (d.sections[k].begin <= r.offset && r.offset < d.sections[k].end) r.section = int(k);
+    }
+    return d;
+}
+
+Derivation read_derivation(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read " + path);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    if (in.bad()) throw std::runtime_error("cannot read " + path);
+    return parse_derivation(ss.str(), path);
+}
+
+std::vector<int> select_sections(const Derivation& d, const std::vector<std::string>& patterns) {
+    auto lower = [](std::string x) {
+        for (char& c : x) c = char(std::tolower(static_cast<unsigned char>(c)));
+        return x;
+    };
+    std::vector<int> out;
+    for (std::size_t k = 0; k < d.sections.size(); ++k) {
+        bool match = patterns.empty();
+        for (const std::string& p : patterns)
+            if (lower(d.sections[k].title).find(lower(p)) != std::string::npos) match = true;
+        if (match) out.push_back(int(k));
+    }
+    return out;
+}
+
+bool row_selected(const Derivation& d, const MathRow& row, const std::vector<int>& selected,
+                  bool whole_file) {
+    if (whole_file) return true;
+    for (int k : selected) {
+        const Section& s = d.sections[std::size_t(k)];
+        if (s.begin <= row.offset && row.offset < s.end) return true;
+    }
+    return false;
+}
+
+}  // namespace eomgen::checker

@@ -1,0 +1,76 @@
+/** @file exam_derivation.cpp  Sections, display and inline math, aligned rows, places in the file. */
+#include "checker/derivation.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+namespace {
+
+const char* const kText =
+    "# Title\n"                                 // 1
+    "\n"                                        // 2
+    "Text with $a = b$ and a price of \\$5.\n"  // 3
+    "\n"                                        // 4
+    "## First part\n"                           // 5
+    "$$\n"                                      // 6
+    "\\begin{aligned}\n"                        // 7
+    "T & =\\frac{1}{2} m v^{2} \\\\\n"          // 8
+    "& =E\n"                                    // 9
+    "\\end{aligned}\n"                          // 10
+    "$$\n"                                      // 11
+    "```\n"                                     // 12
+    "$$ not math $$\n"                          // 13
+    "```\n"                                     // 14
+    "### Sub\n"                                 // 15
+    "\\[ x = 1 \\]\n"                           // 16
+    " ## Second part\n"                         // 17
+    "$$ V = m g h $$\n";                        // 18
+
+}  // namespace
+
+TEST_CASE("derivation: headings, math rows and their places", "[checker]") {
+    const eomgen::checker::Derivation d = eomgen::checker::parse_derivation(kText, "x.md");
+    REQUIRE(d.sections.size() == 4);
+    CHECK(d.sections[0].title == "Title");
+    CHECK(d.sections[1].title == "First part");
+    CHECK(d.sections[1].level == 2);
+    CHECK(d.sections[3].title == "Second part");  // a heading indented by a space still counts
+    CHECK(d.sections[3].line == 17);
+
+    REQUIRE(d.rows.size() == 5);
+    CHECK_FALSE(d.rows[0].display);
+    CHECK(d.rows[0].text == "a = b");
+    CHECK(d.position(d.rows[0].offset).line == 3);
+    CHECK(d.position(d.rows[0].offset).column == 12);
+    // Aligned rows: split at \\, & and the environment blanked, offsets still the file's.
+    CHECK(d.rows[1].display);
+    CHECK(d.rows[1].block == d.rows[2].block);
+    CHECK(d.rows[2].row_in_block == 1);
+    CHECK(d.rows[1].text.find('&') == std::string::npos);
+    CHECK(d.rows[1].text.find("\\begin") == std::string::npos);
+    const std::size_t eq = d.rows[2].text.find('=');
+    CHECK(d.text[d.rows[2].offset + eq] == '=');
+    CHECK(d.position(d.rows[2].offset + eq).line == 9);
+    CHECK(d.rows[3].text == " x = 1 ");
+    CHECK(d.rows[3].section == 2);
+    CHECK(d.rows[4].section == 3);
+}
+
+TEST_CASE("derivation: --section selects headings and their subsections", "[checker]") {
+    const eomgen::checker::Derivation d = eomgen::checker::parse_derivation(kText, "x.md");
+    const std::vector<int> first = eomgen::checker::select_sections(d, {"first"});
+    REQUIRE(first.size() == 1);
+    int selected = 0;
+    for (const auto& r : d.rows) selected += eomgen::checker::row_selected(d, r, first, false) ? 1 : 0;
+    CHECK(selected == 3);  // the two aligned rows and \[ x = 1 \] under "### Sub"
+    CHECK(eomgen::checker::select_sections(d, {"nothing like it"}).empty());
+    CHECK(eomgen::checker::select_sections(d, {}).size() == 4);
+}
+
+TEST_CASE("derivation: never throws on odd text", "[checker]") {
+    for (const char* t : {"", "$", "$$", "$$ unterminated", "\\begin{aligned} a & = b", "# ", "```", "$a$$b$",
+                          "\\[", "\\(x\\)", "$$\\begin{aligned}\\end{aligned}$$", "\n\n\n$x=1$"}) {
+        CHECK_NOTHROW(eomgen::checker::parse_derivation(t, "odd.md"));
+    }
+}

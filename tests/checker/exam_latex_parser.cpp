@@ -1,0 +1,215 @@
+/** @file exam_latex_parser.cpp  LaTeX → GiNaC: each construct derivations use, and where and why the rest is
+ * refused. */
+#include "checker/latex_parser.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+namespace {
+
+using eomgen::checker::Chain;
+using eomgen::checker::LatexContext;
+using eomgen::checker::NameKind;
+using eomgen::checker::Relation;
+using eomgen::checker::Side;
+
+/// A context with the pendulum's names: θ, φ with their dots, m, M, l, a, g and time.
+struct Names {
+    GiNaC::symbol th{"theta", "\\theta"}, thd{"theta_dot", "\\dot{\\theta}"},
+        thdd{"theta_ddot", "\\ddot{\\theta}"};
+    GiNaC::symbol ph{"phi", "\\phi"}, phd{"phi_dot", "\\dot{\\phi}"};
+    GiNaC::symbol m{"m"}, M{"M"}, l{"l"}, a{"a"}, g{"g"}, t{"t"};
+    LatexContext ctx;
+    Names() {
+        ctx.names = {{"\\theta", th},
+                     {"\\dot{\\theta}", thd},
+                     {"\\ddot{\\theta}", thdd},
+                     {"\\phi", ph},
+                     {"\\dot{\\phi}", phd},
+                     {"m", m},
+                     {"M", M},
+                     {"l", l},
+                     {"a", a},
+                     {"g", g},
+                     {"t", t}};
+        ctx.time = t;
+    }
+    GiNaC::ex parse(const std::string& latex) {
+        const Side s = eomgen::checker::parse_expression(latex, ctx);
+        INFO(latex << ": " << s.error << " at " << s.error_offset);
+        REQUIRE(s.ok);
+        return s.value;
+    }
+    Side fail(const std::string& latex) {
+        const Side s = eomgen::checker::parse_expression(latex, ctx);
+        INFO(latex);
+        REQUIRE_FALSE(s.ok);
+        REQUIRE_FALSE(s.error.empty());
+        return s;
+    }
+    GiNaC::ex free(const std::string& name) {
+        auto it = ctx.free_names.find(name);
+        REQUIRE(it != ctx.free_names.end());
+        return it->second.symbol;
+    }
+};
+
+bool same(const GiNaC::ex& a, const GiNaC::ex& b) {
+    return (a - b).expand().is_zero() || GiNaC::normal(a - b).is_zero();
+}
+
+}  // namespace
+
+TEST_CASE("latex: fractions, powers, dots and implicit multiplication", "[checker][parser]") {
+    Names n;
+    CHECK(same(n.parse("\\frac{1}{2} M l^{2} \\dot{\\theta}^{2}"), n.M * n.l * n.l * n.thd * n.thd / 2));
+    CHECK(same(n.parse("\\frac12 m"), n.m / 2));
+    CHECK(same(n.parse("\\dfrac{m}{2} + \\tfrac{M}{3}"), n.m / 2 + n.M / 3));
+    CHECK(same(n.parse("m l^2/6"), n.m * n.l * n.l / 6));
+    CHECK(same(n.parse("m l^{2} \\dot{\\theta}^{2} / 6"), n.m * n.l * n.l * n.thd * n.thd / 6));
+    CHECK(same(n.parse("(1 / 2)(m / l)\\left(l^{3} / 3\\right)"), n.m * n.l * n.l / 6));
+    CHECK(same(n.parse("\\ddot{\\theta} + \\ddot\\theta"), 2 * n.thdd));
+    CHECK(same(n.parse("2 m l"), 2 * n.m * n.l));
+    CHECK(same(n.parse("(m)(l)"), n.m * n.l));
+    CHECK(same(n.parse("m \\cdot l"), n.m * n.l));
+    CHECK(same(n.parse("2 \\times 3 \\times l"), 6 * n.l));
+    CHECK(same(n.parse("M a l \\,\\dot{\\theta}\\; \\dot\\phi"), n.M * n.a * n.l * n.thd * n.phd));
+    CHECK(same(n.parse("\\left( m + M \\right)^{2}"), GiNaC::pow(n.m + n.M, 2)));
+    CHECK(same(n.parse("[m + M] l"), (n.m + n.M) * n.l));
+    CHECK(same(n.parse("-\\frac{1}{2}(m+2 M) g l"), -(n.m + 2 * n.M) * n.g * n.l / 2));
+    CHECK(same(n.parse("\\left|l\\right| + |m|"), GiNaC::abs(n.l) + GiNaC::abs(n.m)));
+}
+
+TEST_CASE("latex: functions with and without parentheses", "[checker][parser]") {
+    Names n;
+    CHECK(same(n.parse("\\sin \\theta"), GiNaC::sin(n.th)));
+    CHECK(same(n.parse("\\sin \\theta \\cos \\phi"), GiNaC::sin(n.th) * GiNaC::cos(n.ph)));
+    CHECK(same(n.parse("\\cos (\\phi-\\theta)"), GiNaC::cos(n.ph - n.th)));
+    CHECK(same(n.parse("\\cos{\\theta}"), GiNaC::cos(n.th)));
+    CHECK(same(n.parse("\\sin\\left(\\theta+\\phi\\right)"), GiNaC::sin(n.th + n.ph)));
+    CHECK(same(n.parse("\\sin ^{2} \\theta+\\cos^2\\theta"),
+               GiNaC::pow(GiNaC::sin(n.th), 2) + GiNaC::pow(GiNaC::cos(n.th), 2)));
+    CHECK(same(n.parse("\\sin 2\\theta"), GiNaC::sin(2 * n.th)));
+    CHECK(same(n.parse("g \\cos \\theta \\, l"), n.g * GiNaC::cos(n.th) * n.l));
+    CHECK(same(n.parse("\\operatorname{sin} \\phi"), GiNaC::sin(n.ph)));
+    CHECK(same(n.parse("\\tan\\theta + \\exp a + \\ln l"),
+               GiNaC::tan(n.th) + GiNaC::exp(n.a) + GiNaC::log(n.l)));
+    // \cos \Omega t: the argument runs over a following t.
+    const GiNaC::ex v = n.parse("\\cos \\Omega t");
+    CHECK(same(v, GiNaC::cos(n.free("\\Omega") * n.t)));
+    CHECK(same(n.parse("\\sqrt{l}"), GiNaC::sqrt(n.l)));
+    CHECK(same(n.parse("\\sqrt[3]{l}"), GiNaC::pow(n.l, GiNaC::numeric(1, 3))));
+}
+
+TEST_CASE("latex: numbers are exact, with their rounding recorded", "[checker][parser]") {
+    Names n;
+    Side s = eomgen::checker::parse_expression("0.5 m", n.ctx);
+    REQUIRE(s.ok);
+    CHECK(same(s.value, n.m / 2));
+    CHECK(s.rounding == Approx(0.1));  // ±0.05 on 0.5
+    s = eomgen::checker::parse_expression("1.51 \\sqrt{l}", n.ctx);
+    REQUIRE(s.ok);
+    CHECK(same(s.value, GiNaC::numeric(151, 100) * GiNaC::sqrt(n.l)));
+    CHECK(s.rounding == Approx(0.005 / 1.51));
+    CHECK(same(n.parse("3 \\times 10^{-3}"), GiNaC::numeric(3, 1000)));
+    CHECK(same(n.parse("45^{\\circ}"), GiNaC::Pi / 4));
+    CHECK(same(n.parse("2 \\pi"), 2 * GiNaC::Pi));
+}
+
+TEST_CASE("latex: names with subscripts, primes, fonts and Greek letters", "[checker][parser]") {
+    Names n;
+    const GiNaC::ex i3 = n.parse("I_{3} + I_3");
+    CHECK(same(i3, 2 * n.free("I_{3}")));
+    n.parse("T_{\\text {rod }}");
+    CHECK(n.ctx.free_names.count("T_{rod}") == 1);
+    n.parse("\\text { Trod }");
+    CHECK(n.ctx.free_names.count("Trod") == 1);
+    CHECK(same(n.parse("x' - x^{\\prime}"), 0));
+    const GiNaC::ex r2 = n.parse("r^{\\prime 2}");
+    CHECK(same(r2, GiNaC::pow(n.free("r'"), 2)));
+    CHECK(same(n.parse("\\varphi"), n.ph));
+    CHECK(same(n.parse("\\operatorname{dot} \\phi"), n.phd));  // OCR's way of writing \dot{\phi}
+    n.parse("\\mathbf{r}_{0} + \\boldsymbol{\\omega}_{a} + \\hat{\\mathbf{k}}");
+    CHECK(n.ctx.free_names.at("\\mathbf{r}_{0}").kind == NameKind::Vector);
+    CHECK(n.ctx.free_names.at("\\boldsymbol{\\omega}_{a}").kind == NameKind::Vector);
+    CHECK(n.ctx.free_names.at("\\hat{\\mathbf{k}}").kind == NameKind::Vector);
+    n.parse("3 \\mathrm{~m} / \\mathrm{s}^{2}");
+    CHECK(n.ctx.free_names.at("\\mathrm{m}").kind == NameKind::Unit);
+    // \mathrm{ml}: letters that are all known names multiply (OCR's "2 \mathrm{ml}^{2}").
+    CHECK(same(n.parse("\\mathrm{ml}"), n.m * n.l));
+    CHECK(eomgen::checker::canonical_name("T_{\\text {rod }}") == "T_{rod}");
+    CHECK(eomgen::checker::canonical_name("I_3") == "I_{3}");
+    CHECK(eomgen::checker::canonical_name("x^{\\prime}") == "x'");
+    CHECK(eomgen::checker::canonical_name("\\dot{\\theta}_{1}") == "\\dot{\\theta_{1}}");
+    CHECK(eomgen::checker::canonical_name("\\dot{\\dot{\\theta}}") == "\\ddot{\\theta}");
+    CHECK(eomgen::checker::canonical_name("\\varphi") == "\\phi");
+    CHECK(eomgen::checker::canonical_name("a + b").empty());
+}
+
+TEST_CASE("latex: derivatives and definite integrals", "[checker][parser]") {
+    Names n;
+    const GiNaC::ex d = n.parse("\\frac{d}{d t}\\left(m l^{2} \\dot{\\theta}\\right)");
+    CHECK(is_ex_the_function(d, eomgen::checker::ddt));
+    CHECK(same(d.op(0), n.m * n.l * n.l * n.thd));
+    CHECK(is_ex_the_function(n.parse("\\frac{d \\theta}{d t}"), eomgen::checker::ddt));
+    const GiNaC::ex p = n.parse("\\frac{\\partial L}{\\partial \\dot{\\theta}}");
+    CHECK(is_ex_the_function(p, eomgen::checker::pdiff));
+    CHECK(p.op(1).is_equal(n.thd));
+    CHECK(same(n.parse("\\int_{0}^{l} s^{2} \\, d s"), GiNaC::pow(n.l, 3) / 3));
+    const GiNaC::ex plate =
+        n.parse("\\frac{m}{w h} \\int_{0}^{w} x^{\\prime 2} d x^{\\prime} \\int_{0}^{h} d z^{\\prime}");
+    CHECK(same(plate, n.m * GiNaC::pow(n.free("w"), 2) / 3));
+    // The variable of integration is bound: it is not a free name of the side.
+    const Side s = eomgen::checker::parse_expression("\\int_{0}^{l} u \\, du", n.ctx);
+    REQUIRE(s.ok);
+    CHECK(s.uses.empty());
+}
+
+TEST_CASE("latex: what is not read gets a reason and the place", "[checker][parser]") {
+    Names n;
+    Side s = n.fail("\\omega_{3}\\left(I_{3} ? I\\right) / I");
+    CHECK(s.error_offset == std::string("\\omega_{3}\\left(I_{3} ").size());
+    CHECK(s.error.find("'?'") != std::string::npos);
+    CHECK(n.fail("\\int v^{2} d m").error.find("indefinite integral") != std::string::npos);
+    CHECK(n.fail("\\int_{A} \\sigma d A").error.find("region") != std::string::npos);
+    CHECK(n.fail("l(\\cos \\theta, \\sin \\theta, 0)").error.find("vector or tuple") != std::string::npos);
+    CHECK(n.fail("2 F(\\pi / 4,2)").error.find("unknown function F") != std::string::npos);
+    CHECK(n.fail("\\frac{1}{0}").error.find("division by zero") != std::string::npos);
+    CHECK(n.fail("\\left[\\begin{array}{cc} 1 & 2 \\end{array}\\right]").error.find("matrix") !=
+          std::string::npos);
+    CHECK(n.fail("\\sum_{i} x_{i}").error.find("sums") != std::string::npos);
+    CHECK(n.fail("l^{1000}").error.find("too large") != std::string::npos);
+    CHECK(n.fail("\\frac{d y}{d x}").error.find("with respect to x") != std::string::npos);
+    s = n.fail("m + ");
+    CHECK(s.error_offset == 3);  // the end of the formula
+    n.fail("\\frac{1}{2");
+    n.fail("\\left( m");
+    n.fail("\\sqrt");
+    n.fail("x_");
+    n.fail("}");
+}
+
+TEST_CASE("latex: rows split into chains of relations", "[checker][parser]") {
+    Names n;
+    std::vector<Chain> c = eomgen::checker::parse_math("T = \\frac{1}{2} m l^{2} = T_{1} .", n.ctx);
+    REQUIRE(c.size() == 1);
+    REQUIRE(c[0].sides.size() == 3);
+    CHECK(c[0].relations == std::vector<Relation>{Relation::Equal, Relation::Equal});
+    CHECK(c[0].relation_offsets[0] == 2);
+    CHECK(c[0].sides[2].source == "T_{1}");  // the sentence's full stop is not part of it
+    c = eomgen::checker::parse_math("n_{1 x}=n_{1 y}, n_{1 z}=0 \\rightarrow x = 2", n.ctx);
+    CHECK(c.size() == 3);
+    c = eomgen::checker::parse_math("-\\pi / 2<\\psi<0", n.ctx);
+    REQUIRE(c.size() == 1);
+    CHECK(c[0].relations[0] == Relation::Inequality);
+    c = eomgen::checker::parse_math("\\Delta t \\approx 1.51", n.ctx);
+    CHECK(c[0].relations[0] == Relation::Approx);
+    c = eomgen::checker::parse_math("f(a, b) = 1", n.ctx);  // commas inside parentheses do not split
+    CHECK(c.size() == 1);
+    c = eomgen::checker::parse_math("=\\dot{\\phi}", n.ctx);
+    REQUIRE(c.size() == 1);
+    CHECK(c[0].sides[0].empty());
+    CHECK(eomgen::checker::has_relation("a = b"));
+    CHECK_FALSE(eomgen::checker::has_relation("\\left(a = b\\right)"));
+}
