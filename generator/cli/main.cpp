@@ -152,6 +152,14 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     for (const eomgen::Parameter& p : model.parameters)
         os << "  " << p.name << " = " << eomgen::codegen::shortest_decimal(p.value) << (p.unit.empty() ? "" : " " + p.unit)
            << (p.description.empty() ? "" : "  (" + p.description + ")") << "\n";
+    if (!eq.bodies.empty()) {
+        os << rule("Bodies  T_b = m v_c^2/2 + w'.I.w'/2,  V_b = -m g.r_c");
+        for (const eomgen::BodyEnergy& b : eq.bodies)
+            os << "  " << b.name << ":\n    T_" << b.name << " = " << P(b.T) << "\n    V_" << b.name << " = " << P(b.V)
+               << "\n";
+        if (!model.T.expr.is_zero() || !model.V.expr.is_zero())
+            os << "  explicit [lagrangian]:\n    T = " << P(model.T.expr) << "\n    V = " << P(model.V.expr) << "\n";
+    }
     os << rule("Energies");
     os << "  T = " << P(eq.T) << "\n  V = " << P(eq.V) << "\n  L = T - V = " << P(eq.L) << "\n";
     os << rule("Euler-Lagrange equations  d/dt(dL/dq') - dL/dq = 0");

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <functional>
 #include <sstream>
 
 namespace eomgen {
@@ -81,11 +82,76 @@ GiNaC::ex time_derivative(const GiNaC::ex& e, const Model& model) {
     return d;
 }
 
+namespace {
+
+/// det M = 0 on a set of configurations (Euler angles at sin θ = 0, polar coordinates at r = 0): the
+/// factors of det M that are a coordinate, or the sine or cosine of an expression in the coordinates,
+/// each reported as a warning "det M = 0 where ... = 0". Up to 5 coordinates (symbolic determinant).
+void warn_singular_configurations(const Model& model, Equations& eq) {
+    const std::size_t n = model.dof();
+    if (n == 0 || n > 5) return;
+    // No trigonometric simplifier: of det, det with cos² → 1 − sin² and with sin² → 1 − cos², the shortest.
+    GiNaC::ex shortest = eq.M.determinant().expand();
+    const GiNaC::ex x = GiNaC::wild(0);
+    for (const GiNaC::ex& rule : {GiNaC::pow(GiNaC::cos(x), 2) == 1 - GiNaC::pow(GiNaC::sin(x), 2),
+                                  GiNaC::pow(GiNaC::sin(x), 2) == 1 - GiNaC::pow(GiNaC::cos(x), 2)}) {
+        const GiNaC::ex candidate = shortest.subs(rule, GiNaC::subs_options::algebraic).expand();
+        auto terms = [](const GiNaC::ex& e) { return GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1; };
+        if (terms(candidate) < terms(shortest)) shortest = candidate;
+    }
+    // factor() works on polynomials: stand-in symbols for sin(...), cos(...) while factoring.
+    GiNaC::exmap to_symbols, back;
+    std::function<void(const GiNaC::ex&)> collect = [&](const GiNaC::ex& e) {
+        if (GiNaC::is_exactly_a<GiNaC::function>(e)) {
+            if (!to_symbols.count(e)) {
+                const GiNaC::symbol s;
+                to_symbols[e] = s;
+                back[s] = e;
+            }
+            return;
+        }
+        for (std::size_t i = 0; i < e.nops(); ++i) collect(e.op(i));
+    };
+    collect(shortest);
+    const GiNaC::ex det = GiNaC::factor(shortest.subs(to_symbols)).subs(back);
+    std::vector<GiNaC::ex> factors;
+    if (GiNaC::is_a<GiNaC::mul>(det))
+        for (std::size_t i = 0; i < det.nops(); ++i) factors.push_back(det.op(i));
+    else
+        factors.push_back(det);
+    for (GiNaC::ex f : factors) {
+        if (GiNaC::is_a<GiNaC::power>(f) && f.op(1).info(GiNaC::info_flags::posint)) f = f.op(0);
+        if (f.has(model.t)) continue;
+        bool in_q = false, velocities = false;
+        for (const Coordinate& c : model.coordinates) {
+            in_q = in_q || f.has(c.q);
+            velocities = velocities || f.has(c.qd);
+        }
+        if (!in_q || velocities) continue;
+        bool coordinate = false;
+        for (const Coordinate& c : model.coordinates) coordinate = coordinate || f.is_equal(c.q);
+        const bool trig = GiNaC::is_exactly_a<GiNaC::function>(f) &&
+                          (GiNaC::ex_to<GiNaC::function>(f).get_name() == "sin" ||
+                           GiNaC::ex_to<GiNaC::function>(f).get_name() == "cos");
+        if (!coordinate && !trig) continue;
+        std::ostringstream os;
+        os << "det M = 0 where " << f << " = 0: the coordinates are singular there (M cannot be inverted)";
+        eq.warnings.push_back(os.str());
+    }
+}
+
+}  // namespace
+
 Equations derive_equations(const Model& model) {
     const std::size_t n = model.dof();
     Equations eq;
     eq.T = model.T.expr;
     eq.V = model.V.expr;
+    eq.bodies = body_energies(model);
+    for (const BodyEnergy& b : eq.bodies) {
+        eq.T += b.T;
+        eq.V += b.V;
+    }
     eq.L = eq.T - eq.V;
 
     eq.momenta.resize(n);
@@ -164,6 +230,8 @@ Equations derive_equations(const Model& model) {
         os << (terms == 1 ? "T does not involve " : "T does not involve the combination ") << combination;
         throw ModelError(model.T.where, os.str());
     }
+
+    warn_singular_configurations(model, eq);
 
     // h = Σ q̇ ∂L/∂q̇ − L is conserved when L has no explicit t (no non-conservative forces here).
     eq.energy = -eq.L;

@@ -1,6 +1,7 @@
 /** @file lagrangian.hpp  Euler–Lagrange equations in mass-matrix form, energy, momenta and conserved quantities. */
 #pragma once
 
+#include "mechanics/bodies.hpp"
 #include "model/model.hpp"
 
 #include <ginac/ginac.h>
@@ -45,7 +46,8 @@ struct ConstraintEquations {
  * that constraint k exerts, its sign fixed by the constraint as written (c_k = A_k q̇ + b_k = 0).
  */
 struct Equations {
-    GiNaC::ex T, V, L;
+    GiNaC::ex T, V, L;                      ///< T and V: the model's explicit T, V plus every body's
+    std::vector<BodyEnergy> bodies;         ///< each body's T and V (mechanics/bodies.hpp)
     GiNaC::matrix M;                        ///< n×n mass matrix, symmetric
     std::vector<GiNaC::ex> f;               ///< n forcing terms
     std::vector<GiNaC::ex> momenta;         ///< p_i = ∂L/∂q̇_i

@@ -3,6 +3,7 @@
 
 #include <ginac/ginac.h>
 
+#include <array>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -71,6 +72,20 @@ struct Constraint {
     SourceLocation where;   ///< of the name
 };
 
+/// A rigid body of a body-based model file ([[bodies]]); its energies are assembled by the mechanics
+/// stage (mechanics/bodies.hpp): T = ½ m v_c² + ½ ω'ᵀ I ω', V = −m g·r_c.
+struct Body {
+    std::string name;
+    SourceLocation where;                 ///< of the name
+    GiNaC::ex mass;
+    std::string shape;                    ///< e.g. "thin_rod"; empty when `inertia` is given
+    std::vector<GiNaC::ex> dimensions;    ///< the shape's dimensions, in mechanics/inertia.hpp's order
+    GiNaC::matrix inertia{3, 3};          ///< explicit tensor about the centre of mass, body axes
+    std::array<GiNaC::ex, 3> centre;      ///< centre of mass in space axes, in q and t
+    std::array<GiNaC::ex, 3> angles;      ///< Euler angles (φ, θ, ψ) in q and t
+    std::string sequence = "zxz";         ///< Euler sequence (mechanics/kinematics.hpp)
+};
+
 struct Model {
     std::string name;         ///< identifier: namespace of the generated code, file name
     std::string title;        ///< human title
@@ -86,6 +101,8 @@ struct Model {
     SourceExpression R;  ///< Rayleigh dissipation function R(q, q̇, t); contributes −∂R/∂q̇ (0 when absent)
     std::vector<SourceExpression> forces;  ///< generalized force Q_i(q, q̇, t) per coordinate (0 when absent)
     std::vector<Constraint> constraints;
+    std::vector<Body> bodies;                    ///< [[bodies]]: their T and V add to T and V above
+    std::array<GiNaC::ex, 3> gravity{0, 0, 0};  ///< [gravity] acceleration vector g, space axes
 
     /// Baumgarte stabilisation of the constraints, A q̈ = γ − 2α(A q̇ + b) − β² g (0, 0: none).
     double baumgarte_alpha = 0.0;

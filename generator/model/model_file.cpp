@@ -271,7 +271,7 @@ class Loader {
         model.t = GiNaC::symbol("t", "t");
         check_keys(root,
                    {"name", "title", "source", "description", "coordinates", "parameters", "lagrangian",
-                    "constraints", "forces", "stabilization"},
+                    "constraints", "forces", "stabilization", "bodies", "gravity"},
                    "at the top level");
 
         std::vector<Declaration> declarations;
@@ -293,6 +293,10 @@ class Loader {
         const std::vector<Entry> parameters =
             entries(root, "parameters", {"name", "value", "unit", "latex", "description"}, false);
         const std::vector<Entry> constraints = entries(root, "constraints", {"name", "kind", "expr"}, false);
+        const std::vector<Entry> bodies =
+            entries(root, "bodies",
+                    {"name", "mass", "shape", "dimensions", "inertia", "position", "orientation", "sequence"}, false);
+        for (const auto& b : bodies) declarations.push_back({b.name, "body", b.where, order(b.where)});
         for (const auto& c : constraints)
             declarations.push_back({c.name, "constraint", c.where, order(c.where)});
         for (const auto& c : coordinates)
@@ -335,7 +339,9 @@ class Loader {
         for (std::size_t i = 0; i < parameters.size(); ++i)
             model.parameters[i].value = constant(*parameters[i].table, "value", symbols, 0.0);
 
-        read_lagrangian(root, symbols, model);
+        read_lagrangian(root, symbols, !bodies.empty(), model);
+        read_bodies(bodies, symbols, model);
+        read_gravity(root, symbols, model);
         read_constraints(constraints, symbols, model);
         read_forces(root, symbols, model);
         read_stabilization(root, model);
@@ -495,10 +501,16 @@ class Loader {
         }
     }
 
-    void read_lagrangian(const toml::table& root, const SymbolTable& symbols, Model& model) const {
+    /// [lagrangian]: T, V, R. Optional when the model has [[bodies]] (T = V = 0 then, the bodies' added).
+    void read_lagrangian(const toml::table& root, const SymbolTable& symbols, bool has_bodies, Model& model) const {
         const toml::node* node = root.get("lagrangian");
+        if (!node && has_bodies) {
+            for (SourceExpression* e : {&model.T, &model.V, &model.R}) *e = SourceExpression{0, "0", src_.file_only()};
+            return;
+        }
         if (!node)
-            fail(src_.file_only(), "missing [lagrangian] with the kinetic energy T (and potential energy V)");
+            fail(src_.file_only(), "missing [lagrangian] with the kinetic energy T (and potential energy V), "
+                                   "or [[bodies]]");
         const toml::table* table = node->as_table();
         if (!table)
             fail(src_.at(*node),
@@ -506,10 +518,14 @@ class Loader {
         check_keys(*table, {"T", "V", "R"}, "in [lagrangian]");
 
         const toml::node* T = table->get("T");
-        if (!T) fail(src_.at(*table), "missing key 'T' in [lagrangian] (the kinetic energy)");
-        model.T.expr = expression(*T, "T", symbols, {});
-        model.T.text = T->as_string()->get();
-        model.T.where = string_start(*T);
+        if (!T && !has_bodies) fail(src_.at(*table), "missing key 'T' in [lagrangian] (the kinetic energy)");
+        if (T) {
+            model.T.expr = expression(*T, "T", symbols, {});
+            model.T.text = T->as_string()->get();
+            model.T.where = string_start(*T);
+        } else {
+            model.T = SourceExpression{0, "0", src_.at(*table)};
+        }
 
         if (const toml::node* V = table->get("V")) {
             ParseOptions options;
@@ -530,6 +546,109 @@ class Loader {
             model.R.text = R->as_string()->get();
             model.R.where = string_start(*R);
         }
+    }
+
+    /// One scalar: an integer or a string with an expression.
+    GiNaC::ex scalar(const toml::node& node, const std::string& key, const SymbolTable& symbols,
+                     const ParseOptions& options) const {
+        if (const auto* i = node.as_integer()) return GiNaC::ex(GiNaC::numeric(static_cast<long>(i->get())));
+        if (!node.as_string())
+            fail(src_.at(node), "each entry of '" + key + "' must be a string with an expression or an integer, not " +
+                                    type_name(node) + " (write decimals as strings, e.g. \"0.5\")");
+        return expression(node, key, symbols, options);
+    }
+
+    /// An array of `count` scalars (any number when count is 0).
+    std::vector<GiNaC::ex> scalars(const toml::node& node, const std::string& key, std::size_t count,
+                                   const SymbolTable& symbols, const ParseOptions& options) const {
+        const toml::array* array = node.as_array();
+        if (!array) fail(src_.at(node), "'" + key + "' must be an array, not " + type_name(node));
+        if (count != 0 && array->size() != count)
+            fail(src_.at(node), "'" + key + "' must have " + std::to_string(count) + " entries, not " +
+                                    std::to_string(array->size()));
+        std::vector<GiNaC::ex> out;
+        for (const toml::node& element : *array) out.push_back(scalar(element, key, symbols, options));
+        return out;
+    }
+
+    /// [[bodies]]: name, mass, shape + dimensions or inertia, position (3), orientation (3), sequence.
+    void read_bodies(const std::vector<Entry>& entries, const SymbolTable& symbols, Model& model) const {
+        ParseOptions constant;
+        constant.forbid_velocities = "a body's mass, dimensions and inertia must not depend on velocities";
+        ParseOptions placement;
+        placement.forbid_velocities = "a body's position and orientation are functions of q and t, without velocities";
+        for (const Entry& e : entries) {
+            Body body;
+            body.name = e.name;
+            body.where = e.where;
+            const toml::table& t = *e.table;
+            const toml::node* mass = t.get("mass");
+            if (!mass) fail(src_.at(t), "missing key 'mass' in [[bodies]]");
+            body.mass = scalar(*mass, "mass", symbols, constant);
+            const toml::node* shape = t.get("shape");
+            const toml::node* inertia = t.get("inertia");
+            if (shape && inertia)
+                fail(src_.at(*inertia), "give either 'shape' (with 'dimensions') or 'inertia' in [[bodies]], not both");
+            if (!shape && !inertia)
+                fail(src_.at(t), "missing key 'shape' (with 'dimensions') or 'inertia' in [[bodies]]");
+            if (shape) {
+                body.shape = string_value(*shape, "shape");
+                const toml::node* dims = t.get("dimensions");
+                if (!dims) fail(src_.at(*shape), "missing key 'dimensions' for shape '" + body.shape + "' in [[bodies]]");
+                body.dimensions = scalars(*dims, "dimensions", 0, symbols, constant);
+            } else {
+                if (t.get("dimensions")) fail(src_.at(*t.get("dimensions")), "'dimensions' goes with 'shape', not 'inertia'");
+                const toml::array* rows = inertia->as_array();
+                if (rows && rows->size() == 3 && (*rows)[0].as_array()) {
+                    for (unsigned i = 0; i < 3; ++i) {
+                        const std::vector<GiNaC::ex> row = scalars((*rows)[i], "inertia", 3, symbols, constant);
+                        for (unsigned j = 0; j < 3; ++j) body.inertia(i, j) = row[j];
+                    }
+                    for (unsigned i = 0; i < 3; ++i)
+                        for (unsigned j = i + 1; j < 3; ++j)
+                            if (!(body.inertia(i, j) - body.inertia(j, i)).expand().is_zero())
+                                fail(src_.at(*inertia), "'inertia' must be symmetric");
+                } else {
+                    const std::vector<GiNaC::ex> d = scalars(*inertia, "inertia", 3, symbols, constant);
+                    for (unsigned i = 0; i < 3; ++i) body.inertia(i, i) = d[i];
+                }
+            }
+            const toml::node* position = t.get("position");
+            if (!position) fail(src_.at(t), "missing key 'position' in [[bodies]] (the centre of mass, 3 expressions)");
+            const std::vector<GiNaC::ex> r = scalars(*position, "position", 3, symbols, placement);
+            body.centre = {r[0], r[1], r[2]};
+            body.angles = {0, 0, 0};
+            if (const toml::node* orientation = t.get("orientation")) {
+                const std::vector<GiNaC::ex> a = scalars(*orientation, "orientation", 3, symbols, placement);
+                body.angles = {a[0], a[1], a[2]};
+            }
+            if (const toml::node* sequence = t.get("sequence")) {
+                body.sequence = string_value(*sequence, "sequence");
+                const std::string& q = body.sequence;
+                const bool ok = q.size() == 3 && q.find_first_not_of("xyz") == std::string::npos && q[0] != q[1] &&
+                                q[1] != q[2];
+                if (!ok)
+                    fail(string_start(*sequence), "Euler sequence '" + q +
+                                                      "' must be three of x, y, z with no axis twice in a row "
+                                                      "(e.g. \"zxz\", \"xyz\")");
+            }
+            model.bodies.push_back(std::move(body));
+        }
+    }
+
+    /// [gravity]: vector = [gx, gy, gz], the uniform gravitational acceleration in space axes.
+    void read_gravity(const toml::table& root, const SymbolTable& symbols, Model& model) const {
+        const toml::node* node = root.get("gravity");
+        if (!node) return;
+        const toml::table* table = node->as_table();
+        if (!table) fail(src_.at(*node), "'gravity' must be a table [gravity] with vector = [gx, gy, gz], not " + type_name(*node));
+        check_keys(*table, {"vector"}, "in [gravity]");
+        const toml::node* vector = table->get("vector");
+        if (!vector) fail(src_.at(*table), "missing key 'vector' in [gravity], e.g. vector = [\"0\", \"0\", \"-g\"]");
+        ParseOptions options;
+        options.forbid_velocities = "gravity must not depend on velocities";
+        const std::vector<GiNaC::ex> g = scalars(*vector, "vector", 3, symbols, options);
+        model.gravity = {g[0], g[1], g[2]};
     }
 
     /// [[constraints]]: name, kind = "holonomic" (g(q,t) = 0) or "nonholonomic" (a·q' + b = 0), expr.
