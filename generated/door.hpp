@@ -32,6 +32,8 @@ struct Model {
     static constexpr int n_params = 5;
     static constexpr int n_conserved = 1;
     static constexpr bool explicit_time = false;
+    /// Generalized forces Q or dissipation R act (the variational integrator does not apply).
+    static constexpr bool has_generalized_forces = false;
 
     using Config = Eigen::Matrix<Scalar, nq, 1>;
     using State = Eigen::Matrix<Scalar, nx, 1>;
@@ -159,7 +161,7 @@ struct Model {
         const Scalar sin_theta = sin(theta);
         const Scalar sin_psi = sin(psi);
         const Scalar cos_theta = cos(theta);
-        return -(Scalar(1)/Scalar(2)*m*g*(w*sin_theta*sin_psi + h*cos_theta) - Scalar(1)/Scalar(6)*m*(w*w)*(psi_dot*psi_dot));
+        return Scalar(1)/Scalar(2)*m*(w*(Scalar(1)/Scalar(3)*w*(psi_dot*psi_dot) - g*sin_theta*sin_psi) - h*g*cos_theta);
     }
 
     /// Energy function h = sum q' dL/dq' - L.
@@ -177,7 +179,7 @@ struct Model {
         const Scalar sin_theta = sin(theta);
         const Scalar sin_psi = sin(psi);
         const Scalar cos_theta = cos(theta);
-        return Scalar(1)/Scalar(2)*m*w*g*sin_theta*sin_psi + Scalar(1)/Scalar(2)*m*h*g*cos_theta + Scalar(1)/Scalar(6)*m*(w*w)*(psi_dot*psi_dot);
+        return Scalar(1)/Scalar(2)*m*(w*(Scalar(1)/Scalar(3)*w*(psi_dot*psi_dot) + g*sin_theta*sin_psi) + h*g*cos_theta);
     }
 
     /// Generalized momenta p = dL/dq'.
@@ -221,7 +223,7 @@ struct Model {
         const Scalar sin_theta = sin(theta);
         const Scalar sin_psi = sin(psi);
         const Scalar cos_theta = cos(theta);
-        out_(0) = Scalar(1)/Scalar(2)*m*w*g*sin_theta*sin_psi + Scalar(1)/Scalar(2)*m*h*g*cos_theta + Scalar(1)/Scalar(6)*m*(w*w)*(psi_dot*psi_dot);
+        out_(0) = Scalar(1)/Scalar(2)*m*(w*(Scalar(1)/Scalar(3)*w*(psi_dot*psi_dot) + g*sin_theta*sin_psi) + h*g*cos_theta);
     }
 
     /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.

@@ -33,6 +33,8 @@ struct Model {
     static constexpr int n_params = 5;
     static constexpr int n_conserved = 1;
     static constexpr bool explicit_time = false;
+    /// Generalized forces Q or dissipation R act (the variational integrator does not apply).
+    static constexpr bool has_generalized_forces = false;
 
     using Config = Eigen::Matrix<Scalar, nq, 1>;
     using State = Eigen::Matrix<Scalar, nx, 1>;
@@ -85,11 +87,10 @@ struct Model {
         const Scalar a = p_.a;
         const Scalar theta = q_(0);
         const Scalar phi = q_(1);
-        const Scalar t0 = l*l;
-        const Scalar t1 = l*M*a*cos(theta - phi);
-        M_(0, 0) = Scalar(1)/Scalar(3)*m*t0 + M*t0;
-        M_(0, 1) = t1;
-        M_(1, 0) = t1;
+        const Scalar t0 = l*M*a*cos(theta - phi);
+        M_(0, 0) = (l*l)*(Scalar(1)/Scalar(3)*m + M);
+        M_(0, 1) = t0;
+        M_(1, 0) = t0;
         M_(1, 1) = Scalar(3)/Scalar(2)*M*(a*a);
     }
 
@@ -127,18 +128,17 @@ struct Model {
         const Scalar theta_dot = qd_(0);
         const Scalar phi = q_(1);
         const Scalar phi_dot = qd_(1);
-        const Scalar t0 = l*l;
-        const Scalar t1 = theta - phi;
-        const Scalar t2 = l*M*a*cos(t1);
+        const Scalar t0 = theta - phi;
+        const Scalar t1 = l*M*a*cos(t0);
         const Scalar sin_theta = sin(theta);
-        const Scalar t3 = sin(t1);
+        const Scalar t2 = sin(t0);
         const Scalar sin_phi = sin(phi);
-        M_(0, 0) = Scalar(1)/Scalar(3)*m*t0 + M*t0;
-        M_(0, 1) = t2;
-        M_(1, 0) = t2;
+        M_(0, 0) = (l*l)*(Scalar(1)/Scalar(3)*m + M);
+        M_(0, 1) = t1;
+        M_(1, 0) = t1;
         M_(1, 1) = Scalar(3)/Scalar(2)*M*(a*a);
-        f_(0) = -(Scalar(1)/Scalar(2)*m*l*g*sin_theta + l*M*a*t3*(phi_dot*phi_dot) + l*M*g*sin_theta);
-        f_(1) = l*M*a*t3*(theta_dot*theta_dot) - M*a*g*sin_phi;
+        f_(0) = -(Scalar(1)/Scalar(2)*m*l*g*sin_theta + l*M*a*t2*(phi_dot*phi_dot) + l*M*g*sin_theta);
+        f_(1) = l*M*a*t2*(theta_dot*theta_dot) - M*a*g*sin_phi;
     }
 
     /// Kinetic energy T.
@@ -153,11 +153,7 @@ struct Model {
         const Scalar theta_dot = qd_(0);
         const Scalar phi = q_(1);
         const Scalar phi_dot = qd_(1);
-        const Scalar t0 = l*l;
-        const Scalar t1 = theta_dot*theta_dot;
-        const Scalar t2 = a*a;
-        const Scalar t3 = phi_dot*phi_dot;
-        return Scalar(1)/Scalar(6)*m*t0*t1 + Scalar(1)/Scalar(4)*M*t2*t3 + Scalar(1)/Scalar(2)*M*(Scalar(2)*l*a*theta_dot*phi_dot*cos(theta - phi) + t0*t1 + t2*t3);
+        return l*theta_dot*(l*theta_dot*(Scalar(1)/Scalar(6)*m + Scalar(1)/Scalar(2)*M) + M*a*phi_dot*cos(theta - phi)) + Scalar(3)/Scalar(4)*M*(a*a)*(phi_dot*phi_dot);
     }
 
     /// Potential energy V.
@@ -174,13 +170,14 @@ struct Model {
         const Scalar phi = q_(1);
         const Scalar cos_theta = cos(theta);
         const Scalar cos_phi = cos(phi);
-        return -(Scalar(1)/Scalar(2)*m*l*g*cos_theta + M*g*(l*cos_theta + a*cos_phi));
+        return -(g*(l*cos_theta*(Scalar(1)/Scalar(2)*m + M) + M*a*cos_phi));
     }
 
     /// Lagrangian L = T - V.
     static Scalar lagrangian(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
         static_cast<void>(t);
         using std::cos;
+        using std::sin;
         const Scalar m = p_.m;
         const Scalar l = p_.l;
         const Scalar M = p_.M;
@@ -191,18 +188,18 @@ struct Model {
         const Scalar phi = q_(1);
         const Scalar phi_dot = qd_(1);
         const Scalar cos_theta = cos(theta);
-        const Scalar t0 = l*l;
-        const Scalar t1 = theta_dot*theta_dot;
+        const Scalar t0 = l*theta_dot;
         const Scalar cos_phi = cos(phi);
-        const Scalar t2 = a*a;
-        const Scalar t3 = phi_dot*phi_dot;
-        return Scalar(1)/Scalar(2)*m*l*g*cos_theta + Scalar(1)/Scalar(6)*m*t0*t1 + M*g*(l*cos_theta + a*cos_phi) + Scalar(1)/Scalar(4)*M*t2*t3 + Scalar(1)/Scalar(2)*M*(Scalar(2)*l*a*theta_dot*phi_dot*cos(theta - phi) + t0*t1 + t2*t3);
+        const Scalar sin_theta = sin(theta);
+        const Scalar sin_phi = sin(phi);
+        return l*(g*cos_theta*(Scalar(1)/Scalar(2)*m + M) + theta_dot*(Scalar(1)/Scalar(6)*m*t0 + M*(Scalar(1)/Scalar(2)*t0 + a*phi_dot*(cos_theta*cos_phi + sin_theta*sin_phi)))) + M*a*(Scalar(3)/Scalar(4)*a*(phi_dot*phi_dot) + g*cos_phi);
     }
 
     /// Energy function h = sum q' dL/dq' - L.
     static Scalar energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
         static_cast<void>(t);
         using std::cos;
+        using std::sin;
         const Scalar m = p_.m;
         const Scalar l = p_.l;
         const Scalar M = p_.M;
@@ -213,10 +210,11 @@ struct Model {
         const Scalar phi = q_(1);
         const Scalar phi_dot = qd_(1);
         const Scalar cos_theta = cos(theta);
-        const Scalar t0 = l*l;
-        const Scalar t1 = theta_dot*theta_dot;
+        const Scalar t0 = l*theta_dot;
         const Scalar cos_phi = cos(phi);
-        return -(Scalar(1)/Scalar(2)*m*l*g*cos_theta - Scalar(1)/Scalar(6)*m*t0*t1 - l*M*a*theta_dot*phi_dot*cos(theta - phi) + l*M*g*cos_theta + M*a*g*cos_phi - Scalar(1)/Scalar(2)*M*t0*t1 - Scalar(3)/Scalar(4)*M*(a*a)*(phi_dot*phi_dot));
+        const Scalar sin_theta = sin(theta);
+        const Scalar sin_phi = sin(phi);
+        return -(l*(g*cos_theta*(Scalar(1)/Scalar(2)*m + M) - theta_dot*(Scalar(1)/Scalar(6)*m*t0 + M*(Scalar(1)/Scalar(2)*t0 + a*phi_dot*(cos_theta*cos_phi + sin_theta*sin_phi)))) - M*a*(Scalar(3)/Scalar(4)*a*(phi_dot*phi_dot) - g*cos_phi));
     }
 
     /// Generalized momenta p = dL/dq'.
@@ -231,11 +229,10 @@ struct Model {
         const Scalar theta_dot = qd_(0);
         const Scalar phi = q_(1);
         const Scalar phi_dot = qd_(1);
-        const Scalar t0 = l*l;
-        const Scalar t1 = cos(theta - phi);
-        const Scalar t2 = a*a;
-        out_(0) = Scalar(1)/Scalar(3)*m*theta_dot*t0 + M*(l*a*phi_dot*t1 + theta_dot*t0);
-        out_(1) = Scalar(1)/Scalar(2)*M*phi_dot*t2 + M*(l*a*theta_dot*t1 + phi_dot*t2);
+        const Scalar t0 = cos(theta - phi);
+        const Scalar t1 = a*phi_dot;
+        out_(0) = l*(l*theta_dot*(Scalar(1)/Scalar(3)*m + M) + M*t0*t1);
+        out_(1) = M*a*(l*theta_dot*t0 + Scalar(3)/Scalar(2)*t1);
     }
 
     /// dL/dq.
@@ -262,6 +259,7 @@ struct Model {
     static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
         static_cast<void>(t);
         using std::cos;
+        using std::sin;
         const Scalar m = p_.m;
         const Scalar l = p_.l;
         const Scalar M = p_.M;
@@ -272,10 +270,11 @@ struct Model {
         const Scalar phi = q_(1);
         const Scalar phi_dot = qd_(1);
         const Scalar cos_theta = cos(theta);
-        const Scalar t0 = l*l;
-        const Scalar t1 = theta_dot*theta_dot;
+        const Scalar t0 = l*theta_dot;
         const Scalar cos_phi = cos(phi);
-        out_(0) = -(Scalar(1)/Scalar(2)*m*l*g*cos_theta - Scalar(1)/Scalar(6)*m*t0*t1 - l*M*a*theta_dot*phi_dot*cos(theta - phi) + l*M*g*cos_theta + M*a*g*cos_phi - Scalar(1)/Scalar(2)*M*t0*t1 - Scalar(3)/Scalar(4)*M*(a*a)*(phi_dot*phi_dot));
+        const Scalar sin_theta = sin(theta);
+        const Scalar sin_phi = sin(phi);
+        out_(0) = -(l*(g*cos_theta*(Scalar(1)/Scalar(2)*m + M) - theta_dot*(Scalar(1)/Scalar(6)*m*t0 + M*(Scalar(1)/Scalar(2)*t0 + a*phi_dot*(cos_theta*cos_phi + sin_theta*sin_phi)))) - M*a*(Scalar(3)/Scalar(4)*a*(phi_dot*phi_dot) - g*cos_phi));
     }
 
     /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.

@@ -37,7 +37,11 @@ public:
 
     FunctionBody run(const std::vector<Output>& outputs) {
         std::vector<Term> roots;
+        // Cheaper forms first (expansion, sin² + cos² = 1, Horner), then partial sums and products shared.
         for (const Output& o : outputs) roots.push_back(dag_.add(o.value));
+        dag_.note_angles(roots);
+        for (Term& r : roots) r = dag_.optimize(r);
+        dag_.share_partial(roots);
         uses_.assign(dag_.size(), 0);
         name_.assign(dag_.size(), std::string());
         std::vector<char> seen(dag_.size(), 0);

@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <map>
+#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -70,6 +71,37 @@ public:
     /// Structural total order: <0, 0, >0. Deterministic across processes.
     int compare(NodeId a, NodeId b) const;
 
+    /**
+     * Rewrites a term (from add()) into a cheaper form with the same value, for generated code:
+     *  1. expands it into a sum of monomials over atoms (symbols, function calls, powers and reciprocals
+     *     of sums, kept whole), so that terms which cancel do cancel;
+     *  2. sin and cos of a sum of up to four symbols become products of each symbol's sin and cos
+     *     (sin(a−b) = sin a cos b − cos a sin b, ...) when the code computes sin or cos of each of those
+     *     symbols anyway (see note_angles());
+     *  3. sin²x·R + cos²x·R = R (equal coefficients);
+     *  4. refactors by a greedy multivariate Horner scheme: the monomial common to all terms and the
+     *     coefficient that saves most multiplications come out, then the atom in most terms (ties: atoms
+     *     that depend on q, q̇ or t before parameters, then structural order) is factored out of those
+     *     terms, recursively (Ceberio & Kreinovich, "Greedy algorithms for optimizing multivariate Horner
+     *     schemes", ACM SIGSAM Bulletin 38(1), 2004); a node that every term of a resulting sum has as a
+     *     factor comes out of the sum.
+     * When the expansion would grow past an internal limit of monomials, or the result would take more
+     * operations than the term as it is (counted once per distinct node), the term is returned as it is.
+     * Deterministic: every choice depends on counts and compare(), never on node ids.
+     */
+    Term optimize(const Term& t);
+
+    /// Records the symbols x whose sin(x) or cos(x) the terms (from add()) compute: optimize() expands
+    /// sin/cos of sums of recorded symbols only, so that the addition theorems never add function calls.
+    void note_angles(const std::vector<Term>& roots);
+
+    /**
+     * Shares partial sums and products between the nodes reachable from `roots`: a sum (product) whose terms
+     * (factors) include all those of another reachable sum (product) of at least two is rewritten as that one
+     * plus (times) the rest, largest first; roots are replaced by the rewritten nodes.
+     */
+    void share_partial(std::vector<Term>& roots);
+
 private:
     NodeId intern(Node n);
     NodeId number(const GiNaC::numeric& v);
@@ -80,12 +112,41 @@ private:
     Term make_func(const std::string& name, std::vector<Term> args);
     Term convert(const GiNaC::ex& e);
 
+    // optimize(): polynomials over atoms (expr_dag.cpp).
+    struct Poly;
+    struct PolyBuilder;
+    bool expand_node(NodeId id, std::shared_ptr<const Poly>& out);
+    Term optimize_node(NodeId id);
+    Term build(Poly p, const std::unordered_map<NodeId, int>& rank);
+    void pythagoras(Poly& p, const std::unordered_map<NodeId, int>& rank);
+    std::unordered_map<NodeId, int> atom_ranks(const Poly& p) const;
+    bool depends_on_state(NodeId id, std::unordered_map<NodeId, char>& memo) const;
+    NodeId find_func(const std::string& name, NodeId arg) const;
+    Term mul_terms(const Term& a, const Term& b);
+    Term add_terms(const Term& a, const Term& b);
+    Term factor_common(const Term& sum);
+    long cost(NodeId root) const;
+    NodeId rewrite_shared(NodeId id, std::unordered_map<NodeId, NodeId>& done,
+                          const std::unordered_map<NodeId, std::vector<NodeId>>& holders,
+                          const std::unordered_map<NodeId, int>& position);
+
+    struct NodeHash {
+        std::size_t operator()(const Node& n) const;
+    };
+    struct NodeEqual {
+        bool operator()(const Node& a, const Node& b) const;
+    };
+
     std::vector<SymbolInfo> symbols_;
     GiNaC::exhashmap<int> symbol_index_;
     bool lower_powers_;
     std::vector<Node> nodes_;
-    std::unordered_map<std::string, NodeId> interned_;
+    std::unordered_map<Node, NodeId, NodeHash, NodeEqual> interned_;
     GiNaC::exhashmap<Term> memo_;
+    std::unordered_map<NodeId, Term> optimized_;  ///< optimize() of single nodes (arguments, opaque sums)
+    std::unordered_map<NodeId, std::shared_ptr<const Poly>> expanded_;  ///< expansions, shared between outputs
+    std::unordered_map<NodeId, bool> angles_;  ///< note_angles(): symbols with sin or cos computed
+    std::size_t expansion_budget_ = 0;           ///< monomials optimize() may still create for this term
 };
 
 /// Name of a numeric for keys and messages: exact rationals as "p/q".

@@ -11,7 +11,8 @@
 namespace {
 
 eomgen::Model family(const std::string& spec) {
-    return eomgen::parse_model(eomgen::family_model_text(eomgen::parse_family_spec(spec)), "--family " + spec);
+    return eomgen::parse_model(eomgen::family_model_text(eomgen::parse_family_spec(spec)),
+                               "--family " + spec);
 }
 
 const GiNaC::symbol& parameter(const eomgen::Model& m, const std::string& name) {
@@ -23,8 +24,11 @@ const GiNaC::symbol& parameter(const eomgen::Model& m, const std::string& name) 
 /// a − b with sin²x replaced by 1 − cos²x, expanded: zero exactly when a = b as trigonometric polynomials.
 GiNaC::ex difference(const GiNaC::ex& a, const GiNaC::ex& b) {
     const GiNaC::ex x = GiNaC::wild(0);
-    return (a - b).expand().subs(GiNaC::pow(GiNaC::sin(x), 2) == 1 - GiNaC::pow(GiNaC::cos(x), 2),
-                                 GiNaC::subs_options::algebraic).expand();
+    return (a - b)
+        .expand()
+        .subs(GiNaC::pow(GiNaC::sin(x), 2) == 1 - GiNaC::pow(GiNaC::cos(x), 2),
+              GiNaC::subs_options::algebraic)
+        .expand();
 }
 
 }  // namespace
@@ -59,7 +63,8 @@ TEST_CASE("the 2-link pendulum family is the double pendulum derived by hand", "
     const GiNaC::ex a = m.coordinates[0].q, b = m.coordinates[1].q;
     const GiNaC::ex ad = m.coordinates[0].qd, bd = m.coordinates[1].qd;
     // By hand: x1 = l1 sin a, y1 = −l1 cos a, x2 = x1 + l2 sin b, y2 = y1 − l2 cos b, so
-    // T = (m1 + m2) l1² ȧ²/2 + m2 l2² ḃ²/2 + m2 l1 l2 ȧ ḃ cos(a − b), V = −(m1 + m2) g l1 cos a − m2 g l2 cos b:
+    // T = (m1 + m2) l1² ȧ²/2 + m2 l2² ḃ²/2 + m2 l1 l2 ȧ ḃ cos(a − b), V = −(m1 + m2) g l1 cos a − m2 g l2 cos
+    // b:
     //   M = [[(m1 + m2) l1², m2 l1 l2 cos(a − b)], [m2 l1 l2 cos(a − b), m2 l2²]],
     //   f = [−m2 l1 l2 ḃ² sin(a − b) − (m1 + m2) g l1 sin a,  m2 l1 l2 ȧ² sin(a − b) − m2 g l2 sin b],
     // with cos(a − b) and sin(a − b) written out, since GiNaC does not apply the addition theorems.
@@ -69,7 +74,8 @@ TEST_CASE("the 2-link pendulum family is the double pendulum derived by hand", "
     REQUIRE(difference(eq.M(0, 1), m2 * l1 * l2 * cos_ab).is_zero());
     REQUIRE(difference(eq.M(1, 0), m2 * l1 * l2 * cos_ab).is_zero());
     REQUIRE(difference(eq.M(1, 1), m2 * l2 * l2).is_zero());
-    REQUIRE(difference(eq.f[0], -m2 * l1 * l2 * bd * bd * sin_ab - (m1 + m2) * g * l1 * GiNaC::sin(a)).is_zero());
+    REQUIRE(
+        difference(eq.f[0], -m2 * l1 * l2 * bd * bd * sin_ab - (m1 + m2) * g * l1 * GiNaC::sin(a)).is_zero());
     REQUIRE(difference(eq.f[1], m2 * l1 * l2 * ad * ad * sin_ab - m2 * g * l2 * GiNaC::sin(b)).is_zero());
 }
 
