@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# The benchmarks of issue 6 in one run: eomgen against SymPy (generation, operation counts, right-hand side,
+# compile time) and against Boost.Odeint (work-precision), and generation's peak memory; writes
+# docs/benchmarks.md (the measured part) and docs/benchmarks.png. About 15 minutes on 2 cores, most of it SymPy.
+#
+# Usage: bash bench/run.sh [--smoke] [--no-build] [--build-dir DIR] [--sympy-cap SECONDS]
+#   --smoke        tiny sizes, seconds; results in DIR/bench_smoke/ (docs/ untouched); what CI runs
+#   --no-build     skip scripts/setup.sh and use what DIR holds (configured with -DEOMGEN_BUILD_BENCH=ON); the
+#                  full run still rebuilds time_rhs, which compiles in the SymPy code of the run
+#   --build-dir    build directory (default build-bench/)
+#   --sympy-cap    seconds SymPy may take per size before it is stopped and reported as capped (default 900)
+# Without --no-build it first runs scripts/setup.sh (installs missing Debian packages, configures, builds).
+# SymPy 1.14 is used if python3 can import it; without it the SymPy parts are skipped with a message.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+build=build-bench
+smoke=()
+no_build=0
+extra=()
+while (($#)); do
+  case "$1" in
+    --smoke) smoke=(--smoke) ;;
+    --no-build) no_build=1 ;;
+    --build-dir) build="$2"; shift ;;
+    --sympy-cap) extra+=(--sympy-cap "$2"); shift ;;
+    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
+  esac
+  shift
+done
+
+if ((no_build)); then
+  extra+=(--no-build)
+else
+  EOMGEN_BUILD_DIR="$build" bash scripts/setup.sh -DEOMGEN_BUILD_BENCH=ON -DEOMGEN_BUILD_TESTS=OFF
+fi
+if [ ! -f "$build/bench/bench_config.json" ]; then
+  echo "bench/run.sh: $build is not configured with -DEOMGEN_BUILD_BENCH=ON" >&2
+  exit 2
+fi
+exec python3 bench/bench.py --build-dir "$build" "${smoke[@]}" "${extra[@]}"
