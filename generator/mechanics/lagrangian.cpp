@@ -90,6 +90,12 @@ namespace {
 void warn_singular_configurations(const Model& model, Equations& eq) {
     const std::size_t n = model.dof();
     if (n == 0 || n > 5) return;
+    // A symbolic determinant of a dense 4×4 or 5×5 with trigonometric entries, expanded and factored,
+    // takes seconds (12 s for the 4-link pendulum): beyond 3 coordinates only mostly-diagonal M.
+    std::size_t nonzero = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j) nonzero += eq.M(unsigned(i), unsigned(j)).is_zero() ? 0 : 1;
+    if (n > 3 && nonzero > n + 4) return;
     // No trigonometric simplifier: of det, det with cos² → 1 − sin² and with sin² → 1 − cos², the shortest.
     GiNaC::ex shortest = eq.M.determinant().expand();
     const GiNaC::ex x = GiNaC::wild(0);
