@@ -25,6 +25,7 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import op_count  # noqa: E402
 
 BEGIN = "<!-- BEGIN MEASURED (bench/run.sh rewrites this part) -->"
