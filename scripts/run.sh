@@ -47,3 +47,17 @@ echo "== eomgen-sim rolling_sphere, 200 s: invariants and constraint residuals (
 echo
 echo "== eomgen-sim dumbbell_5_18: the drive's torque (multiplier of 'tilt') = -2 m l^2 omega^2 sin(theta) cos(theta)"
 "$build/simulator/eomgen-sim" dumbbell_5_18 --t-end 5 | grep -E "multiplier|residuals"
+
+echo
+echo "== eomgen show models/dumbbell_5_18_bodies.toml: Euler's equations of the dumbbell as a rigid body"
+"$build/generator/eomgen" show models/dumbbell_5_18_bodies.toml | sed -n "/^Euler's equations/,/^Energies/p"
+
+echo
+echo "== eomgen-sim torque_free_top, 40 s (Derivation 5-6): theta stays 0.5, phi' = I3 w3/(I cos theta) = 3/cos(0.5)"
+"$build/simulator/eomgen-sim" torque_free_top --t-end 40 --rtol 1e-12 --atol 1e-14 --csv out/torque_free_top.csv \
+  | grep -E "^  (theta|phi_dot|psi_dot) =|energy"
+
+echo
+echo "== eomgen-sim rolling_cone until the line of contact has gone half round (5-17)"
+"$build/simulator/eomgen-sim" rolling_cone --until phi=pi --t-end 10 --rtol 1e-12 --atol 1e-14 \
+  | grep -E "event|residuals|multiplier|energy"

@@ -172,7 +172,7 @@ int run(const Options& o) {
     for (std::size_t i = 0; i < values.size(); ++i) std::cout << " " << M::param_names[i] << "=" << values[i];
     std::cout << "\n";
 
-    const double h0 = h(0, x0);
+    double h0 = h(0, x0);
     double max_drift = 0;
     std::vector<eomgen::Sample<State>> samples;
     auto track = [&](double t, const State& x) {
@@ -185,45 +185,60 @@ int run(const Options& o) {
     double t_final = 0;
     State x_final = x0;
     std::string how;
+    // --until NAME=VALUE: a terminal event where state NAME crosses VALUE (dense output: dopri5, rk4).
+    std::vector<eomgen::Event<State>> events;
+    if (!o.until.empty()) {
+        if (o.method == "symplectic") throw UsageError("--until needs --method dopri5 or rk4 (events use dense output)");
+        const auto [name, value] = parse_assignment(o.until, "--until");
+        const int i = index_of(M::state_names, name);
+        if (i < 0) throw UsageError("--until " + o.until + ": no state '" + name + "' (states: " +
+                                    list(M::state_names) + ")");
+        const double target = value;
+        events.push_back({o.until, [i, target](const double&, const State& x) { return x(i) - target; },
+                          eomgen::EventDirection::Both, eomgen::EventAction::Stop});
+    }
+    // What every method prints about how the run ended.
+    auto report_run = [](const auto& r) {
+        std::cout << "steps:   " << r.accepted_steps << " accepted, " << r.rejected_steps << " rejected, "
+                  << r.rhs_evaluations << " right-hand sides\n";
+        for (const auto& e : r.events) std::cout << "event:   " << e.name << " at t = " << e.t << "\n";
+        std::cout << "stopped: "
+                  << (r.stop_reason == eomgen::StopReason::TerminalEvent ? "at event " + r.stopped_by : "at t_end")
+                  << "\n";
+    };
+
+    bool done = false;
     if constexpr (is_constrained<M>::value) {
         if (o.method == "dopri5") {
-            if (!o.until.empty()) throw UsageError("--until is not available for models with constraints yet");
             eomgen::Dopri5Options<double> opt;
             opt.rtol = o.rtol;
             opt.atol = o.atol;
             opt.max_steps = o.max_steps;
-            const auto r = eomgen::integrate_constrained<M>(params, 0.0, x0, sample_times, opt, o.project_initial);
+            const auto r =
+                eomgen::integrate_constrained<M>(params, 0.0, x0, sample_times, opt, o.project_initial, events);
             // Energy drift from the (possibly projected) start, not from the state given.
-            const double h_start = h(r.run.samples.front().t, r.run.samples.front().x);
+            h0 = h(r.run.samples.front().t, r.run.samples.front().x);
             for (const auto& s : r.run.samples)
-                max_drift = std::max(max_drift, std::abs(h(s.t, s.x) - h_start) / std::max(std::abs(h_start), 1e-300));
+                max_drift = std::max(max_drift, std::abs(h(s.t, s.x) - h0) / std::max(std::abs(h0), 1e-300));
             samples = r.run.samples;
             typename M::ConstraintVector lambda;
             M::multipliers(r.run.t, r.run.x, params, lambda);
             std::cout << "method:  dopri5 with projection onto the constraints after each of " << o.samples
                       << " segments, rtol " << o.rtol << ", atol " << o.atol << "\n";
-            std::cout << "steps:   " << r.run.accepted_steps << " accepted, " << r.run.rejected_steps << " rejected, "
-                      << r.run.rhs_evaluations << " right-hand sides\n";
+            report_run(r.run);
             std::cout << "constraint residuals before projection: position " << r.max_position_residual
                       << ", velocity " << r.max_velocity_residual << "\n";
             for (int k = 0; k < M::n_constraints; ++k)
                 std::cout << "multiplier " << M::constraint_names[std::size_t(k)] << " = " << lambda(k) << " at the end\n";
             t_final = r.run.t;
             x_final = r.run.x;
-            std::cout << "t:       " << t_final << "\n";
-            for (int i = 0; i < M::nx; ++i)
-                std::cout << "  " << M::state_names[std::size_t(i)] << " = " << x_final(i) << "\n";
-            std::cout << "energy h: " << h_start << " at t = 0, " << h(t_final, x_final)
-                      << " at the end; max |dh|/|h0| = " << max_drift << "\n";
-            write_samples<M>(o, params, samples);
-            return kExitOk;
+            done = true;
         }
     }
-    if (o.method == "symplectic") {
+    if (!done && o.method == "symplectic") {
         if (!(o.dt > 0)) throw UsageError("--method symplectic needs --dt");
         if (is_constrained<M>::value || M::has_generalized_forces)
             throw UsageError("--method symplectic integrates unconstrained models without forces; use dopri5");
-        if (!o.until.empty()) throw UsageError("--until needs --method dopri5 or rk4 (events use dense output)");
         eomgen::VariationalIntegrator<M> vi(params, o.dt);
         vi.set_state(0.0, x0.template head<M::nq>(), x0.template tail<M::nq>());
         const auto steps = static_cast<std::size_t>(std::llround(o.t_end / o.dt));
@@ -241,17 +256,7 @@ int run(const Options& o) {
         t_final = vi.t();
         how = "variational midpoint, dt " + std::to_string(o.dt) + ", " + std::to_string(steps) + " steps";
         std::cout << "method:  " << how << "\n";
-    } else {
-        std::vector<eomgen::Event<State>> events;
-        if (!o.until.empty()) {
-            const auto [name, value] = parse_assignment(o.until, "--until");
-            const int i = index_of(M::state_names, name);
-            if (i < 0) throw UsageError("--until " + o.until + ": no state '" + name + "' (states: " +
-                                        list(M::state_names) + ")");
-            const double target = value;
-            events.push_back({o.until, [i, target](const double&, const State& x) { return x(i) - target; },
-                              eomgen::EventDirection::Both, eomgen::EventAction::Stop});
-        }
+    } else if (!done) {
         eomgen::Observer<State> observer = [&](const double& t, const State& x) {
             track(t, x);
             samples.push_back({t, x});
@@ -274,12 +279,7 @@ int run(const Options& o) {
         t_final = r.t;
         x_final = r.x;
         track(r.t, r.x);
-        std::cout << "steps:   " << r.accepted_steps << " accepted, " << r.rejected_steps << " rejected, "
-                  << r.rhs_evaluations << " right-hand sides\n";
-        for (const auto& e : r.events) std::cout << "event:   " << e.name << " at t = " << e.t << "\n";
-        std::cout << "stopped: "
-                  << (r.stop_reason == eomgen::StopReason::TerminalEvent ? "at event " + r.stopped_by : "at t_end")
-                  << "\n";
+        report_run(r);
     }
     std::cout.precision(15);
     std::cout << "t:       " << t_final << "\n";

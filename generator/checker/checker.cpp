@@ -5,6 +5,7 @@
 #include "checker/latex_parser.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
+#include "mechanics/results.hpp"
 
 #include <Eigen/Dense>
 
@@ -279,7 +280,8 @@ class Checker {
         label_what_[s] = what;
     }
     void setup_names();
-    void apply_map();
+    /// The map's entries for every line (line 0), or those scoped to the text's `line`.
+    void apply_map(int line = 0);
 
     // ----- evaluation
     GiNaC::ex resolve_operators(const GiNaC::ex& e) const;
@@ -315,7 +317,15 @@ class Checker {
     std::vector<std::string> factor_analysis(const GiNaC::ex& a, const GiNaC::ex& b, double tol,
                                              std::string* ratio);
     /// r = Σ c_i EL_i with c from the acceleration coefficients: a consequence of the equations of motion.
-    Tri euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor);
+    Tri euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor,
+                                   std::vector<std::string>* acting = nullptr);
+    /// The constraints solved for some coordinates and velocities (those `keep` does not use first), with
+    /// the substitutions in LaTeX.
+    ConstraintReduction reduction(const GiNaC::ex& keep, std::string* shown);
+    /// r = k(q, t)·c with c the velocity form of constraint `index`, k ≠ 0 free of the velocities.
+    bool proportional_to_constraint(const GiNaC::ex& r, std::size_t index, double tol);
+    /// r is linear in the velocities (no products or powers of them) and has at least one.
+    bool linear_in_velocities(const GiNaC::ex& r) const;
     /// r = c·target with c free of the state: the integral of motion written with the model's initial state.
     bool proportional_in_state(const GiNaC::ex& r, const GiNaC::ex& target, double tol, GiNaC::ex* c);
 
@@ -378,6 +388,7 @@ class Checker {
     ExMap<GiNaC::ex> truth_;          ///< label symbol → eomgen's value
     ExMap<std::string> label_what_;   ///< label symbol → what it is, for the report
     ExSet bare_only_;                 ///< labels that count only as a whole side (h, H)
+    ExSet result_labels_;             ///< labels of the model's declared results
     ExMap<GiNaC::ex> part_value_;     ///< part symbol → its value in the text
     ExMap<std::string> part_origin_;  ///< part symbol → "line N"
     std::vector<GiNaC::ex> motion_;   ///< the equations of motion, = 0
@@ -412,6 +423,22 @@ void Checker::setup_names() {
         if (c.empty()) c = model_.coordinates[i].latex;
         add_label("p_{" + c + "}", eq_.momenta[i], "p_{" + c + "}");
     }
+    // Declared results ([[results]]): their LaTeX stands for their closed form, before eomgen's own labels
+    // (a result written 'T' is the closed form), after the model's coordinates and parameters.
+    for (const Result& res : model_.results) {
+        std::string c = canonical_name(res.latex);
+        if (c.empty()) c = res.latex;
+        auto it = ctx_.names.find(c);
+        if (it != ctx_.names.end() && !truth_.count(it->second)) continue;  // a coordinate or a parameter
+        const GiNaC::symbol s(c, c);
+        ctx_.names[c] = s;
+        truth_[s] = res.expr.expr;
+        result_labels_.insert(s);
+        label_what_[s] = "the declared result " + res.name + " (" + m(res.latex + " = " + latex(res.expr.expr)) +
+                         (res.equals.empty() ? std::string(")")
+                                             : ", verified against " + result_target_name(res) +
+                                                   (res.on_constraints ? " on the constraints)" : ")"));
+    }
 
     // h(0) and p(0) at the model's initial state, for the integrals of motion a derivation writes out.
     GiNaC::exmap init;
@@ -431,8 +458,10 @@ void Checker::setup_names() {
                               : eq_.euler_lagrange[i]);
 }
 
-void Checker::apply_map() {
+void Checker::apply_map(int line) {
     for (const MapEntry& e : options_.map) {
+        if (line == 0 ? e.first_line != 0 : (e.first_line == 0 || line < e.first_line || line > e.last_line))
+            continue;
         std::string name = canonical_name(e.name);
         // A bare word stands for \text{word}: the map key "Trod" names the text's \text{ Trod }.
         if (name.empty() && !e.name.empty() && std::all_of(e.name.begin(), e.name.end(), [](char ch) {
@@ -511,7 +540,10 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
             }
             if (t != truth_.end()) {
                 subs[sym] = t->second;
-                p.has_truth_label = true;
+                // A declared result is the reference only as a whole side (`a = ...`); inside an expression
+                // it is a value like a map entry's.
+                const bool result = result_labels_.count(sym) != 0;
+                p.has_truth_label = p.has_truth_label || !result || side.value.is_equal(sym);
                 continue;
             }
             std::string pname;
@@ -614,7 +646,8 @@ bool Checker::has_root(const GiNaC::ex& e) const {
     return false;
 }
 
-Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor) {
+Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor,
+                                            std::vector<std::string>* acting) {
     const std::size_t n = model_.dof();
     std::vector<GiNaC::ex> a(n);
     for (std::size_t j = 0; j < n; ++j) {
@@ -661,6 +694,21 @@ Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* onl
         if (std::abs(res) > tol * scale + 1e-300) return Tri::No;
         const double cmax = c.cwiseAbs().maxCoeff();
         if (cmax == 0) return Tri::No;
+        // With constraints, Σ c_i EL_i = Σ_k (c·A_k) λ_k: the combination holds without multipliers only when
+        // c·A_k = 0 for every constraint k.
+        if (acting)
+            for (const ConstraintEquations& k : eq_.constraints) {
+                Complex dot = 0;
+                double size = 0;
+                for (std::size_t i = 0; i < n; ++i)
+                    if (auto av = numbers_.value(k.jacobian[i], at)) {
+                        dot += c(Eigen::Index(i)) * *av;
+                        size += cmax * std::abs(*av);  // round-off in c must not count as a force
+                    }
+                if (std::abs(dot) > 1e-8 * std::max(size, 1e-300) &&
+                    std::find(acting->begin(), acting->end(), k.name) == acting->end())
+                    acting->push_back(k.name);
+            }
         for (std::size_t i = 0; i < n; ++i)
             if (std::abs(c(Eigen::Index(i))) > 1e-9 * cmax) used[i] = true;
         ++good;
@@ -713,6 +761,53 @@ bool Checker::proportional_in_state(const GiNaC::ex& r, const GiNaC::ex& target,
         *c = 1;
     }
     return true;
+}
+
+ConstraintReduction Checker::reduction(const GiNaC::ex& keep, std::string* shown) {
+    const ConstraintReduction red = reduce_on_constraints(model_, eq_, keep);
+    std::string list;
+    for (const Coordinate& c : model_.coordinates)
+        for (const GiNaC::exmap* map : {&red.coordinates, &red.velocities})
+            for (const GiNaC::symbol* s : {&c.q, &c.qd}) {
+                auto it = map->find(*s);
+                if (it == map->end()) continue;
+                list += (list.empty() ? "" : ", ") + m(latex(*s) + " = " + latex(it->second));
+            }
+    if (shown) *shown = list;
+    return red;
+}
+
+bool Checker::proportional_to_constraint(const GiNaC::ex& r, std::size_t index, double tol) {
+    const GiNaC::ex& target = eq_.constraints[index].velocity;
+    int settled = 0;
+    for (unsigned base = 1; base <= 4 && settled < 2; ++base) {
+        std::vector<Complex> ratios;
+        for (unsigned v = 1; v <= 6 && ratios.size() < 3; ++v) {
+            GiNaC::exmap at = numbers_.point(base);
+            const GiNaC::exmap other = numbers_.point(base, 300 + v);
+            for (const Coordinate& c : model_.coordinates) at[c.qd] = other.at(c.qd);
+            const auto tv = numbers_.value(target, at), rv = numbers_.value(r, at);
+            if (!tv || !rv || std::abs(*tv) <= 1e-9 * numbers_.scale(target, at)) continue;
+            ratios.push_back(*rv / *tv);
+        }
+        if (ratios.size() < 3) continue;
+        for (const Complex& q : ratios)
+            if (std::abs(q - ratios[0]) > std::max(tol, 1e-8) * std::max(std::abs(ratios[0]), 1e-300)) return false;
+        if (std::abs(ratios[0]) < 1e-12) return false;
+        ++settled;
+    }
+    return settled >= 2;
+}
+
+bool Checker::linear_in_velocities(const GiNaC::ex& r) const {
+    bool any = false;
+    for (const Group& g : groups(r)) {
+        int degree = 0;
+        for (const Coordinate& c : model_.coordinates) degree += g.monomial.degree(c.qd) + g.monomial.degree(c.qdd);
+        if (degree > 1) return false;
+        any = any || degree == 1;
+    }
+    return any;
 }
 
 // -------------------------------------------------------------------------------------------- diagnosis
@@ -1270,7 +1365,11 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         return it == label_what_.end() ? "" : it->second;
     };
     const std::string ll = label_of(L), rl = label_of(R);
-    r.compared_with = !ll.empty() ? m(ll) : (!rl.empty() ? m(rl) : "");
+    // A declared result is described in words (with its LaTeX inside), eomgen's labels are LaTeX.
+    auto shown = [](const std::string& what) {
+        return what.rfind("the declared result", 0) == 0 ? what : m(what);
+    };
+    r.compared_with = !ll.empty() ? shown(ll) : (!rl.empty() ? shown(rl) : "");
     const bool rounded = tol > 1e-9;
     const std::string within = rounded ? " within the rounding of its numbers (" +
                                              [&] {
@@ -1338,7 +1437,10 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         r.verdict = Verdict::Agrees;
         if (r.compared_with.empty()) r.compared_with = "an identity";
         r.reason = (ll.empty() && rl.empty() ? std::string("both sides are equal")
-                                             : "equal to eomgen's " + (ll.empty() ? m(rl) : m(ll))) +
+                                             : "equal to " + [&] {
+                                                   const std::string& w = ll.empty() ? rl : ll;
+                                                   return w.rfind("the declared result", 0) == 0 ? w : "eomgen's " + m(w);
+                                               }()) +
                    within;
         return;
     }
@@ -1350,7 +1452,20 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     if (has_acceleration(r_ex)) {
         int only = -1;
         std::string factor;
-        if (euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor) == Tri::Yes) {
+        std::vector<std::string> acting;
+        if (euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor, &acting) == Tri::Yes) {
+            if (!acting.empty()) {
+                std::string names;
+                for (std::size_t k = 0; k < acting.size(); ++k) names += (k ? ", " : "") + ("'" + acting[k] + "'");
+                r.compared_with = only >= 0 ? "the Euler–Lagrange equation for " +
+                                                  m(model_.coordinates[std::size_t(only)].latex)
+                                            : "the Euler–Lagrange equations";
+                r.reason = "it is that equation without the forces of the constraint" +
+                           std::string(acting.size() > 1 ? "s " : " ") + names +
+                           ", which act along it: the true equation has their multipliers, which the checker "
+                           "does not compare";
+                return;
+            }
             r.verdict = Verdict::Agrees;
             if (only >= 0) {
                 r.compared_with =
@@ -1380,6 +1495,36 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
                     return;
                 }
             }
+    }
+    // 3b. With constraints: a constraint (up to a non-zero factor, at position or velocity level), or an
+    // equation that holds once the constraints are solved for some coordinates and velocities.
+    if (!eq_.constraints.empty() && !has_acceleration(r_ex)) {
+        for (std::size_t k = 0; k < eq_.constraints.size(); ++k) {
+            const ConstraintEquations& ck = eq_.constraints[k];
+            const bool position = ck.kind == ConstraintKind::Holonomic && !has_velocity(r_ex);
+            const GiNaC::ex& target = position ? ck.position : ck.velocity;
+            GiNaC::ex factor;
+            const bool same = position ? depends_on_state(r_ex) && equal(r_ex, target, tol) == Tri::Yes
+                                       : has_velocity(r_ex) && proportional_to_constraint(r_ex, k, tol);
+            const bool scaled = !same && position && depends_on_state(r_ex) &&
+                                proportional_in_state(r_ex, target, tol, &factor);
+            if (same || scaled) {
+                r.verdict = Verdict::Agrees;
+                r.compared_with = "the constraint '" + ck.name + "' (" + m(latex(target) + " = 0") + ")";
+                r.reason = "the same constraint" + std::string(position ? "" : ", up to a factor free of the velocities") + within;
+                return;
+            }
+        }
+        const bool labelled = a.has_truth_label || b.has_truth_label;
+        std::string shown;
+        const ConstraintReduction red = reduction(labelled ? (a.has_truth_label ? b.value : a.value) : r_ex, &shown);
+        if (!red.solved.empty() && depends_on_state(r_ex) &&
+            equal(red.apply(a.value), red.apply(b.value), tol) == Tri::Yes) {
+            r.verdict = Verdict::Agrees;
+            if (r.compared_with.empty()) r.compared_with = "the constraints";
+            r.reason = "equal on the constraints (" + shown + ")" + within;
+            return;
+        }
     }
     // A formula set equal to a number is evaluated for particular data, which the model keeps symbolic.
     auto constant = [&](const GiNaC::ex& x) {
@@ -1417,6 +1562,33 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     if (has_acceleration(r_ex)) {
         diagnose_euler_lagrange(L, R, r_ex, tol, r);
         return;
+    }
+    // A velocity-level equation in a model with constraints: the constraint it matches best.
+    if (!eq_.constraints.empty() && linear_in_velocities(r_ex) && groups(r_ex).size() >= 2) {
+        int best = 0;
+        std::size_t best_k = 0;
+        GiNaC::ex best_c = 1;
+        for (std::size_t k = 0; k < eq_.constraints.size(); ++k) {
+            GiNaC::ex cf = 1;
+            const int count = best_factor(r_ex, eq_.constraints[k].velocity, tol, &cf);
+            if (count > best) {
+                best = count;
+                best_k = k;
+                best_c = cf;
+            }
+        }
+        if (best >= 1) {
+            const ConstraintEquations& ck = eq_.constraints[best_k];
+            const GiNaC::ex truth = (best_c * ck.velocity).expand();
+            r.verdict = Verdict::Disagrees;
+            r.compared_with = "the constraint '" + ck.name + "' (" + m(latex(ck.velocity) + " = 0") + ")";
+            if (!best_c.is_equal(1)) r.notes.push_back("compared after scaling the constraint by " + m(latex(best_c)));
+            const Diagnosis dg = compare_to(r_ex, truth, tol);
+            r.difference = dg.difference;
+            r.wrong_terms = dg.lines;
+            r.corrected = latex(truth) + " = 0";
+            return;
+        }
     }
     const bool chain_link = c.sides.size() >= 3;
     if (chain_link) {
@@ -1582,7 +1754,20 @@ CheckReport Checker::run() {
     std::vector<Parsed> parsed;
     for (const MathRow& row : d_.rows) {
         if (!row_selected(d_, row, selected, whole)) continue;
+        // Entries scoped to some lines of the text apply while their rows are read.
+        const std::size_t lead = std::min(row.text.find_first_not_of(" \t\r\n"), row.text.size());
+        const int line = d_.position(row.offset + lead).line;
+        const bool scoped = std::any_of(options_.map.begin(), options_.map.end(), [&](const MapEntry& e) {
+            return e.first_line != 0 && line >= e.first_line && line <= e.last_line;
+        });
+        if (!scoped) {
+            parsed.push_back({&row, parse_math(row.text, ctx_)});
+            continue;
+        }
+        const auto saved = ctx_.names;
+        apply_map(line);
         parsed.push_back({&row, parse_math(row.text, ctx_)});
+        ctx_.names = saved;
     }
     std::vector<FullChain> chains;
     const MathRow* previous_display = nullptr;

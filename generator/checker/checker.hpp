@@ -46,6 +46,8 @@ struct MapEntry {
     std::string name;    ///< e.g. "I_{0}"
     std::string value;   ///< e.g. "M a^{2}/2"
     std::string origin;  ///< where it was given, for messages: "--map", "pendulum.map.toml:4"
+    int first_line = 0;  ///< with last_line: only for the text's rows on these lines (0: everywhere)
+    int last_line = 0;
 };
 
 struct CheckOptions {

@@ -65,13 +65,38 @@ std::vector<MapEntry> load_map_file(const std::string& path) {
         // other.
         std::vector<std::pair<std::size_t, MapEntry>> entries;
         for (auto&& [name, value] : *t) {
-            const auto* s = value.as_string();
+            // A string, or { value = '...', lines = 'N-M' }: an entry for the text's lines N to M only.
+            const toml::node* v = &value;
+            int first = 0, last = 0;
+            if (const toml::table* scoped = value.as_table()) {
+                for (auto&& [k, x] : *scoped)
+                    if (k.str() != "value" && k.str() != "lines")
+                        throw CheckError(at(path, x.source()) + ": unknown key '" + std::string(k.str()) +
+                                         "' (an entry is a string or { value = '...', lines = 'N-M' })");
+                const auto* lines = scoped->get("lines") ? scoped->get("lines")->as_string() : nullptr;
+                v = scoped->get("value");
+                if (!v || !lines)
+                    throw CheckError(at(path, value.source()) + ": '" + std::string(name.str()) +
+                                     "' must be { value = '...', lines = 'N-M' }");
+                const std::string range = lines->get();
+                char dash = 0;
+                std::istringstream is(range);
+                if (!(is >> first) || !(is >> dash) || dash != '-' || !(is >> last) || first < 1 || last < first)
+                    throw CheckError(at(path, lines->source()) + ": lines must be 'N-M' with 1 <= N <= M, not '" +
+                                     range + "'");
+            }
+            const auto* s = v->as_string();
             if (!s)
-                throw CheckError(at(path, value.source()) + ": the value of '" + std::string(name.str()) +
+                throw CheckError(at(path, v->source()) + ": the value of '" + std::string(name.str()) +
                                  "' must be a string of LaTeX");
             const auto& b = value.source().begin;
-            entries.push_back({std::size_t(b.line) * 100000 + b.column,
-                               {std::string(name.str()), s->get(), path + ":" + std::to_string(b.line)}});
+            MapEntry e{std::string(name.str()), s->get(), path + ":" + std::to_string(b.line)};
+            if (first > 0) {
+                e.first_line = first;
+                e.last_line = last;
+                e.origin += " (the text's lines " + std::to_string(first) + "-" + std::to_string(last) + ")";
+            }
+            entries.push_back({std::size_t(b.line) * 100000 + b.column, e});
         }
         std::stable_sort(entries.begin(), entries.end(),
                          [](const auto& a, const auto& b) { return a.first < b.first; });

@@ -160,6 +160,26 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
         if (!model.T.expr.is_zero() || !model.V.expr.is_zero())
             os << "  explicit [lagrangian]:\n    T = " << P(model.T.expr) << "\n    V = " << P(model.V.expr) << "\n";
     }
+    if (!eq.springs.empty()) {
+        os << rule("Springs  V_s = k (|d| - l0)^2 / 2");
+        for (const eomgen::SpringEnergy& s : eq.springs)
+            os << "  " << s.name << ":\n    length = " << P(s.length) << "\n    V_" << s.name << " = " << P(s.V) << "\n";
+    }
+    if (!model.bodies.empty()) {
+        os << rule("Euler's equations  N' = I w'_dot + w' x (I w')  (body axes, about the centre of mass)");
+        for (const eomgen::Body& body : model.bodies) {
+            const eomgen::BodyDynamics d = eomgen::body_dynamics(model, body);
+            if (d.omega_body.is_zero_matrix()) {
+                os << "  " << body.name << ": does not rotate\n";
+                continue;
+            }
+            os << "  " << body.name << ":\n";
+            for (unsigned k = 0; k < 3; ++k)
+                os << "    w'_" << k + 1 << " = " << P(d.omega_body(k, 0)) << "\n";
+            for (unsigned k = 0; k < 3; ++k)
+                os << "    N'_" << k + 1 << " = " << P(d.euler_torque(k, 0)) << "\n";
+        }
+    }
     os << rule("Energies");
     os << "  T = " << P(eq.T) << "\n  V = " << P(eq.V) << "\n  L = T - V = " << P(eq.L) << "\n";
     os << rule("Euler-Lagrange equations  d/dt(dL/dq') - dL/dq = 0");
@@ -190,6 +210,15 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
                               [&](const auto& c) { return c.name == "p_" + model.coordinates[i].name; }))
             os << "  " << model.coordinates[i].name << " is cyclic, but p_" << model.coordinates[i].name
                << " is not conserved: a force or a constraint acts along it\n";
+    if (!model.results.empty()) {
+        os << rule("Declared results  [[results]]");
+        for (const eomgen::Result& r : model.results) {
+            os << "  " << r.name << ": " << r.latex << " = " << P(r.expr.expr) << "\n";
+            if (!r.equals.empty())
+                os << "    verified: equals " << r.equals << (r.on_constraints ? " on the constraints" : "") << "\n";
+            if (!r.description.empty()) os << "    " << r.description << "\n";
+        }
+    }
     if (!eq.warnings.empty()) {
         os << rule("Warnings");
         for (const std::string& w : eq.warnings) os << "  " << w << "\n";
@@ -206,6 +235,27 @@ void show_latex(const eomgen::Model& model, const eomgen::Equations& eq, std::os
     os << "T &= " << P(eq.T) << " \\\\\n";
     os << "V &= " << P(eq.V) << " \\\\\n";
     os << "L &= " << P(eq.L) << "\n\\end{align}\n";
+    if (!eq.bodies.empty() || !eq.springs.empty()) {
+        os << "% each body's and spring's share\n\\begin{align}\n";
+        std::vector<std::string> lines;
+        for (const eomgen::BodyEnergy& b : eq.bodies) {
+            lines.push_back("T_{\\text{" + b.name + "}} &= " + P(b.T));
+            lines.push_back("V_{\\text{" + b.name + "}} &= " + P(b.V));
+        }
+        for (const eomgen::SpringEnergy& sp : eq.springs) lines.push_back("V_{\\text{" + sp.name + "}} &= " + P(sp.V));
+        for (std::size_t i = 0; i < lines.size(); ++i) os << lines[i] << (i + 1 < lines.size() ? " \\\\" : "") << "\n";
+        os << "\\end{align}\n";
+    }
+    for (const eomgen::Body& body : model.bodies) {
+        const eomgen::BodyDynamics d = eomgen::body_dynamics(model, body);
+        if (d.omega_body.is_zero_matrix()) continue;
+        os << "% Euler's equations of " << body.name
+           << ": N' = I \\dot\\omega' + \\omega' \\times I \\omega' (body axes, about the centre of mass)\n"
+           << "\\begin{align}\n";
+        for (unsigned k = 0; k < 3; ++k)
+            os << "N'_{" << k + 1 << "} &= " << P(d.euler_torque(k, 0)) << (k < 2 ? " \\\\" : "") << "\n";
+        os << "\\end{align}\n";
+    }
     if (!eq.constraints.empty()) {
         os << "% constraints\n\\begin{align}\n";
         for (std::size_t k = 0; k < eq.constraints.size(); ++k) {
@@ -230,6 +280,15 @@ void show_latex(const eomgen::Model& model, const eomgen::Equations& eq, std::os
         os << " \\\\\np_{" << model.coordinates[i].latex << "} &= " << P(eq.momenta[i]);
     os << "\n\\end{align}\n";
     for (const eomgen::ConservedQuantity& c : eq.conserved) os << "% conserved: " << c.latex << " (" << c.reason << ")\n";
+    if (!model.results.empty()) {
+        os << "% declared results\n\\begin{align}\n";
+        for (std::size_t k = 0; k < model.results.size(); ++k)
+            os << model.results[k].latex << " &= " << P(model.results[k].expr.expr)
+               << (k + 1 < model.results.size() ? " \\\\" : "") << "  % " << model.results[k].name
+               << (model.results[k].equals.empty() ? "" : ", verified: equals " + model.results[k].equals)
+               << "\n";
+        os << "\\end{align}\n";
+    }
 }
 
 }  // namespace

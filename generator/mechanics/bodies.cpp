@@ -4,6 +4,7 @@
 #include "mechanics/inertia.hpp"
 #include "mechanics/kinematics.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace eomgen {
@@ -36,32 +37,61 @@ GiNaC::ex tidy(const GiNaC::ex& e) {
 
 }  // namespace
 
+GiNaC::matrix body_inertia(const Body& body) {
+    if (body.shape.empty()) return body.inertia;
+    try {
+        return shape_inertia(body.shape, body.mass, body.dimensions);
+    } catch (const std::invalid_argument& error) {
+        std::string message = std::string(error.what()) + " in body '" + body.name + "'";
+        const std::vector<std::string> dims = shape_dimensions(body.shape);
+        if (!dims.empty()) {
+            message += " (" + body.shape + " takes dimensions = [";
+            for (std::size_t i = 0; i < dims.size(); ++i) message += (i ? ", " : "") + dims[i];
+            message += "])";
+        } else {
+            message += " (shapes:";
+            for (const std::string& s : shape_names()) message += " " + s;
+            message += ")";
+        }
+        throw ModelError(body.where, message);
+    }
+}
+
+namespace {
+
+void check_sequence(const Body& body) {
+    if (!valid_euler_sequence(body.sequence))
+        throw ModelError(body.where, "Euler sequence '" + body.sequence + "' of body '" + body.name +
+                                         "' is not three of x, y, z with no axis twice in a row");
+}
+
+GiNaC::matrix column(const std::array<GiNaC::ex, 3>& v) {
+    return GiNaC::matrix{{v[0]}, {v[1]}, {v[2]}};
+}
+
+GiNaC::matrix cross(const GiNaC::matrix& a, const GiNaC::matrix& b) {
+    return GiNaC::matrix{{a(1, 0) * b(2, 0) - a(2, 0) * b(1, 0)},
+                         {a(2, 0) * b(0, 0) - a(0, 0) * b(2, 0)},
+                         {a(0, 0) * b(1, 0) - a(1, 0) * b(0, 0)}};
+}
+
+GiNaC::matrix expanded(const GiNaC::matrix& m) {
+    GiNaC::matrix out(m.rows(), m.cols());
+    for (unsigned i = 0; i < m.rows(); ++i)
+        for (unsigned j = 0; j < m.cols(); ++j) out(i, j) = m(i, j).expand();
+    return out;
+}
+
+}  // namespace
+
 std::vector<BodyEnergy> body_energies(const Model& model) {
     std::vector<BodyEnergy> out;
     for (const Body& body : model.bodies) {
         BodyEnergy e;
         e.name = body.name;
-        try {
-            e.inertia =
-                body.shape.empty() ? body.inertia : shape_inertia(body.shape, body.mass, body.dimensions);
-        } catch (const std::invalid_argument& error) {
-            std::string message = std::string(error.what()) + " in body '" + body.name + "'";
-            const std::vector<std::string> dims = shape_dimensions(body.shape);
-            if (!dims.empty()) {
-                message += " (" + body.shape + " takes dimensions = [";
-                for (std::size_t i = 0; i < dims.size(); ++i) message += (i ? ", " : "") + dims[i];
-                message += "])";
-            } else {
-                message += " (shapes:";
-                for (const std::string& s : shape_names()) message += " " + s;
-                message += ")";
-            }
-            throw ModelError(body.where, message);
-        }
-        if (!valid_euler_sequence(body.sequence))
-            throw ModelError(body.where, "Euler sequence '" + body.sequence + "' of body '" + body.name +
-                                             "' is not three of x, y, z with no axis twice in a row");
-        const GiNaC::matrix r{{body.centre[0]}, {body.centre[1]}, {body.centre[2]}};
+        e.inertia = body_inertia(body);
+        check_sequence(body);
+        const GiNaC::matrix r = column(body.centre);
         const GiNaC::matrix v = time_derivative(r, model);
         const GiNaC::matrix w = body_angular_velocity(body.angles, model, body.sequence);
         GiNaC::ex v2 = 0, wIw = 0, gr = 0;
@@ -72,6 +102,78 @@ std::vector<BodyEnergy> body_energies(const Model& model) {
         }
         e.T = tidy(body.mass * v2 / 2 + wIw / 2);
         e.V = tidy(-body.mass * gr);
+        out.push_back(std::move(e));
+    }
+    return out;
+}
+
+BodyDynamics body_dynamics(const Model& model, const Body& body) {
+    check_sequence(body);
+    BodyDynamics d;
+    d.name = body.name;
+    const GiNaC::matrix I = body_inertia(body);
+    d.rotation = euler_rotation(body.angles, body.sequence);
+    d.omega_body = expanded(body_angular_velocity(body.angles, model, body.sequence));
+    d.omega_space = expanded(space_angular_velocity(body.angles, model, body.sequence));
+    const GiNaC::matrix r = column(body.centre);
+    d.velocity = expanded(time_derivative(r, model));
+    d.angular_momentum_body = expanded(I.mul(d.omega_body));
+    const GiNaC::matrix spin = d.rotation.transpose().mul(d.angular_momentum_body);
+    const GiNaC::matrix orbit = cross(r, d.velocity);
+    for (unsigned i = 0; i < 3; ++i)
+        d.angular_momentum_space(i, 0) = (spin(i, 0) + body.mass * orbit(i, 0)).expand();
+    const GiNaC::matrix w_dot = time_derivative(d.omega_body, model);
+    const GiNaC::matrix gyro = cross(d.omega_body, d.angular_momentum_body);
+    const GiNaC::matrix Iw_dot = I.mul(w_dot);
+    for (unsigned i = 0; i < 3; ++i) d.euler_torque(i, 0) = tidy(Iw_dot(i, 0) + gyro(i, 0));
+    return d;
+}
+
+std::vector<GiNaC::ex> body_generalized_forces(const Model& model) {
+    std::vector<GiNaC::ex> Q(model.dof(), GiNaC::ex(0));
+    for (const Body& body : model.bodies) {
+        const bool force = std::any_of(body.force.begin(), body.force.end(), [](const GiNaC::ex& e) { return !e.is_zero(); });
+        const bool torque = std::any_of(body.torque.begin(), body.torque.end(), [](const GiNaC::ex& e) { return !e.is_zero(); });
+        if (!force && !torque) continue;
+        check_sequence(body);
+        const GiNaC::matrix v = time_derivative(column(body.centre), model);
+        const GiNaC::matrix w = body_angular_velocity(body.angles, model, body.sequence);
+        for (std::size_t i = 0; i < model.dof(); ++i) {
+            const GiNaC::symbol& qd = model.coordinates[i].qd;
+            for (unsigned k = 0; k < 3; ++k) {
+                if (force) Q[i] += body.force[k] * GiNaC::diff(v(k, 0), qd);
+                if (torque) Q[i] += body.torque[k] * GiNaC::diff(w(k, 0), qd);
+            }
+            Q[i] = Q[i].expand();
+        }
+    }
+    return Q;
+}
+
+std::vector<SpringEnergy> spring_energies(const Model& model) {
+    std::vector<SpringEnergy> out;
+    for (const Spring& spring : model.springs) {
+        auto end = [&](const SpringEnd& e) {
+            if (e.body.empty()) return column(e.point);
+            const auto body = std::find_if(model.bodies.begin(), model.bodies.end(),
+                                           [&](const Body& b) { return b.name == e.body; });
+            if (body == model.bodies.end())
+                throw ModelError(spring.where, "spring '" + spring.name + "' is attached to body '" + e.body +
+                                                   "', which the model does not have");
+            check_sequence(*body);
+            return point_position(column(body->centre), euler_rotation(body->angles, body->sequence),
+                                  column(e.point));
+        };
+        const GiNaC::matrix a = end(spring.from), b = end(spring.to);
+        GiNaC::ex d2 = 0;
+        for (unsigned i = 0; i < 3; ++i) d2 += GiNaC::pow(b(i, 0) - a(i, 0), 2);
+        d2 = tidy(d2);
+        SpringEnergy e;
+        e.name = spring.name;
+        e.length = GiNaC::sqrt(d2);
+        e.V = spring.rest_length.is_zero()
+                  ? tidy(spring.stiffness * d2 / 2)
+                  : spring.stiffness * GiNaC::pow(e.length - spring.rest_length, 2) / 2;
         out.push_back(std::move(e));
     }
     return out;

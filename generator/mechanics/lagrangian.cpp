@@ -1,5 +1,6 @@
 /** @file lagrangian.cpp  Euler–Lagrange equations by the chain rule on plain symbols. */
 #include "mechanics/lagrangian.hpp"
+#include "mechanics/results.hpp"
 
 #include "mechanics/constraints.hpp"
 
@@ -158,6 +159,9 @@ Equations derive_equations(const Model& model) {
         eq.T += b.T;
         eq.V += b.V;
     }
+    eq.springs = spring_energies(model);
+    for (const SpringEnergy& s : eq.springs) eq.V += s.V;
+    const std::vector<GiNaC::ex> body_forces = body_generalized_forces(model);
     eq.L = eq.T - eq.V;
 
     eq.momenta.resize(n);
@@ -185,7 +189,7 @@ Equations derive_equations(const Model& model) {
     for (std::size_t i = 0; i < n; ++i) {
         const Coordinate& ci = model.coordinates[i];
         const GiNaC::ex Qi = (i < model.forces.size() ? model.forces[i].expr : GiNaC::ex(0)) -
-                             GiNaC::diff(model.R.expr, ci.qd);
+                             GiNaC::diff(model.R.expr, ci.qd) + body_forces[i];
         eq.generalized_forces[i] = Qi;
         GiNaC::ex fi = eq.dLdq[i] - GiNaC::diff(eq.momenta[i], model.t) + Qi;
         for (const Coordinate& c : model.coordinates) fi -= GiNaC::diff(eq.momenta[i], c.q) * c.qd;
@@ -272,6 +276,7 @@ Equations derive_equations(const Model& model) {
                                     eq.momenta[i]});
         }
     }
+    verify_results(model, eq);  // [[results]] with `equals` (mechanics/results.hpp)
     return eq;
 }
 

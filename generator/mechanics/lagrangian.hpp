@@ -48,6 +48,7 @@ struct ConstraintEquations {
 struct Equations {
     GiNaC::ex T, V, L;                      ///< T and V: the model's explicit T, V plus every body's
     std::vector<BodyEnergy> bodies;         ///< each body's T and V (mechanics/bodies.hpp)
+    std::vector<SpringEnergy> springs;      ///< each spring's V (mechanics/bodies.hpp)
     GiNaC::matrix M;                        ///< n×n mass matrix, symmetric
     std::vector<GiNaC::ex> f;               ///< n forcing terms
     std::vector<GiNaC::ex> momenta;         ///< p_i = ∂L/∂q̇_i

@@ -84,6 +84,37 @@ struct Body {
     std::array<GiNaC::ex, 3> centre;      ///< centre of mass in space axes, in q and t
     std::array<GiNaC::ex, 3> angles;      ///< Euler angles (φ, θ, ψ) in q and t
     std::string sequence = "zxz";         ///< Euler sequence (mechanics/kinematics.hpp)
+    std::array<GiNaC::ex, 3> force{0, 0, 0};   ///< applied at the centre of mass, space axes (q, q̇, t)
+    std::array<GiNaC::ex, 3> torque{0, 0, 0};  ///< applied about the centre of mass, body axes (q, q̇, t)
+};
+
+/// One end of a spring: a point fixed in space or moving with q and t (`body` empty, `point` in space
+/// axes), or a point of a body (`point` in that body's axes, relative to its centre of mass).
+struct SpringEnd {
+    std::string body;
+    std::array<GiNaC::ex, 3> point{0, 0, 0};
+};
+
+/// A linear spring ([[springs]]) between two points: V = ½ k (|r_to − r_from| − l₀)².
+struct Spring {
+    std::string name;
+    SourceLocation where;  ///< of the name
+    GiNaC::ex stiffness;
+    GiNaC::ex rest_length = 0;
+    SpringEnd from, to;
+};
+
+/// A closed-form result the model declares ([[results]]): the `eomgen check` compares a derivation's
+/// `LATEX = ...` with it; with `equals`, eomgen verifies it against what it derives (docs/model_files.md).
+struct Result {
+    std::string name;
+    std::string latex;        ///< the left-hand side as a derivation writes it: "T", "\\Omega", "I_{1}"
+    std::string description;
+    SourceExpression expr;    ///< the closed form in the parameters, q, q', t
+    std::string equals;       ///< "" or "T", "V", "L", "energy", "p_<coord>", "inertia.<body>.<ij>", ...
+    SourceLocation equals_where;
+    bool on_constraints = false;  ///< compare after solving the constraints for coordinates and velocities
+    SourceLocation where;         ///< of the name
 };
 
 struct Model {
@@ -102,7 +133,9 @@ struct Model {
     std::vector<SourceExpression> forces;  ///< generalized force Q_i(q, q̇, t) per coordinate (0 when absent)
     std::vector<Constraint> constraints;
     std::vector<Body> bodies;                    ///< [[bodies]]: their T and V add to T and V above
+    std::vector<Spring> springs;                 ///< [[springs]]: their V adds to V above
     std::array<GiNaC::ex, 3> gravity{0, 0, 0};  ///< [gravity] acceleration vector g, space axes
+    std::vector<Result> results;                 ///< [[results]]: declared closed forms
 
     /// Baumgarte stabilisation of the constraints, A q̈ = γ − 2α(A q̇ + b) − β² g (0, 0: none).
     double baumgarte_alpha = 0.0;

@@ -271,7 +271,7 @@ class Loader {
         model.t = GiNaC::symbol("t", "t");
         check_keys(root,
                    {"name", "title", "source", "description", "coordinates", "parameters", "lagrangian",
-                    "constraints", "forces", "stabilization", "bodies", "gravity"},
+                    "constraints", "forces", "stabilization", "bodies", "gravity", "springs", "results"},
                    "at the top level");
 
         std::vector<Declaration> declarations;
@@ -293,10 +293,16 @@ class Loader {
         const std::vector<Entry> parameters =
             entries(root, "parameters", {"name", "value", "unit", "latex", "description"}, false);
         const std::vector<Entry> constraints = entries(root, "constraints", {"name", "kind", "expr"}, false);
+        const std::vector<Entry> results =
+            entries(root, "results", {"name", "latex", "expr", "description", "equals", "on_constraints"}, false);
         const std::vector<Entry> bodies =
             entries(root, "bodies",
-                    {"name", "mass", "shape", "dimensions", "inertia", "position", "orientation", "sequence"}, false);
+                    {"name", "mass", "shape", "dimensions", "inertia", "position", "orientation", "sequence",
+                     "force", "torque"},
+                    false);
+        const std::vector<Entry> springs = entries(root, "springs", {"name", "stiffness", "length", "from", "to"}, false);
         for (const auto& b : bodies) declarations.push_back({b.name, "body", b.where, order(b.where)});
+        for (const auto& s : springs) declarations.push_back({s.name, "spring", s.where, order(s.where)});
         for (const auto& c : constraints)
             declarations.push_back({c.name, "constraint", c.where, order(c.where)});
         for (const auto& c : coordinates)
@@ -341,10 +347,12 @@ class Loader {
 
         read_lagrangian(root, symbols, !bodies.empty(), model);
         read_bodies(bodies, symbols, model);
+        read_springs(springs, symbols, model);
         read_gravity(root, symbols, model);
         read_constraints(constraints, symbols, model);
         read_forces(root, symbols, model);
         read_stabilization(root, model);
+        read_results(results, symbols, model);
         return model;
     }
 
@@ -632,7 +640,64 @@ class Loader {
                                                       "' must be three of x, y, z with no axis twice in a row "
                                                       "(e.g. \"zxz\", \"xyz\")");
             }
+            ParseOptions load;
+            load.forbid_velocities.clear();
+            if (const toml::node* force = t.get("force")) {
+                const std::vector<GiNaC::ex> f = scalars(*force, "force", 3, symbols, load);
+                body.force = {f[0], f[1], f[2]};
+            }
+            if (const toml::node* torque = t.get("torque")) {
+                const std::vector<GiNaC::ex> n = scalars(*torque, "torque", 3, symbols, load);
+                body.torque = {n[0], n[1], n[2]};
+            }
             model.bodies.push_back(std::move(body));
+        }
+    }
+
+    /// [[springs]]: name, stiffness, length (rest length, default 0), from, to. An end is three expressions
+    /// (a point in space axes, in q and t) or a table { body = "name", point = [x, y, z] } (body axes,
+    /// from the body's centre of mass; point defaults to the centre itself).
+    void read_springs(const std::vector<Entry>& entries, const SymbolTable& symbols, Model& model) const {
+        ParseOptions constant;
+        constant.forbid_velocities = "a spring's stiffness and rest length must not depend on velocities";
+        ParseOptions placement;
+        placement.forbid_velocities = "a spring's ends are functions of q and t, without velocities";
+        for (const Entry& e : entries) {
+            Spring spring;
+            spring.name = e.name;
+            spring.where = e.where;
+            const toml::table& t = *e.table;
+            const toml::node* k = t.get("stiffness");
+            if (!k) fail(src_.at(t), "missing key 'stiffness' in [[springs]]");
+            spring.stiffness = scalar(*k, "stiffness", symbols, constant);
+            if (const toml::node* l = t.get("length")) spring.rest_length = scalar(*l, "length", symbols, constant);
+            auto end = [&](const char* key) {
+                const toml::node* node = t.get(key);
+                if (!node)
+                    fail(src_.at(t), std::string("missing key '") + key +
+                                         "' in [[springs]]: a point [x, y, z] or { body = \"name\", point = [x, y, z] }");
+                SpringEnd out;
+                if (const toml::table* table = node->as_table()) {
+                    check_keys(*table, {"body", "point"}, std::string("in the spring's '") + key + "'");
+                    const toml::node* body = table->get("body");
+                    if (!body) fail(src_.at(*table), std::string("missing key 'body' in the spring's '") + key + "'");
+                    out.body = string_value(*body, "body");
+                    if (std::none_of(model.bodies.begin(), model.bodies.end(),
+                                     [&](const Body& b) { return b.name == out.body; }))
+                        fail(string_start(*body), "no body named '" + out.body + "' in [[bodies]]");
+                    if (const toml::node* point = table->get("point")) {
+                        const std::vector<GiNaC::ex> p = scalars(*point, "point", 3, symbols, placement);
+                        out.point = {p[0], p[1], p[2]};
+                    }
+                } else {
+                    const std::vector<GiNaC::ex> p = scalars(*node, key, 3, symbols, placement);
+                    out.point = {p[0], p[1], p[2]};
+                }
+                return out;
+            };
+            spring.from = end("from");
+            spring.to = end("to");
+            model.springs.push_back(std::move(spring));
         }
     }
 
@@ -678,6 +743,93 @@ class Loader {
             c.expr.where = string_start(*expr);
             model.constraints.push_back(std::move(c));
         }
+    }
+
+    /// [[results]]: name, latex, expr, description, equals, on_constraints. `equals` is checked for its form
+    /// and its names here; whether the result holds is checked by the mechanics stage (verify_results).
+    void read_results(const std::vector<Entry>& entries, const SymbolTable& symbols, Model& model) const {
+        std::map<std::string, int> seen;
+        for (const Entry& e : entries) {
+            const toml::table& t = *e.table;
+            Result r;
+            r.name = e.name;
+            r.where = e.where;
+            if (e.name.empty()) fail(e.where, "a result's name may not be empty");
+            if (const auto [it, inserted] = seen.emplace(e.name, e.where.line); !inserted)
+                fail(e.where, "duplicate result '" + e.name + "': already on line " + std::to_string(it->second));
+            r.latex = optional_string(t, "latex").value_or(default_latex(e.name));
+            if (r.latex.empty()) fail(string_start(*t.get("latex")), "'latex' may not be empty");
+            r.description = optional_string(t, "description").value_or("");
+            const toml::node* expr = t.get("expr");
+            if (!expr) fail(src_.at(t), "missing key 'expr' in [[results]] (the closed form)");
+            r.expr.expr = expression(*expr, "expr", symbols, {});
+            r.expr.text = expr->as_string()->get();
+            r.expr.where = string_start(*expr);
+            if (const toml::node* on = t.get("on_constraints")) {
+                const auto* b = on->as_boolean();
+                if (!b) fail(src_.at(*on), "'on_constraints' must be true or false, not " + type_name(*on));
+                r.on_constraints = b->get();
+                if (r.on_constraints && model.constraints.empty())
+                    fail(src_.at(*on), "'on_constraints = true' but the model has no [[constraints]]");
+            }
+            if (const toml::node* eq = t.get("equals")) {
+                r.equals = string_value(*eq, "equals");
+                r.equals_where = string_start(*eq);
+                const std::string problem = equals_problem(r.equals, model);
+                if (!problem.empty()) fail(r.equals_where, problem);
+            } else if (t.get("on_constraints")) {
+                fail(src_.at(*t.get("on_constraints")), "'on_constraints' goes with 'equals'");
+            }
+            model.results.push_back(std::move(r));
+        }
+    }
+
+    /// Why `equals` names nothing eomgen derives ("" when it is fine).
+    static std::string equals_problem(const std::string& target, const Model& model) {
+        static const std::string known =
+            "\"T\", \"V\", \"L\", \"energy\", \"p_<coordinate>\", \"inertia.<body>.<xx|yy|zz|xy|xz|yz>\", "
+            "\"inertia_origin.<body>.<ij>\", \"principal.<body>\", \"principal_origin.<body>\", "
+            "\"omega.<body>.<x|y|z>\" or \"omega_space.<body>.<x|y|z>\"";
+        if (target == "T" || target == "V" || target == "L" || target == "energy") return "";
+        if (target.rfind("p_", 0) == 0) {
+            const std::string q = target.substr(2);
+            for (const Coordinate& c : model.coordinates)
+                if (c.name == q) return "";
+            std::vector<std::string> names;
+            for (const Coordinate& c : model.coordinates) names.push_back(c.name);
+            const std::string best = closest_name(q, names);
+            return "'" + target + "': no coordinate '" + q + "'" + (best.empty() ? "" : "; did you mean 'p_" + best + "'?");
+        }
+        const std::size_t dot = target.find('.');
+        const std::string head = target.substr(0, dot);
+        if (dot != std::string::npos &&
+            (head == "inertia" || head == "inertia_origin" || head == "principal" || head == "principal_origin" ||
+             head == "omega" || head == "omega_space")) {
+            const std::string rest = target.substr(dot + 1);
+            const bool omega = head == "omega" || head == "omega_space";
+            const bool component = head == "inertia" || head == "inertia_origin" || omega;
+            const std::size_t dot2 = rest.find('.');
+            const std::string body = component ? rest.substr(0, dot2) : rest;
+            if (omega) {
+                const std::string c = dot2 == std::string::npos ? "" : rest.substr(dot2 + 1);
+                if (c != "x" && c != "y" && c != "z")
+                    return "'" + target + "': name a component, " + head + "." + body + ".x (or y, z)";
+            } else if (component) {
+                static const std::vector<std::string> ij = {"xx", "yy", "zz", "xy", "yx", "xz", "zx", "yz", "zy"};
+                const std::string c = dot2 == std::string::npos ? "" : rest.substr(dot2 + 1);
+                if (std::find(ij.begin(), ij.end(), c) == ij.end())
+                    return "'" + target + "': name a component, " + head + "." + body + ".xx (or yy, zz, xy, xz, yz)";
+            }
+            std::vector<std::string> names;
+            for (const Body& b : model.bodies) {
+                if (b.name == body) return "";
+                names.push_back(b.name);
+            }
+            const std::string best = closest_name(body, names);
+            return "'" + target + "': no body '" + body + "' in [[bodies]]" +
+                   (best.empty() ? "" : "; did you mean '" + best + "'?");
+        }
+        return "'equals = \"" + target + "\"' names nothing eomgen derives; use " + known;
     }
 
     /// [forces]: coordinate = "Q(q, q', t)", the generalized force on that coordinate.

@@ -176,7 +176,8 @@ struct ConstrainedResult {
  * Integrates a constrained Model with Dormand–Prince from sample time to sample time, projecting the
  * state onto the constraints after each segment (drift control on top of any Baumgarte terms). The
  * residuals reached before each projection are reported. x0 is checked first (check_consistent) unless
- * `project_initial` is set, in which case it is projected.
+ * `project_initial` is set, in which case it is projected. `events` are located within each segment as by
+ * integrate(); a terminal one ends the run at the event (its state projected, and kept as the last sample).
  */
 template <class Model>
 ConstrainedResult<typename Model::State> integrate_constrained(const typename Model::Params& p,
@@ -184,7 +185,8 @@ ConstrainedResult<typename Model::State> integrate_constrained(const typename Mo
                                                                typename Model::State x0,
                                                                const std::vector<typename Model::Config::Scalar>& times,
                                                                const Dopri5Options<typename Model::Config::Scalar>& opt,
-                                                               bool project_initial = false) {
+                                                               bool project_initial = false,
+                                                               const std::vector<Event<typename Model::State>>& events = {}) {
     using Scalar = typename Model::Config::Scalar;
     using State = typename Model::State;
     if (project_initial)
@@ -200,7 +202,8 @@ ConstrainedResult<typename Model::State> integrate_constrained(const typename Mo
     State x = x0;
     for (const Scalar& next : times) {
         if (!(next > t)) continue;
-        const IntegrationResult<State> seg = integrate(f, t, x, next, opt);
+        const IntegrationResult<State> seg = integrate(f, t, x, next, opt, events);
+        out.run.events.insert(out.run.events.end(), seg.events.begin(), seg.events.end());
         out.run.accepted_steps += seg.accepted_steps;
         out.run.rejected_steps += seg.rejected_steps;
         out.run.rhs_evaluations += seg.rhs_evaluations;
@@ -211,6 +214,11 @@ ConstrainedResult<typename Model::State> integrate_constrained(const typename Mo
         out.max_velocity_residual = std::max(out.max_velocity_residual, r.velocity);
         project_onto_constraints<Model>(t, x, p);
         out.run.samples.push_back({t, x});
+        if (seg.stop_reason == StopReason::TerminalEvent) {
+            out.run.stop_reason = seg.stop_reason;
+            out.run.stopped_by = seg.stopped_by;
+            break;
+        }
     }
     out.run.t = t;
     out.run.x = x;

@@ -1,0 +1,240 @@
+/** @file results.cpp  Declared results: the constraints solved, the targets of `equals`, verification. */
+#include "mechanics/results.hpp"
+
+#include "mechanics/bodies.hpp"
+#include "mechanics/inertia.hpp"
+#include "mechanics/kinematics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <sstream>
+
+namespace eomgen {
+
+namespace {
+
+std::string text(const GiNaC::ex& e) {
+    std::ostringstream os;
+    os << e;
+    std::string s = os.str();
+    if (s.size() > 400) s = s.substr(0, 400) + " ...";
+    return s;
+}
+
+/// Coordinates in the order they should be solved for: those `keep` does not use first, later ones first.
+std::vector<std::size_t> solve_order(const Model& model, const GiNaC::ex& keep, bool velocities) {
+    std::vector<std::size_t> out;
+    for (int pass = 0; pass < 2; ++pass)
+        for (std::size_t k = model.dof(); k-- > 0;) {
+            const Coordinate& c = model.coordinates[k];
+            const bool used = velocities ? keep.has(c.qd) : keep.has(c.q);
+            if (used == (pass == 1)) out.push_back(k);
+        }
+    return out;
+}
+
+/// e = 0 at random points of every symbol of the model (relative to the size of e's terms as written);
+/// GiNaC's expand() and normal() of a residual with products of sines and cosines take seconds, and cannot
+/// see sin² + cos² = 1 anyway. Falls back on is_zero when e does not evaluate to numbers.
+bool vanishes(const GiNaC::ex& e, const Model& model) {
+    try {
+        for (unsigned seed = 1; seed <= 4; ++seed) {
+            const GiNaC::exmap at = random_point(model, seed);
+            const GiNaC::ex v = GiNaC::evalf(e.subs(at));
+            if (!GiNaC::is_a<GiNaC::numeric>(v)) return is_zero(e, model);
+            double scale = 1e-300;
+            if (GiNaC::is_a<GiNaC::add>(e))
+                for (const GiNaC::ex& term : e) {
+                    const GiNaC::ex tv = GiNaC::evalf(term.subs(at));
+                    if (GiNaC::is_a<GiNaC::numeric>(tv)) scale = std::max(scale, std::abs(GiNaC::ex_to<GiNaC::numeric>(tv).to_double()));
+                }
+            else
+                scale = 1.0;
+            if (!(std::abs(GiNaC::ex_to<GiNaC::numeric>(v).to_double()) <= 1e-10 * scale)) return false;
+        }
+        return true;
+    } catch (...) {
+        return is_zero(e, model);
+    }
+}
+
+unsigned component(char c) {
+    return c == 'x' ? 0u : (c == 'y' ? 1u : 2u);
+}
+
+}  // namespace
+
+ConstraintReduction reduce_on_constraints(const Model& model, const Equations& eq, const GiNaC::ex& keep) {
+    ConstraintReduction r;
+    std::vector<bool> solved_q(model.dof(), false), solved_v(model.dof(), false);
+    std::vector<GiNaC::ex> velocity_level;
+    for (const ConstraintEquations& c : eq.constraints) {
+        bool done = false;
+        if (c.kind == ConstraintKind::Holonomic) {
+            const GiNaC::ex g = c.position.subs(r.coordinates).expand();
+            for (std::size_t j : solve_order(model, keep, false)) {
+                const Coordinate& q = model.coordinates[j];
+                if (solved_q[j] || g.degree(q.q) != 1 || g.ldegree(q.q) < 0) continue;
+                const GiNaC::ex a = g.coeff(q.q, 1);
+                if (a.has(q.q) || is_zero(a, model)) continue;
+                const GiNaC::ex s = GiNaC::normal(q.q - g / a);
+                if (s.has(q.q)) continue;
+                const GiNaC::ex sd = time_derivative(s, model), sdd = time_derivative(sd, model);
+                GiNaC::exmap one{{q.q, s}, {q.qd, sd}, {q.qdd, sdd}};
+                for (auto& [k, v] : r.coordinates) v = v.subs(one);
+                r.coordinates.insert(one.begin(), one.end());
+                solved_q[j] = solved_v[j] = true;
+                r.solved.push_back(q.name + " = " + text(s));
+                done = true;
+                break;
+            }
+        }
+        if (!done) velocity_level.push_back(c.velocity);
+    }
+    for (const GiNaC::ex& c0 : velocity_level) {
+        const GiNaC::ex c = c0.subs(r.coordinates).subs(r.velocities).expand();
+        for (std::size_t j : solve_order(model, keep, true)) {
+            const Coordinate& q = model.coordinates[j];
+            if (solved_v[j]) continue;
+            const GiNaC::ex a = c.coeff(q.qd, 1);
+            if (c.degree(q.qd) != 1 || a.has(q.qd) || is_zero(a, model)) continue;
+            const GiNaC::ex s = GiNaC::normal(q.qd - c / a);
+            GiNaC::exmap one{{q.qd, s}};
+            for (auto& [k, v] : r.velocities) v = v.subs(one);
+            r.velocities.insert(one.begin(), one.end());
+            solved_v[j] = true;
+            r.solved.push_back(q.name + "' = " + text(s));
+            break;
+        }
+    }
+    return r;
+}
+
+std::string result_target_name(const Result& result) {
+    const std::string& t = result.equals;
+    if (t == "T" || t == "V" || t == "L") return "eomgen's " + t;
+    if (t == "energy") return "eomgen's energy function h";
+    if (t.rfind("p_", 0) == 0) return "eomgen's momentum " + t;
+    const std::size_t dot = t.find('.');
+    const std::string head = t.substr(0, dot), rest = t.substr(dot + 1);
+    if (head == "omega") return "the component " + rest + " of the body's angular velocity (body axes)";
+    if (head == "omega_space") return "the component " + rest + " of the body's angular velocity (space axes)";
+    if (head == "principal") return "a principal moment of body '" + rest + "' (about its centre of mass)";
+    if (head == "principal_origin") return "a principal moment of body '" + rest + "' about the origin";
+    return "the component " + t + " of the inertia tensor" +
+           (head == "inertia" ? std::string(" (about the centre of mass)") : " (about the origin)");
+}
+
+namespace {
+/// The tensor a principal.<body> or principal_origin.<body> result is an eigenvalue of, minus expr·1.
+GiNaC::matrix shifted_tensor(const Model& model, const Result& result);
+}  // namespace
+
+GiNaC::ex result_residual(const Model& model, const Equations& eq, const Result& result) {
+    const std::string& t = result.equals;
+    const GiNaC::ex& x = result.expr.expr;
+    if (t == "T") return x - eq.T;
+    if (t == "V") return x - eq.V;
+    if (t == "L") return x - eq.L;
+    if (t == "energy") return x - eq.energy;
+    if (t.rfind("p_", 0) == 0)
+        for (std::size_t i = 0; i < model.dof(); ++i)
+            if (model.coordinates[i].name == t.substr(2)) return x - eq.momenta[i];
+    const std::size_t dot = t.find('.');
+    if (dot != std::string::npos) {
+        const std::string head = t.substr(0, dot), rest = t.substr(dot + 1);
+        const bool omega = head == "omega" || head == "omega_space";
+        const bool component_form = head == "inertia" || head == "inertia_origin" || omega;
+        const std::string body_name = component_form ? rest.substr(0, rest.find('.')) : rest;
+        for (const Body& b : model.bodies) {
+            if (b.name != body_name) continue;
+            if (omega) {
+                const GiNaC::matrix w = head == "omega" ? body_angular_velocity(b.angles, model, b.sequence)
+                                                        : space_angular_velocity(b.angles, model, b.sequence);
+                return x - w(component(rest.substr(rest.find('.') + 1)[0]), 0);
+            }
+            GiNaC::matrix I = body_inertia(b);
+            if (head == "inertia_origin" || head == "principal_origin") {
+                const GiNaC::matrix A = euler_rotation(b.angles, b.sequence);
+                const GiNaC::matrix r{{b.centre[0]}, {b.centre[1]}, {b.centre[2]}};
+                const GiNaC::matrix c = A.mul(r);
+                I = parallel_axis(I, b.mass, c);
+            }
+            if (component_form) {
+                const std::string ij = rest.substr(rest.find('.') + 1);
+                return x - I(component(ij[0]), component(ij[1]));
+            }
+            return shifted_tensor(model, result).determinant(GiNaC::determinant_algo::laplace);
+        }
+    }
+    throw ModelError(result.equals_where, "'equals = \"" + t + "\"' names nothing eomgen derives");
+}
+
+namespace {
+
+GiNaC::matrix shifted_tensor(const Model& model, const Result& result) {
+    const std::string& t = result.equals;
+    const std::string head = t.substr(0, t.find('.')), name = t.substr(t.find('.') + 1);
+    for (const Body& b : model.bodies) {
+        if (b.name != name) continue;
+        GiNaC::matrix I = body_inertia(b);
+        if (head == "principal_origin") {
+            const GiNaC::matrix r{{b.centre[0]}, {b.centre[1]}, {b.centre[2]}};
+            I = parallel_axis(I, b.mass, euler_rotation(b.angles, b.sequence).mul(r));
+        }
+        for (unsigned i = 0; i < 3; ++i) I(i, i) -= result.expr.expr;
+        return I;
+    }
+    throw ModelError(result.equals_where, "'equals = \"" + t + "\"': no such body");
+}
+
+/// det(I − λ1) = 0 at random points, the determinant taken of the numbers (the symbolic one of a tensor moved
+/// by rotations is large), relative to the size of the tensor.
+std::optional<bool> singular_at_points(const GiNaC::matrix& m, const Model& model) {
+    for (unsigned seed = 1; seed <= 4; ++seed) {
+        const GiNaC::exmap at = random_point(model, seed);
+        double v[3][3], size = 1e-300;
+        for (unsigned i = 0; i < 3; ++i)
+            for (unsigned j = 0; j < 3; ++j) {
+                const GiNaC::ex x = GiNaC::evalf(m(i, j).subs(at));
+                if (!GiNaC::is_a<GiNaC::numeric>(x) || !GiNaC::ex_to<GiNaC::numeric>(x).is_real()) return std::nullopt;
+                v[i][j] = GiNaC::ex_to<GiNaC::numeric>(x).to_double();
+                size = std::max(size, std::abs(v[i][j]));
+            }
+        const double det = v[0][0] * (v[1][1] * v[2][2] - v[1][2] * v[2][1]) -
+                           v[0][1] * (v[1][0] * v[2][2] - v[1][2] * v[2][0]) +
+                           v[0][2] * (v[1][0] * v[2][1] - v[1][1] * v[2][0]);
+        if (!(std::abs(det) <= 1e-10 * size * size * size)) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+void verify_results(const Model& model, const Equations& eq) {
+    for (const Result& r : model.results) {
+        if (r.equals.empty()) continue;
+        const bool principal = r.equals.rfind("principal", 0) == 0;
+        if (principal && !r.on_constraints) {
+            const std::optional<bool> singular = singular_at_points(shifted_tensor(model, r), model);
+            if (singular && *singular) continue;
+        }
+        GiNaC::ex residual = result_residual(model, eq, r);
+        std::string how;
+        if (r.on_constraints) {
+            const ConstraintReduction red = reduce_on_constraints(model, eq, r.expr.expr);
+            residual = red.apply(residual);
+            for (std::size_t k = 0; k < red.solved.size(); ++k) how += (k ? ", " : "") + red.solved[k];
+            how = " on the constraints (" + how + ")";
+        }
+        if (vanishes(residual, model)) continue;
+        std::string message = "result '" + r.name + "' = " + r.expr.text + " is not " +
+                              result_target_name(r) + how + ": ";
+        message += principal ? "det(I - (" + r.expr.text + ") 1) = " + text(residual) + ", not 0"
+                             : "the difference is " + text(residual);
+        throw ModelError(r.expr.where, message);
+    }
+}
+
+}  // namespace eomgen
