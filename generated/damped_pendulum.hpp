@@ -74,27 +74,18 @@ struct Model {
         return x_;
     }
 
-    /// Mass matrix M = d2L/dq'dq' (symmetric).
+    /// Mass matrix M = d2L/dq'dq' (symmetric; computed by dynamics() at q' = 0, on which M does not depend).
     static void mass_matrix(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& M_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        M_(0, 0) = m*(l*l);
+        Config qd_;
+        qd_.setZero();
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
-    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f.
+    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f (computed by dynamics()).
     static void forcing(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& f_) {
-        static_cast<void>(t);
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar g = p_.g;
-        const Scalar c = p_.c;
-        const Scalar phi = q_(0);
-        const Scalar phi_dot = qd_(0);
-        const Scalar sin_phi = sin(phi);
-        f_(0) = -(m*l*g*sin_phi + c*phi_dot);
+        MassMatrix M_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
     /// M and f together, sharing their subexpressions.
@@ -137,28 +128,12 @@ struct Model {
 
     /// Lagrangian L = T - V.
     static Scalar lagrangian(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        using std::cos;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar g = p_.g;
-        const Scalar phi = q_(0);
-        const Scalar phi_dot = qd_(0);
-        const Scalar cos_phi = cos(phi);
-        return m*l*(Scalar(1)/Scalar(2)*l*(phi_dot*phi_dot) + g*cos_phi);
+        return kinetic_energy(t, q_, qd_, p_) - potential_energy(t, q_, qd_, p_);
     }
 
-    /// Energy function h = sum q' dL/dq' - L.
+    /// Energy function h = sum q' dL/dq' - L, here T + V (T quadratic in q', V free of q').
     static Scalar energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        using std::cos;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar g = p_.g;
-        const Scalar phi = q_(0);
-        const Scalar phi_dot = qd_(0);
-        const Scalar cos_phi = cos(phi);
-        return m*l*(Scalar(1)/Scalar(2)*l*(phi_dot*phi_dot) - g*cos_phi);
+        return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
     /// Generalized momenta p = dL/dq'.

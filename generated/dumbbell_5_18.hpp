@@ -85,36 +85,18 @@ struct Model {
         return x_;
     }
 
-    /// Mass matrix M = d2L/dq'dq' (symmetric).
+    /// Mass matrix M = d2L/dq'dq' (symmetric; computed by dynamics() at q' = 0, on which M does not depend).
     static void mass_matrix(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& M_) {
-        static_cast<void>(t);
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar alpha = q_(0);
-        const Scalar t0 = m*(l*l);
-        const Scalar sin_alpha = sin(alpha);
-        M_(0, 0) = Scalar(2)*t0;
-        M_(0, 1) = Scalar(0);
-        M_(1, 0) = Scalar(0);
-        M_(1, 1) = Scalar(2)*(sin_alpha*sin_alpha)*t0;
+        Config qd_;
+        qd_.setZero();
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
-    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f.
+    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f (computed by dynamics()).
     static void forcing(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& f_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar alpha = q_(0);
-        const Scalar alpha_dot = qd_(0);
-        const Scalar beta_dot = qd_(1);
-        const Scalar cos_alpha = cos(alpha);
-        const Scalar sin_alpha = sin(alpha);
-        const Scalar t0 = l*l;
-        f_(0) = Scalar(2)*m*cos_alpha*sin_alpha*t0*(beta_dot*beta_dot);
-        f_(1) = -Scalar(4)*m*alpha_dot*beta_dot*cos_alpha*sin_alpha*t0;
+        MassMatrix M_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
     /// M and f together, sharing their subexpressions.
@@ -162,28 +144,12 @@ struct Model {
 
     /// Lagrangian L = T - V.
     static Scalar lagrangian(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar alpha = q_(0);
-        const Scalar alpha_dot = qd_(0);
-        const Scalar beta_dot = qd_(1);
-        const Scalar sin_alpha = sin(alpha);
-        return m*(l*l)*(alpha_dot*alpha_dot + (beta_dot*beta_dot)*(sin_alpha*sin_alpha));
+        return kinetic_energy(t, q_, qd_, p_) - potential_energy(t, q_, qd_, p_);
     }
 
-    /// Energy function h = sum q' dL/dq' - L.
+    /// Energy function h = sum q' dL/dq' - L, here T + V (T quadratic in q', V free of q').
     static Scalar energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar alpha = q_(0);
-        const Scalar alpha_dot = qd_(0);
-        const Scalar beta_dot = qd_(1);
-        const Scalar sin_alpha = sin(alpha);
-        return m*(l*l)*(alpha_dot*alpha_dot + (beta_dot*beta_dot)*(sin_alpha*sin_alpha));
+        return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
     /// Generalized momenta p = dL/dq'.

@@ -78,52 +78,18 @@ struct Model {
         return x_;
     }
 
-    /// Mass matrix M = d2L/dq'dq' (symmetric).
+    /// Mass matrix M = d2L/dq'dq' (symmetric; computed by dynamics() at q' = 0, on which M does not depend).
     static void mass_matrix(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& M_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar M = p_.M;
-        const Scalar l = p_.l;
-        const Scalar I1 = p_.I1;
-        const Scalar I3 = p_.I3;
-        const Scalar theta = q_(1);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t0 = I1 + M*(l*l);
-        const Scalar cos_theta = cos(theta);
-        const Scalar t1 = I3*cos_theta;
-        M_(0, 0) = I3 + (sin_theta*sin_theta)*(-I3 + t0);
-        M_(0, 1) = Scalar(0);
-        M_(0, 2) = t1;
-        M_(1, 0) = Scalar(0);
-        M_(1, 1) = t0;
-        M_(1, 2) = Scalar(0);
-        M_(2, 0) = t1;
-        M_(2, 1) = Scalar(0);
-        M_(2, 2) = I3;
+        Config qd_;
+        qd_.setZero();
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
-    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f.
+    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f (computed by dynamics()).
     static void forcing(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& f_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar M = p_.M;
-        const Scalar l = p_.l;
-        const Scalar I1 = p_.I1;
-        const Scalar I3 = p_.I3;
-        const Scalar g = p_.g;
-        const Scalar phi_dot = qd_(0);
-        const Scalar theta = q_(1);
-        const Scalar theta_dot = qd_(1);
-        const Scalar psi_dot = qd_(2);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t0 = I3*psi_dot;
-        const Scalar cos_theta = cos(theta);
-        const Scalar t1 = phi_dot*cos_theta*(I1 - I3 + M*(l*l));
-        f_(0) = Scalar(2)*theta_dot*sin_theta*(Scalar(1)/Scalar(2)*t0 - t1);
-        f_(1) = sin_theta*(M*l*g - phi_dot*(t0 - t1));
-        f_(2) = I3*phi_dot*theta_dot*sin_theta;
+        MassMatrix M_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
     /// M and f together, sharing their subexpressions.
@@ -195,42 +161,12 @@ struct Model {
 
     /// Lagrangian L = T - V.
     static Scalar lagrangian(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar M = p_.M;
-        const Scalar l = p_.l;
-        const Scalar I1 = p_.I1;
-        const Scalar I3 = p_.I3;
-        const Scalar g = p_.g;
-        const Scalar phi_dot = qd_(0);
-        const Scalar theta = q_(1);
-        const Scalar theta_dot = qd_(1);
-        const Scalar psi_dot = qd_(2);
-        const Scalar cos_theta = cos(theta);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t0 = I1 + M*(l*l);
-        return -Scalar(1)/Scalar(2)*(Scalar(2)*M*l*g*cos_theta - I3*(psi_dot*psi_dot) - phi_dot*(Scalar(2)*I3*psi_dot*cos_theta + phi_dot*(I3 + (sin_theta*sin_theta)*(-I3 + t0))) - (theta_dot*theta_dot)*t0);
+        return kinetic_energy(t, q_, qd_, p_) - potential_energy(t, q_, qd_, p_);
     }
 
-    /// Energy function h = sum q' dL/dq' - L.
+    /// Energy function h = sum q' dL/dq' - L, here T + V (T quadratic in q', V free of q').
     static Scalar energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar M = p_.M;
-        const Scalar l = p_.l;
-        const Scalar I1 = p_.I1;
-        const Scalar I3 = p_.I3;
-        const Scalar g = p_.g;
-        const Scalar phi_dot = qd_(0);
-        const Scalar theta = q_(1);
-        const Scalar theta_dot = qd_(1);
-        const Scalar psi_dot = qd_(2);
-        const Scalar cos_theta = cos(theta);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t0 = I1 + M*(l*l);
-        return Scalar(1)/Scalar(2)*(Scalar(2)*M*l*g*cos_theta + I3*(psi_dot*psi_dot) + phi_dot*(Scalar(2)*I3*psi_dot*cos_theta + phi_dot*(I3 + (sin_theta*sin_theta)*(-I3 + t0))) + (theta_dot*theta_dot)*t0);
+        return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
     /// Generalized momenta p = dL/dq'.
@@ -276,26 +212,11 @@ struct Model {
 
     /// Conserved quantities, in the order of conserved_names.
     static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar M = p_.M;
-        const Scalar l = p_.l;
-        const Scalar I1 = p_.I1;
-        const Scalar I3 = p_.I3;
-        const Scalar g = p_.g;
-        const Scalar phi_dot = qd_(0);
-        const Scalar theta = q_(1);
-        const Scalar theta_dot = qd_(1);
-        const Scalar psi_dot = qd_(2);
-        const Scalar cos_theta = cos(theta);
-        const Scalar t0 = I3*psi_dot*cos_theta;
-        const Scalar sin_theta = sin(theta);
-        const Scalar t1 = I1 + M*(l*l);
-        const Scalar t2 = phi_dot*(I3 + (sin_theta*sin_theta)*(-I3 + t1));
-        out_(0) = Scalar(1)/Scalar(2)*(Scalar(2)*M*l*g*cos_theta + I3*(psi_dot*psi_dot) + phi_dot*(Scalar(2)*t0 + t2) + (theta_dot*theta_dot)*t1);
-        out_(1) = t0 + t2;
-        out_(2) = I3*(psi_dot + phi_dot*cos_theta);
+        out_(0) = energy(t, q_, qd_, p_);
+        Config momenta_;
+        momenta(t, q_, qd_, p_, momenta_);
+        out_(1) = momenta_(0);
+        out_(2) = momenta_(2);
     }
 
     /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.

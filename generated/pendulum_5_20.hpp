@@ -77,41 +77,18 @@ struct Model {
         return x_;
     }
 
-    /// Mass matrix M = d2L/dq'dq' (symmetric).
+    /// Mass matrix M = d2L/dq'dq' (symmetric; computed by dynamics() at q' = 0, on which M does not depend).
     static void mass_matrix(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& M_) {
-        static_cast<void>(t);
-        using std::cos;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar M = p_.M;
-        const Scalar a = p_.a;
-        const Scalar theta = q_(0);
-        const Scalar phi = q_(1);
-        const Scalar t0 = l*M*a*cos(theta - phi);
-        M_(0, 0) = (l*l)*(Scalar(1)/Scalar(3)*m + M);
-        M_(0, 1) = t0;
-        M_(1, 0) = t0;
-        M_(1, 1) = Scalar(3)/Scalar(2)*M*(a*a);
+        Config qd_;
+        qd_.setZero();
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
-    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f.
+    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f (computed by dynamics()).
     static void forcing(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& f_) {
-        static_cast<void>(t);
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar M = p_.M;
-        const Scalar a = p_.a;
-        const Scalar g = p_.g;
-        const Scalar theta = q_(0);
-        const Scalar theta_dot = qd_(0);
-        const Scalar phi = q_(1);
-        const Scalar phi_dot = qd_(1);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t0 = sin(theta - phi);
-        const Scalar sin_phi = sin(phi);
-        f_(0) = -(Scalar(1)/Scalar(2)*m*l*g*sin_theta + l*M*a*t0*(phi_dot*phi_dot) + l*M*g*sin_theta);
-        f_(1) = l*M*a*t0*(theta_dot*theta_dot) - M*a*g*sin_phi;
+        MassMatrix M_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
     /// M and f together, sharing their subexpressions.
@@ -175,46 +152,12 @@ struct Model {
 
     /// Lagrangian L = T - V.
     static Scalar lagrangian(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar M = p_.M;
-        const Scalar a = p_.a;
-        const Scalar g = p_.g;
-        const Scalar theta = q_(0);
-        const Scalar theta_dot = qd_(0);
-        const Scalar phi = q_(1);
-        const Scalar phi_dot = qd_(1);
-        const Scalar cos_theta = cos(theta);
-        const Scalar t0 = l*theta_dot;
-        const Scalar cos_phi = cos(phi);
-        const Scalar sin_theta = sin(theta);
-        const Scalar sin_phi = sin(phi);
-        return l*(g*cos_theta*(Scalar(1)/Scalar(2)*m + M) + theta_dot*(Scalar(1)/Scalar(6)*m*t0 + M*(Scalar(1)/Scalar(2)*t0 + a*phi_dot*(cos_theta*cos_phi + sin_theta*sin_phi)))) + M*a*(Scalar(3)/Scalar(4)*a*(phi_dot*phi_dot) + g*cos_phi);
+        return kinetic_energy(t, q_, qd_, p_) - potential_energy(t, q_, qd_, p_);
     }
 
-    /// Energy function h = sum q' dL/dq' - L.
+    /// Energy function h = sum q' dL/dq' - L, here T + V (T quadratic in q', V free of q').
     static Scalar energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar M = p_.M;
-        const Scalar a = p_.a;
-        const Scalar g = p_.g;
-        const Scalar theta = q_(0);
-        const Scalar theta_dot = qd_(0);
-        const Scalar phi = q_(1);
-        const Scalar phi_dot = qd_(1);
-        const Scalar cos_theta = cos(theta);
-        const Scalar t0 = l*theta_dot;
-        const Scalar cos_phi = cos(phi);
-        const Scalar sin_theta = sin(theta);
-        const Scalar sin_phi = sin(phi);
-        return -(l*(g*cos_theta*(Scalar(1)/Scalar(2)*m + M) - theta_dot*(Scalar(1)/Scalar(6)*m*t0 + M*(Scalar(1)/Scalar(2)*t0 + a*phi_dot*(cos_theta*cos_phi + sin_theta*sin_phi)))) - M*a*(Scalar(3)/Scalar(4)*a*(phi_dot*phi_dot) - g*cos_phi));
+        return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
     /// Generalized momenta p = dL/dq'.
@@ -257,24 +200,7 @@ struct Model {
 
     /// Conserved quantities, in the order of conserved_names.
     static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar M = p_.M;
-        const Scalar a = p_.a;
-        const Scalar g = p_.g;
-        const Scalar theta = q_(0);
-        const Scalar theta_dot = qd_(0);
-        const Scalar phi = q_(1);
-        const Scalar phi_dot = qd_(1);
-        const Scalar cos_theta = cos(theta);
-        const Scalar t0 = l*theta_dot;
-        const Scalar cos_phi = cos(phi);
-        const Scalar sin_theta = sin(theta);
-        const Scalar sin_phi = sin(phi);
-        out_(0) = -(l*(g*cos_theta*(Scalar(1)/Scalar(2)*m + M) - theta_dot*(Scalar(1)/Scalar(6)*m*t0 + M*(Scalar(1)/Scalar(2)*t0 + a*phi_dot*(cos_theta*cos_phi + sin_theta*sin_phi)))) - M*a*(Scalar(3)/Scalar(4)*a*(phi_dot*phi_dot) - g*cos_phi));
+        out_(0) = energy(t, q_, qd_, p_);
     }
 
     /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.

@@ -82,26 +82,18 @@ struct Model {
         return x_;
     }
 
-    /// Mass matrix M = d2L/dq'dq' (symmetric).
+    /// Mass matrix M = d2L/dq'dq' (symmetric; computed by dynamics() at q' = 0, on which M does not depend).
     static void mass_matrix(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& M_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        const Scalar m = p_.m;
-        M_(0, 0) = m;
-        M_(0, 1) = Scalar(0);
-        M_(1, 0) = Scalar(0);
-        M_(1, 1) = m;
+        Config qd_;
+        qd_.setZero();
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
-    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f.
+    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f (computed by dynamics()).
     static void forcing(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& f_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(qd_);
-        const Scalar m = p_.m;
-        const Scalar g = p_.g;
-        f_(0) = Scalar(0);
-        f_(1) = -(m*g);
+        MassMatrix M_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
     /// M and f together, sharing their subexpressions.
@@ -141,24 +133,12 @@ struct Model {
 
     /// Lagrangian L = T - V.
     static Scalar lagrangian(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        const Scalar m = p_.m;
-        const Scalar g = p_.g;
-        const Scalar x_dot = qd_(0);
-        const Scalar y = q_(1);
-        const Scalar y_dot = qd_(1);
-        return m*(Scalar(1)/Scalar(2)*x_dot*x_dot + Scalar(1)/Scalar(2)*y_dot*y_dot - g*y);
+        return kinetic_energy(t, q_, qd_, p_) - potential_energy(t, q_, qd_, p_);
     }
 
-    /// Energy function h = sum q' dL/dq' - L.
+    /// Energy function h = sum q' dL/dq' - L, here T + V (T quadratic in q', V free of q').
     static Scalar energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        const Scalar m = p_.m;
-        const Scalar g = p_.g;
-        const Scalar x_dot = qd_(0);
-        const Scalar y = q_(1);
-        const Scalar y_dot = qd_(1);
-        return m*(Scalar(1)/Scalar(2)*x_dot*x_dot + Scalar(1)/Scalar(2)*y_dot*y_dot + g*y);
+        return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
     /// Generalized momenta p = dL/dq'.
@@ -185,13 +165,7 @@ struct Model {
 
     /// Conserved quantities, in the order of conserved_names.
     static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
-        static_cast<void>(t);
-        const Scalar m = p_.m;
-        const Scalar g = p_.g;
-        const Scalar x_dot = qd_(0);
-        const Scalar y = q_(1);
-        const Scalar y_dot = qd_(1);
-        out_(0) = m*(Scalar(1)/Scalar(2)*x_dot*x_dot + Scalar(1)/Scalar(2)*y_dot*y_dot + g*y);
+        out_(0) = energy(t, q_, qd_, p_);
     }
 
     /// Constraint Jacobian A (c = A q' + b) and acceleration level A q'' = gamma.

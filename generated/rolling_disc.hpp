@@ -86,77 +86,18 @@ struct Model {
         return x_;
     }
 
-    /// Mass matrix M = d2L/dq'dq' (symmetric).
+    /// Mass matrix M = d2L/dq'dq' (symmetric; computed by dynamics() at q' = 0, on which M does not depend).
     static void mass_matrix(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& M_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar R = p_.R;
-        const Scalar phi = q_(2);
-        const Scalar theta = q_(3);
-        const Scalar cos_phi = cos(phi);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t0 = m*R*cos_phi*sin_theta;
-        const Scalar cos_theta = cos(theta);
-        const Scalar sin_phi = sin(phi);
-        const Scalar t1 = m*R*cos_theta*sin_phi;
-        const Scalar t2 = m*R*sin_phi*sin_theta;
-        const Scalar t3 = m*R*cos_phi*cos_theta;
-        const Scalar t4 = m*(R*R);
-        const Scalar t5 = sin_theta*t4;
-        M_(0, 0) = m;
-        M_(0, 1) = Scalar(0);
-        M_(0, 2) = t0;
-        M_(0, 3) = t1;
-        M_(0, 4) = Scalar(0);
-        M_(1, 0) = Scalar(0);
-        M_(1, 1) = m;
-        M_(1, 2) = t2;
-        M_(1, 3) = -t3;
-        M_(1, 4) = Scalar(0);
-        M_(2, 0) = t0;
-        M_(2, 1) = t2;
-        M_(2, 2) = t4*(Scalar(1)/Scalar(4)*cos_theta*cos_theta + Scalar(3)/Scalar(2)*sin_theta*sin_theta);
-        M_(2, 3) = Scalar(0);
-        M_(2, 4) = -Scalar(1)/Scalar(2)*t5;
-        M_(3, 0) = t1;
-        M_(3, 1) = -t3;
-        M_(3, 2) = Scalar(0);
-        M_(3, 3) = Scalar(5)/Scalar(4)*t4;
-        M_(3, 4) = Scalar(0);
-        M_(4, 0) = Scalar(0);
-        M_(4, 1) = Scalar(0);
-        M_(4, 2) = -Scalar(1)/Scalar(2)*t5;
-        M_(4, 3) = Scalar(0);
-        M_(4, 4) = Scalar(1)/Scalar(2)*t4;
+        Config qd_;
+        qd_.setZero();
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
-    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f.
+    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f (computed by dynamics()).
     static void forcing(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& f_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar R = p_.R;
-        const Scalar g = p_.g;
-        const Scalar phi = q_(2);
-        const Scalar phi_dot = qd_(2);
-        const Scalar theta = q_(3);
-        const Scalar theta_dot = qd_(3);
-        const Scalar psi_dot = qd_(4);
-        const Scalar sin_phi = sin(phi);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t0 = phi_dot*sin_theta;
-        const Scalar cos_phi = cos(phi);
-        const Scalar cos_theta = cos(theta);
-        const Scalar t1 = theta_dot*theta_dot;
-        const Scalar t2 = R*R;
-        f_(0) = m*R*(phi_dot*(sin_phi*t0 - Scalar(2)*theta_dot*cos_phi*cos_theta) + sin_phi*sin_theta*t1);
-        f_(1) = -(m*R*(phi_dot*(cos_phi*t0 + Scalar(2)*theta_dot*cos_theta*sin_phi) + cos_phi*sin_theta*t1));
-        f_(2) = m*theta_dot*cos_theta*t2*(Scalar(1)/Scalar(2)*psi_dot - Scalar(5)/Scalar(2)*t0);
-        f_(3) = -(m*R*(R*phi_dot*cos_theta*(Scalar(1)/Scalar(2)*psi_dot - Scalar(5)/Scalar(4)*t0) - g*sin_theta));
-        f_(4) = Scalar(1)/Scalar(2)*m*phi_dot*theta_dot*cos_theta*t2;
+        MassMatrix M_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
     /// M and f together, sharing their subexpressions.
@@ -256,50 +197,12 @@ struct Model {
 
     /// Lagrangian L = T - V.
     static Scalar lagrangian(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar R = p_.R;
-        const Scalar g = p_.g;
-        const Scalar x_dot = qd_(0);
-        const Scalar y_dot = qd_(1);
-        const Scalar phi = q_(2);
-        const Scalar phi_dot = qd_(2);
-        const Scalar theta = q_(3);
-        const Scalar theta_dot = qd_(3);
-        const Scalar psi_dot = qd_(4);
-        const Scalar cos_phi = cos(phi);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t0 = phi_dot*sin_theta;
-        const Scalar cos_theta = cos(theta);
-        const Scalar sin_phi = sin(phi);
-        const Scalar t1 = x_dot + R*(cos_phi*t0 + theta_dot*cos_theta*sin_phi);
-        const Scalar t2 = y_dot + R*(sin_phi*t0 - theta_dot*cos_phi*cos_theta);
-        const Scalar t3 = psi_dot - t0;
-        return Scalar(1)/Scalar(2)*m*(t1*t1 + t2*t2 + R*(R*(Scalar(1)/Scalar(2)*t3*t3 + Scalar(1)/Scalar(4)*(phi_dot*phi_dot)*(cos_theta*cos_theta) + (theta_dot*theta_dot)*(sin_theta*sin_theta + Scalar(1)/Scalar(4))) - Scalar(2)*g*cos_theta));
+        return kinetic_energy(t, q_, qd_, p_) - potential_energy(t, q_, qd_, p_);
     }
 
-    /// Energy function h = sum q' dL/dq' - L.
+    /// Energy function h = sum q' dL/dq' - L, here T + V (T quadratic in q', V free of q').
     static Scalar energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar R = p_.R;
-        const Scalar g = p_.g;
-        const Scalar x_dot = qd_(0);
-        const Scalar y_dot = qd_(1);
-        const Scalar phi = q_(2);
-        const Scalar phi_dot = qd_(2);
-        const Scalar theta = q_(3);
-        const Scalar theta_dot = qd_(3);
-        const Scalar psi_dot = qd_(4);
-        const Scalar cos_theta = cos(theta);
-        const Scalar sin_theta = sin(theta);
-        const Scalar cos_phi = cos(phi);
-        const Scalar sin_phi = sin(phi);
-        return m*(Scalar(1)/Scalar(2)*x_dot*x_dot + Scalar(1)/Scalar(2)*y_dot*y_dot + R*(Scalar(1)/Scalar(4)*R*(psi_dot*psi_dot) + g*cos_theta + phi_dot*(Scalar(1)/Scalar(8)*R*phi_dot*(cos_theta*cos_theta) - sin_theta*(R*(Scalar(1)/Scalar(2)*psi_dot - Scalar(3)/Scalar(4)*phi_dot*sin_theta) - x_dot*cos_phi - y_dot*sin_phi)) + theta_dot*(Scalar(5)/Scalar(8)*R*theta_dot + cos_theta*(x_dot*sin_phi - y_dot*cos_phi))));
+        return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
     /// Generalized momenta p = dL/dq'.
@@ -357,24 +260,7 @@ struct Model {
 
     /// Conserved quantities, in the order of conserved_names.
     static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar R = p_.R;
-        const Scalar g = p_.g;
-        const Scalar x_dot = qd_(0);
-        const Scalar y_dot = qd_(1);
-        const Scalar phi = q_(2);
-        const Scalar phi_dot = qd_(2);
-        const Scalar theta = q_(3);
-        const Scalar theta_dot = qd_(3);
-        const Scalar psi_dot = qd_(4);
-        const Scalar cos_theta = cos(theta);
-        const Scalar sin_theta = sin(theta);
-        const Scalar cos_phi = cos(phi);
-        const Scalar sin_phi = sin(phi);
-        out_(0) = m*(Scalar(1)/Scalar(2)*x_dot*x_dot + Scalar(1)/Scalar(2)*y_dot*y_dot + R*(Scalar(1)/Scalar(4)*R*(psi_dot*psi_dot) + g*cos_theta + phi_dot*(Scalar(1)/Scalar(8)*R*phi_dot*(cos_theta*cos_theta) - sin_theta*(R*(Scalar(1)/Scalar(2)*psi_dot - Scalar(3)/Scalar(4)*phi_dot*sin_theta) - x_dot*cos_phi - y_dot*sin_phi)) + theta_dot*(Scalar(5)/Scalar(8)*R*theta_dot + cos_theta*(x_dot*sin_phi - y_dot*cos_phi))));
+        out_(0) = energy(t, q_, qd_, p_);
     }
 
     /// Constraint Jacobian A (c = A q' + b) and acceleration level A q'' = gamma.

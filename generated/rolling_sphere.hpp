@@ -86,57 +86,18 @@ struct Model {
         return x_;
     }
 
-    /// Mass matrix M = d2L/dq'dq' (symmetric).
+    /// Mass matrix M = d2L/dq'dq' (symmetric; computed by dynamics() at q' = 0, on which M does not depend).
     static void mass_matrix(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& M_) {
-        static_cast<void>(t);
-        using std::cos;
-        const Scalar m = p_.m;
-        const Scalar I = p_.I;
-        const Scalar theta = q_(2);
-        const Scalar cos_theta = cos(theta);
-        const Scalar t0 = I*cos_theta;
-        M_(0, 0) = m;
-        M_(0, 1) = Scalar(0);
-        M_(0, 2) = Scalar(0);
-        M_(0, 3) = Scalar(0);
-        M_(0, 4) = Scalar(0);
-        M_(1, 0) = Scalar(0);
-        M_(1, 1) = m;
-        M_(1, 2) = Scalar(0);
-        M_(1, 3) = Scalar(0);
-        M_(1, 4) = Scalar(0);
-        M_(2, 0) = Scalar(0);
-        M_(2, 1) = Scalar(0);
-        M_(2, 2) = I;
-        M_(2, 3) = Scalar(0);
-        M_(2, 4) = Scalar(0);
-        M_(3, 0) = Scalar(0);
-        M_(3, 1) = Scalar(0);
-        M_(3, 2) = Scalar(0);
-        M_(3, 3) = I;
-        M_(3, 4) = t0;
-        M_(4, 0) = Scalar(0);
-        M_(4, 1) = Scalar(0);
-        M_(4, 2) = Scalar(0);
-        M_(4, 3) = t0;
-        M_(4, 4) = I;
+        Config qd_;
+        qd_.setZero();
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
-    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f.
+    /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f (computed by dynamics()).
     static void forcing(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& f_) {
-        static_cast<void>(t);
-        using std::sin;
-        const Scalar I = p_.I;
-        const Scalar theta = q_(2);
-        const Scalar theta_dot = qd_(2);
-        const Scalar phi_dot = qd_(3);
-        const Scalar psi_dot = qd_(4);
-        const Scalar sin_theta = sin(theta);
-        f_(0) = Scalar(0);
-        f_(1) = Scalar(0);
-        f_(2) = -(I*phi_dot*psi_dot*sin_theta);
-        f_(3) = I*theta_dot*psi_dot*sin_theta;
-        f_(4) = I*theta_dot*phi_dot*sin_theta;
+        MassMatrix M_;
+        dynamics(t, q_, qd_, p_, M_, f_);
     }
 
     /// M and f together, sharing their subexpressions.
@@ -212,34 +173,12 @@ struct Model {
 
     /// Lagrangian L = T - V.
     static Scalar lagrangian(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        using std::cos;
-        const Scalar m = p_.m;
-        const Scalar I = p_.I;
-        const Scalar x_dot = qd_(0);
-        const Scalar y_dot = qd_(1);
-        const Scalar theta = q_(2);
-        const Scalar theta_dot = qd_(2);
-        const Scalar phi_dot = qd_(3);
-        const Scalar psi_dot = qd_(4);
-        const Scalar cos_theta = cos(theta);
-        return Scalar(1)/Scalar(2)*(m*(x_dot*x_dot + y_dot*y_dot) + I*(theta_dot*theta_dot + psi_dot*psi_dot + phi_dot*(phi_dot + Scalar(2)*psi_dot*cos_theta)));
+        return kinetic_energy(t, q_, qd_, p_) - potential_energy(t, q_, qd_, p_);
     }
 
-    /// Energy function h = sum q' dL/dq' - L.
+    /// Energy function h = sum q' dL/dq' - L, here T + V (T quadratic in q', V free of q').
     static Scalar energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
-        static_cast<void>(t);
-        using std::cos;
-        const Scalar m = p_.m;
-        const Scalar I = p_.I;
-        const Scalar x_dot = qd_(0);
-        const Scalar y_dot = qd_(1);
-        const Scalar theta = q_(2);
-        const Scalar theta_dot = qd_(2);
-        const Scalar phi_dot = qd_(3);
-        const Scalar psi_dot = qd_(4);
-        const Scalar cos_theta = cos(theta);
-        return Scalar(1)/Scalar(2)*(m*(x_dot*x_dot + y_dot*y_dot) + I*(theta_dot*theta_dot + psi_dot*psi_dot + phi_dot*(phi_dot + Scalar(2)*psi_dot*cos_theta)));
+        return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
     /// Generalized momenta p = dL/dq'.
@@ -280,20 +219,10 @@ struct Model {
 
     /// Conserved quantities, in the order of conserved_names.
     static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
-        static_cast<void>(t);
-        using std::cos;
-        const Scalar m = p_.m;
-        const Scalar I = p_.I;
-        const Scalar x_dot = qd_(0);
-        const Scalar y_dot = qd_(1);
-        const Scalar theta = q_(2);
-        const Scalar theta_dot = qd_(2);
-        const Scalar phi_dot = qd_(3);
-        const Scalar psi_dot = qd_(4);
-        const Scalar cos_theta = cos(theta);
-        const Scalar t0 = psi_dot*cos_theta;
-        out_(0) = Scalar(1)/Scalar(2)*(m*(x_dot*x_dot + y_dot*y_dot) + I*(theta_dot*theta_dot + psi_dot*psi_dot + phi_dot*(phi_dot + Scalar(2)*t0)));
-        out_(1) = I*(phi_dot + t0);
+        out_(0) = energy(t, q_, qd_, p_);
+        Config momenta_;
+        momenta(t, q_, qd_, p_, momenta_);
+        out_(1) = momenta_(3);
     }
 
     /// Constraint Jacobian A (c = A q' + b) and acceleration level A q'' = gamma.

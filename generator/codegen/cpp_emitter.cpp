@@ -253,11 +253,10 @@ struct FunctionSpec {
     std::vector<std::pair<std::string, std::string>> inputs;  ///< (type, name)
     std::vector<std::pair<std::string, std::string>> outputs;
     std::vector<Output> values;
+    std::vector<std::string> delegate = {};  ///< when not empty: the whole body, calling another function
 };
 
 std::string emit_function(const FunctionSpec& f, const SymbolTable& table) {
-    ExprDag dag(table.info, table.exprs, true);
-    FunctionBody body = emit_body(dag, f.values);
     std::ostringstream os;
     os << "    /// " << f.doc << "\n";
     os << "    static " << f.return_type << " " << f.name << "(";
@@ -266,6 +265,13 @@ std::string emit_function(const FunctionSpec& f, const SymbolTable& table) {
     for (const auto& [type, name] : f.outputs) params.push_back(type + "& " + name);
     for (std::size_t i = 0; i < params.size(); ++i) os << (i ? ", " : "") << params[i];
     os << ") {\n";
+    if (!f.delegate.empty()) {
+        for (const std::string& l : f.delegate) os << "        " << l << "\n";
+        os << "    }\n";
+        return os.str();
+    }
+    ExprDag dag(table.info, table.exprs, true);
+    FunctionBody body = emit_body(dag, f.values);
     // Which arguments the body reads, through the locals it declares.
     std::set<std::string> read;
     std::vector<std::string> locals;
@@ -344,11 +350,13 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "//\n";
     os << "// T = " << printer.print(eq.T, MathStyle::Text) << "\n";
     os << "// V = " << printer.print(eq.V, MathStyle::Text) << "\n";
+    // Large systems' equations are for `eomgen show`, not for a comment nobody reads: printing stops as soon
+    // as they pass 4000 characters (expanding and printing all of them took a third of the emit at n = 20).
+    constexpr std::size_t kLongestEquations = 4000;
     std::string equations;
-    for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t i = 0; i < n && equations.size() <= kLongestEquations; ++i)
         equations += "//   " + printer.print(eq.euler_lagrange[i].expand(), MathStyle::Text) + " = 0\n";
-    // Large systems' equations are for `eomgen show`, not for a comment nobody reads.
-    if (equations.size() <= 4000)
+    if (equations.size() <= kLongestEquations)
         os << "//\n// Euler-Lagrange equations, d/dt(dL/dq') - dL/dq = 0:\n" << equations;
     else
         os << "//\n// Euler-Lagrange equations: see `eomgen show " << model_file << "`.\n";
@@ -446,26 +454,72 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         momenta.push_back({fmt::format("out_({})", i), eq.momenta[i]});
         grad.push_back({fmt::format("out_({})", i), eq.dLdq[i]});
     }
+    // h = Σ q̇ ∂L/∂q̇ − L, expanded by derive_equations, is T + V when T is quadratic in q̇ (no T₁, T₀
+    // terms) and V is free of q̇. Then energy() returns kinetic_energy() + potential_energy(), lagrangian()
+    // their difference and conserved() calls energy() and momenta(), instead of each computing its own copy:
+    // the expanded h was the longest function of the n-link pendulum's header (38 kB of 297 kB at n = 20,
+    // twice with conserved()), and the header's compile time grows with its code.
+    // T is quadratic + linear + zero order in q̇ (derive_equations checks it): T₀ = T(q̇ = 0) and
+    // T₁ = Σ q̇_i ∂T/∂q̇_i (q̇ = 0), with ∂T/∂q̇_i = p_i when V is free of q̇.
+    GiNaC::exmap at_rest;
+    for (const Coordinate& c : model.coordinates) at_rest[c.qd] = 0;
+    bool natural = eq.T.subs(at_rest, GiNaC::subs_options::no_pattern).expand().is_zero();
+    for (const Coordinate& c : model.coordinates) natural = natural && !eq.V.has(c.qd);
+    for (std::size_t i = 0; i < n && natural; ++i)
+        natural = eq.momenta[i].subs(at_rest, GiNaC::subs_options::no_pattern).expand().is_zero();
+    const std::string args = "t, q_, qd_, p_";
+    std::vector<std::string> lagrangian_call, energy_call, conserved_calls;
+    if ((eq.L - (eq.T - eq.V)).is_zero())
+        lagrangian_call = {"return kinetic_energy(" + args + ") - potential_energy(" + args + ");"};
+    if (natural) energy_call = {"return kinetic_energy(" + args + ") + potential_energy(" + args + ");"};
+    // Conserved quantities that are h or a momentum: read from energy() and momenta().
+    bool momentum_read = false;
+    for (std::size_t k = 0; k < eq.conserved.size(); ++k) {
+        const GiNaC::ex& v = eq.conserved[k].value;
+        std::string line;
+        if (v.is_equal(eq.energy)) line = fmt::format("out_({}) = energy({});", k, args);
+        for (std::size_t i = 0; i < n && line.empty(); ++i)
+            if (v.is_equal(eq.momenta[i])) {
+                if (!momentum_read) conserved_calls.push_back("Config momenta_;");
+                if (!momentum_read) conserved_calls.push_back("momenta(" + args + ", momenta_);");
+                momentum_read = true;
+                line = fmt::format("out_({}) = momenta_({});", k, i);
+            }
+        if (line.empty()) {
+            conserved_calls.clear();
+            break;
+        }
+        conserved_calls.push_back(line);
+    }
     for (std::size_t i = 0; i < eq.conserved.size(); ++i)
         cons.push_back({fmt::format("out_({})", i), eq.conserved[i].value});
     std::vector<Output> both = mass;
     both.insert(both.end(), force.begin(), force.end());
 
     std::vector<FunctionSpec> functions = {
-        {"Mass matrix M = d2L/dq'dq' (symmetric).", "void", "mass_matrix", {t_in, q_in, p_in}, {{"MassMatrix", "M_"}}, mass},
-        {"Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f.", "void", "forcing",
-         {t_in, q_in, qd_in, p_in}, {{"Config", "f_"}}, force},
+        // mass_matrix() and forcing() call dynamics() (M does not depend on q', so at q' = 0) instead of holding
+        // second copies of M's and f's code: the header's compile time grows with its code, and neither is on a
+        // hot path (rhs() calls dynamics(); the variational integrator's Newton iteration calls momenta() and
+        // lagrangian_gradient(), mass_matrix() only in the Legendre transform and the constraint projection).
+        {"Mass matrix M = d2L/dq'dq' (symmetric; computed by dynamics() at q' = 0, on which M does not depend).",
+         "void", "mass_matrix", {t_in, q_in, p_in}, {{"MassMatrix", "M_"}}, mass,
+         {"Config qd_;", "qd_.setZero();", "Config f_;", "dynamics(t, q_, qd_, p_, M_, f_);"}},
+        {"Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f (computed by dynamics()).",
+         "void", "forcing", {t_in, q_in, qd_in, p_in}, {{"Config", "f_"}}, force,
+         {"MassMatrix M_;", "dynamics(t, q_, qd_, p_, M_, f_);"}},
         {"M and f together, sharing their subexpressions.", "void", "dynamics", {t_in, q_in, qd_in, p_in},
          {{"MassMatrix", "M_"}, {"Config", "f_"}}, both},
         {"Kinetic energy T.", "Scalar", "kinetic_energy", {t_in, q_in, qd_in, p_in}, {}, {{"return", eq.T}}},
         {"Potential energy V.", "Scalar", "potential_energy", {t_in, q_in, qd_in, p_in}, {}, {{"return", eq.V}}},
-        {"Lagrangian L = T - V.", "Scalar", "lagrangian", {t_in, q_in, qd_in, p_in}, {}, {{"return", eq.L}}},
-        {"Energy function h = sum q' dL/dq' - L.", "Scalar", "energy", {t_in, q_in, qd_in, p_in}, {},
-         {{"return", eq.energy}}},
+        {"Lagrangian L = T - V.", "Scalar", "lagrangian", {t_in, q_in, qd_in, p_in}, {}, {{"return", eq.L}},
+         lagrangian_call},
+        {natural ? "Energy function h = sum q' dL/dq' - L, here T + V (T quadratic in q', V free of q')."
+                 : "Energy function h = sum q' dL/dq' - L.",
+         "Scalar", "energy", {t_in, q_in, qd_in, p_in}, {}, {{"return", eq.energy}}, energy_call},
         {"Generalized momenta p = dL/dq'.", "void", "momenta", {t_in, q_in, qd_in, p_in}, {{"Config", "out_"}}, momenta},
         {"dL/dq.", "void", "lagrangian_gradient", {t_in, q_in, qd_in, p_in}, {{"Config", "out_"}}, grad},
         {"Conserved quantities, in the order of conserved_names.", "void", "conserved", {t_in, q_in, qd_in, p_in},
-         {{"Conserved", "out_"}}, cons},
+         {{"Conserved", "out_"}}, cons, conserved_calls},
     };
     if (nc > 0) {
         std::vector<Output> jac_gamma, residuals, all = both;

@@ -11,6 +11,7 @@
 #include <random>
 #include <functional>
 #include <sstream>
+#include <unordered_map>
 
 namespace eomgen {
 namespace {
@@ -23,10 +24,15 @@ double to_double(const GiNaC::ex& e) {
     return n.to_double();
 }
 
+// The maps from random_point() have plain symbols as keys: subs_options::no_pattern makes each node one hash
+// look-up instead of a pattern match against every key (the same result, several times faster).
 Eigen::MatrixXd evaluate(const GiNaC::matrix& m, const GiNaC::exmap& at) {
     Eigen::MatrixXd out(m.rows(), m.cols());
     for (unsigned i = 0; i < m.rows(); ++i)
-        for (unsigned j = 0; j < m.cols(); ++j) out(i, j) = to_double(m(i, j).subs(at));
+        for (unsigned j = 0; j < m.cols(); ++j)
+            // M(j, i) is the same expression as M(i, j) (derive_equations stores it twice): evaluated once.
+            out(i, j) = j < i && m(i, j).is_equal(m(j, i)) ? out(j, i)
+                                                            : to_double(m(i, j).subs(at, GiNaC::subs_options::no_pattern));
     return out;
 }
 
@@ -42,6 +48,138 @@ void check_quadratic_in_velocities(const Model& model, const GiNaC::matrix& M) {
                                      model.coordinates[i].name + "'∂" + model.coordinates[j].name +
                                      "' still depends on " + c.name + "'");
             }
+}
+
+// GiNaC 1.8's function::derivative calls expl_derivative() inside a try block and, for a function without
+// an explicit derivative (sin, cos, exp, ... all of them), applies the chain rule in the catch block: every
+// derivative of a sin or cos throws and catches an exception, which was a fifth of derive_equations' time.
+// Registering, for those functions, an explicit derivative that is that same chain rule (the catch block's
+// code: Σ_i pderivative(i)·∂arg_i/∂s over the arguments with a nonzero derivative) gives the same
+// expressions without the exception. pderivative and the function registry are protected members: reached
+// through derived classes, as the language allows.
+struct FunctionAccess : GiNaC::function {
+    static std::vector<GiNaC::function_options>& registry() { return registered_functions(); }
+    static GiNaC::ex partial(const GiNaC::function& f, unsigned i) { return (f.*(&FunctionAccess::pderivative))(i); }
+};
+struct FunctionOptionsAccess : GiNaC::function_options {
+    static bool has_explicit_derivative(const GiNaC::function_options& o) {
+        return o.*(&FunctionOptionsAccess::expl_derivative_f) != nullptr;
+    }
+};
+
+/// The serials of the functions install_chain_rule() gave the chain rule (the others, abs or conjugate with
+/// explicit derivatives of their own, are left to GiNaC::diff).
+std::vector<char>& chain_rule_functions() {
+    static std::vector<char> serials;
+    return serials;
+}
+
+GiNaC::ex chain_rule(const GiNaC::exvector& args, const GiNaC::symbol& s) {
+    const GiNaC::function f(GiNaC::function::current_serial, args);
+    GiNaC::ex result;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const GiNaC::ex d = args[i].diff(s);
+        if (!d.is_zero()) result += FunctionAccess::partial(f, static_cast<unsigned>(i)) * d;
+    }
+    return result;
+}
+
+struct AddAccess : GiNaC::add {
+    static const GiNaC::epvector& terms(const GiNaC::add& a) { return a.*(&AddAccess::seq); }
+};
+struct MulAccess : GiNaC::mul {
+    static const GiNaC::epvector& factors(const GiNaC::mul& m) { return m.*(&MulAccess::seq); }
+    static const GiNaC::ex& coefficient(const GiNaC::mul& m) { return m.*(&MulAccess::overall_coeff); }
+    static GiNaC::expair split(const GiNaC::mul& m, const GiNaC::ex& e) { return (m.*(&MulAccess::split_ex_to_pair))(e); }
+};
+
+/**
+ * ∂e/∂x for one symbol x over many expressions, by the rules GiNaC's own diff applies (add::derivative,
+ * mul::derivative, power::derivative, the chain rule for functions; anything else is handed to GiNaC::diff),
+ * remembering the derivative of every subexpression it has met. The expressions differentiated here share
+ * most of their subexpressions (every p_i of the n-link pendulum holds the same velocity sums ẋ_k), and
+ * GiNaC's diff differentiates each occurrence again: for M and f, O(n⁴) work becomes O(n³).
+ */
+class Differentiator {
+public:
+    explicit Differentiator(const GiNaC::symbol& x) : x_(x) {}
+
+    GiNaC::ex operator()(const GiNaC::ex& e) {
+        if (GiNaC::is_exactly_a<GiNaC::numeric>(e) || GiNaC::is_exactly_a<GiNaC::constant>(e)) return 0;
+        if (GiNaC::is_a<GiNaC::symbol>(e)) return e.is_equal(x_) ? 1 : 0;
+        const GiNaC::basic* key = &GiNaC::ex_to<GiNaC::basic>(e);
+        if (auto it = memo_.find(key); it != memo_.end()) return it->second.second;
+        GiNaC::ex d = derivative(e);
+        memo_.emplace(key, std::make_pair(e, d));  // e kept alive so that its address stays its own
+        return d;
+    }
+
+private:
+    GiNaC::ex derivative(const GiNaC::ex& e) {
+        if (GiNaC::is_exactly_a<GiNaC::add>(e)) {
+            GiNaC::epvector terms;
+            for (const GiNaC::expair& t : AddAccess::terms(GiNaC::ex_to<GiNaC::add>(e))) {
+                GiNaC::ex d = (*this)(t.rest);
+                if (!d.is_zero()) terms.push_back(GiNaC::expair(d, t.coeff));
+            }
+            if (terms.empty()) return 0;
+            return GiNaC::dynallocate<GiNaC::add>(std::move(terms));
+        }
+        if (GiNaC::is_exactly_a<GiNaC::mul>(e)) {
+            // D(a·b·c) = D(a)·b·c + a·D(b)·c + a·b·D(c), each factor a = rest^coeff.
+            const GiNaC::mul& m = GiNaC::ex_to<GiNaC::mul>(e);
+            const GiNaC::epvector& factors = MulAccess::factors(m);
+            GiNaC::exvector terms;
+            for (std::size_t k = 0; k < factors.size(); ++k) {
+                const GiNaC::ex d = (*this)(factors[k].rest);
+                if (d.is_zero()) continue;
+                GiNaC::epvector seq = factors;
+                seq[k] = MulAccess::split(m, GiNaC::pow(factors[k].rest, factors[k].coeff - 1) * d);
+                terms.push_back(GiNaC::dynallocate<GiNaC::mul>(std::move(seq), MulAccess::coefficient(m) * factors[k].coeff));
+            }
+            if (terms.empty()) return 0;
+            if (terms.size() == 1) return terms[0];
+            return GiNaC::dynallocate<GiNaC::add>(std::move(terms));
+        }
+        if (GiNaC::is_exactly_a<GiNaC::power>(e) && GiNaC::is_exactly_a<GiNaC::numeric>(e.op(1))) {
+            // D(b^r) = r·b^(r−1)·D(b)
+            const GiNaC::ex d = (*this)(e.op(0));
+            if (d.is_zero()) return 0;
+            GiNaC::epvector seq{GiNaC::expair(e.op(0), e.op(1) - 1), GiNaC::expair(d, 1)};
+            return GiNaC::dynallocate<GiNaC::mul>(std::move(seq), e.op(1));
+        }
+        const std::vector<char>& chain = chain_rule_functions();
+        if (GiNaC::is_exactly_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_serial() < chain.size() &&
+            chain[GiNaC::ex_to<GiNaC::function>(e).get_serial()]) {
+            const GiNaC::function& f = GiNaC::ex_to<GiNaC::function>(e);
+            GiNaC::ex result;
+            for (std::size_t i = 0; i < f.nops(); ++i) {
+                const GiNaC::ex d = (*this)(f.op(i));
+                if (!d.is_zero()) result += FunctionAccess::partial(f, static_cast<unsigned>(i)) * d;
+            }
+            return result;
+        }
+        return GiNaC::diff(e, x_);
+    }
+
+    GiNaC::symbol x_;
+    std::unordered_map<const GiNaC::basic*, std::pair<GiNaC::ex, GiNaC::ex>> memo_;
+};
+
+/// Once per process, before the first derivative: the chain rule as the explicit derivative of every
+/// registered function that has none.
+void install_chain_rule() {
+    static const bool installed = [] {
+        std::vector<GiNaC::function_options>& registry = FunctionAccess::registry();
+        chain_rule_functions().assign(registry.size(), 0);
+        for (std::size_t serial = 0; serial < registry.size(); ++serial)
+            if (!FunctionOptionsAccess::has_explicit_derivative(registry[serial])) {
+                registry[serial].expl_derivative_func(chain_rule);
+                chain_rule_functions()[serial] = 1;
+            }
+        return true;
+    }();
+    static_cast<void>(installed);
 }
 
 }  // namespace
@@ -62,22 +200,62 @@ GiNaC::exmap random_point(const Model& model, unsigned seed) {
     return at;
 }
 
+namespace {
+
+/// True when e, evaluated at random_point(model, 1) with 40 significant digits, is a real number clearly
+/// away from zero: beyond 1e-20 of its largest top-level term (round-off at 40 digits stays far below
+/// that unless the terms cancel across 20 orders of magnitude). False when undecided (e does not evaluate
+/// to a real number there, or a pole): the caller then goes on with the exact tests.
+bool clearly_nonzero(const GiNaC::ex& e, const Model& model) {
+    struct Precision {
+        long saved = GiNaC::Digits;
+        Precision() { GiNaC::Digits = 40; }
+        ~Precision() { GiNaC::Digits = saved; }
+    } precision;
+    try {
+        const GiNaC::exmap at = random_point(model, 1);
+        // The terms one by one (their sum is e's value), each a real number or undecided.
+        GiNaC::numeric sum = 0;
+        double scale = 1.0;
+        for (std::size_t k = 0, terms = GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1; k < terms; ++k) {
+            const GiNaC::ex v = GiNaC::evalf((terms > 1 ? e.op(k) : e).subs(at, GiNaC::subs_options::no_pattern));
+            if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return false;
+            const GiNaC::numeric& x = GiNaC::ex_to<GiNaC::numeric>(v);
+            const double m = std::abs(x.to_double());
+            if (!std::isfinite(m)) return false;
+            scale = std::max(scale, m);
+            sum += x;
+        }
+        const double v = std::abs(sum.to_double());
+        return std::isfinite(v) && v > 1e-20 * scale;
+    } catch (...) {
+        return false;
+    }
+}
+
+}  // namespace
+
 bool is_zero(const GiNaC::ex& e, const Model& model) {
+    // A numeric look first: most expressions tested are not zero, and expand() and normal() of a large one
+    // take long (∂L/∂q of the 24-link pendulum: a tenth of derive_equations).
+    if (clearly_nonzero(e, model)) return false;
     const GiNaC::ex x = e.expand();
     if (x.is_zero()) return true;
     if (GiNaC::normal(x).is_zero()) return true;
     for (unsigned seed = 1; seed <= 3; ++seed) {
-        const double v = to_double(x.subs(random_point(model, seed)));
+        const GiNaC::exmap at = random_point(model, seed);
+        const double v = to_double(x.subs(at, GiNaC::subs_options::no_pattern));
         // Scale by the magnitude of the terms so that round-off in a large sum is not taken for non-zero.
         double scale = 1.0;
         if (GiNaC::is_a<GiNaC::add>(x))
-            for (const GiNaC::ex& term : x) scale = std::max(scale, std::abs(to_double(term.subs(random_point(model, seed)))));
+            for (const GiNaC::ex& term : x) scale = std::max(scale, std::abs(to_double(term.subs(at, GiNaC::subs_options::no_pattern))));
         if (!(std::abs(v) <= 1e-12 * scale)) return false;
     }
     return true;
 }
 
 GiNaC::ex time_derivative(const GiNaC::ex& e, const Model& model) {
+    install_chain_rule();
     GiNaC::ex d = GiNaC::diff(e, model.t);
     for (const Coordinate& c : model.coordinates) d += GiNaC::diff(e, c.q) * c.qd + GiNaC::diff(e, c.qd) * c.qdd;
     return d;
@@ -151,6 +329,7 @@ void warn_singular_configurations(const Model& model, Equations& eq) {
 
 Equations derive_equations(const Model& model) {
     const std::size_t n = model.dof();
+    install_chain_rule();
     Equations eq;
     eq.T = model.T.expr;
     eq.V = model.V.expr;
@@ -172,14 +351,28 @@ Equations derive_equations(const Model& model) {
     }
 
     // M = ∂p/∂q̇; for T quadratic in q̇ it is free of q̇, which is checked before anything else relies on it.
+    // One Differentiator per variable, over all p_i: they share their subexpressions.
     eq.M = GiNaC::matrix(n, n);
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = i; j < n; ++j) {
-            const GiNaC::ex mij = GiNaC::diff(eq.momenta[i], model.coordinates[j].qd);
+    for (std::size_t j = 0; j < n; ++j) {
+        Differentiator d_dqdj(model.coordinates[j].qd);
+        for (std::size_t i = 0; i <= j; ++i) {
+            const GiNaC::ex mij = d_dqdj(eq.momenta[i]);
             eq.M(i, j) = mij;
             eq.M(j, i) = mij;
         }
+    }
     check_quadratic_in_velocities(model, eq.M);
+    // ∂p_i/∂q_j and ∂p_i/∂t, for f below.
+    std::vector<std::vector<GiNaC::ex>> dp_dq(n, std::vector<GiNaC::ex>(n));
+    std::vector<GiNaC::ex> dp_dt(n);
+    for (std::size_t j = 0; j < n; ++j) {
+        Differentiator d_dqj(model.coordinates[j].q);
+        for (std::size_t i = 0; i < n; ++i) dp_dq[i][j] = d_dqj(eq.momenta[i]);
+    }
+    {
+        Differentiator d_dt(model.t);
+        for (std::size_t i = 0; i < n; ++i) dp_dt[i] = d_dt(eq.momenta[i]);
+    }
 
     // f = ∂L/∂q − (∂p/∂q) q̇ − ∂p/∂t + Q − ∂R/∂q̇: everything of d/dt p − ∂L/∂q − Q + ∂R/∂q̇ but the
     // q̈ terms, moved to the right.
@@ -191,10 +384,14 @@ Equations derive_equations(const Model& model) {
         const GiNaC::ex Qi = (i < model.forces.size() ? model.forces[i].expr : GiNaC::ex(0)) -
                              GiNaC::diff(model.R.expr, ci.qd) + body_forces[i];
         eq.generalized_forces[i] = Qi;
-        GiNaC::ex fi = eq.dLdq[i] - GiNaC::diff(eq.momenta[i], model.t) + Qi;
-        for (const Coordinate& c : model.coordinates) fi -= GiNaC::diff(eq.momenta[i], c.q) * c.qd;
+        GiNaC::ex fi = eq.dLdq[i] - dp_dt[i] + Qi;
+        for (std::size_t j = 0; j < n; ++j) fi -= dp_dq[i][j] * model.coordinates[j].qd;
         eq.f[i] = fi;
-        eq.euler_lagrange[i] = time_derivative(eq.momenta[i], model) - eq.dLdq[i];
+        // d/dt p_i − ∂L/∂q_i = Σ_j M_ij q̈_j − (f_i − Q_i): the same expression, without differentiating again.
+        GiNaC::ex el = Qi - fi;
+        for (std::size_t j = 0; j < n; ++j)
+            el += eq.M(static_cast<unsigned>(i), static_cast<unsigned>(j)) * model.coordinates[j].qdd;
+        eq.euler_lagrange[i] = el;
     }
     eq.constraints = derive_constraints(model);
     eq.frobenius = analyse_integrability(model, eq.constraints);
