@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Sets up (installs, configures, builds) and runs the whole test suite through ctest.
+# Sets up (installs, configures, builds) and runs the whole test suite through ctest, including one run of
+# the benchmark pipeline at tiny sizes (bench_smoke; no time is asserted).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh -DEOMGEN_BUILD_BENCH=ON
 ctest --test-dir "${EOMGEN_BUILD_DIR:-build}" --output-on-failure -j "$(nproc)"
