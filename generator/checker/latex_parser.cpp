@@ -680,6 +680,21 @@ class Parser {
 
     /// Reads a name at pos_ into n (accents, base, subscripts, primes). False when there is none.
     /// A `^{\prime 2}` leaves the exponent 2 in pending_power_.
+    /// The name in the braces of the command at token `at` (\dot{x}, \mathbf{r}, \bar{m}); moves past it.
+    NameParts argument_name(std::size_t at, const char* what) {
+        ++pos_;
+        const auto r = argument_range(t_[at].text);
+        NameParts inner;
+        within(
+            r.first, r.second,
+            [&] {
+                if (!read_name(inner)) fail(r.first, t_[at].text + " of an expression is not read");
+                return 0;
+            },
+            what);
+        return inner;
+    }
+
     bool read_name(NameParts& n) {
         const Token* t = peek();
         if (!t) return false;
@@ -699,45 +714,18 @@ class Parser {
                     ++pos_;
                 }
             } else if (w == "dot" || w == "ddot" || w == "dddot") {
-                ++pos_;
                 const int d = w == "dot" ? 1 : (w == "ddot" ? 2 : 3);
-                const auto r = argument_range(t->text);
-                NameParts inner;
-                within(
-                    r.first, r.second,
-                    [&] {
-                        if (!read_name(inner)) fail(r.first, t_[at].text + " of an expression is not read");
-                        return 0;
-                    },
-                    "the accent");
+                const NameParts inner = argument_name(at, "the accent");
                 n = inner;
                 n.dots += d;
             } else if (is_one_of(t->text, {"\\mathbf", "\\boldsymbol", "\\bm", "\\vec", "\\hat",
                                            "\\underline", "\\overrightarrow", "\\widehat"})) {
-                ++pos_;
-                const auto r = argument_range(t->text);
-                NameParts inner;
-                within(
-                    r.first, r.second,
-                    [&] {
-                        if (!read_name(inner)) fail(r.first, t_[at].text + " of an expression is not read");
-                        return 0;
-                    },
-                    "the vector");
+                const NameParts inner = argument_name(at, "the vector");
                 n.base = t_[at].text + "{" + inner.canonical() + "}";
                 n.kind = NameKind::Vector;
             } else if (is_one_of(t->text, {"\\bar", "\\tilde", "\\mathcal", "\\mathscr", "\\mathfrak",
                                            "\\mathbb", "\\overline", "\\widetilde", "\\check", "\\breve"})) {
-                ++pos_;
-                const auto r = argument_range(t->text);
-                NameParts inner;
-                within(
-                    r.first, r.second,
-                    [&] {
-                        if (!read_name(inner)) fail(r.first, t_[at].text + " of an expression is not read");
-                        return 0;
-                    },
-                    "the accent");
+                const NameParts inner = argument_name(at, "the accent");
                 n.base = t_[at].text + "{" + inner.canonical() + "}";
                 n.kind = inner.kind;
             } else if (takes_raw_argument(t->text) && t->text != "\\operatorname") {
