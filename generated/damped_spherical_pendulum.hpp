@@ -27,7 +27,7 @@ template <class Scalar>
 struct Model {
     static constexpr const char* name = "damped_spherical_pendulum";
     static constexpr const char* title = "Damped spherical pendulum";
-    static constexpr const char* source = "Goldstein §1.5 (Rayleigh's dissipation function)";
+    static constexpr const char* source = "Goldstein \302\2471.5 (Rayleigh's dissipation function)";
     static constexpr int nq = 2;
     static constexpr int nx = 4;
     static constexpr int n_params = 4;

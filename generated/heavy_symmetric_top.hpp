@@ -28,7 +28,7 @@ template <class Scalar>
 struct Model {
     static constexpr const char* name = "heavy_symmetric_top";
     static constexpr const char* title = "Heavy symmetric top";
-    static constexpr const char* source = "Goldstein ch. 5, §5.7";
+    static constexpr const char* source = "Goldstein ch. 5, \302\2475.7";
     static constexpr int nq = 3;
     static constexpr int nx = 6;
     static constexpr int n_params = 5;

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The main job: set up, regenerate every model into generated/, show what was derived, simulate the
-# door (Ex. 30) and the plane pendulum (5-20), and print the results. CSV output goes to out/.
+# door (Ex. 30) and the plane pendulum (5-20), run a model file that is compiled into nothing
+# (eomgen run, with its plot), and print the results. CSV and PNG output goes to out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -61,3 +62,9 @@ echo
 echo "== eomgen-sim rolling_cone until the line of contact has gone half round (5-17)"
 "$build/simulator/eomgen-sim" rolling_cone --until phi=pi --t-end 10 --rtol 1e-12 --atol 1e-14 \
   | grep -E "event|residuals|multiplier|energy"
+
+echo
+echo "== eomgen run examples/bead_on_hoop.toml: a model file compiled into nothing, derived, compiled (cached"
+echo "   in \${XDG_CACHE_HOME:-~/.cache}/eomgen) and integrated; the plot is out/bead_on_hoop.png"
+"$build/generator/eomgen" run examples/bead_on_hoop.toml --t-end 10 --rtol 1e-12 --atol 1e-14 \
+  --csv out/bead_on_hoop.csv --plot out/bead_on_hoop.png --plot-phase a

@@ -1,318 +1,21 @@
-/** @file main.cpp  eomgen-sim: integrate a generated model, print what happened, optionally write CSV. */
-#include "eomgen/integrate.hpp"
-#include "eomgen/constraints.hpp"
-#include "eomgen/output.hpp"
-#include "eomgen/symplectic.hpp"
+/** @file main.cpp  eomgen-sim: integrate a model compiled into this program (see `eomgen run` for any model). */
+#include "eomgen/simulation.hpp"
 #include "model_list.hpp"
+#include "options.hpp"
 
-#include <CLI/CLI.hpp>
-
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
 #include <iostream>
-#include <limits>
-#include <map>
 #include <string>
-#include <type_traits>
 #include <vector>
 
-namespace {
-
-constexpr int kExitOk = 0, kExitUsage = 1, kExitSimulation = 2;
-
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-/// Models with constraints have n_constraints, multipliers() and constraint_residuals().
-template <class M, class = void>
-struct is_constrained : std::false_type {};
-template <class M>
-struct is_constrained<M, std::void_t<decltype(M::n_constraints)>> : std::true_type {};
-
-struct Options {
-    std::string model;
-    double t_end = 10;
-    std::string method = "dopri5";
-    double rtol = 1e-10, atol = 1e-12, dt = 0;
-    std::vector<std::string> set, init;
-    std::string csv, until;
-    int samples = 200;
-    std::size_t max_steps = 10000000;
-    bool project_initial = false;
-};
-
-/// A number as written on the command line: "0.5", "-pi/2", "2*pi", "pi/4", "1e-3".
-double parse_value(const std::string& text) {
-    std::string s = text;
-    double sign = 1;
-    if (!s.empty() && (s[0] == '-' || s[0] == '+')) {
-        sign = s[0] == '-' ? -1 : 1;
-        s = s.substr(1);
-    }
-    double value = 1, divisor = 1;
-    const auto slash = s.find('/');
-    if (slash != std::string::npos) {
-        try {
-            std::size_t used = 0;
-            divisor = std::stod(s.substr(slash + 1), &used);
-            if (used != s.size() - slash - 1) throw std::invalid_argument("");
-        } catch (const std::exception&) {
-            throw UsageError("cannot read the number '" + text + "'");
-        }
-        s = s.substr(0, slash);
-    }
-    const auto pi = s.find("pi");
-    if (pi != std::string::npos) {
-        if (pi + 2 != s.size()) throw UsageError("cannot read the number '" + text + "'");
-        value = 3.141592653589793238462643383279502884;
-        s = s.substr(0, pi);
-        if (!s.empty() && s.back() == '*') s.pop_back();
-        if (s.empty()) s = "1";
-    }
-    try {
-        std::size_t used = 0;
-        const double k = std::stod(s, &used);
-        if (used != s.size()) throw std::invalid_argument("");
-        return sign * k * value / divisor;
-    } catch (const std::exception&) {
-        throw UsageError("cannot read the number '" + text + "'");
-    }
-}
-
-std::pair<std::string, double> parse_assignment(const std::string& text, const char* option) {
-    const auto eq = text.find('=');
-    if (eq == std::string::npos || eq == 0)
-        throw UsageError(std::string(option) + " " + text + ": expected NAME=VALUE");
-    return {text.substr(0, eq), parse_value(text.substr(eq + 1))};
-}
-
-template <class Array>
-int index_of(const Array& names, const std::string& name) {
-    for (std::size_t i = 0; i < names.size(); ++i)
-        if (name == names[i]) return int(i);
-    return -1;
-}
-
-template <class Array>
-std::string list(const Array& names) {
-    std::string s;
-    for (std::size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + std::string(names[i]);
-    return s;
-}
-
-/// Writes the samples with energy, conserved quantities and, for constrained models, the constraint
-/// residuals and multipliers as extra columns.
-template <class M>
-void write_samples(const Options& o, const typename M::Params& params,
-                   const std::vector<eomgen::Sample<typename M::State>>& samples) {
-    using State = typename M::State;
-    using Config = typename M::Config;
-    if (o.csv.empty()) return;
-    std::vector<std::string> names(M::state_names.begin(), M::state_names.end());
-    std::vector<std::string> extra{"energy"};
-    for (const char* c : M::conserved_names)
-        if (std::string(c) != "h") extra.push_back(c);
-    if constexpr (is_constrained<M>::value)
-        for (const char* c : M::constraint_names) {
-            extra.push_back(std::string("residual_") + c);
-            extra.push_back(std::string("lambda_") + c);
-        }
-    eomgen::write_csv(o.csv, names, extra, samples, [&params](double t, const State& x) {
-        const Config q = x.template head<M::nq>(), qd = x.template tail<M::nq>();
-        typename M::Conserved c;
-        M::conserved(t, q, qd, params, c);
-        std::vector<double> row{M::energy(t, q, qd, params)};
-        for (int k = 0; k < M::n_conserved; ++k)
-            if (std::string(M::conserved_names[std::size_t(k)]) != "h") row.push_back(c(k));
-        if constexpr (is_constrained<M>::value) {
-            typename M::ConstraintVector g, v, lambda;
-            M::constraint_residuals(t, q, qd, params, g, v);
-            M::multipliers(t, x, params, lambda);
-            for (int k = 0; k < M::n_constraints; ++k) {
-                row.push_back(std::max(std::abs(g(k)), std::abs(v(k))));
-                row.push_back(lambda(k));
-            }
-        }
-        return row;
-    });
-    std::cout << "csv:     " << o.csv << " (" << samples.size() << " rows)\n";
-}
-
-template <class M>
-int run(const Options& o) {
-    using State = typename M::State;
-    using Config = typename M::Config;
-    typename M::Params params;
-    for (const std::string& s : o.set) {
-        const auto [name, v] = parse_assignment(s, "--set");
-        if (!M::set_param(params, name, v))
-            throw UsageError("--set " + s + ": " + M::name + " has no parameter '" + name + "' (it has " +
-                             list(M::param_names) + ")");
-    }
-    State x0 = M::default_state();
-    for (const std::string& s : o.init) {
-        const auto [name, v] = parse_assignment(s, "--init");
-        const int i = index_of(M::state_names, name);
-        if (i < 0) throw UsageError("--init " + s + ": no state '" + name + "' (states: " + list(M::state_names) + ")");
-        x0(i) = v;
-    }
-    auto h = [&params](double t, const State& x) {
-        const Config q = x.template head<M::nq>(), qd = x.template tail<M::nq>();
-        return M::energy(t, q, qd, params);
-    };
-    auto f = [&params](const double& t, const State& x, State& xdot) { M::rhs(t, x, params, xdot); };
-
-    std::cout.precision(15);
-    std::cout << "model:   " << M::name << " (" << M::title << (std::string(M::source).empty() ? "" : "; ")
-              << M::source << ")\n";
-    std::cout << "params: ";
-    const auto values = M::param_values(params);
-    for (std::size_t i = 0; i < values.size(); ++i) std::cout << " " << M::param_names[i] << "=" << values[i];
-    std::cout << "\n";
-
-    double h0 = h(0, x0);
-    double max_drift = 0;
-    std::vector<eomgen::Sample<State>> samples;
-    auto track = [&](double t, const State& x) {
-        max_drift = std::max(max_drift, std::abs(h(t, x) - h0) / std::max(std::abs(h0), 1e-300));
-    };
-
-    std::vector<double> sample_times;
-    for (int k = 0; k <= o.samples; ++k) sample_times.push_back(o.t_end * k / std::max(o.samples, 1));
-
-    double t_final = 0;
-    State x_final = x0;
-    std::string how;
-    // --until NAME=VALUE: a terminal event where state NAME crosses VALUE (dense output: dopri5, rk4).
-    std::vector<eomgen::Event<State>> events;
-    if (!o.until.empty()) {
-        if (o.method == "symplectic") throw UsageError("--until needs --method dopri5 or rk4 (events use dense output)");
-        const auto [name, value] = parse_assignment(o.until, "--until");
-        const int i = index_of(M::state_names, name);
-        if (i < 0) throw UsageError("--until " + o.until + ": no state '" + name + "' (states: " +
-                                    list(M::state_names) + ")");
-        const double target = value;
-        events.push_back({o.until, [i, target](const double&, const State& x) { return x(i) - target; },
-                          eomgen::EventDirection::Both, eomgen::EventAction::Stop});
-    }
-    // What every method prints about how the run ended.
-    auto report_run = [](const auto& r) {
-        std::cout << "steps:   " << r.accepted_steps << " accepted, " << r.rejected_steps << " rejected, "
-                  << r.rhs_evaluations << " right-hand sides\n";
-        for (const auto& e : r.events) std::cout << "event:   " << e.name << " at t = " << e.t << "\n";
-        std::cout << "stopped: "
-                  << (r.stop_reason == eomgen::StopReason::TerminalEvent ? "at event " + r.stopped_by : "at t_end")
-                  << "\n";
-    };
-
-    bool done = false;
-    if constexpr (is_constrained<M>::value) {
-        if (o.method == "dopri5") {
-            eomgen::Dopri5Options<double> opt;
-            opt.rtol = o.rtol;
-            opt.atol = o.atol;
-            opt.max_steps = o.max_steps;
-            const auto r =
-                eomgen::integrate_constrained<M>(params, 0.0, x0, sample_times, opt, o.project_initial, events);
-            // Energy drift from the (possibly projected) start, not from the state given.
-            h0 = h(r.run.samples.front().t, r.run.samples.front().x);
-            for (const auto& s : r.run.samples)
-                max_drift = std::max(max_drift, std::abs(h(s.t, s.x) - h0) / std::max(std::abs(h0), 1e-300));
-            samples = r.run.samples;
-            typename M::ConstraintVector lambda;
-            M::multipliers(r.run.t, r.run.x, params, lambda);
-            std::cout << "method:  dopri5 with projection onto the constraints after each of " << o.samples
-                      << " segments, rtol " << o.rtol << ", atol " << o.atol << "\n";
-            report_run(r.run);
-            std::cout << "constraint residuals before projection: position " << r.max_position_residual
-                      << ", velocity " << r.max_velocity_residual << "\n";
-            for (int k = 0; k < M::n_constraints; ++k)
-                std::cout << "multiplier " << M::constraint_names[std::size_t(k)] << " = " << lambda(k) << " at the end\n";
-            t_final = r.run.t;
-            x_final = r.run.x;
-            done = true;
-        }
-    }
-    if (!done && o.method == "symplectic") {
-        if (!(o.dt > 0)) throw UsageError("--method symplectic needs --dt");
-        if (is_constrained<M>::value || M::has_generalized_forces)
-            throw UsageError("--method symplectic integrates unconstrained models without forces; use dopri5");
-        eomgen::VariationalIntegrator<M> vi(params, o.dt);
-        vi.set_state(0.0, x0.template head<M::nq>(), x0.template tail<M::nq>());
-        const auto steps = static_cast<std::size_t>(std::llround(o.t_end / o.dt));
-        const std::size_t every = std::max<std::size_t>(1, steps / std::size_t(std::max(o.samples, 1)));
-        samples.push_back({0.0, x0});
-        for (std::size_t k = 1; k <= steps; ++k) {
-            vi.step();
-            State x;
-            x.template head<M::nq>() = vi.q();  // not `x << q, qd`: g++ 12 warns falsely for 1×1 blocks
-            x.template tail<M::nq>() = vi.velocity();
-            track(vi.t(), x);
-            if (k % every == 0 || k == steps) samples.push_back({vi.t(), x});
-            x_final = x;
-        }
-        t_final = vi.t();
-        how = "variational midpoint, dt " + std::to_string(o.dt) + ", " + std::to_string(steps) + " steps";
-        std::cout << "method:  " << how << "\n";
-    } else if (!done) {
-        eomgen::Observer<State> observer = [&](const double& t, const State& x) {
-            track(t, x);
-            samples.push_back({t, x});
-        };
-        eomgen::IntegrationResult<State> r;
-        if (o.method == "rk4") {
-            if (!(o.dt > 0)) throw UsageError("--method rk4 needs --dt");
-            r = eomgen::integrate_rk4(f, 0.0, x0, o.t_end, o.dt, events, sample_times, observer);
-            std::cout << "method:  rk4, dt " << o.dt << "\n";
-        } else if (o.method == "dopri5") {
-            eomgen::Dopri5Options<double> opt;
-            opt.rtol = o.rtol;
-            opt.atol = o.atol;
-            opt.max_steps = o.max_steps;
-            r = eomgen::integrate(f, 0.0, x0, o.t_end, opt, events, sample_times, observer);
-            std::cout << "method:  dopri5, rtol " << o.rtol << ", atol " << o.atol << "\n";
-        } else {
-            throw UsageError("--method " + o.method + ": expected dopri5, rk4 or symplectic");
-        }
-        t_final = r.t;
-        x_final = r.x;
-        track(r.t, r.x);
-        report_run(r);
-    }
-    std::cout.precision(15);
-    std::cout << "t:       " << t_final << "\n";
-    for (int i = 0; i < M::nx; ++i) std::cout << "  " << M::state_names[std::size_t(i)] << " = " << x_final(i) << "\n";
-    std::cout << "energy h: " << h0 << " at t = 0, " << h(t_final, x_final) << " at the end; max |dh|/|h0| = "
-              << max_drift << (M::explicit_time ? "  (L depends on t: h need not be conserved)" : "") << "\n";
-    write_samples<M>(o, params, samples);
-    return kExitOk;
-}
-
-}  // namespace
-
 int main(int argc, char** argv) {
+    using namespace eomgen::sim;
     Options o;
     bool list_models = false;
-    CLI::App app{"eomgen-sim: integrate a model generated by eomgen.\n"
+    CLI::App app{"eomgen-sim: integrate a model generated by eomgen (eomgen run integrates any model file).\n"
                  "Exit codes: 0 ok, 1 bad command line, 2 the simulation failed (message with t and state)."};
     app.add_option("model", o.model, "Model name (see --list)");
     app.add_flag("--list", list_models, "List the models this simulator knows");
-    app.add_option("--t-end", o.t_end, "End time")->capture_default_str();
-    app.add_option("--method", o.method, "dopri5 (adaptive), rk4 (fixed step), symplectic (variational midpoint)")
-        ->capture_default_str();
-    app.add_option("--rtol", o.rtol, "Relative tolerance (dopri5)")->capture_default_str();
-    app.add_option("--atol", o.atol, "Absolute tolerance (dopri5)")->capture_default_str();
-    app.add_option("--dt", o.dt, "Step size (rk4, symplectic)");
-    app.add_option("--set", o.set, "Parameter value, NAME=VALUE (repeatable; VALUE may use pi: -pi/2)");
-    app.add_option("--init", o.init, "Initial state, NAME=VALUE with NAME a coordinate or NAME_dot (repeatable)");
-    app.add_option("--until", o.until, "Stop when a state crosses a value, NAME=VALUE (e.g. psi=-pi/2)");
-    app.add_option("--csv", o.csv, "Write samples (state, energy, conserved quantities) to this CSV file");
-    app.add_option("--samples", o.samples, "Number of sample intervals on [0, t_end] for the CSV")->capture_default_str();
-    app.add_option("--max-steps", o.max_steps, "Largest number of steps (dopri5)")->capture_default_str();
-    app.add_flag("--project-initial", o.project_initial,
-                 "Project inconsistent initial conditions onto the constraints instead of refusing them");
+    add_options(app, o);
     CLI11_PARSE(app, argc, argv);
 
     const std::vector<std::string> known = {
@@ -324,20 +27,16 @@ int main(int argc, char** argv) {
         for (const std::string& m : known) std::cout << m << "\n";
         return kExitOk;
     }
-    try {
 #define EOMGEN_SIM_MODEL(m) \
-    if (o.model == #m) return run<eomgen::models::m::Model<double>>(o);
-        EOMGEN_SIM_MODELS
+    if (o.model == #m) return run_reporting<eomgen::models::m::Model<double>>(o, "eomgen-sim");
+    EOMGEN_SIM_MODELS
 #undef EOMGEN_SIM_MODEL
-        std::string all;
-        for (const std::string& m : known) all += (all.empty() ? "" : ", ") + m;
-        throw UsageError(o.model.empty() ? "name a model (one of: " + all + ")"
-                                         : "no model '" + o.model + "' (models: " + all + ")");
-    } catch (const UsageError& e) {
-        std::cerr << "eomgen-sim: " << e.what() << "\n";
-        return kExitUsage;
-    } catch (const eomgen::SimulationError& e) {
-        std::cerr << "eomgen-sim: simulation failed: " << e.what() << "\n";
-        return kExitSimulation;
-    }
+    std::string all;
+    for (const std::string& m : known) all += (all.empty() ? "" : ", ") + m;
+    std::cerr << "eomgen-sim: "
+              << (o.model.empty() ? "name a model (one of: " + all + ")"
+                                  : "no model '" + o.model + "' (models: " + all + "); eomgen run " + o.model +
+                                        " integrates a model file")
+              << "\n";
+    return kExitUsage;
 }

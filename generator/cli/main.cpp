@@ -1,11 +1,13 @@
 /** @file main.cpp  The `eomgen` command: generate C++ from model files, show the derived mechanics. */
 #include "checker/check_command.hpp"
+#include "cli/run_command.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/families.hpp"
 #include "model/model_file.hpp"
 #include "model/names.hpp"
+#include "text/escape.hpp"
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -230,7 +232,10 @@ void show_latex(const eomgen::Model& model, const eomgen::Equations& eq, std::os
     MultiplierTable mt = multiplier_table(model, eq);
     eomgen::codegen::MathPrinter pr(mt.table);
     auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), MathStyle::Latex); };
-    os << "% " << model.name << ": " << model.title << (model.source.empty() ? "" : " (" + model.source + ")") << "\n";
+    // Text from the model file is escaped for LaTeX (docs/security.md); names are identifiers, which may hold '_'.
+    using eomgen::text::latex_text;
+    os << "% " << model.name << ": " << latex_text(model.title)
+       << (model.source.empty() ? "" : " (" + latex_text(model.source) + ")") << "\n";
     os << "\\begin{align}\n";
     os << "T &= " << P(eq.T) << " \\\\\n";
     os << "V &= " << P(eq.V) << " \\\\\n";
@@ -239,17 +244,17 @@ void show_latex(const eomgen::Model& model, const eomgen::Equations& eq, std::os
         os << "% each body's and spring's share\n\\begin{align}\n";
         std::vector<std::string> lines;
         for (const eomgen::BodyEnergy& b : eq.bodies) {
-            lines.push_back("T_{\\text{" + b.name + "}} &= " + P(b.T));
-            lines.push_back("V_{\\text{" + b.name + "}} &= " + P(b.V));
+            lines.push_back("T_{\\text{" + latex_text(b.name) + "}} &= " + P(b.T));
+            lines.push_back("V_{\\text{" + latex_text(b.name) + "}} &= " + P(b.V));
         }
-        for (const eomgen::SpringEnergy& sp : eq.springs) lines.push_back("V_{\\text{" + sp.name + "}} &= " + P(sp.V));
+        for (const eomgen::SpringEnergy& sp : eq.springs) lines.push_back("V_{\\text{" + latex_text(sp.name) + "}} &= " + P(sp.V));
         for (std::size_t i = 0; i < lines.size(); ++i) os << lines[i] << (i + 1 < lines.size() ? " \\\\" : "") << "\n";
         os << "\\end{align}\n";
     }
     for (const eomgen::Body& body : model.bodies) {
         const eomgen::BodyDynamics d = eomgen::body_dynamics(model, body);
         if (d.omega_body.is_zero_matrix()) continue;
-        os << "% Euler's equations of " << body.name
+        os << "% Euler's equations of " << latex_text(body.name)
            << ": N' = I \\dot\\omega' + \\omega' \\times I \\omega' (body axes, about the centre of mass)\n"
            << "\\begin{align}\n";
         for (unsigned k = 0; k < 3; ++k)
@@ -261,7 +266,7 @@ void show_latex(const eomgen::Model& model, const eomgen::Equations& eq, std::os
         for (std::size_t k = 0; k < eq.constraints.size(); ++k) {
             const auto& c = eq.constraints[k];
             const bool holonomic = c.kind == eomgen::ConstraintKind::Holonomic;
-            os << P(holonomic ? c.position : c.velocity) << " &= 0 && \\text{" << c.name << " ("
+            os << P(holonomic ? c.position : c.velocity) << " &= 0 && \\text{" << latex_text(c.name) << " ("
                << (holonomic ? "holonomic" : "nonholonomic") << ")}" << (k + 1 < eq.constraints.size() ? " \\\\" : "")
                << "\n";
         }
@@ -279,12 +284,12 @@ void show_latex(const eomgen::Model& model, const eomgen::Equations& eq, std::os
     for (std::size_t i = 0; i < model.dof(); ++i)
         os << " \\\\\np_{" << model.coordinates[i].latex << "} &= " << P(eq.momenta[i]);
     os << "\n\\end{align}\n";
-    for (const eomgen::ConservedQuantity& c : eq.conserved) os << "% conserved: " << c.latex << " (" << c.reason << ")\n";
+    for (const eomgen::ConservedQuantity& c : eq.conserved) os << "% conserved: " << c.latex << " (" << latex_text(c.reason) << ")\n";
     if (!model.results.empty()) {
         os << "% declared results\n\\begin{align}\n";
         for (std::size_t k = 0; k < model.results.size(); ++k)
             os << model.results[k].latex << " &= " << P(model.results[k].expr.expr)
-               << (k + 1 < model.results.size() ? " \\\\" : "") << "  % " << model.results[k].name
+               << (k + 1 < model.results.size() ? " \\\\" : "") << "  % " << latex_text(model.results[k].name)
                << (model.results[k].equals.empty() ? "" : ", verified: equals " + model.results[k].equals)
                << "\n";
         os << "\\end{align}\n";
@@ -295,7 +300,8 @@ void show_latex(const eomgen::Model& model, const eomgen::Equations& eq, std::os
 
 int main(int argc, char** argv) {
     CLI::App app{"eomgen: equations of motion from a Lagrangian, as fast C++.\n"
-                 "Exit codes: 0 ok, 1 model error (file:line:col: message), 2 usage, 3 file I/O."};
+                 "Exit codes: 0 ok, 1 model error (file:line:col: message), 2 usage (run: or the simulation failed),\n"
+                 "3 file I/O or cache, 4 the C++ compiler is missing or failed (run), 5 check: a disagreement."};
     app.set_version_flag("--version", std::string("eomgen ") + EOMGEN_VERSION);
     app.require_subcommand(1);
 
@@ -324,6 +330,7 @@ int main(int argc, char** argv) {
     show->add_flag("--latex", latex, "Print LaTeX instead of plain text");
 
     const eomgen::checker::CheckCommand check(app);  // `eomgen check MODEL DERIVATION.md`, see docs/checker.md
+    eomgen::cli::RunCommand run(app);               // `eomgen run MODEL.toml`, `eomgen cache clear`
 
     try {
         app.parse(argc, argv);
@@ -358,6 +365,7 @@ int main(int argc, char** argv) {
             return kExitOk;
         }
         if (check.selected()) return check.run();
+        if (run.selected()) return run.run();
     } catch (const eomgen::ModelError& e) {
         std::cerr << e.what() << "\n";
         return kExitModelError;
@@ -366,7 +374,7 @@ int main(int argc, char** argv) {
         return kExitIo;
     } catch (const std::exception& e) {
         std::cerr << "eomgen: internal error: " << e.what() << "\n";
-        return 4;
+        return 70;  // EX_SOFTWARE: 4 is the compiler's failure in `eomgen run`
     }
     return kExitUsage;
 }

@@ -1,6 +1,9 @@
 /** @file model_file.cpp  Model files: TOML via toml++, every problem located at file:line:col. */
 #include "model/model_file.hpp"
 
+#include "model/latex_name.hpp"
+#include "text/escape.hpp"
+
 #include "model/expression_parser.hpp"
 #include "model/names.hpp"
 
@@ -14,6 +17,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -69,23 +73,7 @@ class SourceText {
     std::vector<std::size_t> line_starts_;
 };
 
-void append_utf8(std::string& out, unsigned long cp) {
-    if (cp < 0x80) {
-        out += static_cast<char>(cp);
-    } else if (cp < 0x800) {
-        out += static_cast<char>(0xc0 | (cp >> 6));
-        out += static_cast<char>(0x80 | (cp & 0x3f));
-    } else if (cp < 0x10000) {
-        out += static_cast<char>(0xe0 | (cp >> 12));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3f));
-        out += static_cast<char>(0x80 | (cp & 0x3f));
-    } else {
-        out += static_cast<char>(0xf0 | (cp >> 18));
-        out += static_cast<char>(0x80 | ((cp >> 12) & 0x3f));
-        out += static_cast<char>(0x80 | ((cp >> 6) & 0x3f));
-        out += static_cast<char>(0x80 | (cp & 0x3f));
-    }
-}
+using text::append_utf8;
 
 /**
  * Decodes the TOML string literal whose opening quote is at byte `quote` of `text`, recording for each
@@ -316,7 +304,7 @@ class Loader {
         for (const auto& c : coordinates) {
             Coordinate coordinate;
             coordinate.name = c.name;
-            coordinate.latex = optional_string(*c.table, "latex").value_or(default_latex(c.name));
+            coordinate.latex = latex_field(*c.table).value_or(default_latex(c.name));
             coordinate.q = GiNaC::symbol(c.name, coordinate.latex);
             coordinate.qd = GiNaC::symbol(c.name + "_dot", "\\dot{" + coordinate.latex + "}");
             coordinate.qdd = GiNaC::symbol(c.name + "_ddot", "\\ddot{" + coordinate.latex + "}");
@@ -328,7 +316,7 @@ class Loader {
         for (const auto& p : parameters) {
             Parameter parameter;
             parameter.name = p.name;
-            parameter.latex = optional_string(*p.table, "latex").value_or(default_latex(p.name));
+            parameter.latex = latex_field(*p.table).value_or(default_latex(p.name));
             parameter.unit = optional_string(*p.table, "unit").value_or("");
             parameter.description = optional_string(*p.table, "description").value_or("");
             parameter.symbol = GiNaC::symbol(p.name, parameter.latex);
@@ -403,9 +391,34 @@ class Loader {
         }
     }
 
+    /// A string value; NUL and control characters other than newline and tab are refused where they are
+    /// (text from a model file ends up in headers, LaTeX, Markdown and JSON: docs/security.md).
     std::string string_value(const toml::node& node, const std::string& key) const {
-        if (const auto* s = node.as_string()) return s->get();
-        fail(src_.at(node), "'" + key + "' must be a string, not " + type_name(node));
+        const auto* s = node.as_string();
+        if (!s) fail(src_.at(node), "'" + key + "' must be a string, not " + type_name(node));
+        const std::string& v = s->get();
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            const unsigned char c = static_cast<unsigned char>(v[i]);
+            const bool c1 = c == 0xc2 && i + 1 < v.size() && static_cast<unsigned char>(v[i + 1]) < 0xa0 &&
+                            static_cast<unsigned char>(v[i + 1]) >= 0x80;  // U+0080..U+009F
+            if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7f || c1) {
+                char code[16];
+                std::snprintf(code, sizeof code, "U+%04X", c1 ? static_cast<unsigned>(static_cast<unsigned char>(v[i + 1])) : c);
+                fail(inside_string(node, i), "'" + key + "' holds the control character " + std::string(code) +
+                                                 ": only newline and tab may appear in a text field");
+            }
+        }
+        return v;
+    }
+
+    /// A `latex` field: within the safe set of latex_name.hpp, else an error at the offending character.
+    std::optional<std::string> latex_field(const toml::table& table) const {
+        const toml::node* n = table.get("latex");
+        if (!n) return std::nullopt;
+        std::string latex = string_value(*n, "latex");
+        const LatexNameProblem problem = latex_name_problem(latex);
+        if (!problem.message.empty()) fail(inside_string(*n, problem.offset), problem.message);
+        return latex;
     }
 
     std::optional<std::string> optional_string(const toml::table& table, const std::string& key) const {
@@ -757,8 +770,7 @@ class Loader {
             if (e.name.empty()) fail(e.where, "a result's name may not be empty");
             if (const auto [it, inserted] = seen.emplace(e.name, e.where.line); !inserted)
                 fail(e.where, "duplicate result '" + e.name + "': already on line " + std::to_string(it->second));
-            r.latex = optional_string(t, "latex").value_or(default_latex(e.name));
-            if (r.latex.empty()) fail(string_start(*t.get("latex")), "'latex' may not be empty");
+            r.latex = latex_field(t).value_or(default_latex(e.name));
             r.description = optional_string(t, "description").value_or("");
             const toml::node* expr = t.get("expr");
             if (!expr) fail(src_.at(t), "missing key 'expr' in [[results]] (the closed form)");

@@ -51,6 +51,12 @@ constexpr std::string_view kMacroNames[] = {
     "FP_INFINITE", "FP_ZERO", "FP_NORMAL", "FP_SUBNORMAL", "NULL", "EOF", "EXIT_SUCCESS", "EXIT_FAILURE",
     "assert"};
 
+// Every macro the standard headers, glibc and Eigen define (scripts/update_reserved_macros.sh), sorted:
+// a program that includes a generated header includes those headers too.
+constexpr std::string_view kPlatformMacros[] = {
+#include "model/reserved_macros.inc"
+};
+
 struct GreekLetter {
     std::string_view name;
     std::string_view latex;
@@ -111,7 +117,11 @@ std::string reserved_name_reason(std::string_view name, const std::vector<std::s
     if (std::find(functions.begin(), functions.end(), name) != functions.end())
         return q + " is the name of a function of the expression language";
     if (contains(kGeneratedCodeNames, name)) return q + " is a name the generated code uses";
-    if (contains(kMacroNames, name)) return q + " is a macro of the C/C++ standard library";
+    if (contains(kMacroNames, name) ||
+        std::binary_search(std::begin(kPlatformMacros), std::end(kPlatformMacros), name))
+        return q + " is a macro of the C/C++ standard library or of Eigen (a program that includes the generated "
+                   "header would see it rewritten)";
+    if (name.substr(0, 6) == "EIGEN_") return q + " starts with 'EIGEN_', which Eigen reserves for its macros";
     if (name.size() >= 2 && name[0] == 't' &&
         std::all_of(name.begin() + 1, name.end(), [](char c) { return is_digit(c); }))
         return q + " is reserved for temporaries of the generated code (t0, t1, ...)";

@@ -1,0 +1,295 @@
+/** @file compiled_model.cpp  Compiling generated code with the system compiler, caching, loading (dlopen). */
+#include "cli/compiled_model.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include <dlfcn.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char** environ;
+
+#ifndef EOMGEN_VERSION
+#define EOMGEN_VERSION "0.0.0"
+#endif
+#ifndef EOMGEN_RUNTIME_INCLUDE_DIR
+#error "EOMGEN_RUNTIME_INCLUDE_DIR must name the runtime's include directory"
+#endif
+#ifndef EOMGEN_EIGEN_INCLUDE_DIR
+#error "EOMGEN_EIGEN_INCLUDE_DIR must name Eigen's include directory"
+#endif
+
+namespace eomgen::cli {
+namespace fs = std::filesystem;
+namespace {
+
+const std::vector<std::string> kFlags = {"-std=c++17", "-O2", "-DNDEBUG", "-fPIC", "-shared",
+                                         "-fvisibility=hidden"};
+
+/// 128 bits of FNV-1a (two 64-bit streams with different offsets): a cache key, not a signature; what
+/// guards the cache against others is its 0700 mode and the ownership checks.
+class Hasher {
+  public:
+    void add(std::string_view s) {
+        for (const char c : s) {
+            a_ = (a_ ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
+            b_ = (b_ ^ static_cast<unsigned char>(c)) * 0x100000001b3ULL;
+        }
+        a_ = (a_ ^ 0xff) * 0x100000001b3ULL;  // field separator
+        b_ = (b_ ^ 0xfe) * 0x100000001b3ULL;
+    }
+    std::string hex() const {
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(a_),
+                      static_cast<unsigned long long>(b_));
+        return buf;
+    }
+
+  private:
+    std::uint64_t a_ = 0xcbf29ce484222325ULL, b_ = 0x84222325cbf29ce4ULL;
+};
+
+std::string read_file(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// $CXX split at blanks (no shell: quotes and $ are ordinary characters), else "c++".
+std::vector<std::string> compiler_command() {
+    std::vector<std::string> words;
+    const char* cxx = std::getenv("CXX");
+    std::istringstream in(cxx && *cxx ? cxx : "c++");
+    for (std::string w; in >> w;) words.push_back(w);
+    if (words.empty()) words.push_back("c++");
+    return words;
+}
+
+/// Where a program name resolves on $PATH (or the name itself when it holds a slash or is not found).
+std::string resolve(const std::string& program) {
+    if (program.find('/') != std::string::npos) return program;
+    const char* path = std::getenv("PATH");
+    std::istringstream dirs(path ? path : "/usr/bin:/bin");
+    for (std::string d; std::getline(dirs, d, ':');) {
+        const fs::path p = fs::path(d.empty() ? "." : d) / program;
+        if (::access(p.c_str(), X_OK) == 0) return p.string();
+    }
+    return program;
+}
+
+std::string describe_file(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return path + " (missing)";
+    return path + " " + std::to_string(st.st_size) + " " + std::to_string(st.st_mtime);
+}
+
+/// Everything the compiled code depends on besides the header: the runtime's headers, the compiler, flags.
+std::string cache_key(const CompileRequest& r, const std::vector<std::string>& compiler) {
+    Hasher h;
+    h.add(EOMGEN_VERSION);
+    h.add(r.header);
+    h.add(r.model_name);
+    std::vector<fs::path> runtime;
+    for (const auto& e : fs::directory_iterator(fs::path(EOMGEN_RUNTIME_INCLUDE_DIR) / "eomgen"))
+        runtime.push_back(e.path());
+    std::sort(runtime.begin(), runtime.end());
+    for (const fs::path& p : runtime) {
+        h.add(p.filename().string());
+        h.add(read_file(p));
+    }
+    for (const std::string& w : compiler) h.add(w);
+    h.add(describe_file(resolve(compiler.front())));
+    for (const std::string& f : kFlags) h.add(f);
+    h.add(EOMGEN_EIGEN_INCLUDE_DIR);
+    return h.hex();
+}
+
+std::string entry_source(const std::string& model_name, const std::string& key) {
+    return "// eomgen run: the generated model and the simulation driver, as one shared object.\n"
+           "#include \"model.hpp\"\n#include \"eomgen/simulation.hpp\"\n\n"
+           "extern \"C\" __attribute__((visibility(\"default\"))) const char eomgen_entry_key[] = \"" + key + "\";\n"
+           "extern \"C\" __attribute__((visibility(\"default\"))) int eomgen_entry_run("
+           "const eomgen::sim::Options* options) {\n"
+           "    return eomgen::sim::run_reporting<eomgen::models::" + model_name +
+           "::Model<double>>(*options, \"eomgen run\");\n}\n";
+}
+
+void write_file(const fs::path& p, const std::string& text) {
+    std::ofstream out(p, std::ios::binary);
+    out << text;
+    out.flush();
+    if (!out) throw CacheError("cannot write " + p.string());
+}
+
+std::string joined(const std::vector<std::string>& argv) {
+    std::string s;
+    for (const std::string& a : argv) s += (s.empty() ? "" : " ") + a;
+    return s;
+}
+
+/// Runs argv (no shell) with stdout and stderr into `log`; returns the exit status, or throws CompileError
+/// when the program cannot be started.
+int run_logged(const std::vector<std::string>& argv, const fs::path& log) {
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    pid_t pid = 0;
+    const int err = ::posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (err != 0)
+        throw CompileError("cannot start the C++ compiler '" + argv[0] + "': " + std::strerror(err) +
+                               " (set CXX to a C++17 compiler, or install g++)",
+                           joined(argv), log.string());
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+    }
+    if (WIFEXITED(status)) return WEXITSTATUS(status);
+    return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+}
+
+/// Refuses a path that is a symbolic link or not owned by us, and a directory others may write.
+void check_safe(const fs::path& p, bool directory) {
+    struct stat st {};
+    if (::lstat(p.c_str(), &st) != 0) throw CacheError("cannot inspect " + p.string() + ": " + std::strerror(errno));
+    if (S_ISLNK(st.st_mode)) throw CacheError(p.string() + " is a symbolic link; eomgen refuses to use it");
+    if (st.st_uid != ::geteuid()) throw CacheError(p.string() + " belongs to another user; eomgen refuses to use it");
+    if (directory && (st.st_mode & (S_IWGRP | S_IWOTH)))
+        throw CacheError(p.string() + " is writable by other users; eomgen refuses to use it (chmod 700 it)");
+}
+
+CompiledModel load(const fs::path& so, const std::string& key) {
+    void* handle = ::dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) throw CacheError("cannot load " + so.string() + ": " + ::dlerror());
+    const auto* stored = static_cast<const char*>(::dlsym(handle, "eomgen_entry_key"));
+    auto* run = reinterpret_cast<RunEntry>(::dlsym(handle, "eomgen_entry_run"));
+    if (!stored || !run || key != stored) {
+        ::dlclose(handle);
+        throw CacheError(so.string() + " is not the entry for this model (its key does not match)");
+    }
+    return {run, false, so.string(), 0};
+}
+
+/// Compiles in a fresh mkdtemp directory under `parent`; returns the directory (holding model.so).
+fs::path build(const CompileRequest& r, const std::string& key, const fs::path& parent, double& seconds) {
+    std::string pattern = (parent / "tmp.XXXXXX").string();
+    if (!::mkdtemp(pattern.data())) throw CacheError("cannot create a directory in " + parent.string());
+    const fs::path dir = pattern;
+    write_file(dir / "model.hpp", r.header);
+    write_file(dir / "model.cpp", entry_source(r.model_name, key));
+    std::vector<std::string> argv = compiler_command();
+    argv.insert(argv.end(), kFlags.begin(), kFlags.end());
+    for (const std::string& inc : {std::string(EOMGEN_RUNTIME_INCLUDE_DIR), std::string(EOMGEN_EIGEN_INCLUDE_DIR)})
+        argv.push_back("-I" + inc);
+    argv.push_back("-o");
+    argv.push_back((dir / "model.so").string());
+    argv.push_back((dir / "model.cpp").string());
+    const fs::path log = dir / "compile.log";
+    if (r.progress) r.progress("compiling " + r.model_name + " (" + argv.front() + ")");
+    const auto start = std::chrono::steady_clock::now();
+    int status = 0;
+    try {
+        status = run_logged(argv, log);
+    } catch (const CompileError&) {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+        throw;
+    }
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (status != 0 || !fs::exists(dir / "model.so")) {
+        // Keep the log where a person can read it; the half-built entry goes.
+        const fs::path logs = parent / "logs";
+        std::error_code ec;
+        fs::create_directories(logs, ec);
+        const fs::path kept = logs / (key + ".log");
+        fs::rename(log, kept, ec);
+        fs::remove_all(dir, ec);
+        throw CompileError("the C++ compiler failed (exit " + std::to_string(status) + ")", joined(argv),
+                           (ec ? log : kept).string());
+    }
+    return dir;
+}
+
+}  // namespace
+
+fs::path cache_directory() {
+    fs::path base;
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg == '/')
+        base = xdg;
+    else if (const char* home = std::getenv("HOME"); home && *home)
+        base = fs::path(home) / ".cache";
+    else
+        throw CacheError("neither XDG_CACHE_HOME nor HOME is set: no place for the cache (use --no-cache)");
+    std::error_code ec;
+    fs::create_directories(base, ec);
+    const fs::path dir = base / "eomgen";
+    if (::mkdir(dir.c_str(), 0700) != 0 && errno != EEXIST)
+        throw CacheError("cannot create " + dir.string() + ": " + std::strerror(errno));
+    check_safe(dir, true);
+    return dir;
+}
+
+CompiledModel compile_model(const CompileRequest& r) {
+    const std::vector<std::string> compiler = compiler_command();
+    const std::string key = cache_key(r, compiler);
+    if (!r.use_cache) {
+        const char* tmp = std::getenv("TMPDIR");
+        double seconds = 0;
+        const fs::path dir = build(r, key, tmp && *tmp ? tmp : "/tmp", seconds);
+        CompiledModel m = load(dir / "model.so", key);
+        std::error_code ec;
+        fs::remove_all(dir, ec);  // the loaded object stays mapped
+        m.compile_seconds = seconds;
+        return m;
+    }
+    const fs::path cache = cache_directory();
+    const fs::path entry = cache / (key + ".so");
+    struct stat st {};
+    if (::lstat(entry.c_str(), &st) == 0) {
+        check_safe(entry, false);
+        CompiledModel m = load(entry, key);
+        m.from_cache = true;
+        return m;
+    }
+    double seconds = 0;
+    const fs::path dir = build(r, key, cache, seconds);
+    std::error_code ec;
+    fs::rename(dir / "model.so", entry, ec);  // atomic: another run may have put the same entry there first
+    fs::remove_all(dir, ec);
+    CompiledModel m = load(entry, key);
+    m.compile_seconds = seconds;
+    return m;
+}
+
+std::size_t clear_cache() {
+    const fs::path cache = cache_directory();
+    std::size_t removed = 0;
+    for (const auto& e : fs::directory_iterator(cache)) {
+        const std::string name = e.path().filename().string();
+        const bool ours = name == "logs" || name.rfind("tmp.", 0) == 0 ||
+                          (name.size() == 35 && name.substr(32) == ".so");
+        if (!ours) continue;
+        std::error_code ec;
+        removed += static_cast<std::size_t>(fs::remove_all(e.path(), ec));
+    }
+    return removed;
+}
+
+}  // namespace eomgen::cli

@@ -1,0 +1,60 @@
+/**
+ * @file compiled_model.hpp  A generated header compiled into a shared object for `eomgen run`, cached.
+ *
+ * The compiler ($CXX, else c++) is started with an argument vector, never through a shell. The cache lives
+ * in $XDG_CACHE_HOME/eomgen (default ~/.cache/eomgen), created with mode 0700; a cache directory that is
+ * not ours or is writable by others, and an entry that is a symbolic link, are refused. An entry is
+ * <key>.so, where the key hashes the generated code, the runtime's headers, the compiler (path, size, time)
+ * and the flags; it is built in a mkdtemp directory and renamed into place, so concurrent or interrupted
+ * runs never leave a broken entry, and it is loaded only when the key it carries matches.
+ */
+#pragma once
+
+#include "eomgen/simulation.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace eomgen::cli {
+
+/// The compiler is missing or failed: the command as run and the path of its full log (exit 4).
+struct CompileError : std::runtime_error {
+    CompileError(const std::string& what, std::string command, std::string log)
+        : std::runtime_error(what), command(std::move(command)), log(std::move(log)) {}
+    std::string command, log;
+};
+
+/// The cache directory cannot be used safely or at all (exit 3).
+struct CacheError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// The entry point a compiled model exports.
+using RunEntry = int (*)(const eomgen::sim::Options*);
+
+struct CompiledModel {
+    RunEntry run = nullptr;
+    bool from_cache = false;   ///< true when no compiler was started
+    std::string path;          ///< the shared object loaded
+    double compile_seconds = 0;
+};
+
+struct CompileRequest {
+    std::string header;       ///< the generated header's text
+    std::string model_name;   ///< its namespace, eomgen::models::<name>
+    bool use_cache = true;
+    std::function<void(const std::string&)> progress;  ///< "compiling ..." messages, may be empty
+};
+
+/// The cache directory, created (0700) and checked; throws CacheError when unsafe.
+std::filesystem::path cache_directory();
+
+/// Loads the model's shared object from the cache, or compiles it (and caches it unless use_cache is false).
+CompiledModel compile_model(const CompileRequest& request);
+
+/// Removes every entry, temporary directory and log of the cache; returns how many files it removed.
+std::size_t clear_cache();
+
+}  // namespace eomgen::cli

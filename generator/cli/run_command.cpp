@@ -1,0 +1,141 @@
+/** @file run_command.cpp  `eomgen run`: model file → equations → compiled code → trajectory, CSV, plot. */
+#include "cli/run_command.hpp"
+
+#include "cli/compiled_model.hpp"
+#include "cli/plot.hpp"
+#include "codegen/cpp_emitter.hpp"
+#include "mechanics/lagrangian.hpp"
+#include "model/model_file.hpp"
+#include "options.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include <unistd.h>
+
+namespace eomgen::cli {
+namespace fs = std::filesystem;
+
+RunCommand::RunCommand(CLI::App& app) {
+    run_ = app.add_subcommand("run", "Derive, compile (cached) and integrate any model file; CSV and plot");
+    run_->add_option("model", model_path_, "Model file (.toml)")->required()->check(CLI::ExistingFile);
+    eomgen::sim::add_options(*run_, options_);
+    run_->add_option("--plot", plot_, "Plot to FILE.png or FILE.svg: coordinates, drift of the invariants, "
+                                      "constraint residuals (gnuplot)");
+    run_->add_option("--plot-phase", plot_phase_, "With --plot: add q' against q for this coordinate");
+    run_->add_flag("--no-cache", no_cache_, "Compile afresh and keep nothing in the cache");
+    run_->add_flag("--quiet", quiet_, "No progress messages on stderr");
+    run_->add_flag("--progress", progress_, "Progress messages on stderr even when it is not a terminal");
+    cache_ = app.add_subcommand("cache", "The cache of compiled models (" "$XDG_CACHE_HOME/eomgen)");
+    clear_ = cache_->add_subcommand("clear", "Remove every compiled model from the cache");
+    cache_->require_subcommand(1);
+}
+
+bool RunCommand::selected() const { return run_->parsed() || cache_->parsed(); }
+
+int RunCommand::run() {
+    try {
+        if (cache_->parsed()) {
+            const std::size_t n = clear_cache();
+            std::cout << "eomgen cache clear: removed " << n << " files from " << cache_directory().string() << "\n";
+            return 0;
+        }
+        return run_model();
+    } catch (const CompileError& e) {
+        std::cerr << "eomgen run: " << e.what() << "\n  command: " << e.command << "\n  log: " << e.log << "\n";
+        return kExitCompiler;
+    } catch (const CacheError& e) {
+        std::cerr << "eomgen run: " << e.what() << "\n";
+        return 3;
+    }
+}
+
+int RunCommand::run_model() {
+    const bool show_progress = !quiet_ && (progress_ || ::isatty(STDERR_FILENO));
+    const auto start = std::chrono::steady_clock::now();
+    auto progress = [&](const std::string& what) {
+        if (!show_progress) return;
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::fprintf(stderr, "eomgen run: [%.1f s] %s\n", s, what.c_str());
+    };
+    // Mistakes on the command line are reported before anything slow runs.
+    if (!plot_.empty()) {
+        const std::string ext = fs::path(plot_).extension().string();
+        if (ext != ".png" && ext != ".svg") {
+            std::cerr << "eomgen run: --plot " << plot_ << ": the file name must end in .png or .svg\n";
+            return 2;
+        }
+    }
+    progress("deriving " + model_path_);
+    const Model model = load_model(model_path_);
+    const Equations eq = derive_equations(model);
+    for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
+    const std::string header = codegen::emit_model_header(model, eq, fs::path(model_path_).filename().string());
+
+    CompileRequest request{header, model.name, !no_cache_, progress};
+    const CompiledModel compiled = compile_model(request);
+    progress(compiled.from_cache ? "loaded from the cache: " + compiled.path
+                                 : "compiled in " + std::to_string(compiled.compile_seconds).substr(0, 4) + " s");
+
+    // A plot needs the samples: into a private temporary CSV unless --csv names one.
+    eomgen::sim::Options o = options_;
+    o.model = model.name;
+    fs::path temp_dir;
+    if (!plot_.empty() && o.csv.empty()) {
+        std::string pattern = (fs::temp_directory_path() / "eomgen-run.XXXXXX").string();
+        if (!::mkdtemp(pattern.data())) throw CacheError("cannot create a temporary directory");
+        temp_dir = pattern;
+        o.csv = (temp_dir / "samples.csv").string();
+    }
+    struct Cleanup {
+        fs::path dir;
+        ~Cleanup() {
+            std::error_code ec;
+            if (!dir.empty()) fs::remove_all(dir, ec);
+        }
+    } cleanup{temp_dir};
+    progress("integrating");
+    const int code = compiled.run(&o);
+    if (code != eomgen::sim::kExitOk) return 2;  // a bad option value or a failed simulation, said on stderr
+
+    if (!plot_.empty()) {
+        PlotRequest p;
+        p.csv = o.csv;
+        p.output = plot_;
+        p.title = model.title.empty() ? model.name : model.title;
+        for (const Coordinate& c : model.coordinates) p.coordinates.push_back(c.name);
+        p.invariants.push_back("energy");
+        for (const ConservedQuantity& c : eq.conserved)
+            if (c.name != "h") p.invariants.push_back(c.name);
+        for (const ConstraintEquations& c : eq.constraints) p.residuals.push_back("residual_" + c.name);
+        if (!plot_phase_.empty()) {
+            const bool known = std::any_of(model.coordinates.begin(), model.coordinates.end(),
+                                           [&](const Coordinate& c) { return c.name == plot_phase_; });
+            if (!known) {
+                std::cerr << "eomgen run: --plot-phase " << plot_phase_ << ": no such coordinate\n";
+                return 2;
+            }
+            p.phase = plot_phase_;
+        }
+        progress("plotting");
+        try {
+            plot(p);
+        } catch (const std::invalid_argument& e) {
+            std::cerr << "eomgen run: " << e.what() << "\n";
+            return 2;
+        } catch (const std::runtime_error& e) {
+            std::cerr << "eomgen run: " << e.what() << "\n";
+            return 3;
+        }
+        std::cout << "plot:    " << plot_ << "\n";
+    }
+    return 0;
+}
+
+}  // namespace eomgen::cli

@@ -1,0 +1,45 @@
+/** @file run_command.hpp  `eomgen run MODEL.toml [options]` and `eomgen cache clear`. */
+#pragma once
+
+#include "eomgen/simulation.hpp"
+
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace eomgen::cli {
+
+/// Exit code when the C++ compiler is missing or fails (the message names the command and its log).
+constexpr int kExitCompiler = 4;
+
+/**
+ * Registers `run` and `cache` on the `eomgen` command line:
+ *
+ *     eomgen run MODEL.toml [eomgen-sim's options] [--plot FILE.png|FILE.svg] [--plot-phase q]
+ *                [--no-cache] [--quiet | --progress]
+ *     eomgen cache clear
+ *
+ * run() derives the model, emits its header, compiles it with the simulation driver into a cached shared
+ * object (compiled_model.hpp), loads it and integrates. Returns 0; 1 for a model error (thrown as
+ * ModelError, as for `show`); 2 for a bad option value or a failed simulation (the message says which, with
+ * t and the state); 3 when a file or the cache cannot be used; 4 when the compiler is missing or fails.
+ */
+class RunCommand {
+  public:
+    explicit RunCommand(CLI::App& app);
+    bool selected() const;
+    int run();
+
+  private:
+    int run_model();
+    CLI::App* run_ = nullptr;
+    CLI::App* cache_ = nullptr;
+    CLI::App* clear_ = nullptr;
+    std::string model_path_, plot_, plot_phase_;
+    eomgen::sim::Options options_;
+    bool no_cache_ = false, quiet_ = false, progress_ = false;
+};
+
+}  // namespace eomgen::cli

@@ -1,0 +1,346 @@
+// `eomgen run` as a user runs it, on model files this test writes itself (none is in models/): exit codes,
+// CSV rows and columns, invariants along the trajectory, events, the cache (no compiler on a second run,
+// invalidated by an edit, safe under two concurrent runs, refused when unsafe), a broken compiler, plots.
+#include <catch2/catch.hpp>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path kWork = fs::path(EOMGEN_BINARY_DIR) / "tests" / "cli" / "work" / "run";
+
+struct Result {
+    int code = -1;
+    std::string output;  // stdout and stderr together
+};
+
+std::string read(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// Starts eomgen with `args` and extra environment variables; returns the pid (output to `log`).
+pid_t start(const std::vector<std::string>& args, const std::map<std::string, std::string>& env, const fs::path& log) {
+    std::vector<std::string> argv = {EOMGEN_EXE};
+    argv.insert(argv.end(), args.begin(), args.end());
+    std::vector<std::string> envs;
+    for (char** e = environ; *e; ++e) {
+        const std::string kv = *e;
+        if (!env.count(kv.substr(0, kv.find('=')))) envs.push_back(kv);
+    }
+    for (const auto& [k, v] : env) envs.push_back(k + "=" + v);
+    std::vector<char*> a, en;
+    for (auto& s : argv) a.push_back(s.data());
+    a.push_back(nullptr);
+    for (auto& s : envs) en.push_back(s.data());
+    en.push_back(nullptr);
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&fa, 1, 2);
+    pid_t pid = 0;
+    REQUIRE(posix_spawn(&pid, a[0], &fa, nullptr, a.data(), en.data()) == 0);
+    posix_spawn_file_actions_destroy(&fa);
+    return pid;
+}
+
+Result finish(pid_t pid, const fs::path& log) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128, read(log)};
+}
+
+Result eomgen(const std::vector<std::string>& args, std::map<std::string, std::string> env = {}) {
+    if (!env.count("XDG_CACHE_HOME")) env["XDG_CACHE_HOME"] = (kWork / "cache").string();
+    const fs::path log = kWork / "last.log";
+    return finish(start(args, env, log), log);
+}
+
+fs::path write_model(const std::string& name, const std::string& text) {
+    fs::create_directories(kWork);
+    const fs::path p = kWork / name;
+    std::ofstream(p) << text;
+    return p;
+}
+
+std::vector<std::vector<std::string>> read_csv(const fs::path& p) {
+    std::vector<std::vector<std::string>> rows;
+    std::ifstream in(p);
+    for (std::string line; std::getline(in, line);) {
+        std::vector<std::string> row;
+        std::istringstream fields(line);
+        for (std::string f; std::getline(fields, f, ',');) row.push_back(f);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+int column(const std::vector<std::string>& header, const std::string& name) {
+    for (std::size_t i = 0; i < header.size(); ++i)
+        if (header[i] == name) return int(i);
+    FAIL("no column " << name);
+    return -1;
+}
+
+double max_relative_drift(const std::vector<std::vector<std::string>>& rows, const std::string& name) {
+    const int c = column(rows[0], name);
+    const double first = std::stod(rows[1][std::size_t(c)]);
+    double drift = 0;
+    for (std::size_t r = 1; r < rows.size(); ++r)
+        drift = std::max(drift, std::abs(std::stod(rows[r][std::size_t(c)]) - first) / std::abs(first));
+    return drift;
+}
+
+// An elastic pendulum: a bob on a spring, in polar coordinates. Written here, compiled by eomgen run.
+const std::string kSpringPendulum = R"toml(name = "spring_pendulum"
+title = "Elastic pendulum (written by exam_run)"
+[[coordinates]]
+name = "r"
+initial = 1.2
+[[coordinates]]
+name = "phi"
+initial = 0.4
+rate = 0.3
+[[parameters]]
+name = "m"
+value = 0.7
+unit = "kg"
+[[parameters]]
+name = "k"
+value = 30
+[[parameters]]
+name = "l0"
+value = 1
+[[parameters]]
+name = "g"
+value = 9.81
+[lagrangian]
+T = "m/2*(r'^2 + r^2*phi'^2)"
+V = "k/2*(r - l0)^2 - m*g*r*cos(phi)"
+)toml";
+
+std::size_t cache_entries(const fs::path& cache) {
+    std::size_t n = 0;
+    if (!fs::exists(cache)) return 0;
+    for (const auto& e : fs::directory_iterator(cache)) n += e.path().extension() == ".so";
+    return n;
+}
+
+/// A compiler wrapper that records each call, then runs c++.
+fs::path counting_compiler() {
+    const fs::path script = kWork / "counting-c++";
+    std::ofstream(script) << "#!/bin/sh\necho called >> \"" << (kWork / "compiler-calls").string()
+                          << "\"\nexec c++ \"$@\"\n";
+    fs::permissions(script, fs::perms::owner_all);
+    return script;
+}
+
+std::size_t compiler_calls() {
+    std::ifstream in(kWork / "compiler-calls");
+    std::size_t n = 0;
+    for (std::string line; std::getline(in, line);) ++n;
+    return n;
+}
+
+}  // namespace
+
+TEST_CASE("eomgen run integrates a model file of the user's: CSV rows, energy kept, events", "[run]") {
+    const fs::path model = write_model("spring_pendulum.toml", kSpringPendulum);
+    const fs::path csv = kWork / "spring.csv";
+    const Result r = eomgen({"run", model.string(), "--t-end", "10", "--rtol", "1e-12", "--atol", "1e-14",
+                             "--samples", "50", "--csv", csv.string(), "--quiet"});
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    CHECK(r.output.find("model:   spring_pendulum") != std::string::npos);
+    const auto rows = read_csv(csv);
+    REQUIRE(rows.size() == 52);  // header + 51 samples
+    CHECK(rows[0] == std::vector<std::string>{"t", "r", "phi", "r_dot", "phi_dot", "energy"});
+    CHECK(max_relative_drift(rows, "energy") <= 1e-9);
+
+    // --until: the event stops the run where phi crosses 0.
+    const Result e = eomgen({"run", model.string(), "--until", "phi=0", "--t-end", "10", "--quiet"});
+    INFO(e.output);
+    CHECK(e.code == 0);
+    CHECK(e.output.find("stopped: at event phi=0") != std::string::npos);
+
+    // The simulator's option errors, as eomgen-sim gives them.
+    const Result bad = eomgen({"run", model.string(), "--set", "mass=2", "--quiet"});
+    CHECK(bad.code == 2);
+    CHECK(bad.output.find("no parameter 'mass'") != std::string::npos);
+}
+
+TEST_CASE("eomgen run on a constrained model writes residuals and multipliers", "[run]") {
+    const fs::path model = write_model("cartesian_pendulum.toml", R"toml(name = "cartesian_pendulum"
+[[coordinates]]
+name = "x"
+initial = 0.6
+[[coordinates]]
+name = "y"
+initial = -0.8
+[[parameters]]
+name = "m"
+value = 2
+[[parameters]]
+name = "l"
+value = 1
+[[parameters]]
+name = "g"
+value = 9.81
+[lagrangian]
+T = "m/2*(x'^2 + y'^2)"
+V = "m*g*y"
+[[constraints]]
+name = "rod"
+expr = "x^2 + y^2 - l^2"
+)toml");
+    const fs::path csv = kWork / "cartesian.csv";
+    const Result r = eomgen({"run", model.string(), "--t-end", "5", "--rtol", "1e-12", "--atol", "1e-14",
+                             "--samples", "20", "--csv", csv.string(), "--quiet"});
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const auto rows = read_csv(csv);
+    REQUIRE(rows.size() == 22);
+    const int residual = column(rows[0], "residual_rod"), lambda = column(rows[0], "lambda_rod");
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        CHECK(std::abs(std::stod(rows[i][std::size_t(residual)])) < 1e-9);
+        CHECK(std::stod(rows[i][std::size_t(lambda)]) != 0.0);  // the rod pulls
+    }
+    CHECK(max_relative_drift(rows, "energy") <= 1e-9);
+}
+
+TEST_CASE("eomgen run caches: no compiler on a re-run, a new entry after an edit, concurrent runs", "[run][cache]") {
+    const fs::path cache = kWork / "cache-counted";
+    fs::remove_all(cache);
+    fs::remove(kWork / "compiler-calls");
+    const std::map<std::string, std::string> env = {{"XDG_CACHE_HOME", cache.string()},
+                                                     {"CXX", counting_compiler().string()}};
+    const fs::path model = write_model("cached.toml", kSpringPendulum);
+    REQUIRE(eomgen({"run", model.string(), "--t-end", "1", "--quiet"}, env).code == 0);
+    CHECK(compiler_calls() == 1);
+    CHECK(cache_entries(cache / "eomgen") == 1);
+    CHECK((fs::status(cache / "eomgen").permissions() & fs::perms::all) == fs::perms::owner_all);
+    const Result again = eomgen({"run", model.string(), "--t-end", "1", "--progress"}, env);
+    CHECK(again.code == 0);
+    CHECK(again.output.find("loaded from the cache") != std::string::npos);
+    CHECK(compiler_calls() == 1);  // no compiler the second time
+
+    std::string edited = kSpringPendulum;
+    edited.replace(edited.find("value = 30"), 10, "value = 31");
+    write_model("cached.toml", edited);
+    REQUIRE(eomgen({"run", model.string(), "--t-end", "1", "--quiet"}, env).code == 0);
+    CHECK(compiler_calls() == 2);
+    CHECK(cache_entries(cache / "eomgen") == 2);
+
+    // Two runs of a new model at once: both succeed and leave one valid entry, no temporary directory.
+    edited.replace(edited.find("value = 31"), 10, "value = 32");
+    const fs::path fresh = write_model("concurrent.toml", edited);
+    std::map<std::string, std::string> env2 = env;
+    const pid_t a = start({"run", fresh.string(), "--t-end", "1", "--quiet"}, env2, kWork / "a.log");
+    const pid_t b = start({"run", fresh.string(), "--t-end", "1", "--quiet"}, env2, kWork / "b.log");
+    const Result ra = finish(a, kWork / "a.log"), rb = finish(b, kWork / "b.log");
+    INFO(ra.output << rb.output);
+    CHECK(ra.code == 0);
+    CHECK(rb.code == 0);
+    CHECK(cache_entries(cache / "eomgen") == 3);
+    for (const auto& e : fs::directory_iterator(cache / "eomgen"))
+        CHECK(e.path().filename().string().rfind("tmp.", 0) != 0);
+    const std::size_t before = compiler_calls();
+    REQUIRE(eomgen({"run", fresh.string(), "--t-end", "1", "--quiet"}, env).code == 0);
+    CHECK(compiler_calls() == before);  // the entry the two left is valid
+
+    const Result cleared = eomgen({"cache", "clear"}, env);
+    CHECK(cleared.code == 0);
+    CHECK(cache_entries(cache / "eomgen") == 0);
+}
+
+TEST_CASE("eomgen run: a broken or missing compiler gives exit 4 with the log, and no cache entry", "[run][cache]") {
+    const fs::path cache = kWork / "cache-broken";
+    fs::remove_all(cache);
+    const fs::path broken = kWork / "broken-c++";
+    std::ofstream(broken) << "#!/bin/sh\necho 'fatal: this compiler is broken' >&2\nexit 1\n";
+    fs::permissions(broken, fs::perms::owner_all);
+    const fs::path model = write_model("broken.toml", kSpringPendulum);
+    const Result r = eomgen({"run", model.string(), "--quiet"}, {{"XDG_CACHE_HOME", cache.string()}, {"CXX", broken.string()}});
+    INFO(r.output);
+    CHECK(r.code == 4);
+    const auto log_at = r.output.find("log: ");
+    REQUIRE(log_at != std::string::npos);
+    const std::string log = r.output.substr(log_at + 5, r.output.find('\n', log_at) - log_at - 5);
+    CHECK(read(log).find("this compiler is broken") != std::string::npos);
+    CHECK(r.output.find("command: " + broken.string()) != std::string::npos);
+    CHECK(cache_entries(cache / "eomgen") == 0);
+
+    const Result missing =
+        eomgen({"run", model.string(), "--quiet"}, {{"XDG_CACHE_HOME", cache.string()}, {"CXX", "no-such-compiler-x"}});
+    CHECK(missing.code == 4);
+    CHECK(missing.output.find("cannot start the C++ compiler 'no-such-compiler-x'") != std::string::npos);
+    CHECK(cache_entries(cache / "eomgen") == 0);
+}
+
+TEST_CASE("eomgen run refuses a cache others can write and an entry that is a symbolic link", "[run][cache]") {
+    const fs::path cache = kWork / "cache-unsafe";
+    fs::remove_all(cache);
+    fs::create_directories(cache / "eomgen");
+    fs::permissions(cache / "eomgen", fs::perms::all);
+    const fs::path model = write_model("unsafe.toml", kSpringPendulum);
+    const Result r = eomgen({"run", model.string(), "--quiet"}, {{"XDG_CACHE_HOME", cache.string()}});
+    CHECK(r.code == 3);
+    CHECK(r.output.find("writable by other users") != std::string::npos);
+
+    // A symbolic link planted where an entry goes: compile once with --progress to learn the entry's name.
+    fs::permissions(cache / "eomgen", fs::perms::owner_all);
+    REQUIRE(eomgen({"run", model.string(), "--t-end", "1", "--quiet"}, {{"XDG_CACHE_HOME", cache.string()}}).code == 0);
+    fs::path entry;
+    for (const auto& e : fs::directory_iterator(cache / "eomgen"))
+        if (e.path().extension() == ".so") entry = e.path();
+    REQUIRE(!entry.empty());
+    fs::rename(entry, kWork / "moved.so");
+    fs::create_symlink(kWork / "moved.so", entry);
+    const Result link = eomgen({"run", model.string(), "--quiet"}, {{"XDG_CACHE_HOME", cache.string()}});
+    CHECK(link.code == 3);
+    CHECK(link.output.find("symbolic link") != std::string::npos);
+}
+
+TEST_CASE("eomgen run --plot writes a PNG and an SVG; a path with spaces and shell syntax is just a path", "[run][plot]") {
+    const fs::path dir = kWork / "odd dir; $(echo PWNED) `x`";
+    fs::create_directories(dir);
+    const fs::path model = dir / "-spring pendulum.toml";
+    std::ofstream(model) << kSpringPendulum;
+    const fs::path png = dir / "motion.png", svg = dir / "motion.svg";
+    fs::remove(png);
+    const Result r = eomgen({"run", "--quiet", "--t-end", "5", "--plot", png.string(), "--plot-phase", "phi", "--",
+                             model.string()});
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    CHECK(r.output.find("PWNED") == std::string::npos);
+    const std::string bytes = read(png);
+    REQUIRE(bytes.size() > 1000);
+    CHECK(bytes.substr(0, 8) == "\x89PNG\r\n\x1a\n");
+    const fs::path csv = dir / "motion.csv";
+    REQUIRE(eomgen({"run", "--quiet", "--t-end", "5", "--samples", "40", "--csv", csv.string(), "--plot",
+                    svg.string(), "--", model.string()})
+                .code == 0);
+    const std::string text = read(svg);
+    CHECK(text.find("<svg") != std::string::npos);
+    CHECK(text.find("phi") != std::string::npos);
+    CHECK(eomgen({"run", "--quiet", "--plot", (dir / "x.pdf").string(), "--", model.string()}).code == 2);
+}

@@ -1,0 +1,125 @@
+// Fuzz property of issue 19: whatever text a model file puts in its free-text fields (title, source,
+// description, and each parameter's unit and description), the generated header's tokens outside
+// comments and string literals are exactly those of the same model with empty text fields; a field
+// the loader refuses is refused with its file:line:col. libFuzzer entry point; tests/fuzz/standalone.cpp
+// drives it without libFuzzer (ctest's bounded run).
+#include "codegen/cpp_emitter.hpp"
+#include "mechanics/lagrangian.hpp"
+#include "model/model_file.hpp"
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace {
+
+/// A TOML basic string holding `bytes`: quotes and backslashes escaped, other ASCII controls as \uXXXX,
+/// bytes from 0x80 copied (invalid UTF-8 makes the file invalid TOML, which the loader must report).
+std::string toml_string(const std::string& bytes) {
+    std::string out = "\"";
+    for (const char ch : bytes) {
+        const unsigned char c = static_cast<unsigned char>(ch);
+        if (ch == '"' || ch == '\\') {
+            out += '\\';
+            out += ch;
+        } else if (c < 0x20 || c == 0x7f) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", c);
+            out += buf;
+        } else {
+            out += ch;
+        }
+    }
+    return out + "\"";
+}
+
+std::string model_text(const std::vector<std::string>& f) {
+    return "name = \"fuzzed\"\ntitle = " + toml_string(f[0]) + "\nsource = " + toml_string(f[1]) +
+           "\ndescription = " + toml_string(f[2]) +
+           "\n\n[[coordinates]]\nname = \"x\"\ninitial = 0.5\n\n"
+           "[[parameters]]\nname = \"m\"\nvalue = 1\nunit = " + toml_string(f[3]) + "\ndescription = " +
+           toml_string(f[4]) + "\n\n[[parameters]]\nname = \"k\"\nvalue = 4\nunit = " + toml_string(f[5]) +
+           "\ndescription = " + toml_string(f[6]) + "\n\n[lagrangian]\nT = \"m/2*x'^2\"\nV = \"k/2*x^2\"\n";
+}
+
+/// The header's text outside comments and string and character literals, after line splicing (phase 2
+/// of translation, which runs before comments are recognised), with runs of white space as one space.
+std::string code_tokens(const std::string& header) {
+    std::string src;
+    for (std::size_t i = 0; i < header.size(); ++i) {
+        if (header[i] == '\\' && i + 1 < header.size() && header[i + 1] == '\n') {
+            ++i;
+            continue;
+        }
+        src += header[i];
+    }
+    std::string out;
+    auto space = [&out] {
+        if (!out.empty() && out.back() != ' ') out += ' ';
+    };
+    for (std::size_t i = 0; i < src.size();) {
+        if (src.compare(i, 2, "//") == 0) {
+            while (i < src.size() && src[i] != '\n') ++i;
+            space();
+        } else if (src.compare(i, 2, "/*") == 0) {
+            const std::size_t end = src.find("*/", i + 2);
+            i = end == std::string::npos ? src.size() : end + 2;
+            space();
+        } else if (src[i] == '"' || src[i] == '\'') {
+            const char q = src[i++];
+            while (i < src.size() && src[i] != q && src[i] != '\n') i += src[i] == '\\' ? 2 : 1;
+            ++i;
+            out += q;  // the literal itself, not its contents
+            out += q;
+        } else if (src[i] == ' ' || src[i] == '\n' || src[i] == '\t') {
+            space();
+            ++i;
+        } else {
+            out += src[i++];
+        }
+    }
+    return out;
+}
+
+const std::string& baseline() {
+    static const std::string tokens = [] {
+        const eomgen::Model m = eomgen::parse_model(model_text(std::vector<std::string>(7)), "fuzzed.toml");
+        return code_tokens(eomgen::codegen::emit_model_header(m, eomgen::derive_equations(m), "fuzzed.toml"));
+    }();
+    return tokens;
+}
+
+[[noreturn]] void fail(const char* what, const std::string& text, const std::string& detail) {
+    std::fprintf(stderr, "fuzz_text_fields: %s\n--- model file ---\n%s\n--- detail ---\n%s\n", what, text.c_str(),
+                 detail.c_str());
+    std::abort();
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    // Seven fields, each a length byte (mod 48) and that many bytes.
+    std::vector<std::string> fields(7);
+    std::size_t pos = 0;
+    for (std::string& f : fields) {
+        if (pos >= size) break;
+        const std::size_t n = std::min<std::size_t>(data[pos++] % 48, size - pos);
+        f.assign(reinterpret_cast<const char*>(data + pos), n);
+        pos += n;
+    }
+    const std::string text = model_text(fields);
+    eomgen::Model model;
+    try {
+        model = eomgen::parse_model(text, "fuzzed.toml");
+    } catch (const eomgen::ModelError& e) {
+        if (e.where().line <= 0 || e.where().column <= 0) fail("an error without its line and column", text, e.what());
+        return 0;
+    }
+    const std::string header = eomgen::codegen::emit_model_header(model, eomgen::derive_equations(model), "fuzzed.toml");
+    if (header.find('\0') != std::string::npos) fail("a NUL byte in the header", text, header);
+    const std::string tokens = code_tokens(header);
+    if (tokens != baseline()) fail("text from a field changed the header's code", text, header);
+    return 0;
+}
