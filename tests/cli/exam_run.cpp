@@ -331,7 +331,8 @@ TEST_CASE("eomgen run --plot writes a PNG and an SVG; a path with spaces and she
                              model.string()});
     INFO(r.output);
     REQUIRE(r.code == 0);
-    CHECK(r.output.find("PWNED") == std::string::npos);
+    CHECK(("\n" + r.output).find("\nPWNED") == std::string::npos);  // the path is printed; no command ran
+    CHECK_FALSE(fs::exists("PWNED"));
     const std::string bytes = read(png);
     REQUIRE(bytes.size() > 1000);
     CHECK(bytes.substr(0, 8) == "\x89PNG\r\n\x1a\n");
