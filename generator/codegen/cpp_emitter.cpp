@@ -305,11 +305,9 @@ std::string emit_function(const FunctionSpec& f, const SymbolTable& table) {
     return os.str();
 }
 
-std::string quoted(const std::string& s) { return text::cpp_string(s); }
-
 std::string string_array(const std::vector<std::string>& names) {
     std::string s = "{";
-    for (std::size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + quoted(names[i]);
+    for (std::size_t i = 0; i < names.size(); ++i) s += (i ? ", " : "") + text::cpp_string(names[i]);
     return s + "}";
 }
 
@@ -368,9 +366,9 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "namespace eomgen::models::" << model.name << " {\n\n";
     os << "/// x = [q, q'] with q = " << string_array(coords) << "; M(q,t) q'' = f(q,q',t) solved in rhs().\n";
     os << "template <class Scalar>\nstruct Model {\n";
-    os << "    static constexpr const char* name = " << quoted(model.name) << ";\n";
-    os << "    static constexpr const char* title = " << quoted(model.title) << ";\n";
-    os << "    static constexpr const char* source = " << quoted(model.source) << ";\n";
+    os << "    static constexpr const char* name = " << text::cpp_string(model.name) << ";\n";
+    os << "    static constexpr const char* title = " << text::cpp_string(model.title) << ";\n";
+    os << "    static constexpr const char* source = " << text::cpp_string(model.source) << ";\n";
     os << "    static constexpr int nq = " << n << ";\n";
     os << "    static constexpr int nx = " << 2 * n << ";\n";
     os << "    static constexpr int n_params = " << params.size() << ";\n";
@@ -425,7 +423,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "    /// Sets the parameter called `name`; false when there is none.\n";
     os << "    static bool set_param(Params& p_, std::string_view name_, const Scalar& value_) {\n";
     for (const Parameter& p : model.parameters)
-        os << "        if (name_ == " << quoted(p.name) << ") return p_." << p.name << " = value_, true;\n";
+        os << "        if (name_ == " << text::cpp_string(p.name) << ") return p_." << p.name << " = value_, true;\n";
     if (model.parameters.empty()) os << "        static_cast<void>(p_);\n        static_cast<void>(name_);\n        static_cast<void>(value_);\n";
     os << "        return false;\n    }\n\n";
     os << "    static std::array<Scalar, n_params> param_values(const Params& p_) {\n";

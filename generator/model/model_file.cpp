@@ -396,17 +396,16 @@ class Loader {
     std::string string_value(const toml::node& node, const std::string& key) const {
         const auto* s = node.as_string();
         if (!s) fail(src_.at(node), "'" + key + "' must be a string, not " + type_name(node));
-        const std::string& v = s->get();
-        for (std::size_t i = 0; i < v.size(); ++i) {
-            const unsigned char c = static_cast<unsigned char>(v[i]);
-            const bool c1 = c == 0xc2 && i + 1 < v.size() && static_cast<unsigned char>(v[i + 1]) < 0xa0 &&
-                            static_cast<unsigned char>(v[i + 1]) >= 0x80;  // U+0080..U+009F
-            if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7f || c1) {
+        const std::string& v = s->get();  // valid UTF-8: toml++ checks it
+        for (std::size_t i = 0; i < v.size();) {
+            const text::CodePoint c = text::decode_utf8(v, i);
+            if (text::is_control(c.value) && c.value != '\n' && c.value != '\t') {
                 char code[16];
-                std::snprintf(code, sizeof code, "U+%04X", c1 ? static_cast<unsigned>(static_cast<unsigned char>(v[i + 1])) : c);
+                std::snprintf(code, sizeof code, "U+%04lX", c.value);
                 fail(inside_string(node, i), "'" + key + "' holds the control character " + std::string(code) +
                                                  ": only newline and tab may appear in a text field");
             }
+            i += c.length;
         }
         return v;
     }
@@ -887,13 +886,15 @@ Model parse_model(std::string_view text, const std::string& path) {
     return Loader(text, path).load();
 }
 
-Model load_model(const std::string& path) {
+std::string read_model_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw ModelError({path, 0, 0}, "cannot open the model file");
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) throw ModelError({path, 0, 0}, "cannot read the model file");
-    return parse_model(text.str(), path);
+    return text.str();
 }
+
+Model load_model(const std::string& path) { return parse_model(read_model_file(path), path); }
 
 }  // namespace eomgen

@@ -43,16 +43,10 @@ constexpr std::string_view kCppKeywords[] = {
 constexpr std::string_view kGeneratedCodeNames[] = {
     "Scalar", "Model", "Params", "Config", "State", "MassMatrix", "Conserved", "Eigen", "std", "eomgen"};
 
-// Macros that <cmath>, <cstdlib> and <cassert> may define: a variable with such a name would be
-// rewritten by the preprocessor however the generated code qualifies it.
-constexpr std::string_view kMacroNames[] = {
-    "M_E", "M_LOG2E", "M_LOG10E", "M_LN2", "M_LN10", "M_PI", "M_PI_2", "M_PI_4", "M_1_PI", "M_2_PI",
-    "M_2_SQRTPI", "M_SQRT2", "M_SQRT1_2", "NAN", "INFINITY", "HUGE_VAL", "HUGE_VALF", "HUGE_VALL", "FP_NAN",
-    "FP_INFINITE", "FP_ZERO", "FP_NORMAL", "FP_SUBNORMAL", "NULL", "EOF", "EXIT_SUCCESS", "EXIT_FAILURE",
-    "assert"};
-
 // Every macro the standard headers, glibc and Eigen define (scripts/update_reserved_macros.sh), sorted:
-// a program that includes a generated header includes those headers too.
+// a variable with such a name would be rewritten by the preprocessor however the generated code qualifies
+// it, and a program that includes a generated header includes those headers too. (M_PI, NAN, EOF, assert,
+// errno, stdin, ... are all in it.)
 constexpr std::string_view kPlatformMacros[] = {
 #include "model/reserved_macros.inc"
 };
@@ -117,8 +111,7 @@ std::string reserved_name_reason(std::string_view name, const std::vector<std::s
     if (std::find(functions.begin(), functions.end(), name) != functions.end())
         return q + " is the name of a function of the expression language";
     if (contains(kGeneratedCodeNames, name)) return q + " is a name the generated code uses";
-    if (contains(kMacroNames, name) ||
-        std::binary_search(std::begin(kPlatformMacros), std::end(kPlatformMacros), name))
+    if (std::binary_search(std::begin(kPlatformMacros), std::end(kPlatformMacros), name))
         return q + " is a macro of the C/C++ standard library or of Eigen (a program that includes the generated "
                    "header would see it rewritten)";
     if (name.substr(0, 6) == "EIGEN_") return q + " starts with 'EIGEN_', which Eigen reserves for its macros";

@@ -19,7 +19,7 @@ bool is_cpp_keyword(std::string_view name);
  * Why `name` may not name a coordinate, parameter or model, or "" when it may. Reserved are (see
  * docs/model_files.md): C++ keywords; `t`, `pi`, `dot` and the expression functions; the names the
  * generated code uses (Scalar, Model, Params, Config, State, MassMatrix, Conserved, Eigen, std, eomgen);
- * macros of <cmath>/<cstdlib> such as M_PI or NAN; t0, t1, ... (temporaries); names ending in `_` or
+ * every macro of the standard headers, glibc and Eigen (M_PI, NAN, errno, ...) and EIGEN_*; t0, t1, ... (temporaries); names ending in `_` or
  * containing `__`; `<coordinate>_dot` and `<coordinate>_ddot`; names starting with `sin_` or `cos_`.
  * Does not check that `name` is an identifier (see name_problem).
  *

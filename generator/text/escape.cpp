@@ -16,6 +16,29 @@ std::string hex_byte(unsigned char c, const char* format) {
 
 constexpr const char* kReplacement = "\xEF\xBF\xBD";  // U+FFFD
 
+/**
+ * `raw` as valid UTF-8 on one line, for the text formats: line breaks and tabs become a space, other control
+ * characters are dropped, and each remaining ASCII character goes to `escape(ch, out)`, which appends its
+ * escape and returns true, or returns false to have it copied as it is. Non-ASCII characters are copied.
+ */
+template <class Escape>
+std::string one_line(std::string_view raw, Escape&& escape) {
+    const std::string s = valid_utf8(raw);
+    std::string out;
+    for (std::size_t i = 0; i < s.size();) {
+        const CodePoint c = decode_utf8(s, i);
+        const std::string_view piece(s.data() + i, c.length);
+        i += c.length;
+        if (is_line_break(c.value) || c.value == '\t')
+            out += ' ';
+        else if (is_control(c.value))
+            continue;
+        else if (c.value >= 0x80 || !escape(static_cast<char>(c.value), out))
+            out += piece;
+    }
+    return out;
+}
+
 }  // namespace
 
 void append_utf8(std::string& out, long cp) {
@@ -60,6 +83,8 @@ CodePoint decode_utf8(std::string_view s, std::size_t i) {
     return {cp, n};
 }
 
+bool is_control(long cp) { return (cp >= 0 && cp < 0x20) || (cp >= 0x7f && cp < 0xa0); }
+
 bool is_line_break(long cp) {
     return cp == '\n' || cp == '\r' || cp == '\v' || cp == '\f' || cp == 0x85 || cp == 0x2028 || cp == 0x2029;
 }
@@ -92,7 +117,7 @@ std::string cpp_comment(std::string_view raw) {
         if (is_line_break(c.value)) {
             out += c.value == '\n' ? "\\n" : c.value == '\r' ? "\\r" : c.value < 0x80 ? hex_byte(s[i], "\\x%02x")
                                                                                       : " ";
-        } else if (c.value < 0x20 || c.value == 0x7f || (c.value >= 0x80 && c.value < 0xa0)) {
+        } else if (is_control(c.value)) {
             out += c.value < 0x80 ? hex_byte(static_cast<unsigned char>(ch), "\\x%02x") : "?";
         } else if ((ch == '*' && i + 1 < s.size() && s[i + 1] == '/') ||
                    (ch == '/' && i + 1 < s.size() && s[i + 1] == '*')) {
@@ -134,89 +159,59 @@ std::string cpp_string(std::string_view s) {
 }
 
 std::string latex_text(std::string_view raw) {
-    const std::string s = valid_utf8(raw);
-    std::string out;
-    for (std::size_t i = 0; i < s.size();) {
-        const CodePoint c = decode_utf8(s, i);
-        const char ch = s[i];
-        i += c.length;
-        if (is_line_break(c.value) || c.value == '\t') {
-            out += ' ';
-            continue;
-        }
-        if (c.value < 0x20 || c.value == 0x7f || (c.value >= 0x80 && c.value < 0xa0)) continue;
+    return one_line(raw, [](char ch, std::string& out) {
         switch (ch) {
-            case '\\': out += "\\textbackslash{}"; break;
-            case '{': out += "\\{"; break;
-            case '}': out += "\\}"; break;
-            case '$': out += "\\$"; break;
-            case '&': out += "\\&"; break;
-            case '#': out += "\\#"; break;
-            case '%': out += "\\%"; break;
-            case '_': out += "\\_"; break;
-            case '^': out += "\\textasciicircum{}"; break;
-            case '~': out += "\\textasciitilde{}"; break;
-            default: out.append(s, i - c.length, c.length);
+            case '\\': out += "\\textbackslash{}"; return true;
+            case '{': out += "\\{"; return true;
+            case '}': out += "\\}"; return true;
+            case '$': out += "\\$"; return true;
+            case '&': out += "\\&"; return true;
+            case '#': out += "\\#"; return true;
+            case '%': out += "\\%"; return true;
+            case '_': out += "\\_"; return true;
+            case '^': out += "\\textasciicircum{}"; return true;
+            case '~': out += "\\textasciitilde{}"; return true;
+            default: return false;
         }
-    }
-    return out;
+    });
 }
 
 std::string markdown_text(std::string_view raw) {
-    const std::string s = valid_utf8(raw);
-    std::string out;
-    for (std::size_t i = 0; i < s.size();) {
-        const CodePoint c = decode_utf8(s, i);
-        const char ch = s[i];
-        i += c.length;
-        if (is_line_break(c.value) || c.value == '\t') {
-            out += ' ';
-            continue;
-        }
-        if (c.value < 0x20 || c.value == 0x7f || (c.value >= 0x80 && c.value < 0xa0)) continue;
+    return one_line(raw, [](char ch, std::string& out) {
         switch (ch) {
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; return true;
+            case '>': out += "&gt;"; return true;
+            case '&': out += "&amp;"; return true;
             // Text is always written after a prefix ("- ", "| ", "### "), so line-start syntax cannot form;
             // inline syntax (emphasis, code, links, math, table cells) can, and is escaped.
             case '\\': case '`': case '*': case '_': case '[': case ']': case '|': case '$': case '~':
                 out += '\\';
                 out += ch;
-                break;
-            default: out.append(s, i - c.length, c.length);
+                return true;
+            default: return false;
         }
-    }
-    return out;
+    });
 }
 
 std::string markdown_math(std::string_view raw) {
-    const std::string s = valid_utf8(raw);
-    std::string out;
-    for (std::size_t i = 0; i < s.size();) {
-        const CodePoint c = decode_utf8(s, i);
-        const char ch = s[i];
-        i += c.length;
-        const bool escaped = !out.empty() && out.back() == '\\' && (out.size() < 2 || out[out.size() - 2] != '\\');
-        if (is_line_break(c.value) || c.value == '\t') {
-            out += ' ';
-            continue;
-        }
-        if (c.value < 0x20 || c.value == 0x7f || (c.value >= 0x80 && c.value < 0xa0)) continue;
+    // Whether the end of `out` is a backslash that escapes what follows (not the second of "\\").
+    const auto escaping = [](const std::string& out) {
+        return !out.empty() && out.back() == '\\' && (out.size() < 2 || out[out.size() - 2] != '\\');
+    };
+    std::string out = one_line(raw, [&](char ch, std::string& o) {
         switch (ch) {
-            case '<': out += "\\lt "; break;
-            case '>': out += "\\gt "; break;
+            case '<': o += "\\lt "; return true;
+            case '>': o += "\\gt "; return true;
             case '|':
-                if (escaped) out.back() = ' ', out += "\\Vert ";
-                else out += "\\vert ";
-                break;
-            case '$': out += escaped ? "$" : "\\$"; break;
-            case '`': out += "\\grave{}"; break;
-            default: out.append(s, i - c.length, c.length);
+                if (escaping(o)) o.back() = ' ', o += "\\Vert ";  // \| is the norm bar
+                else o += "\\vert ";
+                return true;
+            case '$': o += escaping(o) ? "$" : "\\$"; return true;
+            case '`': o += "\\grave{}"; return true;
+            default: return false;
         }
-    }
-    // A backslash at the very end would escape the closing delimiter.
-    if (!out.empty() && out.back() == '\\' && (out.size() < 2 || out[out.size() - 2] != '\\')) out += ' ';
+    });
+    if (escaping(out)) out += ' ';  // a backslash at the very end would escape the closing delimiter
     return out;
 }
 
@@ -253,7 +248,7 @@ std::string json_string(std::string_view raw) {
             case '\t': out += "\\t"; continue;
             default: break;
         }
-        if (c.value < 0x20 || (c.value >= 0x7f && c.value < 0xa0) || c.value == 0x2028 || c.value == 0x2029) {
+        if (is_control(c.value) || c.value == 0x2028 || c.value == 0x2029) {
             char buf[8];
             std::snprintf(buf, sizeof buf, "\\u%04lx", c.value);
             out += buf;

@@ -50,6 +50,9 @@ CodePoint decode_utf8(std::string_view s, std::size_t i);
 /// Appends the UTF-8 encoding of a code point (at most U+10FFFF) to `out`.
 void append_utf8(std::string& out, long code_point);
 
+/// True for the control characters: C0 (U+0000–U+001F), DEL and C1 (U+0080–U+009F).
+bool is_control(long code_point);
+
 /// True for the characters that end a line somewhere: \n, \r, \v, \f, U+0085, U+2028, U+2029.
 bool is_line_break(long code_point);
 
