@@ -1,6 +1,8 @@
 /** @file compiled_model.cpp  Compiling generated code with the system compiler, caching, loading (dlopen). */
 #include "cli/compiled_model.hpp"
 
+#include "cli/process.hpp"
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -13,13 +15,8 @@
 #include <vector>
 
 #include <dlfcn.h>
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/stat.h>
-#include <sys/wait.h>
 #include <unistd.h>
-
-extern char** environ;
 
 #ifndef EOMGEN_VERSION
 #define EOMGEN_VERSION "0.0.0"
@@ -61,13 +58,6 @@ class Hasher {
     std::uint64_t a_ = 0xcbf29ce484222325ULL, b_ = 0x84222325cbf29ce4ULL;
 };
 
-std::string read_file(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 /// $CXX split at blanks (no shell: quotes and $ are ordinary characters), else "c++".
 std::vector<std::string> compiler_command() {
     std::vector<std::string> words;
@@ -96,11 +86,13 @@ std::string describe_file(const std::string& path) {
     return path + " " + std::to_string(st.st_size) + " " + std::to_string(st.st_mtime);
 }
 
-/// Everything the compiled code depends on besides the header: the runtime's headers, the compiler, flags.
+/// Everything the compiled code depends on: the model file, eomgen, the runtime's headers, the compiler, flags.
 std::string cache_key(const CompileRequest& r, const std::vector<std::string>& compiler) {
     Hasher h;
     h.add(EOMGEN_VERSION);
-    h.add(r.header);
+    std::error_code ec;
+    h.add(describe_file(fs::read_symlink("/proc/self/exe", ec).string()));  // a rebuilt generator
+    h.add(r.model_text);
     h.add(r.model_name);
     std::vector<fs::path> runtime;
     for (const auto& e : fs::directory_iterator(fs::path(EOMGEN_RUNTIME_INCLUDE_DIR) / "eomgen"))
@@ -140,31 +132,6 @@ std::string joined(const std::vector<std::string>& argv) {
     return s;
 }
 
-/// Runs argv (no shell) with stdout and stderr into `log`; returns the exit status, or throws CompileError
-/// when the program cannot be started.
-int run_logged(const std::vector<std::string>& argv, const fs::path& log) {
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-    posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-    std::vector<char*> args;
-    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-    args.push_back(nullptr);
-    pid_t pid = 0;
-    const int err = ::posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    if (err != 0)
-        throw CompileError("cannot start the C++ compiler '" + argv[0] + "': " + std::strerror(err) +
-                               " (set CXX to a C++17 compiler, or install g++)",
-                           joined(argv), log.string());
-    int status = 0;
-    while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-    }
-    if (WIFEXITED(status)) return WEXITSTATUS(status);
-    return 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-}
-
 /// Refuses a path that is a symbolic link or not owned by us, and a directory others may write.
 void check_safe(const fs::path& p, bool directory) {
     struct stat st {};
@@ -187,12 +154,10 @@ CompiledModel load(const fs::path& so, const std::string& key) {
     return {run, false, so.string(), 0};
 }
 
-/// Compiles in a fresh mkdtemp directory under `parent`; returns the directory (holding model.so).
-fs::path build(const CompileRequest& r, const std::string& key, const fs::path& parent, double& seconds) {
-    std::string pattern = (parent / "tmp.XXXXXX").string();
-    if (!::mkdtemp(pattern.data())) throw CacheError("cannot create a directory in " + parent.string());
-    const fs::path dir = pattern;
-    write_file(dir / "model.hpp", r.header);
+/// Compiles the request into `dir`/model.so; returns the compiler's time. On failure the log is kept as
+/// `logs`/<key>.log (the directory itself goes with its owner) and CompileError names it.
+double build(const CompileRequest& r, const std::string& key, const fs::path& dir, const fs::path& logs) {
+    write_file(dir / "model.hpp", r.header());
     write_file(dir / "model.cpp", entry_source(r.model_name, key));
     std::vector<std::string> argv = compiler_command();
     argv.insert(argv.end(), kFlags.begin(), kFlags.end());
@@ -206,25 +171,22 @@ fs::path build(const CompileRequest& r, const std::string& key, const fs::path& 
     const auto start = std::chrono::steady_clock::now();
     int status = 0;
     try {
-        status = run_logged(argv, log);
-    } catch (const CompileError&) {
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-        throw;
+        status = run_program(argv, log);
+    } catch (const ProgramNotStarted& e) {
+        throw CompileError("cannot start the C++ compiler '" + argv[0] + "': " + e.what() +
+                               " (set CXX to a C++17 compiler, or install g++)",
+                           joined(argv), log.string());
     }
-    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (status != 0 || !fs::exists(dir / "model.so")) {
-        // Keep the log where a person can read it; the half-built entry goes.
-        const fs::path logs = parent / "logs";
         std::error_code ec;
         fs::create_directories(logs, ec);
         const fs::path kept = logs / (key + ".log");
         fs::rename(log, kept, ec);
-        fs::remove_all(dir, ec);
         throw CompileError("the C++ compiler failed (exit " + std::to_string(status) + ")", joined(argv),
                            (ec ? log : kept).string());
     }
-    return dir;
+    return seconds;
 }
 
 }  // namespace
@@ -247,15 +209,13 @@ fs::path cache_directory() {
 }
 
 CompiledModel compile_model(const CompileRequest& r) {
-    const std::vector<std::string> compiler = compiler_command();
-    const std::string key = cache_key(r, compiler);
+    const std::string key = cache_key(r, compiler_command());
     if (!r.use_cache) {
         const char* tmp = std::getenv("TMPDIR");
-        double seconds = 0;
-        const fs::path dir = build(r, key, tmp && *tmp ? tmp : "/tmp", seconds);
-        CompiledModel m = load(dir / "model.so", key);
-        std::error_code ec;
-        fs::remove_all(dir, ec);  // the loaded object stays mapped
+        const fs::path parent = tmp && *tmp ? tmp : "/tmp";
+        TempDir dir(parent, "eomgen-run.");
+        const double seconds = build(r, key, dir.path(), parent);
+        CompiledModel m = load(dir.path() / "model.so", key);  // stays mapped when the directory goes
         m.compile_seconds = seconds;
         return m;
     }
@@ -269,10 +229,12 @@ CompiledModel compile_model(const CompileRequest& r) {
         return m;
     }
     double seconds = 0;
-    const fs::path dir = build(r, key, cache, seconds);
-    std::error_code ec;
-    fs::rename(dir / "model.so", entry, ec);  // atomic: another run may have put the same entry there first
-    fs::remove_all(dir, ec);
+    {
+        TempDir dir(cache, "tmp.");
+        seconds = build(r, key, dir.path(), cache / "logs");
+        std::error_code ec;
+        fs::rename(dir.path() / "model.so", entry, ec);  // atomic: another run may have put the same entry first
+    }
     CompiledModel m = load(entry, key);
     m.compile_seconds = seconds;
     return m;

@@ -4,8 +4,8 @@
  * The compiler ($CXX, else c++) is started with an argument vector, never through a shell. The cache lives
  * in $XDG_CACHE_HOME/eomgen (default ~/.cache/eomgen), created with mode 0700; a cache directory that is
  * not ours or is writable by others, and an entry that is a symbolic link, are refused. An entry is
- * <key>.so, where the key hashes the generated code, the runtime's headers, the compiler (path, size, time)
- * and the flags; it is built in a mkdtemp directory and renamed into place, so concurrent or interrupted
+ * <key>.so, where the key hashes the model file, eomgen (version, executable's size and time), the runtime's
+ * headers, the compiler (path, size, time) and the flags, so that a cached run neither derives nor compiles; it is built in a mkdtemp directory and renamed into place, so concurrent or interrupted
  * runs never leave a broken entry, and it is loaded only when the key it carries matches.
  */
 #pragma once
@@ -42,8 +42,9 @@ struct CompiledModel {
 };
 
 struct CompileRequest {
-    std::string header;       ///< the generated header's text
-    std::string model_name;   ///< its namespace, eomgen::models::<name>
+    std::string model_text;   ///< the model file's bytes: with eomgen itself, what the cache key hashes
+    std::string model_name;   ///< the namespace of its generated code, eomgen::models::<name>
+    std::function<std::string()> header;  ///< derives and emits the header: called only when compiling
     bool use_cache = true;
     std::function<void(const std::string&)> progress;  ///< "compiling ..." messages, may be empty
 };

@@ -11,14 +11,16 @@ struct PlotRequest {
     std::string output;                  ///< FILE.png or FILE.svg
     std::string title;                   ///< the model's title (escaped for gnuplot here)
     std::vector<std::string> coordinates;
-    std::vector<std::string> units;      ///< per coordinate, may be empty
-    std::vector<std::string> invariants; ///< CSV columns whose relative drift is drawn: energy, conserved
-    std::vector<std::string> residuals;  ///< residual_<constraint> columns
     std::string phase;                   ///< a coordinate for q' against q, or ""
 };
 
-/// Writes the plot; throws std::runtime_error with gnuplot's message when it fails.
+/// Writes the plot; throws std::runtime_error with gnuplot's message when it fails. The invariants whose
+/// drift it draws are the CSV's columns from `energy` on (energy and the conserved quantities), its
+/// residuals the `residual_<constraint>` columns.
 void plot(const PlotRequest& request);
+
+/// Why `output` cannot be a plot's file name (it must end in .png or .svg), or "" when it can.
+std::string plot_format_problem(const std::string& output);
 
 /// A gnuplot single-quoted string: the only special character there is ' itself, written twice.
 std::string gnuplot_string(const std::string& s);

@@ -3,6 +3,7 @@
 
 #include "cli/compiled_model.hpp"
 #include "cli/plot.hpp"
+#include "cli/process.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model_file.hpp"
@@ -16,6 +17,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include <unistd.h>
 
@@ -53,6 +55,9 @@ int RunCommand::run() {
     } catch (const CacheError& e) {
         std::cerr << "eomgen run: " << e.what() << "\n";
         return 3;
+    } catch (const TempDirError& e) {
+        std::cerr << "eomgen run: " << e.what() << "\n";
+        return 3;
     }
 }
 
@@ -65,20 +70,20 @@ int RunCommand::run_model() {
         std::fprintf(stderr, "eomgen run: [%.1f s] %s\n", s, what.c_str());
     };
     // Mistakes on the command line are reported before anything slow runs.
-    if (!plot_.empty()) {
-        const std::string ext = fs::path(plot_).extension().string();
-        if (ext != ".png" && ext != ".svg") {
-            std::cerr << "eomgen run: --plot " << plot_ << ": the file name must end in .png or .svg\n";
-            return 2;
-        }
+    if (const std::string problem = plot_.empty() ? "" : plot_format_problem(plot_); !problem.empty()) {
+        std::cerr << "eomgen run: " << problem << "\n";
+        return 2;
     }
-    progress("deriving " + model_path_);
-    const Model model = load_model(model_path_);
-    const Equations eq = derive_equations(model);
-    for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
-    const std::string header = codegen::emit_model_header(model, eq, fs::path(model_path_).filename().string());
-
-    CompileRequest request{header, model.name, !no_cache_, progress};
+    // Reading the model is cheap; deriving it is done only when its code is not in the cache.
+    const std::string text = read_model_file(model_path_);
+    const Model model = parse_model(text, model_path_);
+    auto header = [&] {
+        progress("deriving " + model_path_);
+        const Equations eq = derive_equations(model);
+        for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
+        return codegen::emit_model_header(model, eq, fs::path(model_path_).filename().string());
+    };
+    CompileRequest request{text, model.name, header, !no_cache_, progress};
     const CompiledModel compiled = compile_model(request);
     progress(compiled.from_cache ? "loaded from the cache: " + compiled.path
                                  : "compiled in " + std::to_string(compiled.compile_seconds).substr(0, 4) + " s");
@@ -86,20 +91,11 @@ int RunCommand::run_model() {
     // A plot needs the samples: into a private temporary CSV unless --csv names one.
     eomgen::sim::Options o = options_;
     o.model = model.name;
-    fs::path temp_dir;
+    std::optional<TempDir> samples_dir;
     if (!plot_.empty() && o.csv.empty()) {
-        std::string pattern = (fs::temp_directory_path() / "eomgen-run.XXXXXX").string();
-        if (!::mkdtemp(pattern.data())) throw CacheError("cannot create a temporary directory");
-        temp_dir = pattern;
-        o.csv = (temp_dir / "samples.csv").string();
+        samples_dir.emplace(fs::temp_directory_path(), "eomgen-run.");
+        o.csv = (samples_dir->path() / "samples.csv").string();
     }
-    struct Cleanup {
-        fs::path dir;
-        ~Cleanup() {
-            std::error_code ec;
-            if (!dir.empty()) fs::remove_all(dir, ec);
-        }
-    } cleanup{temp_dir};
     progress("integrating");
     const int code = compiled.run(&o);
     if (code != eomgen::sim::kExitOk) return 2;  // a bad option value or a failed simulation, said on stderr
@@ -110,10 +106,6 @@ int RunCommand::run_model() {
         p.output = plot_;
         p.title = model.title.empty() ? model.name : model.title;
         for (const Coordinate& c : model.coordinates) p.coordinates.push_back(c.name);
-        p.invariants.push_back("energy");
-        for (const ConservedQuantity& c : eq.conserved)
-            if (c.name != "h") p.invariants.push_back(c.name);
-        for (const ConstraintEquations& c : eq.constraints) p.residuals.push_back("residual_" + c.name);
         if (!plot_phase_.empty()) {
             const bool known = std::any_of(model.coordinates.begin(), model.coordinates.end(),
                                            [&](const Coordinate& c) { return c.name == plot_phase_; });

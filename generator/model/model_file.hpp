@@ -23,6 +23,9 @@ namespace eomgen {
  */
 Model load_model(const std::string& path);
 
+/// The bytes of a model file, as load_model reads them (ModelError when it cannot be read).
+std::string read_model_file(const std::string& path);
+
 /// As load_model, for the text of a model file; `path` is only used in messages and as Model::path.
 Model parse_model(std::string_view text, const std::string& path);
 

@@ -22,7 +22,6 @@
 
 namespace eomgen::sim {
 
-
 /// What run() returns: the caller maps these to its own exit codes.
 constexpr int kExitOk = 0, kExitUsage = 1, kExitSimulation = 2;
 
