@@ -293,10 +293,12 @@ std::string emit_function(const FunctionSpec& f, const SymbolTable& table) {
     for (const auto& [type, name] : f.inputs)
         if (!read.count(name)) os << "        static_cast<void>(" << name << ");\n";
     // An output with nothing to hold (e.g. no conserved quantity) is still a parameter.
-    for (const auto& [type, name] : f.outputs)
+    for (const auto& output : f.outputs) {
+        const std::string& name = output.second;  // not a structured binding: C++17 lambdas cannot capture one
         if (std::none_of(f.values.begin(), f.values.end(),
                          [&](const Output& o) { return o.target.rfind(name + "(", 0) == 0; }))
             os << "        static_cast<void>(" << name << ");\n";
+    }
     // using-declarations so that overloads for long double (and other scalars, by ADL) are found.
     for (const std::string& fn : body.functions) os << "        using std::" << fn << ";\n";
     for (const std::string& l : locals) os << "        " << l << "\n";
