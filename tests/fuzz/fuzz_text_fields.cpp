@@ -6,18 +6,22 @@
 #include "codegen/cpp_emitter.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model_file.hpp"
+#include "text/escape.hpp"
 
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <string>
 #include <vector>
 
 namespace {
 
 /// A TOML basic string holding `bytes`: quotes and backslashes escaped, other ASCII controls as \uXXXX,
-/// bytes from 0x80 copied (invalid UTF-8 makes the file invalid TOML, which the loader must report).
-std::string toml_string(const std::string& bytes) {
+/// bytes from 0x80 copied when `raw` (invalid UTF-8 makes the file invalid TOML, which the loader must
+/// report), else as valid UTF-8 (broken sequences as U+FFFD), so that non-ASCII text reaches the escaping.
+std::string toml_string(const std::string& input, bool raw) {
+    const std::string bytes = raw ? input : eomgen::text::valid_utf8(input);
     std::string out = "\"";
     for (const char ch : bytes) {
         const unsigned char c = static_cast<unsigned char>(ch);
@@ -35,7 +39,8 @@ std::string toml_string(const std::string& bytes) {
     return out + "\"";
 }
 
-std::string model_text(const std::vector<std::string>& f) {
+std::string model_text(const std::vector<std::string>& f, bool raw = false) {
+    const auto toml_string = [raw](const std::string& b) { return ::toml_string(b, raw); };
     return "name = \"fuzzed\"\ntitle = " + toml_string(f[0]) + "\nsource = " + toml_string(f[1]) +
            "\ndescription = " + toml_string(f[2]) +
            "\n\n[[coordinates]]\nname = \"x\"\ninitial = 0.5\n\n"
@@ -109,7 +114,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         f.assign(reinterpret_cast<const char*>(data + pos), n);
         pos += n;
     }
-    const std::string text = model_text(fields);
+    const std::string text = model_text(fields, size > 0 && data[0] % 4 == 0);  // a quarter with raw bytes
     eomgen::Model model;
     try {
         model = eomgen::parse_model(text, "fuzzed.toml");
@@ -121,5 +126,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (header.find('\0') != std::string::npos) fail("a NUL byte in the header", text, header);
     const std::string tokens = code_tokens(header);
     if (tokens != baseline()) fail("text from a field changed the header's code", text, header);
+    // With EOMGEN_FUZZ_HEADERS=DIR, the first few accepted headers whose fields hold text are kept there,
+    // for tests/fuzz/compile_headers.cmake to compile (the token property says their code is the empty
+    // fields' code; compiling them checks that the comments and literals around it are well formed too).
+    static int kept = 0;
+    const char* dir = std::getenv("EOMGEN_FUZZ_HEADERS");
+    if (dir && kept < 8 && size > 16) {
+        std::ofstream(std::string(dir) + "/fuzzed_" + std::to_string(kept++) + ".hpp", std::ios::binary) << header;
+    }
     return 0;
 }

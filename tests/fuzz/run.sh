@@ -19,5 +19,6 @@ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=
 cmake --build build-fuzz -j "$(nproc)" --target libfuzz_text_fields
 mkdir -p build-fuzz/corpus/text_fields
 cp -n tests/fuzz/corpus/text_fields/* build-fuzz/corpus/text_fields/ 2>/dev/null || true
-build-fuzz/tests/fuzz/libfuzzer/libfuzz_text_fields -max_total_time="$seconds" -max_len=400 -print_final_stats=1 \
-  build-fuzz/corpus/text_fields
+LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp" \
+  build-fuzz/tests/fuzz/libfuzzer/libfuzz_text_fields -max_total_time="$seconds" -max_len=400 -print_final_stats=1 \
+  -artifact_prefix=build-fuzz/ build-fuzz/corpus/text_fields

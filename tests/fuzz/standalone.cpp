@@ -49,9 +49,16 @@ int main(int argc, char** argv) {
     for (long k = 0; k < random; ++k) {
         std::string bytes;
         const int n = int(rng() % 160);
+        // Half the inputs without control characters, which the loader accepts: they test the escaping;
+        // the other half anything, which mostly tests that refusals come with their line and column.
+        const bool printable = k % 2 == 0;
         for (int i = 0; i < n; ++i) {
             const unsigned r = rng() % 8;
-            bytes += r < 3 ? specials[rng() % specials.size()] : r < 5 ? char('a' + rng() % 26) : char(rng() % 256);
+            if (printable)
+                bytes += r < 4 ? std::string(1, "*/\\\"'?$%#&^_~{}<>|`[]"[rng() % 21])
+                               : r < 5 ? std::string("\xe2\x80\xa8") : std::string(1, char(' ' + rng() % 95));
+            else
+                bytes += r < 3 ? specials[rng() % specials.size()] : r < 5 ? char('a' + rng() % 26) : char(rng() % 256);
         }
         run(bytes);
         ++count;
