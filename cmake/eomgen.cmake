@@ -16,15 +16,18 @@ function(eomgen_add_model target)
   set(include_dir "${CMAKE_BINARY_DIR}/eomgen_generated")
   set(out_dir "${include_dir}/eomgen/models")
   set(header "${out_dir}/${ARG_NAME}.hpp")
+  # generate leaves an unchanged header alone, so a rebuilt generator that writes the same code recompiles
+  # nothing that includes it; the stamp records that the header was brought up to date.
+  set(stamp "${out_dir}/${ARG_NAME}.hpp.stamp")
   add_custom_command(
-    OUTPUT "${header}"
+    OUTPUT "${stamp}"
+    BYPRODUCTS "${header}"
     COMMAND eomgen generate "${model_file}" --name "${ARG_NAME}" -o "${out_dir}"
-    # generate leaves an unchanged file alone; touch it so the build sees it as up to date.
-    COMMAND ${CMAKE_COMMAND} -E touch "${header}"
+    COMMAND ${CMAKE_COMMAND} -E touch "${stamp}"
     DEPENDS "${model_file}" eomgen
     COMMENT "eomgen: ${ARG_MODEL} -> eomgen/models/${ARG_NAME}.hpp"
     VERBATIM)
-  add_custom_target(${target}_header DEPENDS "${header}")
+  add_custom_target(${target}_header DEPENDS "${stamp}")
   add_library(${target} INTERFACE)
   add_dependencies(${target} ${target}_header)
   target_include_directories(${target} INTERFACE "${include_dir}")
