@@ -1800,6 +1800,11 @@ CheckReport Checker::run() {
         }
         if (p.row->display) previous_display = p.row;
     }
+    for (const TextProblem& tp : d_.problems) {
+        MathRow at;
+        at.offset = tp.offset;
+        if (row_selected(d_, at, selected, whole)) report.problems.push_back({d_.position(tp.offset), tp.message});
+    }
     collect_parts(chains);
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2) continue;  // an expression, not an equation

@@ -69,6 +69,12 @@ struct CheckReport {
     std::vector<std::string> sections;  ///< titles of the sections checked (empty: the whole file)
     std::vector<MapEntry> map;
     std::vector<EquationCheck> equations;
+    /// Delimiters of the checked sections that do not pair up (Derivation::problems), with their places.
+    struct Problem {
+        SourcePos where;
+        std::string message;
+    };
+    std::vector<Problem> problems;
 
     int count(Verdict v) const;
 };

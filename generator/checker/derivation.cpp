@@ -172,6 +172,37 @@ void split_display(const std::string& file, const Block& b, int block, std::vect
     }
 }
 
+/// What in s[begin, end) (a `$$` display's content) cannot be math: a '$' outside braces (`\text{$x$}` is
+/// math) or a blank line, described with its place; empty when there is neither.
+std::string prose_in_display(const Derivation& d, std::size_t begin, std::size_t end) {
+    const std::string& s = d.text;
+    int brace = 0;
+    for (std::size_t k = begin; k < end; ++k) {
+        const char c = s[k];
+        if (c == '\\') {
+            ++k;
+            continue;
+        }
+        if (c == '%') {  // a comment, to the end of its line
+            while (k + 1 < end && s[k + 1] != '\n') ++k;
+            continue;
+        }
+        if (c == '{') ++brace;
+        if (c == '}' && brace > 0) --brace;
+        const auto at = [&](std::size_t o) {
+            const SourcePos p = d.position(o);
+            return std::to_string(p.line) + ":" + std::to_string(p.column);
+        };
+        if (c == '$' && brace == 0) return "a '$' at " + at(k);
+        if (c == '\n') {
+            std::size_t j = k + 1;
+            while (j < end && (s[j] == ' ' || s[j] == '\t' || s[j] == '\r')) ++j;
+            if (j < end && s[j] == '\n') return "a blank line at " + at(k + 1);
+        }
+    }
+    return "";
+}
+
 }  // namespace
 
 SourcePos Derivation::position(std::size_t offset) const {
@@ -248,7 +279,17 @@ Derivation parse_derivation(std::string text, std::string path) {
         }
         if (starts_with(s, i, "$$")) {
             const std::size_t e = s.find("$$", i + 2);
-            if (e == std::string::npos) break;
+            if (e == std::string::npos) {
+                d.problems.push_back({i, "'$$' is not closed: no '$$' after it"});
+                i += 2;
+                continue;
+            }
+            if (const std::string prose = prose_in_display(d, i + 2, e); !prose.empty()) {
+                d.problems.push_back({i, "the display opened by this '$$' holds " + prose +
+                                             ": a '$$' is missing or extra; the text after it is read as prose"});
+                i += 2;
+                continue;
+            }
             blocks.push_back({i + 2, e, true});
             i = e + 2;
             continue;
@@ -260,6 +301,9 @@ Derivation parse_derivation(std::string text, std::string path) {
                 i = e + 2;
                 continue;
             }
+            d.problems.push_back({i, "'\\[' is not closed: no '\\]' after it"});
+            i += 2;
+            continue;
         }
         std::size_t after = 0;
         const std::string env = environment_at(s, i, "\\begin", after);
@@ -272,6 +316,9 @@ Derivation parse_derivation(std::string text, std::string path) {
                 i = e + closing.size();
                 continue;
             }
+            d.problems.push_back({i, "'\\begin{" + env + "}' is not closed: no '" + closing + "' after it"});
+            i = after;
+            continue;
         }
         if (c == '$' || starts_with(s, i, "\\(")) {
             const bool dollar = c == '$';
@@ -291,6 +338,11 @@ Derivation parse_derivation(std::string text, std::string path) {
                 break;
             }
             if (e == std::string::npos || e == from) {
+                // "$5" or "costs $" in prose is a dollar; "$x" up to a blank line is an unclosed formula.
+                if (e == std::string::npos && from < s.size() && !std::isspace(static_cast<unsigned char>(s[from])) &&
+                    !std::isdigit(static_cast<unsigned char>(s[from])))
+                    d.problems.push_back({i, dollar ? "'$' is not closed in its paragraph"
+                                                    : "'\\(' is not closed in its paragraph"});
                 i = from;
                 continue;
             }

@@ -40,12 +40,22 @@ struct MathRow {
     int section = -1;      ///< innermost section containing the row, -1 before the first heading
 };
 
+/// A math delimiter that does not pair up: an unclosed `$$`, `$`, `\[`, `\(` or environment, or a `$$`
+/// display that holds prose (a `$` or a blank line: the `$$` meant to close it is missing or extra).
+struct TextProblem {
+    std::size_t offset = 0;  ///< of the delimiter
+    std::string message;     ///< e.g. "'$$' is not closed"
+};
+
 struct Derivation {
     std::string path;
     std::string text;
     std::vector<std::size_t> line_starts;  ///< byte offset of each line's first character
     std::vector<Section> sections;
     std::vector<MathRow> rows;
+    /// Delimiters that do not pair up. The text after each is still read: a stray `$$` is passed over and
+    /// the math after it found as if it were not there.
+    std::vector<TextProblem> problems;
 
     /// Line and column of a byte offset in the file.
     SourcePos position(std::size_t offset) const;

@@ -459,7 +459,10 @@ class Parser {
                 if (d.is_zero()) fail(at, "division by zero");
                 product = product / d;
             } else if (starts_factor(t)) {
+                // Every factor consumes a token; one that did not would multiply forever.
+                const std::size_t at = pos_;
                 product = product * factor();
+                if (pos_ == at) fail(at, "unexpected " + describe(at));
             } else {
                 break;
             }
@@ -539,8 +542,10 @@ class Parser {
             case Tok::Other:
                 fail(at, "unexpected character " + describe(at));
             case Tok::Char:
-                if (t->text == ".") {
-                    if (peek_at(1) && peek_at(1)->kind == Tok::Digit) return number();
+                if (t->text == ".") {  // ".5"; "Fig. 1" is a full stop and a number
+                    if (pos_ + 1 < end_ && t_[pos_ + 1].kind == Tok::Digit &&
+                        t_[pos_ + 1].offset == t->offset + 1)
+                        return number();
                     fail(at, "unexpected '.'");
                 }
                 if (t->text == "(" || t->text == "[") return bracket_group();
@@ -581,6 +586,7 @@ class Parser {
             // text writes "10" as one run, so only adjacent characters join.
             if (pos_ < end_ && t_[pos_].offset != t_[pos_ - 1].offset + 1) break;
         }
+        if (pos_ == at) fail(at, "expected a number, found " + describe(at));
         if (digits.size() + frac.size() > 60) fail(at, "a number with too many digits");
         GiNaC::numeric v(0);
         for (char c : digits + frac) v = v * 10 + (c - '0');

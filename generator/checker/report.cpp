@@ -19,11 +19,18 @@ std::string summary_line(const CheckReport& r) {
     os << r.equations.size() << " equations: " << r.count(Verdict::Agrees) << " agree, "
        << r.count(Verdict::Disagrees) << " disagree, " << r.count(Verdict::NotComparable)
        << " not comparable";
+    if (!r.problems.empty())
+        os << "; " << r.problems.size() << (r.problems.size() == 1 ? " delimiter" : " delimiters")
+           << " that do not pair up";
     return os.str();
 }
 
+std::string place(const CheckReport& r, const SourcePos& where) {
+    return r.derivation_path + ":" + std::to_string(where.line) + ":" + std::to_string(where.column);
+}
+
 std::string place(const CheckReport& r, const EquationCheck& e) {
-    return r.derivation_path + ":" + std::to_string(e.where.line) + ":" + std::to_string(e.where.column);
+    return place(r, e.where);
 }
 
 std::string one_line(const std::string& s) {
@@ -51,6 +58,7 @@ std::string format_text(const CheckReport& r) {
     os << "\n";
     for (const std::string& s : r.sections) os << "section: " << s << "\n";
     for (const MapEntry& e : r.map) os << "map: " << e.name << " = " << e.value << "  (" << e.origin << ")\n";
+    for (const CheckReport::Problem& p : r.problems) os << place(r, p.where) << ": problem: " << p.message << "\n";
     std::string section = "\x01";
     for (const EquationCheck& e : r.equations) {
         if (e.section != section) {
@@ -94,6 +102,13 @@ std::string format_markdown(const CheckReport& r) {
         os << "\n";
     }
     os << "**Summary:** " << summary_line(r) << ".\n\n";
+    if (!r.problems.empty()) {
+        os << "## Delimiters that do not pair up\n\n";
+        for (const CheckReport::Problem& p : r.problems)
+            os << "- line " << p.where.line << ", column " << p.where.column << ": " << markdown_text(p.message)
+               << "\n";
+        os << "\n";
+    }
     if (r.count(Verdict::Disagrees) > 0) {
         os << "## Disagreements\n\n";
         for (const EquationCheck& e : r.equations) {
@@ -139,7 +154,13 @@ std::string format_json(const CheckReport& r) {
            << ", \"origin\": " << json_string(r.map[k].origin) << "}";
     os << "],\n  \"summary\": {\"equations\": " << r.equations.size()
        << ", \"agrees\": " << r.count(Verdict::Agrees) << ", \"disagrees\": " << r.count(Verdict::Disagrees)
-       << ", \"not_comparable\": " << r.count(Verdict::NotComparable) << "},\n  \"equations\": [";
+       << ", \"not_comparable\": " << r.count(Verdict::NotComparable)
+       << "},\n  \"problems\": [";
+    for (std::size_t k = 0; k < r.problems.size(); ++k)
+        os << (k ? ", " : "") << "{\"line\": " << r.problems[k].where.line
+           << ", \"column\": " << r.problems[k].where.column
+           << ", \"message\": " << json_string(r.problems[k].message) << "}";
+    os << "],\n  \"equations\": [";
     for (std::size_t k = 0; k < r.equations.size(); ++k) {
         const EquationCheck& e = r.equations[k];
         os << (k ? "," : "") << "\n    {\"line\": " << e.where.line << ", \"column\": " << e.where.column

@@ -74,3 +74,51 @@ TEST_CASE("derivation: never throws on odd text", "[checker]") {
         CHECK_NOTHROW(eomgen::checker::parse_derivation(t, "odd.md"));
     }
 }
+
+// Regression (shared/repro/check_hang_*.md): prose between two '$$' was read as one formula. Delimiters that
+// do not pair up are reported at their place, and the math around them is still found.
+TEST_CASE("derivation: delimiters that do not pair up are reported at their place", "[checker]") {
+    using eomgen::checker::parse_derivation;
+    auto messages = [](const eomgen::checker::Derivation& d) {
+        std::string all;
+        for (const auto& p : d.problems) {
+            const auto at = d.position(p.offset);
+            all += std::to_string(at.line) + ":" + std::to_string(at.column) + " " + p.message + "\n";
+        }
+        return all;
+    };
+    SECTION("a display holding a '$' is not a display; the inline math in it is read") {
+        const auto d = parse_derivation("$$\nSo $x = 1$ and\nthen $y = 2$.\n$$\n", "t.md");
+        INFO(messages(d));
+        REQUIRE(d.problems.size() == 2);
+        CHECK(d.position(d.problems[0].offset).line == 1);
+        CHECK(d.problems[0].message.find("a '$' at 2:4") != std::string::npos);
+        CHECK(d.position(d.problems[1].offset).line == 4);
+        CHECK(d.problems[1].message.find("not closed") != std::string::npos);
+        REQUIRE(d.rows.size() == 2);
+        CHECK(d.rows[0].text == "x = 1");
+        CHECK(d.rows[1].text == "y = 2");
+    }
+    SECTION("a blank line inside '$$' ... '$$'") {
+        const auto d = parse_derivation("Text\n$$ a = b\n\nmore text $$\n", "t.md");
+        REQUIRE(d.problems.size() == 2);
+        CHECK(d.problems[0].message.find("a blank line at 3:1") != std::string::npos);
+    }
+    SECTION("unclosed \\[, \\begin, $ and \\(") {
+        const auto d = parse_derivation("\\[ x = 1\n\n\\begin{align} a &= b\n\nSo $x = 1 and\n\nthen \\(y\n", "t.md");
+        INFO(messages(d));
+        REQUIRE(d.problems.size() == 4);
+        CHECK(d.position(d.problems[0].offset).line == 1);
+        CHECK(d.problems[1].message.find("\\end{align}") != std::string::npos);
+        CHECK(d.position(d.problems[2].offset).column == 4);
+        CHECK(d.problems[3].message.find("\\(") != std::string::npos);
+    }
+    SECTION("what is not a problem") {
+        for (const char* t : {"$$ a = b \\text{ for $x > 0$} $$", "a price of $5 and $", "\\$ x", "$$\na\n$$\n\n$b$",
+                              "costs 5 $ or so", "$$\na = b % planted[$b$ where $c$ belongs]\n$$"}) {
+            const auto d = parse_derivation(t, "t.md");
+            INFO(t << "\n" << messages(d));
+            CHECK(d.problems.empty());
+        }
+    }
+}

@@ -213,3 +213,13 @@ TEST_CASE("latex: rows split into chains of relations", "[checker][parser]") {
     CHECK(eomgen::checker::has_relation("a = b"));
     CHECK_FALSE(eomgen::checker::has_relation("\\left(a = b\\right)"));
 }
+
+// Regression (shared/repro/check_hang_*.md): "Fig. 1" in prose read as math made the parser multiply by a
+// number it never consumed, forever. A full stop before a spaced digit is a full stop.
+TEST_CASE("latex: a full stop before a spaced number ends the parse instead of looping", "[checker][parser]") {
+    Names n;
+    const Side s = n.fail("a m . 1 g");
+    CHECK(s.error.find("'.'") != std::string::npos);
+    CHECK(same(n.parse(".5 m"), n.m / 2));
+    n.fail("m . 5");  // a spaced ". 5" is not 0.5
+}
