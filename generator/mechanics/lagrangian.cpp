@@ -275,8 +275,43 @@ void warn_singular_configurations(const Model& model, Equations& eq) {
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j) nonzero += eq.M(unsigned(i), unsigned(j)).is_zero() ? 0 : 1;
     if (n > 3 && nonzero > n + 4) return;
+    // Only factors in the coordinates are reported, so parameters that enter M polynomially are set to
+    // distinct generic values first: with them symbolic, det M of T = ½(p₁+…+p₄₉)²(…) expands to 10⁵ terms
+    // and factor() ran for minutes. Parameters inside sin/cos stay symbols, to be named in the warning.
+    GiNaC::exmap generic;
+    {
+        std::function<bool(const GiNaC::ex&, const GiNaC::symbol&, bool)> in_function =
+            [&](const GiNaC::ex& e, const GiNaC::symbol& p, bool inside) {
+                if (GiNaC::is_a<GiNaC::symbol>(e)) return inside && e.is_equal(p);
+                const bool f = inside || GiNaC::is_exactly_a<GiNaC::function>(e);
+                for (std::size_t i = 0; i < e.nops(); ++i)
+                    if (in_function(e.op(i), p, f)) return true;
+                return false;
+            };
+        long prime = 1;
+        for (const Parameter& p : model.parameters) {
+            bool trig = false;
+            for (std::size_t i = 0; i < n && !trig; ++i)
+                for (std::size_t j = 0; j < n && !trig; ++j) trig = in_function(eq.M(unsigned(i), unsigned(j)), p.symbol, false);
+            if (trig) continue;
+            const auto is_prime = [](long k) {
+                for (long d = 2; d * d <= k; ++d)
+                    if (k % d == 0) return false;
+                return true;
+            };
+            do ++prime; while (!is_prime(prime));
+            generic[p.symbol] = GiNaC::numeric(prime, 97);
+        }
+    }
     // No trigonometric simplifier: of det, det with cos² → 1 − sin² and with sin² → 1 − cos², the shortest.
-    GiNaC::ex shortest = eq.M.determinant().expand();
+    GiNaC::ex shortest = GiNaC::ex_to<GiNaC::matrix>(eq.M.subs(generic)).determinant().expand();
+    // A budget: factoring a polynomial of this many terms would take longer than the rest of generate.
+    constexpr std::size_t kMaxDetTerms = 4000;
+    if (GiNaC::is_a<GiNaC::add>(shortest) && shortest.nops() > kMaxDetTerms) {
+        eq.warnings.push_back("det M not examined for singular configurations: too large to factor (" +
+                              std::to_string(shortest.nops()) + " terms)");
+        return;
+    }
     const GiNaC::ex x = GiNaC::wild(0);
     for (const GiNaC::ex& rule : {GiNaC::pow(GiNaC::cos(x), 2) == 1 - GiNaC::pow(GiNaC::sin(x), 2),
                                   GiNaC::pow(GiNaC::sin(x), 2) == 1 - GiNaC::pow(GiNaC::cos(x), 2)}) {
