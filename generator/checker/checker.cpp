@@ -2,6 +2,7 @@
  * motion. */
 #include "checker/checker.hpp"
 
+#include "checker/budget.hpp"
 #include "checker/latex_parser.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
@@ -14,6 +15,7 @@
 #include <complex>
 #include <cstdlib>
 #include <functional>
+#include <iomanip>
 #include <map>
 #include <optional>
 #include <random>
@@ -559,6 +561,14 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
         }
         GiNaC::ex v = subs.empty() ? side.value : side.value.subs(subs);
         v = resolve_operators(v);
+        // Every comparison expands or normalizes the side: refuse one too large for that up front.
+        if (const double terms = expanded_terms(v); terms > kMaxExpandedTerms) {
+            std::ostringstream os;
+            os << "too large to compare within the budget: " << m(side.source) << " expands to up to "
+               << std::setprecision(3) << terms << " terms (at most " << static_cast<long>(kMaxExpandedTerms) << ")";
+            p.problem = os.str();
+            return p;
+        }
         p.value = v;
         // Free names left over.
         ExSet left;
@@ -1213,6 +1223,14 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     for (const Prepared* p : {&a, &b}) r.notes.insert(r.notes.end(), p->notes.begin(), p->notes.end());
     std::sort(r.notes.begin(), r.notes.end());
     r.notes.erase(std::unique(r.notes.begin(), r.notes.end()), r.notes.end());
+    // Comparing the sides takes their difference and their ratio over a common denominator.
+    if (const double terms = expanded_terms(a.value - b.value); terms > kMaxExpandedTerms) {
+        std::ostringstream os;
+        os << "too large to compare within the budget: the two sides over a common denominator expand to up to "
+           << std::setprecision(3) << terms << " terms (at most " << static_cast<long>(kMaxExpandedTerms) << ")";
+        r.reason = os.str();
+        return r;
+    }
     double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
     if (rel == Relation::Approx) tol = std::max(tol, 1e-2);
     check_values(c, i, j, a, b, tol, r);
@@ -1482,7 +1500,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     // 3. An integral of motion with the model's initial state (also after squaring a square root).
     if (!has_acceleration(r_ex) && depends_on_state(r_ex)) {
         std::vector<std::pair<GiNaC::ex, std::string>> forms{{r_ex, ""}};
-        if (has_root(a.value) || has_root(b.value))
+        if ((has_root(a.value) || has_root(b.value)) &&
+            expanded_terms(a.value * a.value - b.value * b.value) <= kMaxExpandedTerms)
             forms.push_back({(a.value * a.value - b.value * b.value).expand(),
                              " after squaring both sides (the sign of the root is not checked)"});
         for (const auto& [form, how] : forms)
