@@ -1,11 +1,17 @@
 #!/usr/bin/env bash
 # Long fuzzing with libFuzzer, AddressSanitizer and UndefinedBehaviorSanitizer (clang, Debian's
 # libclang-rt-14-dev). Builds eomgen's libraries and the harnesses of tests/fuzz/ with clang into
-# build-fuzz/, then runs each harness for SECONDS (default 600) from its checked-in corpus.
-# Usage: tests/fuzz/run.sh [SECONDS]      Figures: docs/reliability.md.
+# build-fuzz/, then runs each harness for SECONDS (default 600) from its corpus (the checked-in one, the
+# project's models and derivation fixtures, and what earlier runs found) with its dictionary. An input
+# slower than 1 s (2 s for check) is a finding, as is a crash or a sanitizer report; findings are written
+# to build-fuzz/findings/<harness>/. Prints one summary line per harness: executions, coverage, findings.
+# Usage: tests/fuzz/run.sh [SECONDS] [HARNESS...]      Figures: docs/reliability.md.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds="${1:-600}"
+shift || true
+harnesses=("$@")
+((${#harnesses[@]})) || harnesses=(text_fields expression model_file latex check sim_values)
 need=(clang libclang-rt-14-dev)
 missing=()
 for p in "${need[@]}"; do dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p"); done
@@ -16,9 +22,39 @@ bash scripts/setup.sh >/dev/null   # the Debian packages eomgen itself needs
 flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -g -O1"
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_CXX_FLAGS="$flags -fsanitize=fuzzer-no-link" -DEOMGEN_BUILD_TESTS=OFF -DEOMGEN_FUZZ=ON >/dev/null
-cmake --build build-fuzz -j "$(nproc)" --target libfuzz_text_fields
-mkdir -p build-fuzz/corpus/text_fields
-cp -n tests/fuzz/corpus/text_fields/* build-fuzz/corpus/text_fields/ 2>/dev/null || true
-LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp" \
-  build-fuzz/tests/fuzz/libfuzzer/libfuzz_text_fields -max_total_time="$seconds" -max_len=400 -print_final_stats=1 \
-  -artifact_prefix=build-fuzz/ build-fuzz/corpus/text_fields
+cmake --build build-fuzz -j "$(nproc)" --target "${harnesses[@]/#/libfuzz_}"
+
+seeds_for() {  # the corpus directories a harness starts from
+  case "$1" in
+    model_file) echo models examples tests/cli/bad tests/security ;;
+    latex | check) echo tests/checker/fixtures tests/checker/fixtures/repro ;;
+    *) echo "tests/fuzz/corpus/$1" ;;
+  esac
+}
+summary=()
+for h in "${harnesses[@]}"; do
+  corpus="build-fuzz/corpus/$h"
+  findings="build-fuzz/findings/$h"
+  mkdir -p "$corpus" "$findings"
+  for d in $(seeds_for "$h"); do find "$d" -maxdepth 1 -type f ! -name '*.txt' ! -name '*.cpp' -exec cp -n {} "$corpus/" \; ; done
+  dict=()
+  case "$h" in
+    expression) dict=(-dict=tests/fuzz/dict/expression.dict) ;;
+    model_file | text_fields) dict=(-dict=tests/fuzz/dict/model_file.dict) ;;
+    latex | check) dict=(-dict=tests/fuzz/dict/latex.dict) ;;
+  esac
+  timeout=1
+  [[ "$h" == check ]] && timeout=2
+  log="build-fuzz/findings/$h.log"
+  set +e
+  LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp" \
+    "build-fuzz/tests/fuzz/libfuzzer/libfuzz_$h" -max_total_time="$seconds" -timeout="$timeout" -max_len=4096 \
+    -rss_limit_mb=4096 -print_final_stats=1 "${dict[@]}" -artifact_prefix="$findings/" "$corpus" >"$log" 2>&1
+  rc=$?
+  set -e
+  execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
+  cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || echo "?")
+  found=$(find "$findings" -type f | wc -l)
+  summary+=("$h: ${seconds} s, ${execs} executions, coverage ${cov} edges, corpus $(ls "$corpus" | wc -l), exit $rc, findings ${found} (log $log)")
+done
+printf '%s\n' "${summary[@]}"
