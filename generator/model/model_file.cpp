@@ -66,6 +66,8 @@ class SourceText {
     SourceLocation at(const toml::source_position& pos) const { return at_offset(offset_of(pos)); }
     SourceLocation at(const toml::node& node) const { return at(node.source().begin); }
     SourceLocation file_only() const { return {file_, 0, 0}; }
+    /// Where something the file lacks would go: just past its last byte.
+    SourceLocation end_of_file() const { return at_offset(text_.size()); }
 
   private:
     std::string_view text_;
@@ -433,7 +435,7 @@ class Loader {
         const toml::node* node = root.get(key);
         if (!node) {
             if (required)
-                fail(src_.file_only(), "missing [[" + key + "]]: a model needs at least one coordinate");
+                fail(src_.end_of_file(), "missing [[" + key + "]]: a model needs at least one coordinate");
             return result;
         }
         const toml::array* array = node->as_array();
@@ -529,7 +531,7 @@ class Loader {
             return;
         }
         if (!node)
-            fail(src_.file_only(), "missing [lagrangian] with the kinetic energy T (and potential energy V), "
+            fail(src_.end_of_file(), "missing [lagrangian] with the kinetic energy T (and potential energy V), "
                                    "or [[bodies]]");
         const toml::table* table = node->as_table();
         if (!table)

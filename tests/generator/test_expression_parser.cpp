@@ -187,6 +187,7 @@ TEST_CASE("errors carry the offset of the offending character", "[parser]") {
         {"1/0", 1, "division by zero"},
         {"m + log(0)", 4, "division by zero"},
         {"0^0", 1, "undefined"},
+        {"0^-3E03", 1, "division by zero (0 to a negative power)"},  // fuzz: GiNaC leaked the power
         {"1.5.2", 3, "a second '.'"},
         {"1e401", 0, "exponent of number out of range"},
         {"9^9^9", 1, "power too large"},

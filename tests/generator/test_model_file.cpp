@@ -13,6 +13,7 @@
 namespace {
 
 using Catch::Matchers::Contains;
+using Catch::Matchers::Matches;
 using Catch::Matchers::StartsWith;
 
 bool same(const GiNaC::ex& a, const GiNaC::ex& b) {
@@ -176,8 +177,9 @@ TEST_CASE("missing keys, wrong types and unknown keys", "[model]") {
                    StartsWith("test.toml:4:1: missing key 'value' in [[parameters]]"));
     }
     SECTION("missing coordinates, [lagrangian] and T") {
-        CHECK_THAT(error_of(kParameter + kLagrangian), StartsWith("test.toml: missing [[coordinates]]"));
-        CHECK_THAT(error_of(kCoordinate + kParameter), StartsWith("test.toml: missing [lagrangian]"));
+        // Placed at the end of the file, where the missing section would go.
+        CHECK_THAT(error_of(kParameter + kLagrangian), Matches("test\\.toml:[0-9]+:1: missing \\[\\[coordinates\\]\\].*"));
+        CHECK_THAT(error_of(kCoordinate + kParameter), Matches("test\\.toml:[0-9]+:1: missing \\[lagrangian\\].*"));
         CHECK_THAT(error_of(kCoordinate + kParameter + "[lagrangian]\nV = \"m\"\n"),
                    StartsWith("test.toml:6:1: missing key 'T' in [lagrangian]"));
     }
