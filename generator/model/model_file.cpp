@@ -299,7 +299,7 @@ class Loader {
             declarations.push_back({c.name, "coordinate", c.where, order(c.where)});
         for (const auto& p : parameters)
             declarations.push_back({p.name, "parameter", p.where, order(p.where)});
-        check_names(declarations, coordinates);
+        check_names(declarations, coordinates, constraints);
 
         SymbolTable symbols;
         symbols.symbols["t"] = model.t;
@@ -459,9 +459,26 @@ class Loader {
     }
 
     /// Each name valid and not reserved, and no name declared twice; reported in file order.
-    void check_names(std::vector<Declaration> declarations, const std::vector<Entry>& coordinates) const {
+    void check_names(std::vector<Declaration> declarations, const std::vector<Entry>& coordinates,
+                     const std::vector<Entry>& constraints) const {
         std::vector<std::string> coordinate_names;
         for (const auto& c : coordinates) coordinate_names.push_back(c.name);
+        // Names eomgen derives and prints beside the declared ones (eomgen show, the CSV's columns): a
+        // declared name equal to one would make them ambiguous.
+        std::map<std::string, std::string> derived;
+        for (const auto& c : coordinates)
+            derived["p_" + c.name] = "the name of the momentum of coordinate '" + c.name + "'";
+        for (const auto& c : constraints) {
+            derived["lambda_" + c.name] = "the name of the multiplier of constraint '" + c.name + "'";
+            derived["residual_" + c.name] = "the name of the residual of constraint '" + c.name + "'";
+        }
+        for (const auto& d : declarations) {
+            auto it = derived.find(d.name);
+            if (it != derived.end() && d.kind != "model")
+                fail(d.where, "cannot use '" + d.name + "' as a " + d.kind + " name: it is " + it->second);
+            if (d.kind == "coordinate" && d.name == "energy")
+                fail(d.where, "cannot use 'energy' as a coordinate name: it is the name of the energy column");
+        }
         std::stable_sort(declarations.begin(), declarations.end(),
                          [](const Declaration& a, const Declaration& b) { return a.order < b.order; });
         std::map<std::string, const Declaration*> seen;
