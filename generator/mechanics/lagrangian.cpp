@@ -440,12 +440,19 @@ Equations derive_equations(const Model& model) {
         lu.setThreshold(1e-10);
         if (lu.rank() == static_cast<Eigen::Index>(n)) {
             singular_everywhere = false;
+            // A kinetic energy is positive for every motion: a negative eigenvalue means some velocity
+            // gives T < 0, a sign slip in T, and every trajectory of it would be wrong.
             Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(last);
             if (es.eigenvalues().minCoeff() <= 0) {
+                const Eigen::VectorXd v = es.eigenvectors().col(0);
                 std::ostringstream os;
-                os << "the mass matrix is not positive definite at a sample point (eigenvalues "
-                   << es.eigenvalues().transpose() << "): check the signs in T";
-                eq.warnings.push_back(os.str());
+                os << "T is not positive for every velocity: at a sample point (parameters and coordinates "
+                      "between 0.5 and 1.5) the mass matrix ∂²T/∂q̇² has the eigenvalue "
+                   << es.eigenvalues()(0) << ", so T < 0 for q̇ along (";
+                for (std::size_t i = 0; i < n; ++i)
+                    os << (i ? ", " : "") << model.coordinates[i].name << "' = " << v(Eigen::Index(i));
+                os << "): check the signs in T";
+                throw ModelError(model.T.where, os.str());
             }
         }
     }
