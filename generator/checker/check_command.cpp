@@ -5,6 +5,7 @@
 #include "checker/report.hpp"
 #include "checker/symbol_map.hpp"
 #include "model/model_file.hpp"
+#include "output/atomic_file.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -71,10 +72,10 @@ int CheckCommand::run() const {
     if (output_.empty()) {
         std::cout << text;
     } else {
-        std::ofstream out(output_, std::ios::binary);
-        out << text;
-        if (!out) {
-            std::cerr << "eomgen check: cannot write " << output_ << "\n";
+        try {  // a report appears whole or not at all (an interrupted check leaves no half of one)
+            output::write_atomically(output_, text);
+        } catch (const output::WriteError& e) {
+            std::cerr << "eomgen check: " << e.what() << "\n";
             return 3;
         }
     }

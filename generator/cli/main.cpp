@@ -7,6 +7,7 @@
 #include "model/families.hpp"
 #include "model/model_file.hpp"
 #include "model/names.hpp"
+#include "output/atomic_file.hpp"
 #include "text/escape.hpp"
 
 #include <CLI/CLI.hpp>
@@ -36,25 +37,12 @@ struct IoError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// Writes `text` to `path` through a temporary in the same directory and a rename, so a reader never
-/// sees a half-written file and a failure leaves the old file in place.
+/// output::write_atomically, its failures reported as IoError (exit 3).
 void write_atomically(const std::filesystem::path& path, const std::string& text) {
-    const std::filesystem::path tmp = path.string() + ".tmp." + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp, std::ios::binary);
-        if (!out) throw IoError("cannot write " + tmp.string());
-        out << text;
-        out.flush();
-        if (!out) {
-            std::filesystem::remove(tmp);
-            throw IoError("cannot write " + tmp.string());
-        }
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::filesystem::remove(tmp);
-        throw IoError("cannot rename " + tmp.string() + " to " + path.string() + ": " + ec.message());
+    try {
+        eomgen::output::write_atomically(path, text);
+    } catch (const eomgen::output::WriteError& e) {
+        throw IoError(e.what());
     }
 }
 
