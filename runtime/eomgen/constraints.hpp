@@ -17,6 +17,22 @@
 
 namespace eomgen {
 
+namespace detail {
+
+/// The weight w of the augmented mass matrix M + w AᵀA: M's scale over A's, so that neither swamps the other.
+template <class MatM, class MatA>
+typename MatM::Scalar augmentation_weight(const MatM& M, const MatA& A) {
+    using S = typename MatM::Scalar;
+    using std::abs;
+    S m = 0, a = 0;
+    for (Eigen::Index i = 0; i < M.rows(); ++i) m = std::max(m, S(abs(M(i, i))));
+    for (Eigen::Index k = 0; k < A.rows(); ++k) a = std::max(a, S(A.row(k).squaredNorm()));
+    if (!(m > 0)) m = S(1);
+    return a > 0 ? m / a : S(1);
+}
+
+}  // namespace detail
+
 /**
  * Solves the constrained equations of motion (Goldstein §2.4; Bauchau & Laulusa, J. Comput. Nonlinear
  * Dynam. 3 (2008), "Review of contemporary approaches for constraint enforcement in multibody systems")
@@ -24,8 +40,16 @@ namespace eomgen {
  * by a Schur complement on M's Cholesky factor, never an LDLᵀ of the indefinite KKT matrix:
  * Y = M⁻¹Aᵀ, S = A Y (symmetric positive definite when A has full row rank), λ = S⁻¹(γ − A M⁻¹ f),
  * q̈ = M⁻¹(f + Aᵀλ). Sizes: M n×n, f n, A m×n, γ m; outputs q̈ (n) and λ (m).
- * Throws SingularMassMatrix when M is not positive definite, SingularConstraints when S is singular
- * (A lost rank), NonFiniteState for non-finite inputs; `t` and `x` go into the message.
+ *
+ * M may be singular where the constraints supply what it lacks: a coordinate driven by a rheonomic
+ * constraint (a hoop spun at a prescribed rate) has no inertia of its own where the bead sits on the axis.
+ * Then the same equations are solved with the augmented M̃ = M + w AᵀA and f̃ = f + w Aᵀγ (adding
+ * w AᵀA q̈ = w Aᵀγ to both sides changes neither q̈ nor λ), which is positive definite exactly when M is
+ * positive definite on the motions the constraints allow (Bauchau & Laulusa §4, the augmented Lagrangian
+ * formulation). Only a singular constrained system is an error.
+ *
+ * Throws SingularMassMatrix when M is not positive definite on the null space of A, SingularConstraints
+ * when S is singular (A lost rank), NonFiniteState for non-finite inputs; `t` and `x` go into the message.
  */
 template <class MatM, class VecF, class MatA, class VecG, class VecQdd, class VecL, class Scalar, class VecX>
 void solve_constrained(const MatM& M, const VecF& f, const MatA& A, const VecG& gamma, VecQdd& qdd, VecL& lambda,
@@ -33,12 +57,22 @@ void solve_constrained(const MatM& M, const VecF& f, const MatA& A, const VecG& 
     using S = typename MatM::Scalar;
     if (!M.allFinite() || !f.allFinite() || !A.allFinite() || !gamma.allFinite())
         throw NonFiniteState(describe_state("mass matrix, forcing or constraints are not finite", t, x), double(t));
-    Eigen::LLT<typename MatM::PlainObject> llt(M);
     const S eps = std::numeric_limits<S>::epsilon();
-    if (llt.info() != Eigen::Success || !(llt.rcond() > S(M.rows()) * eps))
-        throw SingularMassMatrix(describe_state("mass matrix is singular or not positive definite", t, x), double(t));
+    Eigen::LLT<typename MatM::PlainObject> llt(M);
+    auto fine = [&] { return llt.info() == Eigen::Success && llt.rcond() > S(M.rows()) * eps; };
+    typename VecF::PlainObject rhs = f;
+    if (!fine()) {
+        const S w = detail::augmentation_weight(M, A);
+        llt.compute(M + w * A.transpose() * A);
+        if (!fine())
+            throw SingularMassMatrix(
+                describe_state("mass matrix is singular or not positive definite on the motions the constraints allow",
+                               t, x),
+                double(t));
+        rhs += w * (A.transpose() * gamma);
+    }
     const auto Y = llt.solve(A.transpose()).eval();   // n×m
-    const auto Minv_f = llt.solve(f).eval();
+    const auto Minv_f = llt.solve(rhs).eval();
     const auto schur = (A * Y).eval();                 // m×m
     Eigen::LLT<std::decay_t<decltype(schur)>> s_llt(schur);
     if (s_llt.info() != Eigen::Success || !(s_llt.rcond() > S(schur.rows()) * eps * S(1e3)))
@@ -83,7 +117,12 @@ namespace detail {
 template <class MatM, class MatB, class VecR>
 Eigen::Matrix<typename MatM::Scalar, MatM::RowsAtCompileTime, 1> metric_correction(const MatM& M, const MatB& B,
                                                                                      const VecR& r) {
+    // Where M is singular (see solve_constrained) the metric is M + w BᵀB: positive definite, and the
+    // correction still zeroes B Δ + r.
     Eigen::LLT<typename MatM::PlainObject> llt(M);
+    using Sc = typename MatM::Scalar;
+    if (llt.info() != Eigen::Success || !(llt.rcond() > Sc(M.rows()) * std::numeric_limits<Sc>::epsilon()))
+        llt.compute(M + augmentation_weight(M, B) * B.transpose() * B);
     const auto Y = llt.solve(B.transpose()).eval();
     const auto S = (B * Y).eval();
     return -Y * S.ldlt().solve(r);
