@@ -5,7 +5,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2 libtomlplusplus-dev
-          libcli11-dev libfmt-dev libbenchmark-dev libboost-dev gnuplot-nox)
+          libcli11-dev libfmt-dev libbenchmark-dev libboost-dev gnuplot-nox
+          dpkg-dev file)  # the last two: cpack -G DEB (dpkg-shlibdeps, and file to find the binaries)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

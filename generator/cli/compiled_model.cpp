@@ -32,6 +32,21 @@ namespace eomgen::cli {
 namespace fs = std::filesystem;
 namespace {
 
+/// The runtime's headers: beside an installed eomgen (<prefix>/bin/eomgen, <prefix>/include/eomgen/), else
+/// those of the source tree this eomgen was built from.
+const std::string& runtime_include_dir() {
+    static const std::string dir = [] {
+        std::error_code ec;
+        const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+        if (!ec) {
+            const fs::path installed = exe.parent_path().parent_path() / "include";
+            if (fs::exists(installed / "eomgen" / "simulation.hpp", ec)) return installed.string();
+        }
+        return std::string(EOMGEN_RUNTIME_INCLUDE_DIR);
+    }();
+    return dir;
+}
+
 const std::vector<std::string> kFlags = {"-std=c++17", "-O2", "-DNDEBUG", "-fPIC", "-shared",
                                          "-fvisibility=hidden"};
 
@@ -95,7 +110,7 @@ std::string cache_key(const CompileRequest& r, const std::vector<std::string>& c
     h.add(r.model_text);
     h.add(r.model_name);
     std::vector<fs::path> runtime;
-    for (const auto& e : fs::directory_iterator(fs::path(EOMGEN_RUNTIME_INCLUDE_DIR) / "eomgen"))
+    for (const auto& e : fs::directory_iterator(fs::path(runtime_include_dir()) / "eomgen"))
         runtime.push_back(e.path());
     std::sort(runtime.begin(), runtime.end());
     for (const fs::path& p : runtime) {
@@ -161,7 +176,7 @@ double build(const CompileRequest& r, const std::string& key, const fs::path& di
     write_file(dir / "model.cpp", entry_source(r.model_name, key));
     std::vector<std::string> argv = compiler_command();
     argv.insert(argv.end(), kFlags.begin(), kFlags.end());
-    for (const std::string& inc : {std::string(EOMGEN_RUNTIME_INCLUDE_DIR), std::string(EOMGEN_EIGEN_INCLUDE_DIR)})
+    for (const std::string& inc : {runtime_include_dir(), std::string(EOMGEN_EIGEN_INCLUDE_DIR)})
         argv.push_back("-I" + inc);
     argv.push_back("-o");
     argv.push_back((dir / "model.so").string());
