@@ -6,9 +6,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${EOMGEN_SANITIZE_BUILD_DIR:-build-sanitize}"
-EOMGEN_BUILD_DIR="$build" bash scripts/setup.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DEOMGEN_SANITIZE=address,undefined -DEOMGEN_BUILD_BENCH=OFF
+# Also for the build: it runs the sanitized eomgen (model headers) and the test programs (test discovery).
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0"
+EOMGEN_BUILD_DIR="$build" bash scripts/setup.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DEOMGEN_SANITIZE=address,undefined -DEOMGEN_BUILD_BENCH=OFF
 ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
