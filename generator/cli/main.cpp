@@ -11,7 +11,9 @@
 #include "text/escape.hpp"
 
 #include <CLI/CLI.hpp>
+#include <cln/version.h>
 #include <fmt/format.h>
+#include <ginac/version.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -290,7 +292,10 @@ int main(int argc, char** argv) {
     CLI::App app{"eomgen: equations of motion from a Lagrangian, as fast C++.\n"
                  "Exit codes: 0 ok, 1 model error (file:line:col: message), 2 usage (run: or the simulation failed),\n"
                  "3 file I/O or cache, 4 the C++ compiler is missing or failed (run), 5 check: a disagreement."};
-    app.set_version_flag("--version", std::string("eomgen ") + EOMGEN_VERSION);
+    app.set_version_flag("--version", fmt::format("eomgen {} (GiNaC {}.{}.{}, CLN {}.{}.{})", EOMGEN_VERSION,
+                                                  GINACLIB_MAJOR_VERSION, GINACLIB_MINOR_VERSION,
+                                                  GINACLIB_MICRO_VERSION, CL_VERSION_MAJOR, CL_VERSION_MINOR,
+                                                  CL_VERSION_PATCHLEVEL));
     app.require_subcommand(1);
 
     std::vector<std::string> gen_models;
@@ -320,11 +325,26 @@ int main(int argc, char** argv) {
     const eomgen::checker::CheckCommand check(app);  // `eomgen check MODEL DERIVATION.md`, see docs/checker.md
     eomgen::cli::RunCommand run(app);               // `eomgen run MODEL.toml`, `eomgen cache clear`
 
+    // A mistyped command: name it, with the closest one (CLI11 would say only "A subcommand is required").
+    if (argc >= 2 && argv[1][0] != '-') {
+        std::vector<std::string> commands;
+        for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+            commands.push_back(sub->get_name());
+        if (std::find(commands.begin(), commands.end(), argv[1]) == commands.end()) {
+            const std::string near = eomgen::closest_name(argv[1], commands);
+            std::cerr << "eomgen: unknown command '" << argv[1] << "'"
+                      << (near.empty() ? "" : "; did you mean '" + near + "'?") << " (eomgen --help lists them)\n";
+            return kExitUsage;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
+        // A model file, derivation or map file that is not there is a file problem (3), not a usage one.
+        const bool missing_file =
+            dynamic_cast<const CLI::ValidationError*>(&e) && std::string(e.what()).find("does not exist") != std::string::npos;
         const int code = app.exit(e);
-        return code == 0 ? kExitOk : kExitUsage;
+        return code == 0 ? kExitOk : missing_file ? kExitIo : kExitUsage;
     }
 
     try {

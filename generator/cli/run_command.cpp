@@ -98,7 +98,8 @@ int RunCommand::run_model() {
     }
     progress("integrating");
     const int code = compiled.run(&o);
-    if (code != eomgen::sim::kExitOk) return 2;  // a bad option value or a failed simulation, said on stderr
+    if (code == eomgen::sim::kExitOutput) return 3;  // the CSV could not be written, said on stderr
+    if (code != eomgen::sim::kExitOk) return 2;      // a bad option value or a failed simulation, said on stderr
 
     if (!plot_.empty()) {
         PlotRequest p;

@@ -13,9 +13,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -23,12 +25,44 @@
 namespace eomgen::sim {
 
 /// What run() returns: the caller maps these to its own exit codes.
-constexpr int kExitOk = 0, kExitUsage = 1, kExitSimulation = 2;
+constexpr int kExitOk = 0, kExitUsage = 1, kExitSimulation = 2, kExitOutput = 3;
 
 /// A bad option value (unknown parameter or state, unreadable number, method without --dt, ...).
 struct UsageError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
+
+/// The CSV cannot be written (its directory does not exist, no permission, a full disk).
+struct OutputError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+/// "; did you mean 'x'?" for the candidate closest to `name` in edit distance (at most a third of its
+/// length, at least 1), or "" when none is that close.
+template <class Names>
+std::string did_you_mean(const std::string& name, const Names& candidates) {
+    std::string best;
+    std::size_t best_distance = std::max<std::size_t>(1, name.size() / 3) + 1;
+    for (const auto& c : candidates) {
+        const std::string cand(c);
+        std::vector<std::size_t> row(cand.size() + 1);
+        for (std::size_t j = 0; j <= cand.size(); ++j) row[j] = j;
+        for (std::size_t i = 1; i <= name.size(); ++i) {
+            std::size_t diagonal = row[0];
+            row[0] = i;
+            for (std::size_t j = 1; j <= cand.size(); ++j) {
+                const std::size_t up = row[j];
+                row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (name[i - 1] == cand[j - 1] ? 0 : 1)});
+                diagonal = up;
+            }
+        }
+        if (row[cand.size()] < best_distance) {
+            best_distance = row[cand.size()];
+            best = cand;
+        }
+    }
+    return best.empty() ? "" : "; did you mean '" + best + "'?";
+}
 
 /// Models with constraints have n_constraints, multipliers() and constraint_residuals().
 template <class M, class = void>
@@ -77,21 +111,28 @@ inline double parse_value(const std::string& text) {
         if (!s.empty() && s.back() == '*') s.pop_back();
         if (s.empty()) s = "1";
     }
+    double result = 0;
     try {
         std::size_t used = 0;
         const double k = std::stod(s, &used);
         if (used != s.size()) throw std::invalid_argument("");
-        return sign * k * value / divisor;
+        result = sign * k * value / divisor;
     } catch (const std::exception&) {
         throw UsageError("cannot read the number '" + text + "'");
     }
+    if (!std::isfinite(result)) throw UsageError("'" + text + "' is not a finite number");
+    return result;
 }
 
 inline std::pair<std::string, double> parse_assignment(const std::string& text, const char* option) {
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0)
         throw UsageError(std::string(option) + " " + text + ": expected NAME=VALUE");
-    return {text.substr(0, eq), parse_value(text.substr(eq + 1))};
+    try {
+        return {text.substr(0, eq), parse_value(text.substr(eq + 1))};
+    } catch (const UsageError& e) {
+        throw UsageError(std::string(option) + " " + text + ": " + e.what());
+    }
 }
 
 template <class Array>
@@ -146,22 +187,53 @@ void write_samples(const Options& o, const typename M::Params& params,
     std::cout << "csv:     " << o.csv << " (" << samples.size() << " rows)\n";
 }
 
+/// The options' values that no model accepts, refused before anything runs (UsageError, OutputError).
+inline void check_options(const Options& o) {
+    auto finite = [](double v) { return std::isfinite(v); };
+    if (!finite(o.t_end) || !(o.t_end > 0)) throw UsageError("--t-end must be a positive number");
+    if (!finite(o.rtol) || !finite(o.atol) || o.rtol < 0 || o.atol < 0 || (o.rtol == 0 && o.atol == 0))
+        throw UsageError("--rtol and --atol must be at least 0 and not both 0");
+    if (o.samples < 1) throw UsageError("--samples must be at least 1 (sample intervals on [0, t_end])");
+    if (o.max_steps < 1) throw UsageError("--max-steps must be at least 1");
+    if (o.method == "rk4" || o.method == "symplectic") {
+        if (!finite(o.dt) || !(o.dt > 0)) throw UsageError("--method " + o.method + " needs --dt, a positive step");
+        const double steps = std::ceil(o.t_end / o.dt);
+        if (steps > double(o.max_steps)) {
+            std::ostringstream os;
+            os << "--dt " << o.dt << " would take " << steps << " steps to reach --t-end " << o.t_end
+               << ", more than --max-steps " << o.max_steps;
+            throw UsageError(os.str());
+        }
+    }
+    if (!o.csv.empty()) {
+        namespace fs = std::filesystem;
+        const fs::path dir = fs::path(o.csv).parent_path();
+        std::error_code ec;
+        if (!dir.empty() && !fs::is_directory(dir, ec))
+            throw OutputError("--csv " + o.csv + ": the directory '" + dir.string() + "' does not exist");
+        if (fs::is_directory(o.csv, ec)) throw OutputError("--csv " + o.csv + ": is a directory");
+    }
+}
+
 template <class M>
 int run(const Options& o) {
     using State = typename M::State;
     using Config = typename M::Config;
+    check_options(o);
     typename M::Params params;
     for (const std::string& s : o.set) {
         const auto [name, v] = parse_assignment(s, "--set");
         if (!M::set_param(params, name, v))
-            throw UsageError("--set " + s + ": " + M::name + " has no parameter '" + name + "' (it has " +
-                             list(M::param_names) + ")");
+            throw UsageError("--set " + s + ": " + M::name + " has no parameter '" + name + "'" +
+                             did_you_mean(name, M::param_names) + " (it has " + list(M::param_names) + ")");
     }
     State x0 = M::default_state();
     for (const std::string& s : o.init) {
         const auto [name, v] = parse_assignment(s, "--init");
         const int i = index_of(M::state_names, name);
-        if (i < 0) throw UsageError("--init " + s + ": no state '" + name + "' (states: " + list(M::state_names) + ")");
+        if (i < 0)
+            throw UsageError("--init " + s + ": no state '" + name + "'" + did_you_mean(name, M::state_names) +
+                             " (states: " + list(M::state_names) + ")");
         x0(i) = v;
     }
     auto h = [&params](double t, const State& x) {
@@ -181,9 +253,11 @@ int run(const Options& o) {
     double h0 = h(0, x0);
     double max_drift = 0;
     std::vector<eomgen::Sample<State>> samples;
-    auto track = [&](double t, const State& x) {
-        max_drift = std::max(max_drift, std::abs(h(t, x) - h0) / std::max(std::abs(h0), 1e-300));
+    // Relative to h(0), or absolute where h(0) is 0 (or nearly: a relative error would be meaningless).
+    auto drift = [&h0](double value) {
+        return std::abs(value - h0) / (std::abs(h0) < 1e-12 ? 1.0 : std::abs(h0));
     };
+    auto track = [&](double t, const State& x) { max_drift = std::max(max_drift, drift(h(t, x))); };
 
     std::vector<double> sample_times;
     for (int k = 0; k <= o.samples; ++k) sample_times.push_back(o.t_end * k / std::max(o.samples, 1));
@@ -197,7 +271,7 @@ int run(const Options& o) {
         if (o.method == "symplectic") throw UsageError("--until needs --method dopri5 or rk4 (events use dense output)");
         const auto [name, value] = parse_assignment(o.until, "--until");
         const int i = index_of(M::state_names, name);
-        if (i < 0) throw UsageError("--until " + o.until + ": no state '" + name + "' (states: " +
+        if (i < 0) throw UsageError("--until " + o.until + ": no state '" + name + "'" + did_you_mean(name, M::state_names) + " (states: " +
                                     list(M::state_names) + ")");
         const double target = value;
         events.push_back({o.until, [i, target](const double&, const State& x) { return x(i) - target; },
@@ -224,8 +298,7 @@ int run(const Options& o) {
                 eomgen::integrate_constrained<M>(params, 0.0, x0, sample_times, opt, o.project_initial, events);
             // Energy drift from the (possibly projected) start, not from the state given.
             h0 = h(r.run.samples.front().t, r.run.samples.front().x);
-            for (const auto& s : r.run.samples)
-                max_drift = std::max(max_drift, std::abs(h(s.t, s.x) - h0) / std::max(std::abs(h0), 1e-300));
+            for (const auto& s : r.run.samples) max_drift = std::max(max_drift, drift(h(s.t, s.x)));
             samples = r.run.samples;
             typename M::ConstraintVector lambda;
             M::multipliers(r.run.t, r.run.x, params, lambda);
@@ -290,15 +363,21 @@ int run(const Options& o) {
     std::cout.precision(15);
     std::cout << "t:       " << t_final << "\n";
     for (int i = 0; i < M::nx; ++i) std::cout << "  " << M::state_names[std::size_t(i)] << " = " << x_final(i) << "\n";
-    std::cout << "energy h: " << h0 << " at t = 0, " << h(t_final, x_final) << " at the end; max |dh|/|h0| = "
-              << max_drift << (M::explicit_time ? "  (L depends on t: h need not be conserved)" : "") << "\n";
-    write_samples<M>(o, params, samples);
+    std::cout << "energy h: " << h0 << " at t = 0, " << h(t_final, x_final) << " at the end; "
+              << (std::abs(h0) < 1e-12 ? "max |dh| = " : "max |dh|/|h0| = ") << max_drift
+              << (std::abs(h0) < 1e-12 ? "  (absolute: h0 is 0)" : "")
+              << (M::explicit_time ? "  (L depends on t: h need not be conserved)" : "") << "\n";
+    try {
+        write_samples<M>(o, params, samples);
+    } catch (const std::runtime_error& e) {
+        throw OutputError(std::string("cannot write the CSV: ") + e.what());
+    }
     return kExitOk;
 }
 
 
-/// run() with its errors reported on stderr as `<program>: message`; returns kExitOk, kExitUsage or
-/// kExitSimulation.
+/// run() with its errors reported on stderr as `<program>: message`; returns kExitOk, kExitUsage,
+/// kExitSimulation or kExitOutput.
 template <class M>
 int run_reporting(const Options& o, const char* program) {
     try {
@@ -306,6 +385,9 @@ int run_reporting(const Options& o, const char* program) {
     } catch (const UsageError& e) {
         std::cerr << program << ": " << e.what() << "\n";
         return kExitUsage;
+    } catch (const OutputError& e) {
+        std::cerr << program << ": " << e.what() << "\n";
+        return kExitOutput;
     } catch (const eomgen::SimulationError& e) {
         std::cerr << program << ": simulation failed: " << e.what() << "\n";
         return kExitSimulation;
