@@ -534,6 +534,7 @@ class Parser {
             const GiNaC::numeric& b = GiNaC::ex_to<GiNaC::numeric>(base);
             // GiNaC would throw from inside pow() and leak the half-built power.
             if (b.is_zero() && e.is_negative()) throw ExpressionError(offset, "division by zero (0 to a negative power)");
+            if (b.is_zero() && e.is_zero()) throw ExpressionError(offset, "0^0 is undefined");
             if (b.is_zero() || abs(b).is_equal(1)) return;
         }
         double base_bits = 1;
