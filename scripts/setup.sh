@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what eomgen needs from Debian's packages (only what is missing), then configures and builds.
-# Usage: scripts/setup.sh [extra cmake -D options...]   (build directory: $EOMGEN_BUILD_DIR, default build/)
+# Usage: scripts/setup.sh [--no-build] [extra cmake -D options...]
+#        (build directory: $EOMGEN_BUILD_DIR, default build/; --no-build: install and configure only)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,5 +21,10 @@ if ((${#missing[@]})); then
 fi
 
 build="${EOMGEN_BUILD_DIR:-build}"
+no_build=0
+if [[ "${1:-}" == "--no-build" ]]; then  # configure only (the caller builds what it needs)
+  no_build=1
+  shift
+fi
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
-cmake --build "$build" -j "$(nproc)"
+((no_build)) || cmake --build "$build" -j "$(nproc)"
