@@ -9,6 +9,10 @@
 //   1/2*m*w*g*cos(psi)*sin(theta) + 1/3*m*w^2*psi'' = 0
 //
 // Conserved: h (L does not depend on t explicitly)
+//
+// Outputs ([outputs]):
+//   z_c = 1/2*w*sin(theta)*sin(psi) + 1/2*h*cos(theta)  [m]
+//   v_edge = w*psi'  [m/s]
 #pragma once
 
 #include "eomgen/linear_solve.hpp"
@@ -31,6 +35,7 @@ struct Model {
     static constexpr int nx = 2;
     static constexpr int n_params = 5;
     static constexpr int n_conserved = 1;
+    static constexpr int n_outputs = 2;
     static constexpr bool explicit_time = false;
     /// Generalized forces Q or dissipation R act (the variational integrator does not apply).
     static constexpr bool has_generalized_forces = false;
@@ -39,6 +44,7 @@ struct Model {
     using State = Eigen::Matrix<Scalar, nx, 1>;
     using MassMatrix = Eigen::Matrix<Scalar, nq, nq>;
     using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;
+    using Outputs = Eigen::Matrix<Scalar, n_outputs, 1>;
 
     /// Parameters with the model file's defaults.
     struct Params {
@@ -53,6 +59,7 @@ struct Model {
     static constexpr std::array<const char*, nx> state_names{"psi", "psi_dot"};
     static constexpr std::array<const char*, n_params> param_names{"m", "w", "h", "g", "theta"};
     static constexpr std::array<const char*, n_conserved> conserved_names{"h"};
+    static constexpr std::array<const char*, n_outputs> output_names{"z_c", "v_edge"};
 
     /// Sets the parameter called `name`; false when there is none.
     static bool set_param(Params& p_, std::string_view name_, const Scalar& value_) {
@@ -174,6 +181,23 @@ struct Model {
     /// Conserved quantities, in the order of conserved_names.
     static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
         out_(0) = energy(t, q_, qd_, p_);
+    }
+
+    /// Declared outputs ([outputs] of the model file), in the order of output_names.
+    static void outputs(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Outputs& out_) {
+        static_cast<void>(t);
+        using std::cos;
+        using std::sin;
+        const Scalar w = p_.w;
+        const Scalar h = p_.h;
+        const Scalar theta = p_.theta;
+        const Scalar psi = q_(0);
+        const Scalar psi_dot = qd_(0);
+        const Scalar sin_theta = sin(theta);
+        const Scalar sin_psi = sin(psi);
+        const Scalar cos_theta = cos(theta);
+        out_(0) = Scalar(1)/Scalar(2)*(w*sin_theta*sin_psi + h*cos_theta);
+        out_(1) = w*psi_dot;
     }
 
     /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.

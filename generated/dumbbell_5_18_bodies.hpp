@@ -34,6 +34,7 @@ struct Model {
     static constexpr int nx = 4;
     static constexpr int n_params = 4;
     static constexpr int n_conserved = 0;
+    static constexpr int n_outputs = 0;
     static constexpr bool explicit_time = false;
     /// Generalized forces Q or dissipation R act (the variational integrator does not apply).
     static constexpr bool has_generalized_forces = false;
@@ -46,6 +47,7 @@ struct Model {
     using State = Eigen::Matrix<Scalar, nx, 1>;
     using MassMatrix = Eigen::Matrix<Scalar, nq, nq>;
     using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;
+    using Outputs = Eigen::Matrix<Scalar, n_outputs, 1>;
     using ConstraintVector = Eigen::Matrix<Scalar, n_constraints, 1>;
     using ConstraintJacobian = Eigen::Matrix<Scalar, n_constraints, nq>;
 
@@ -61,6 +63,7 @@ struct Model {
     static constexpr std::array<const char*, nx> state_names{"alpha", "beta", "alpha_dot", "beta_dot"};
     static constexpr std::array<const char*, n_params> param_names{"m", "l", "theta", "omega"};
     static constexpr std::array<const char*, n_conserved> conserved_names{};
+    static constexpr std::array<const char*, n_outputs> output_names{};
     static constexpr std::array<const char*, n_constraints> constraint_names{"tilt", "drive"};
     static constexpr std::array<bool, n_constraints> constraint_is_holonomic{true, true};
 
@@ -184,6 +187,15 @@ struct Model {
 
     /// Conserved quantities, in the order of conserved_names.
     static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
+        static_cast<void>(t);
+        static_cast<void>(q_);
+        static_cast<void>(qd_);
+        static_cast<void>(p_);
+        static_cast<void>(out_);
+    }
+
+    /// Declared outputs ([outputs] of the model file), in the order of output_names.
+    static void outputs(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Outputs& out_) {
         static_cast<void>(t);
         static_cast<void>(q_);
         static_cast<void>(qd_);

@@ -10,6 +10,10 @@
 //   -l*M*a*theta'^2*sin(theta - phi) + l*M*a*theta''*cos(theta - phi) + M*a*g*sin(phi) + 3/2*M*a^2*phi'' = 0
 //
 // Conserved: h (L does not depend on t explicitly)
+//
+// Outputs ([outputs]):
+//   x_disk = l*sin(theta) + a*sin(phi)  [m]
+//   y_disk = -l*cos(theta) - a*cos(phi)  [m]
 #pragma once
 
 #include "eomgen/linear_solve.hpp"
@@ -32,6 +36,7 @@ struct Model {
     static constexpr int nx = 4;
     static constexpr int n_params = 5;
     static constexpr int n_conserved = 1;
+    static constexpr int n_outputs = 2;
     static constexpr bool explicit_time = false;
     /// Generalized forces Q or dissipation R act (the variational integrator does not apply).
     static constexpr bool has_generalized_forces = false;
@@ -40,6 +45,7 @@ struct Model {
     using State = Eigen::Matrix<Scalar, nx, 1>;
     using MassMatrix = Eigen::Matrix<Scalar, nq, nq>;
     using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;
+    using Outputs = Eigen::Matrix<Scalar, n_outputs, 1>;
 
     /// Parameters with the model file's defaults.
     struct Params {
@@ -54,6 +60,7 @@ struct Model {
     static constexpr std::array<const char*, nx> state_names{"theta", "phi", "theta_dot", "phi_dot"};
     static constexpr std::array<const char*, n_params> param_names{"m", "l", "M", "a", "g"};
     static constexpr std::array<const char*, n_conserved> conserved_names{"h"};
+    static constexpr std::array<const char*, n_outputs> output_names{"x_disk", "y_disk"};
 
     /// Sets the parameter called `name`; false when there is none.
     static bool set_param(Params& p_, std::string_view name_, const Scalar& value_) {
@@ -201,6 +208,24 @@ struct Model {
     /// Conserved quantities, in the order of conserved_names.
     static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
         out_(0) = energy(t, q_, qd_, p_);
+    }
+
+    /// Declared outputs ([outputs] of the model file), in the order of output_names.
+    static void outputs(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Outputs& out_) {
+        static_cast<void>(t);
+        static_cast<void>(qd_);
+        using std::cos;
+        using std::sin;
+        const Scalar l = p_.l;
+        const Scalar a = p_.a;
+        const Scalar theta = q_(0);
+        const Scalar phi = q_(1);
+        const Scalar sin_theta = sin(theta);
+        const Scalar sin_phi = sin(phi);
+        const Scalar cos_theta = cos(theta);
+        const Scalar cos_phi = cos(phi);
+        out_(0) = l*sin_theta + a*sin_phi;
+        out_(1) = -(l*cos_theta + a*cos_phi);
     }
 
     /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.

@@ -32,6 +32,7 @@ struct Model {
     static constexpr int nx = 4;
     static constexpr int n_params = 5;
     static constexpr int n_conserved = 1;
+    static constexpr int n_outputs = 0;
     static constexpr bool explicit_time = false;
     /// Generalized forces Q or dissipation R act (the variational integrator does not apply).
     static constexpr bool has_generalized_forces = false;
@@ -40,6 +41,7 @@ struct Model {
     using State = Eigen::Matrix<Scalar, nx, 1>;
     using MassMatrix = Eigen::Matrix<Scalar, nq, nq>;
     using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;
+    using Outputs = Eigen::Matrix<Scalar, n_outputs, 1>;
 
     /// Parameters with the model file's defaults.
     struct Params {
@@ -54,6 +56,7 @@ struct Model {
     static constexpr std::array<const char*, nx> state_names{"theta", "phi", "theta_dot", "phi_dot"};
     static constexpr std::array<const char*, n_params> param_names{"m", "l", "M", "a", "g"};
     static constexpr std::array<const char*, n_conserved> conserved_names{"h"};
+    static constexpr std::array<const char*, n_outputs> output_names{};
 
     /// Sets the parameter called `name`; false when there is none.
     static bool set_param(Params& p_, std::string_view name_, const Scalar& value_) {
@@ -218,6 +221,15 @@ struct Model {
     /// Conserved quantities, in the order of conserved_names.
     static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
         out_(0) = energy(t, q_, qd_, p_);
+    }
+
+    /// Declared outputs ([outputs] of the model file), in the order of output_names.
+    static void outputs(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Outputs& out_) {
+        static_cast<void>(t);
+        static_cast<void>(q_);
+        static_cast<void>(qd_);
+        static_cast<void>(p_);
+        static_cast<void>(out_);
     }
 
     /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.

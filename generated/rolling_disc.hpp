@@ -37,6 +37,7 @@ struct Model {
     static constexpr int nx = 10;
     static constexpr int n_params = 3;
     static constexpr int n_conserved = 1;
+    static constexpr int n_outputs = 0;
     static constexpr bool explicit_time = false;
     /// Generalized forces Q or dissipation R act (the variational integrator does not apply).
     static constexpr bool has_generalized_forces = false;
@@ -49,6 +50,7 @@ struct Model {
     using State = Eigen::Matrix<Scalar, nx, 1>;
     using MassMatrix = Eigen::Matrix<Scalar, nq, nq>;
     using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;
+    using Outputs = Eigen::Matrix<Scalar, n_outputs, 1>;
     using ConstraintVector = Eigen::Matrix<Scalar, n_constraints, 1>;
     using ConstraintJacobian = Eigen::Matrix<Scalar, n_constraints, nq>;
 
@@ -63,6 +65,7 @@ struct Model {
     static constexpr std::array<const char*, nx> state_names{"x", "y", "phi", "theta", "psi", "x_dot", "y_dot", "phi_dot", "theta_dot", "psi_dot"};
     static constexpr std::array<const char*, n_params> param_names{"m", "R", "g"};
     static constexpr std::array<const char*, n_conserved> conserved_names{"h"};
+    static constexpr std::array<const char*, n_outputs> output_names{};
     static constexpr std::array<const char*, n_constraints> constraint_names{"roll_x", "roll_y"};
     static constexpr std::array<bool, n_constraints> constraint_is_holonomic{false, false};
 
@@ -261,6 +264,15 @@ struct Model {
     /// Conserved quantities, in the order of conserved_names.
     static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
         out_(0) = energy(t, q_, qd_, p_);
+    }
+
+    /// Declared outputs ([outputs] of the model file), in the order of output_names.
+    static void outputs(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Outputs& out_) {
+        static_cast<void>(t);
+        static_cast<void>(q_);
+        static_cast<void>(qd_);
+        static_cast<void>(p_);
+        static_cast<void>(out_);
     }
 
     /// Constraint Jacobian A (c = A q' + b) and acceleration level A q'' = gamma.

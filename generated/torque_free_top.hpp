@@ -33,6 +33,7 @@ struct Model {
     static constexpr int nx = 6;
     static constexpr int n_params = 3;
     static constexpr int n_conserved = 3;
+    static constexpr int n_outputs = 0;
     static constexpr bool explicit_time = false;
     /// Generalized forces Q or dissipation R act (the variational integrator does not apply).
     static constexpr bool has_generalized_forces = false;
@@ -41,6 +42,7 @@ struct Model {
     using State = Eigen::Matrix<Scalar, nx, 1>;
     using MassMatrix = Eigen::Matrix<Scalar, nq, nq>;
     using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;
+    using Outputs = Eigen::Matrix<Scalar, n_outputs, 1>;
 
     /// Parameters with the model file's defaults.
     struct Params {
@@ -53,6 +55,7 @@ struct Model {
     static constexpr std::array<const char*, nx> state_names{"phi", "theta", "psi", "phi_dot", "theta_dot", "psi_dot"};
     static constexpr std::array<const char*, n_params> param_names{"M", "I1", "I3"};
     static constexpr std::array<const char*, n_conserved> conserved_names{"h", "p_phi", "p_psi"};
+    static constexpr std::array<const char*, n_outputs> output_names{};
 
     /// Sets the parameter called `name`; false when there is none.
     static bool set_param(Params& p_, std::string_view name_, const Scalar& value_) {
@@ -192,6 +195,15 @@ struct Model {
         momenta(t, q_, qd_, p_, momenta_);
         out_(1) = momenta_(0);
         out_(2) = momenta_(2);
+    }
+
+    /// Declared outputs ([outputs] of the model file), in the order of output_names.
+    static void outputs(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Outputs& out_) {
+        static_cast<void>(t);
+        static_cast<void>(q_);
+        static_cast<void>(qd_);
+        static_cast<void>(p_);
+        static_cast<void>(out_);
     }
 
     /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.

@@ -67,4 +67,4 @@ echo
 echo "== eomgen run examples/bead_on_hoop.toml: a model file compiled into nothing, derived, compiled (cached"
 echo "   in \${XDG_CACHE_HOME:-~/.cache}/eomgen) and integrated; the plot is out/bead_on_hoop.png"
 "$build/generator/eomgen" run examples/bead_on_hoop.toml --t-end 10 --rtol 1e-12 --atol 1e-14 \
-  --csv out/bead_on_hoop.csv --plot out/bead_on_hoop.png --plot-phase a
+  --csv out/bead_on_hoop.csv --plot out/bead_on_hoop.png --plot-phase a --plot-xy rho,z

@@ -211,6 +211,14 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
             if (!r.description.empty()) os << "    " << r.description << "\n";
         }
     }
+    if (!model.outputs.empty()) {
+        os << rule("Outputs  [outputs], recorded beside the state by `eomgen run` and eomgen-sim");
+        for (const eomgen::DeclaredOutput& o : model.outputs) {
+            os << "  " << o.name << " = " << P(o.expr.expr) << (o.unit.empty() ? "" : "  [" + o.unit + "]")
+               << "\n";
+            if (!o.description.empty()) os << "    " << o.description << "\n";
+        }
+    }
     if (!eq.warnings.empty()) {
         os << rule("Warnings");
         for (const std::string& w : eq.warnings) os << "  " << w << "\n";
@@ -282,6 +290,16 @@ void show_latex(const eomgen::Model& model, const eomgen::Equations& eq, std::os
                << (k + 1 < model.results.size() ? " \\\\" : "") << "  % " << latex_text(model.results[k].name)
                << (model.results[k].equals.empty() ? "" : ", verified: equals " + model.results[k].equals)
                << "\n";
+        os << "\\end{align}\n";
+    }
+    if (!model.outputs.empty()) {
+        os << "% outputs\n\\begin{align}\n";
+        for (std::size_t k = 0; k < model.outputs.size(); ++k) {
+            const eomgen::DeclaredOutput& o = model.outputs[k];
+            os << o.latex << " &= " << P(o.expr.expr) << (k + 1 < model.outputs.size() ? " \\\\" : "")
+               << "  % " << latex_text(o.name) << (o.unit.empty() ? "" : " [" + latex_text(o.unit) + "]")
+               << "\n";
+        }
         os << "\\end{align}\n";
     }
 }

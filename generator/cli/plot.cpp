@@ -3,6 +3,7 @@
 
 #include "cli/process.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -30,6 +31,11 @@ int column(const std::vector<std::string>& header, const std::string& name) {
     throw std::runtime_error("the CSV has no column '" + name + "'");
 }
 
+/// An axis label or a curve's title: "x_bob [m]", or the name alone when it has no unit.
+std::string labelled(const PlotColumn& c) {
+    return c.unit.empty() ? c.name : c.name + " [" + c.unit + "]";
+}
+
 }  // namespace
 
 std::string gnuplot_string(const std::string& s) {
@@ -51,13 +57,19 @@ void plot(const PlotRequest& r) {
         throw std::invalid_argument(problem);
     const std::string ext = fs::path(r.output).extension().string();
     std::vector<std::string> invariants, residuals;
+    auto is_output = [&r](const std::string& name) {
+        return std::any_of(r.outputs.begin(), r.outputs.end(),
+                           [&](const PlotColumn& o) { return o.name == name; });
+    };
     for (std::size_t i = static_cast<std::size_t>(column(header, "energy")) - 1; i < header.size(); ++i) {
+        if (is_output(header[i])) continue;
         if (header[i].rfind("residual_", 0) == 0)
             residuals.push_back(header[i]);
         else if (header[i].rfind("lambda_", 0) != 0)
             invariants.push_back(header[i]);
     }
-    const int rows = 2 + (residuals.empty() ? 0 : 1) + (r.phase.empty() ? 0 : 1);
+    const int rows = 2 + (r.outputs.empty() ? 0 : 1) + (residuals.empty() ? 0 : 1) +
+                     (r.phase.empty() ? 0 : 1) + static_cast<int>(r.xy.size());
     std::ostringstream gp;
     gp << "set datafile separator ','\n";
     gp << (ext == ".png" ? "set terminal pngcairo size 1000," : "set terminal svg size 1000,") << 300 * rows
@@ -72,6 +84,18 @@ void plot(const PlotRequest& r) {
         gp << (i ? ", " : "") << gnuplot_string(r.csv) << " every ::1 using 1:" << column(header, r.coordinates[i])
            << " with lines title " << gnuplot_string(r.coordinates[i]);
     gp << "\n";
+    // Declared outputs against t; the axis carries their unit when they share one.
+    if (!r.outputs.empty()) {
+        const bool one_unit = std::all_of(r.outputs.begin(), r.outputs.end(),
+                                          [&r](const PlotColumn& o) { return o.unit == r.outputs[0].unit; });
+        gp << "set ylabel " << gnuplot_string(one_unit ? labelled({"outputs", r.outputs[0].unit}) : "outputs")
+           << "\nplot ";
+        for (std::size_t i = 0; i < r.outputs.size(); ++i)
+            gp << (i ? ", " : "") << gnuplot_string(r.csv)
+               << " every ::1 using 1:" << column(header, r.outputs[i].name) << " with lines title "
+               << gnuplot_string(one_unit ? r.outputs[i].name : labelled(r.outputs[i]));
+        gp << "\n";
+    }
     // Relative drift of each invariant, from its first sample, on a log scale (floored at 1e-17 so that an
     // exactly kept quantity still draws).
     for (std::size_t k = 0; k < invariants.size(); ++k)
@@ -97,6 +121,17 @@ void plot(const PlotRequest& r) {
         gp << "set xlabel " << gnuplot_string(r.phase) << "\nset ylabel " << gnuplot_string(r.phase + "_dot") << "\n";
         gp << "plot " << gnuplot_string(r.csv) << " every ::1 using " << column(header, r.phase) << ":"
            << column(header, r.phase + "_dot") << " with lines title 'phase portrait'\n";
+    }
+    // y against x (e.g. the path of a point from two outputs), to scale when both are in one unit.
+    for (const auto& [x, y] : r.xy) {
+        const bool to_scale = !x.unit.empty() && x.unit == y.unit;
+        gp << "set xlabel " << gnuplot_string(labelled(x)) << "\nset ylabel " << gnuplot_string(labelled(y))
+           << "\n"
+           << (to_scale ? "set size ratio -1\n" : "");
+        gp << "plot " << gnuplot_string(r.csv) << " every ::1 using " << column(header, x.name) << ":"
+           << column(header, y.name) << " with lines title " << gnuplot_string(y.name + " against " + x.name)
+           << "\n"
+           << (to_scale ? "set size noratio\n" : "");
     }
     gp << "unset multiplot\n";
 

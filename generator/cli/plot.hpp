@@ -2,9 +2,16 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eomgen::cli {
+
+/// A column of the CSV with the unit its axis shows ("" when none is given).
+struct PlotColumn {
+    std::string name;
+    std::string unit;
+};
 
 struct PlotRequest {
     std::string csv;                     ///< the run's samples (eomgen::write_csv's format)
@@ -12,11 +19,13 @@ struct PlotRequest {
     std::string title;                   ///< the model's title (escaped for gnuplot here)
     std::vector<std::string> coordinates;
     std::string phase;                   ///< a coordinate for q' against q, or ""
+    std::vector<PlotColumn> outputs;     ///< declared outputs: a panel of them against t
+    std::vector<std::pair<PlotColumn, PlotColumn>> xy;  ///< (x, y): a panel of y against x for each
 };
 
 /// Writes the plot; throws std::runtime_error with gnuplot's message when it fails. The invariants whose
-/// drift it draws are the CSV's columns from `energy` on (energy and the conserved quantities), its
-/// residuals the `residual_<constraint>` columns.
+/// drift it draws are the CSV's columns from `energy` on (energy and the conserved quantities) that are not
+/// outputs, its residuals the `residual_<constraint>` columns.
 void plot(const PlotRequest& request);
 
 /// Why `output` cannot be a plot's file name (it must end in .png or .svg), or "" when it can.

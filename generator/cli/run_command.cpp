@@ -24,6 +24,36 @@
 namespace eomgen::cli {
 namespace fs = std::filesystem;
 
+namespace {
+
+/// Why `spec` ("X,Y") names no pair of the run's columns, or "" after appending the pair to `xy`.
+std::string xy_problem(const Model& model, const std::string& spec,
+                       std::vector<std::pair<PlotColumn, PlotColumn>>& xy) {
+    std::vector<PlotColumn> columns;
+    for (const Coordinate& c : model.coordinates) columns.push_back({c.name, ""});
+    for (const Coordinate& c : model.coordinates) columns.push_back({c.name + "_dot", ""});
+    for (const DeclaredOutput& o : model.outputs) columns.push_back({o.name, o.unit});
+    const std::size_t comma = spec.find(',');
+    if (comma == std::string::npos) return "expected X,Y, e.g. x_bob,y_bob";
+    const std::string names[2] = {spec.substr(0, comma), spec.substr(comma + 1)};
+    PlotColumn found[2];
+    for (int k = 0; k < 2; ++k) {
+        const std::string& name = names[k];
+        const auto it =
+            std::find_if(columns.begin(), columns.end(), [&](const PlotColumn& c) { return c.name == name; });
+        if (it == columns.end()) {
+            std::string known;
+            for (const PlotColumn& c : columns) known += (known.empty() ? "" : ", ") + c.name;
+            return "no output, coordinate or velocity '" + name + "' (there are " + known + ")";
+        }
+        found[k] = *it;
+    }
+    xy.push_back({found[0], found[1]});
+    return "";
+}
+
+}  // namespace
+
 RunCommand::RunCommand(CLI::App& app) {
     run_ = app.add_subcommand("run", "Derive, compile (cached) and integrate any model file; CSV and plot");
     run_->add_option("model", model_path_, "Model file (.toml)")->required()->check(CLI::ExistingFile);
@@ -31,6 +61,9 @@ RunCommand::RunCommand(CLI::App& app) {
     run_->add_option("--plot", plot_, "Plot to FILE.png or FILE.svg: coordinates, drift of the invariants, "
                                       "constraint residuals (gnuplot)");
     run_->add_option("--plot-phase", plot_phase_, "With --plot: add q' against q for this coordinate");
+    run_->add_option("--plot-xy", plot_xy_,
+                     "With --plot: add Y against X (X,Y: outputs, coordinates or velocities, "
+                     "e.g. x_bob,y_bob); may be repeated");
     run_->add_flag("--no-cache", no_cache_, "Compile afresh and keep nothing in the cache");
     run_->add_flag("--quiet", quiet_, "No progress messages on stderr");
     run_->add_flag("--progress", progress_, "Progress messages on stderr even when it is not a terminal");
@@ -77,6 +110,14 @@ int RunCommand::run_model() {
     // Reading the model is cheap; deriving it is done only when its code is not in the cache.
     const std::string text = read_model_file(model_path_);
     const Model model = parse_model(text, model_path_);
+    std::vector<std::pair<PlotColumn, PlotColumn>> xy;
+    for (const std::string& spec : plot_xy_) {
+        const std::string problem = plot_.empty() ? "needs --plot" : xy_problem(model, spec, xy);
+        if (!problem.empty()) {
+            std::cerr << "eomgen run: --plot-xy " << spec << ": " << problem << "\n";
+            return 2;
+        }
+    }
     auto header = [&] {
         progress("deriving " + model_path_);
         const Equations eq = derive_equations(model);
@@ -107,6 +148,8 @@ int RunCommand::run_model() {
         p.output = plot_;
         p.title = model.title.empty() ? model.name : model.title;
         for (const Coordinate& c : model.coordinates) p.coordinates.push_back(c.name);
+        for (const DeclaredOutput& o : model.outputs) p.outputs.push_back({o.name, o.unit});
+        p.xy = xy;
         if (!plot_phase_.empty()) {
             const bool known = std::any_of(model.coordinates.begin(), model.coordinates.end(),
                                            [&](const Coordinate& c) { return c.name == plot_phase_; });

@@ -4,6 +4,7 @@
 #include "eomgen/simulation.hpp"
 
 #include <string>
+#include <vector>
 
 namespace CLI {
 class App;
@@ -18,7 +19,7 @@ constexpr int kExitCompiler = 4;
  * Registers `run` and `cache` on the `eomgen` command line:
  *
  *     eomgen run MODEL.toml [eomgen-sim's options] [--plot FILE.png|FILE.svg] [--plot-phase q]
- *                [--no-cache] [--quiet | --progress]
+ *                [--plot-xy X,Y ...] [--no-cache] [--quiet | --progress]
  *     eomgen cache clear
  *
  * run() derives the model, emits its header, compiles it with the simulation driver into a cached shared
@@ -38,6 +39,7 @@ class RunCommand {
     CLI::App* cache_ = nullptr;
     CLI::App* clear_ = nullptr;
     std::string model_path_, plot_, plot_phase_;
+    std::vector<std::string> plot_xy_;
     eomgen::sim::Options options_;
     bool no_cache_ = false, quiet_ = false, progress_ = false;
 };

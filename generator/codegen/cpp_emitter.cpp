@@ -326,12 +326,13 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     MathPrinter printer(table);
     const std::size_t n = model.dof();
 
-    std::vector<std::string> coords, states, params, conserved;
+    std::vector<std::string> coords, states, params, conserved, outputs;
     for (const Coordinate& c : model.coordinates) coords.push_back(c.name);
     states = coords;
     for (const Coordinate& c : model.coordinates) states.push_back(c.name + "_dot");
     for (const Parameter& p : model.parameters) params.push_back(p.name);
     for (const ConservedQuantity& c : eq.conserved) conserved.push_back(c.name);
+    for (const DeclaredOutput& o : model.outputs) outputs.push_back(o.name);
 
     std::ostringstream os;
     // Every comment line goes through text::cpp_comment: a title, source, unit or description is a
@@ -362,6 +363,10 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     if (eq.conserved.empty()) os << "nothing found";
     for (std::size_t i = 0; i < eq.conserved.size(); ++i)
         os << (i ? "; " : "") << cpp_comment(eq.conserved[i].name + " (" + eq.conserved[i].reason + ")");
+    if (!model.outputs.empty()) os << "\n//\n// Outputs ([outputs]):";
+    for (const DeclaredOutput& o : model.outputs)
+        os << "\n//   " << cpp_comment(o.name + " = " + printer.print(o.expr.expr, MathStyle::Text) +
+                                     (o.unit.empty() ? "" : "  [" + o.unit + "]"));
     os << "\n#pragma once\n\n";
     os << (eq.constraints.empty() ? "#include \"eomgen/linear_solve.hpp\"\n\n" : "#include \"eomgen/constraints.hpp\"\n\n");
     os << "#include <Eigen/Core>\n\n#include <array>\n#include <cmath>\n#include <string_view>\n\n";
@@ -375,6 +380,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "    static constexpr int nx = " << 2 * n << ";\n";
     os << "    static constexpr int n_params = " << params.size() << ";\n";
     os << "    static constexpr int n_conserved = " << conserved.size() << ";\n";
+    os << "    static constexpr int n_outputs = " << outputs.size() << ";\n";
     os << "    static constexpr bool explicit_time = " << (eq.explicit_time ? "true" : "false") << ";\n";
     const bool forced = std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(),
                                     [](const GiNaC::ex& q) { return !q.is_zero(); });
@@ -394,6 +400,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "    using State = Eigen::Matrix<Scalar, nx, 1>;\n";
     os << "    using MassMatrix = Eigen::Matrix<Scalar, nq, nq>;\n";
     os << "    using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;\n";
+    os << "    using Outputs = Eigen::Matrix<Scalar, n_outputs, 1>;\n";
     if (nc > 0) {
         os << "    using ConstraintVector = Eigen::Matrix<Scalar, n_constraints, 1>;\n";
         os << "    using ConstraintJacobian = Eigen::Matrix<Scalar, n_constraints, nq>;\n";
@@ -413,6 +420,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "    static constexpr std::array<const char*, n_params> param_names" << string_array(params) << ";\n";
     os << "    static constexpr std::array<const char*, n_conserved> conserved_names" << string_array(conserved)
        << ";\n";
+    os << "    static constexpr std::array<const char*, n_outputs> output_names" << string_array(outputs) << ";\n";
     if (nc > 0) {
         os << "    static constexpr std::array<const char*, n_constraints> constraint_names" << string_array(constraint_names)
            << ";\n";
@@ -440,7 +448,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
 
     const std::pair<std::string, std::string> t_in{"Scalar", "t"}, q_in{"Config", "q_"}, qd_in{"Config", "qd_"},
         p_in{"Params", "p_"};
-    std::vector<Output> mass, force, momenta, grad, cons;
+    std::vector<Output> mass, force, momenta, grad, cons, recorded;
     for (std::size_t i = 0; i < n; ++i) {
         for (std::size_t j = 0; j < n; ++j)
             mass.push_back({fmt::format("M_({}, {})", i, j), eq.M(static_cast<unsigned>(i), static_cast<unsigned>(j))});
@@ -487,6 +495,8 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     }
     for (std::size_t i = 0; i < eq.conserved.size(); ++i)
         cons.push_back({fmt::format("out_({})", i), eq.conserved[i].value});
+    for (std::size_t i = 0; i < model.outputs.size(); ++i)
+        recorded.push_back({fmt::format("out_({})", i), model.outputs[i].expr.expr});
     std::vector<Output> both = mass;
     both.insert(both.end(), force.begin(), force.end());
 
@@ -514,6 +524,8 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         {"dL/dq.", "void", "lagrangian_gradient", {t_in, q_in, qd_in, p_in}, {{"Config", "out_"}}, grad},
         {"Conserved quantities, in the order of conserved_names.", "void", "conserved", {t_in, q_in, qd_in, p_in},
          {{"Conserved", "out_"}}, cons, conserved_calls},
+        {"Declared outputs ([outputs] of the model file), in the order of output_names.", "void", "outputs",
+         {t_in, q_in, qd_in, p_in}, {{"Outputs", "out_"}}, recorded},
     };
     if (nc > 0) {
         std::vector<Output> jac_gamma, residuals, all = both;

@@ -117,6 +117,17 @@ struct Result {
     SourceLocation where;         ///< of the name
 };
 
+/// A quantity the model file asks to record beside the state ([outputs], e.g. x_bob = l*sin(theta)): the
+/// generated header computes it in outputs(), each run writes it as a CSV column and plots it against t.
+struct DeclaredOutput {
+    std::string name;         ///< an identifier, unique among the model's names; the CSV column's name
+    std::string latex;        ///< its LaTeX, "x_{bob}" by default
+    std::string unit;         ///< e.g. "m"; "" when not given
+    std::string description;
+    SourceExpression expr;    ///< in the parameters, q, q', t
+    SourceLocation where;     ///< of the name (its key in [outputs])
+};
+
 struct Model {
     std::string name;         ///< identifier: namespace of the generated code, file name
     std::string title;        ///< human title
@@ -136,6 +147,7 @@ struct Model {
     std::vector<Spring> springs;                 ///< [[springs]]: their V adds to V above
     std::array<GiNaC::ex, 3> gravity{0, 0, 0};  ///< [gravity] acceleration vector g, space axes
     std::vector<Result> results;                 ///< [[results]]: declared closed forms
+    std::vector<DeclaredOutput> outputs;         ///< [outputs]: quantities recorded beside the state, in file order
 
     /// Baumgarte stabilisation of the constraints, A q̈ = γ − 2α(A q̇ + b) − β² g (0, 0: none).
     double baumgarte_alpha = 0.0;

@@ -237,6 +237,13 @@ struct Declaration {
     std::size_t order;  ///< position in the file, for ordering; 0 for a name taken from the file name
 };
 
+/// One `name = ...` of [outputs]: the key's place and its value (a string, or a table with `expr`).
+struct OutputEntry {
+    std::string name;
+    SourceLocation where;
+    const toml::node* value = nullptr;
+};
+
 /// A coordinate or parameter table, checked for keys and types, values still unevaluated.
 struct Entry {
     const toml::table* table = nullptr;
@@ -261,7 +268,8 @@ class Loader {
         model.t = GiNaC::symbol("t", "t");
         check_keys(root,
                    {"name", "title", "source", "description", "coordinates", "parameters", "lagrangian",
-                    "constraints", "forces", "stabilization", "bodies", "gravity", "springs", "results"},
+                    "constraints", "forces", "stabilization", "bodies", "gravity", "springs", "results",
+                    "outputs"},
                    "at the top level");
 
         std::vector<Declaration> declarations;
@@ -299,6 +307,8 @@ class Loader {
             declarations.push_back({c.name, "coordinate", c.where, order(c.where)});
         for (const auto& p : parameters)
             declarations.push_back({p.name, "parameter", p.where, order(p.where)});
+        const std::vector<OutputEntry> outputs = output_entries(root);
+        for (const auto& o : outputs) declarations.push_back({o.name, "output", o.where, order(o.where)});
         check_names(declarations, coordinates, constraints);
 
         SymbolTable symbols;
@@ -343,6 +353,7 @@ class Loader {
         read_forces(root, symbols, model);
         read_stabilization(root, model);
         read_results(results, symbols, model);
+        read_outputs(outputs, symbols, model);
         return model;
     }
 
@@ -458,11 +469,18 @@ class Loader {
         return result;
     }
 
-    /// Each name valid and not reserved, and no name declared twice; reported in file order.
+    /// "a body", "an output".
+    static std::string with_article(const std::string& kind) {
+        return (kind.find_first_of("aeiou") == 0 ? "an " : "a ") + kind;
+    }
+
+    /// Each name valid and not reserved, and no name declared twice; reported in file order. An output is a
+    /// CSV column too, so it may not take the name of another column either (output_name_reason).
     void check_names(std::vector<Declaration> declarations, const std::vector<Entry>& coordinates,
                      const std::vector<Entry>& constraints) const {
-        std::vector<std::string> coordinate_names;
+        std::vector<std::string> coordinate_names, constraint_names;
         for (const auto& c : coordinates) coordinate_names.push_back(c.name);
+        for (const auto& c : constraints) constraint_names.push_back(c.name);
         // Names eomgen derives and prints beside the declared ones (eomgen show, the CSV's columns): a
         // declared name equal to one would make them ambiguous.
         std::map<std::string, std::string> derived;
@@ -472,29 +490,30 @@ class Loader {
             derived["lambda_" + c.name] = "the name of the multiplier of constraint '" + c.name + "'";
             derived["residual_" + c.name] = "the name of the residual of constraint '" + c.name + "'";
         }
-        for (const auto& d : declarations) {
-            auto it = derived.find(d.name);
-            if (it != derived.end() && d.kind != "model")
-                fail(d.where, "cannot use '" + d.name + "' as a " + d.kind + " name: it is " + it->second);
-            if (d.kind == "coordinate" && d.name == "energy")
-                fail(d.where, "cannot use 'energy' as a coordinate name: it is the name of the energy column");
-        }
         std::stable_sort(declarations.begin(), declarations.end(),
                          [](const Declaration& a, const Declaration& b) { return a.order < b.order; });
         std::map<std::string, const Declaration*> seen;
         for (const auto& d : declarations) {
-            const std::string problem = name_problem(d.name, coordinate_names);
+            const auto derived_name = derived.find(d.name);
+            if (derived_name != derived.end() && d.kind != "model")
+                fail(d.where, "cannot use '" + d.name + "' as " + with_article(d.kind) + " name: it is " +
+                                  derived_name->second);
+            if (d.kind == "coordinate" && d.name == "energy")
+                fail(d.where, "cannot use 'energy' as a coordinate name: it is the name of the energy column");
+            std::string problem = name_problem(d.name, coordinate_names);
+            if (problem.empty() && d.kind == "output")
+                problem = output_name_reason(d.name, coordinate_names, constraint_names);
             if (!problem.empty()) {
                 if (d.where.line == 0)
                     fail(d.where, "no 'name' given, and the file name '" + d.name +
                                       "' cannot be the model's name: " + problem + "; add name = \"...\"");
-                fail(d.where, "cannot use '" + d.name + "' as a " + d.kind + " name: " + problem);
+                fail(d.where, "cannot use '" + d.name + "' as " + with_article(d.kind) + " name: " + problem);
             }
             const auto [it, inserted] = seen.emplace(d.name, &d);
             if (inserted) continue;
             const Declaration& first = *it->second;
             const std::string what =
-                first.kind == "model" ? "the model's name" : "the name of a " + first.kind;
+                first.kind == "model" ? "the model's name" : "the name of " + with_article(first.kind);
             const std::string already = first.where.line == 0
                                             ? what + " (taken from the file name)"
                                             : what + " on line " + std::to_string(first.where.line);
@@ -811,6 +830,55 @@ class Loader {
                 fail(src_.at(*t.get("on_constraints")), "'on_constraints' goes with 'equals'");
             }
             model.results.push_back(std::move(r));
+        }
+    }
+
+    /// The entries of [outputs] in file order (a TOML table keeps its keys sorted).
+    std::vector<OutputEntry> output_entries(const toml::table& root) const {
+        std::vector<OutputEntry> out;
+        const toml::node* node = root.get("outputs");
+        if (!node) return out;
+        const toml::table* table = node->as_table();
+        if (!table)
+            fail(src_.at(*node),
+                 "'outputs' must be a table [outputs] of name = \"expression\", not " + type_name(*node));
+        for (auto&& [key, value] : *table)
+            out.push_back({std::string(key.str()), src_.at(key.source().begin), &value});
+        std::stable_sort(out.begin(), out.end(), [](const OutputEntry& a, const OutputEntry& b) {
+            return order(a.where) < order(b.where);
+        });
+        return out;
+    }
+
+    /// [outputs]: name = "expression", or name = { expr = "...", unit = "m", latex = '...', description =
+    /// "..." }; the expression in the parameters, q, q', t (the syntax of T).
+    void read_outputs(const std::vector<OutputEntry>& entries, const SymbolTable& symbols,
+                      Model& model) const {
+        for (const OutputEntry& e : entries) {
+            DeclaredOutput o;
+            o.name = e.name;
+            o.where = e.where;
+            const toml::node* expr = e.value;
+            if (const toml::table* t = e.value->as_table()) {
+                check_keys(*t, {"expr", "unit", "latex", "description"}, "in output '" + e.name + "'");
+                expr = t->get("expr");
+                if (!expr)
+                    fail(src_.at(*t), "missing key 'expr' in output '" + e.name + "' (what to record)");
+                o.latex = latex_field(*t).value_or(default_latex(e.name));
+                o.unit = optional_string(*t, "unit").value_or("");
+                o.description = optional_string(*t, "description").value_or("");
+            } else if (!e.value->as_string()) {
+                fail(src_.at(*e.value), "output '" + e.name +
+                                            "' must be a string with an expression or a table "
+                                            "{ expr = \"...\", unit = \"...\" }, not " +
+                                            type_name(*e.value));
+            } else {
+                o.latex = default_latex(e.name);
+            }
+            o.expr.expr = expression(*expr, "expr", symbols, {});
+            o.expr.text = expr->as_string()->get();
+            o.expr.where = string_start(*expr);
+            model.outputs.push_back(std::move(o));
         }
     }
 

@@ -139,6 +139,21 @@ std::string name_problem(std::string_view name, const std::vector<std::string>& 
     return reserved_name_reason(name, coordinates);
 }
 
+std::string output_name_reason(std::string_view name, const std::vector<std::string>& coordinates,
+                               const std::vector<std::string>& constraints) {
+    const std::string q = quoted(name);
+    if (name == "energy") return q + " is the CSV column of the energy function";
+    if (name == "h") return q + " is the name of the energy function among the conserved quantities";
+    for (const auto& c : coordinates)
+        if (name == "p_" + c) return q + " is the name of the momentum of coordinate '" + c + "'";
+    for (const auto& c : constraints) {
+        if (name == "residual_" + c)
+            return q + " is the CSV column of the residual of constraint '" + c + "'";
+        if (name == "lambda_" + c) return q + " is the name of the multiplier of constraint '" + c + "'";
+    }
+    return {};
+}
+
 std::size_t edit_distance(std::string_view a, std::string_view b) {
     // Full table (the words are short): d[i][j] = distance between a[0..i) and b[0..j).
     std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));

@@ -33,6 +33,15 @@ std::string reserved_name_reason(std::string_view name, const std::vector<std::s
 /// is_identifier and reserved_name_reason.
 std::string name_problem(std::string_view name, const std::vector<std::string>& coordinates = {});
 
+/**
+ * Why `name` may not name a declared output ([outputs]) although it may name a coordinate or parameter, or ""
+ * when it may: an output is a column of the CSV a run writes, beside `energy`, the conserved quantities (`h`,
+ * `p_<coordinate>`) and each constraint's `residual_<constraint>` and `lambda_<constraint>` (its multiplier),
+ * and a column name must say which quantity it is. Check name_problem first.
+ */
+std::string output_name_reason(std::string_view name, const std::vector<std::string>& coordinates,
+                               const std::vector<std::string>& constraints);
+
 /// Optimal-string-alignment distance: insertions, deletions, substitutions and swaps of neighbours.
 std::size_t edit_distance(std::string_view a, std::string_view b);
 

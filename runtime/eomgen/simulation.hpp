@@ -149,8 +149,8 @@ std::string list(const Array& names) {
     return s;
 }
 
-/// Writes the samples with energy, conserved quantities and, for constrained models, the constraint
-/// residuals and multipliers as extra columns.
+/// Writes the samples with energy, conserved quantities, for constrained models the constraint residuals
+/// and multipliers, and the model's declared outputs ([outputs]) as extra columns, in that order.
 template <class M>
 void write_samples(const Options& o, const typename M::Params& params,
                    const std::vector<eomgen::Sample<typename M::State>>& samples) {
@@ -166,6 +166,7 @@ void write_samples(const Options& o, const typename M::Params& params,
             extra.push_back(std::string("residual_") + c);
             extra.push_back(std::string("lambda_") + c);
         }
+    extra.insert(extra.end(), M::output_names.begin(), M::output_names.end());
     eomgen::write_csv(o.csv, names, extra, samples, [&params](double t, const State& x) {
         const Config q = x.template head<M::nq>(), qd = x.template tail<M::nq>();
         typename M::Conserved c;
@@ -182,6 +183,9 @@ void write_samples(const Options& o, const typename M::Params& params,
                 row.push_back(lambda(k));
             }
         }
+        typename M::Outputs out;
+        M::outputs(t, q, qd, params, out);
+        for (int k = 0; k < M::n_outputs; ++k) row.push_back(out(k));
         return row;
     });
     std::cout << "csv:     " << o.csv << " (" << samples.size() << " rows)\n";

@@ -345,3 +345,77 @@ TEST_CASE("eomgen run --plot writes a PNG and an SVG; a path with spaces and she
     CHECK(text.find("phi") != std::string::npos);
     CHECK(eomgen({"run", "--quiet", "--plot", (dir / "x.pdf").string(), "--", model.string()}).code == 2);
 }
+
+TEST_CASE("eomgen run records a model's [outputs] in the CSV and plots them", "[run][outputs]") {
+    const fs::path model = write_model("bob.toml", R"toml(name = "bob"
+title = "Pendulum with its bob's position recorded (written by exam_run)"
+[[coordinates]]
+name = "theta"
+initial = 1.1
+rate = -0.4
+[[parameters]]
+name = "m"
+value = 0.3
+[[parameters]]
+name = "l"
+value = 0.8
+unit = "m"
+[[parameters]]
+name = "g"
+value = 9.81
+[lagrangian]
+T = "m/2*l^2*theta'^2"
+V = "-m*g*l*cos(theta)"
+[outputs]
+x_bob = { expr = "l*sin(theta)", unit = "m" }
+y_bob = { expr = "-l*cos(theta)", unit = "m" }
+v_bob = { expr = "l*theta'", unit = "m/s" }
+w_bob = { expr = "theta'", unit = "rad/s'); system('touch PWNED_UNIT'); print('" }
+)toml");
+    const fs::path csv = kWork / "bob.csv", png = kWork / "bob.png";
+    fs::remove(png);
+    const Result r =
+        eomgen({"run", model.string(), "--t-end", "3", "--samples", "30", "--set", "l=1.5", "--csv",
+                csv.string(), "--plot", png.string(), "--plot-xy", "x_bob,y_bob", "--quiet"});
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const auto rows = read_csv(csv);
+    REQUIRE(rows.size() == 32);
+    // The outputs come after the columns a model without them has, in the model file's order.
+    CHECK(rows[0] ==
+          std::vector<std::string>{"t", "theta", "theta_dot", "energy", "x_bob", "y_bob", "v_bob", "w_bob"});
+    const double l = 1.5;  // --set reaches the outputs too
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        const double theta = std::stod(rows[i][1]), theta_dot = std::stod(rows[i][2]);
+        CHECK(std::stod(rows[i][4]) == Approx(l * std::sin(theta)).epsilon(1e-14).margin(1e-15));
+        CHECK(std::stod(rows[i][5]) == Approx(-l * std::cos(theta)).epsilon(1e-14).margin(1e-15));
+        CHECK(std::stod(rows[i][6]) == Approx(l * theta_dot).epsilon(1e-14).margin(1e-15));
+    }
+    CHECK(read(png).substr(0, 8) == "\x89PNG\r\n\x1a\n");
+    CHECK_FALSE(fs::exists("PWNED_UNIT"));  // a unit is text in the gnuplot script, not a command
+
+    // The SVG's text: the outputs panel names each output with its unit, the x-y panel its axes.
+    const fs::path svg = kWork / "bob.svg";
+    REQUIRE(eomgen({"run", model.string(), "--t-end", "3", "--plot", svg.string(), "--plot-xy", "x_bob,y_bob",
+                    "--plot-xy", "theta,v_bob", "--quiet"})
+                .code == 0);
+    const std::string text = read(svg);
+    auto has = [&text](const std::string& label) {
+        return text.find("<text>" + label + "</text>") != std::string::npos;
+    };
+    for (const char* label :
+         {"outputs", "v_bob [m/s]", "x_bob [m]", "y_bob [m]", "y_bob against x_bob", "v_bob against theta"})
+        CHECK(has(label));
+    // The drift panel draws the invariants (energy), not the outputs: no curve there is titled by a bare
+    // output name.
+    CHECK(has("energy"));
+    for (const char* output : {"x_bob", "y_bob", "v_bob"}) CHECK_FALSE(has(output));
+
+    const Result unknown =
+        eomgen({"run", model.string(), "--plot", svg.string(), "--plot-xy", "x_bob,z_bob", "--quiet"});
+    CHECK(unknown.code == 2);
+    CHECK(unknown.output.find("--plot-xy x_bob,z_bob: no output, coordinate or velocity 'z_bob'") !=
+          std::string::npos);
+    // --plot-xy without --plot: a mistake on the command line.
+    CHECK(eomgen({"run", model.string(), "--plot-xy", "x_bob,y_bob", "--quiet"}).code == 2);
+}

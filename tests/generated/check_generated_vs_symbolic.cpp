@@ -2,6 +2,7 @@
 #include "approx.hpp"
 
 #include "eomgen/models/door.hpp"
+#include "eomgen/models/pendulum.hpp"
 #include "eomgen/models/pendulum_5_20.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model_file.hpp"
@@ -112,17 +113,37 @@ void check_model(const std::string& file) {
         REQUIRE(Model::potential_energy(s.t, s.q, s.qd, s.params) == Approx(V).epsilon(1e-12).margin(1e-13));
         REQUIRE(Model::lagrangian(s.t, s.q, s.qd, s.params) == Approx(T - V).epsilon(1e-12).margin(1e-13));
         REQUIRE(Model::energy(s.t, s.q, s.qd, s.params) == Approx(h).epsilon(1e-12).margin(1e-13));
+
+        // Declared outputs: outputs() computes the model file's [outputs] expressions, in their order.
+        typename Model::Outputs out;
+        Model::outputs(s.t, s.q, s.qd, s.params, out);
+        for (std::size_t k = 0; k < model.outputs.size(); ++k)
+            REQUIRE(out(Eigen::Index(k)) ==
+                    Approx(value(model.outputs[k].expr.expr, s.at)).epsilon(1e-12).margin(1e-14));
     }
+    REQUIRE(Model::n_outputs == int(model.outputs.size()));
+    for (std::size_t k = 0; k < model.outputs.size(); ++k)
+        REQUIRE(std::string(Model::output_names[k]) == model.outputs[k].name);
 }
 
 }  // namespace
 
 TEST_CASE("door: generated code equals the symbolic equations at random states", "[generated]") {
+    REQUIRE(eomgen::models::door::Model<double>::n_outputs == 2);  // z_c, v_edge: a velocity in an output
     check_model<eomgen::models::door::Model<double>>("door.toml");
 }
 
 TEST_CASE("pendulum 5-20: generated code equals the symbolic equations at random states", "[generated]") {
+    REQUIRE(eomgen::models::pendulum_5_20::Model<double>::n_outputs == 2);  // x_disk, y_disk
     check_model<eomgen::models::pendulum_5_20::Model<double>>("pendulum_5_20.toml");
+}
+
+TEST_CASE("a model without [outputs] has none, and an outputs() generic code can call", "[generated]") {
+    using P = eomgen::models::pendulum::Model<double>;
+    static_assert(P::n_outputs == 0 && P::output_names.size() == 0 && P::Outputs::RowsAtCompileTime == 0);
+    P::Outputs out;
+    P::outputs(0.0, P::Config::Constant(0.3), P::Config::Constant(0.1), P::Params{}, out);
+    CHECK(out.size() == 0);
 }
 
 TEST_CASE("generated code runs in long double", "[generated]") {

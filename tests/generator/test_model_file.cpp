@@ -406,3 +406,78 @@ TEST_CASE("closest names and default LaTeX", "[model][names]") {
     CHECK(eomgen::default_latex("x") == "x");
     CHECK(eomgen::default_latex("mass") == "mass");
 }
+
+TEST_CASE("[outputs]: strings and tables, in file order, with units and LaTeX", "[model][outputs]") {
+    const std::string text = kCoordinate + kParameter + kLagrangian +
+                             "[outputs]\n"
+                             "y_bob = { expr = \"-m*cos(psi)\", unit = \"m\", latex = 'y_{\\mathrm{b}}', "
+                             "description = \"height\" }\n"
+                             "speed = \"m*psi'\"\n"
+                             "[outputs.a_t]\nexpr = \"t*psi\"\n";
+    const eomgen::Model model = eomgen::parse_model(text, "test.toml");
+    REQUIRE(model.outputs.size() == 3);
+    const auto& [y, speed, at] = std::tie(model.outputs[0], model.outputs[1], model.outputs[2]);
+    CHECK(y.name == "y_bob");  // the file's order, not the table's sorted one
+    CHECK(speed.name == "speed");
+    CHECK(at.name == "a_t");
+    const GiNaC::ex m = model.parameters[0].symbol, psi = model.coordinates[0].q,
+                    psi_dot = model.coordinates[0].qd;
+    CHECK(same(y.expr.expr, -m * GiNaC::cos(psi)));
+    CHECK(same(speed.expr.expr, m * psi_dot));
+    CHECK(same(at.expr.expr, model.t * psi));
+    CHECK(y.unit == "m");
+    CHECK(y.latex == "y_{\\mathrm{b}}");
+    CHECK(y.description == "height");
+    CHECK(speed.unit.empty());
+    CHECK(speed.latex == "speed");
+    CHECK(at.latex == "a_{t}");
+    CHECK(y.where.str() == "test.toml:10:1");
+    CHECK(speed.expr.where.str() == "test.toml:11:10");
+    CHECK(eomgen::parse_model(kCoordinate + kParameter + kLagrangian, "test.toml").outputs.empty());
+}
+
+TEST_CASE("[outputs] errors, each at file:line:col", "[model][outputs]") {
+    const std::string head = kCoordinate + kParameter + kLagrangian + "[outputs]\n";  // [outputs] on line 9
+    CHECK(error_of(head + "x = \"m*sin(pis)\"\n") ==
+          "test.toml:10:12: unknown symbol 'pis'; did you mean 'pi'?");
+    CHECK_THAT(error_of(head + "x = { expr = \"psi''\" }\n"), StartsWith("test.toml:10:19: only one prime"));
+    CHECK(
+        error_of(head + "x = 3\n") ==
+        "test.toml:10:5: output 'x' must be a string with an expression or a table { expr = \"...\", unit = "
+        "\"...\" }, not an integer");
+    CHECK(error_of(head + "x = { unit = \"m\" }\n") ==
+          "test.toml:10:5: missing key 'expr' in output 'x' (what to record)");
+    CHECK(error_of(head + "x = { expr = \"psi\", unti = \"m\" }\n") ==
+          "test.toml:10:21: unknown key 'unti' in output 'x'; did you mean 'unit'?");
+    CHECK_THAT(error_of(head + "x = { expr = \"psi\", latex = 'x\\input{a}' }\n"),
+               StartsWith("test.toml:10:31: \\input is not among"));
+    CHECK_THAT(error_of(head + "x = { expr = \"psi\", unit = \"m\\u0007\" }\n"),
+               StartsWith("test.toml:10:30: 'unit' holds the control character U+0007"));
+    CHECK_THAT(error_of("outputs = \"psi\"\n" + kCoordinate + kParameter + kLagrangian),
+               StartsWith("test.toml:1:11: 'outputs' must be a table [outputs]"));
+}
+
+TEST_CASE("[outputs] names: identifiers, not reserved, not another name or CSV column", "[model][outputs]") {
+    const std::string head = kCoordinate + kParameter + kLagrangian + "[outputs]\n";
+    auto named = [&](const std::string& name) { return error_of(head + name + " = \"psi\"\n"); };
+    CHECK(named("m") == "test.toml:10:1: duplicate name 'm': already the name of a parameter on line 4");
+    CHECK(named("psi") == "test.toml:10:1: duplicate name 'psi': already the name of a coordinate on line 2");
+    CHECK(named("psi_dot") ==
+          "test.toml:10:1: cannot use 'psi_dot' as an output name: 'psi_dot' is the name of the velocity of "
+          "coordinate 'psi'");
+    CHECK_THAT(named("energy"),
+               StartsWith("test.toml:10:1: cannot use 'energy'") && Contains("CSV column of the energy"));
+    CHECK_THAT(named("h"), Contains("energy function among the conserved quantities"));
+    CHECK_THAT(named("p_psi"), Contains("momentum of coordinate 'psi'"));
+    CHECK_THAT(named("t"), Contains("reserved for time"));
+    CHECK_THAT(named("M_PI"), Contains("macro"));
+    CHECK_THAT(named("class"), Contains("C++ keyword"));
+    CHECK_THAT(named("\"x bob\""), StartsWith("test.toml:10:1: ") && Contains("not an identifier"));
+    const std::string constrained = kCoordinate + "[[coordinates]]\nname = \"y\"\n" + kLagrangian +
+                                    "[[constraints]]\nname = \"rod\"\nexpr = \"psi - y\"\n[outputs]\n";
+    CHECK_THAT(error_of(constrained + "lambda_rod = \"psi\"\n"),
+               StartsWith("test.toml:12:1: cannot use 'lambda_rod' as an output name") &&
+                   Contains("multiplier of constraint 'rod'"));
+    CHECK_THAT(error_of(constrained + "residual_rod = \"psi\"\n"), Contains("residual of constraint 'rod'"));
+    CHECK_THAT(error_of(constrained + "rod = \"psi\"\n"), Contains("already the name of a constraint"));
+}
