@@ -319,7 +319,6 @@ int run(const Options& o) {
         }
     }
     if (!done && o.method == "symplectic") {
-        if (!(o.dt > 0)) throw UsageError("--method symplectic needs --dt");
         if (is_constrained<M>::value || M::has_generalized_forces)
             throw UsageError("--method symplectic integrates unconstrained models without forces; use dopri5");
         eomgen::VariationalIntegrator<M> vi(params, o.dt);
@@ -346,7 +345,6 @@ int run(const Options& o) {
         };
         eomgen::IntegrationResult<State> r;
         if (o.method == "rk4") {
-            if (!(o.dt > 0)) throw UsageError("--method rk4 needs --dt");
             r = eomgen::integrate_rk4(f, 0.0, x0, o.t_end, o.dt, events, sample_times, observer);
             std::cout << "method:  rk4, dt " << o.dt << "\n";
         } else if (o.method == "dopri5") {
