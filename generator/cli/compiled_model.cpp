@@ -40,7 +40,7 @@ const std::string& runtime_include_dir() {
         const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
         if (!ec) {
             const fs::path installed = exe.parent_path().parent_path() / "include";
-            if (fs::exists(installed / "eomgen" / "simulation.hpp", ec)) return installed.string();
+            if (fs::exists(installed / "eomgen" / "model_table.hpp", ec)) return installed.string();
         }
         return std::string(EOMGEN_RUNTIME_INCLUDE_DIR);
     }();
@@ -125,13 +125,11 @@ std::string cache_key(const CompileRequest& r, const std::vector<std::string>& c
 }
 
 std::string entry_source(const std::string& model_name, const std::string& key) {
-    return "// eomgen run: the generated model and the simulation driver, as one shared object.\n"
-           "#include \"model.hpp\"\n#include \"eomgen/simulation.hpp\"\n\n"
+    return "// eomgen run: the generated model's functions as a table (eomgen/model_table.hpp); the driver is eomgen's.\n"
+           "#include \"model.hpp\"\n#include \"eomgen/model_table.hpp\"\n\n"
            "extern \"C\" __attribute__((visibility(\"default\"))) const char eomgen_entry_key[] = \"" + key + "\";\n"
-           "extern \"C\" __attribute__((visibility(\"default\"))) int eomgen_entry_run("
-           "const eomgen::sim::Options* options) {\n"
-           "    return eomgen::sim::run_reporting<eomgen::models::" + model_name +
-           "::Model<double>>(*options, \"eomgen run\");\n}\n";
+           "extern \"C\" __attribute__((visibility(\"default\"))) const eomgen::ModelTable* eomgen_model_table() {\n"
+           "    return &eomgen::model_table<eomgen::models::" + model_name + "::Model<double>>();\n}\n";
 }
 
 void write_file(const fs::path& p, const std::string& text) {
@@ -161,12 +159,13 @@ CompiledModel load(const fs::path& so, const std::string& key) {
     void* handle = ::dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) throw CacheError("cannot load " + so.string() + ": " + ::dlerror());
     const auto* stored = static_cast<const char*>(::dlsym(handle, "eomgen_entry_key"));
-    auto* run = reinterpret_cast<RunEntry>(::dlsym(handle, "eomgen_entry_run"));
-    if (!stored || !run || key != stored) {
+    using TableEntry = const eomgen::ModelTable* (*)();
+    auto* entry = reinterpret_cast<TableEntry>(::dlsym(handle, "eomgen_model_table"));
+    if (!stored || !entry || key != stored) {
         ::dlclose(handle);
         throw CacheError(so.string() + " is not the entry for this model (its key does not match)");
     }
-    return {run, false, so.string(), 0};
+    return {entry(), false, so.string(), 0};
 }
 
 /// Compiles the request into `dir`/model.so; returns the compiler's time. On failure the log is kept as

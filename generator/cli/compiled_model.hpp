@@ -4,13 +4,13 @@
  * The compiler ($CXX, else c++) is started with an argument vector, never through a shell. The cache lives
  * in $XDG_CACHE_HOME/eomgen (default ~/.cache/eomgen), created with mode 0700; a cache directory that is
  * not ours or is writable by others, and an entry that is a symbolic link, are refused. An entry is
- * <key>.so, where the key hashes the model file, eomgen (version, executable's size and time), the runtime's
+ * <key>.so, holding the model's functions only (model_table.hpp: the driver is eomgen's own), where the key hashes the model file, eomgen (version, executable's size and time), the runtime's
  * headers, the compiler (path, size, time) and the flags, so that a cached run neither derives nor compiles; it is built in a mkdtemp directory and renamed into place, so concurrent or interrupted
  * runs never leave a broken entry, and it is loaded only when the key it carries matches.
  */
 #pragma once
 
-#include "eomgen/simulation.hpp"
+#include "eomgen/model_table.hpp"
 
 #include <filesystem>
 #include <functional>
@@ -31,11 +31,9 @@ struct CacheError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// The entry point a compiled model exports.
-using RunEntry = int (*)(const eomgen::sim::Options*);
-
+/// A compiled model: its functions (model_table.hpp), integrated by the driver compiled into eomgen.
 struct CompiledModel {
-    RunEntry run = nullptr;
+    const eomgen::ModelTable* table = nullptr;
     bool from_cache = false;   ///< true when no compiler was started
     std::string path;          ///< the shared object loaded
     double compile_seconds = 0;

@@ -4,6 +4,8 @@
 #include "cli/compiled_model.hpp"
 #include "cli/plot.hpp"
 #include "cli/process.hpp"
+#include "eomgen/model_table.hpp"
+#include "eomgen/simulation.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model_file.hpp"
@@ -53,6 +55,16 @@ std::string xy_problem(const Model& model, const std::string& spec,
 }
 
 }  // namespace
+
+PlotRequest default_plot(const Model& model, const std::string& csv, const std::string& output) {
+    PlotRequest p;
+    p.csv = csv;
+    p.output = output;
+    p.title = model.title.empty() ? model.name : model.title;
+    for (const Coordinate& c : model.coordinates) p.coordinates.push_back(c.name);
+    for (const DeclaredOutput& o : model.outputs) p.outputs.push_back({o.name, o.unit});
+    return p;
+}
 
 RunCommand::RunCommand(CLI::App& app) {
     run_ = app.add_subcommand("run", "Derive, compile (cached) and integrate any model file; CSV and plot");
@@ -138,17 +150,13 @@ int RunCommand::run_model() {
         o.csv = (samples_dir->path() / "samples.csv").string();
     }
     progress("integrating");
-    const int code = compiled.run(&o);
+    eomgen::TableModel::bind(*compiled.table);
+    const int code = eomgen::sim::run_reporting<eomgen::TableModel>(o, "eomgen run");
     if (code == eomgen::sim::kExitOutput) return 3;  // the CSV could not be written, said on stderr
     if (code != eomgen::sim::kExitOk) return 2;      // a bad option value or a failed simulation, said on stderr
 
     if (!plot_.empty()) {
-        PlotRequest p;
-        p.csv = o.csv;
-        p.output = plot_;
-        p.title = model.title.empty() ? model.name : model.title;
-        for (const Coordinate& c : model.coordinates) p.coordinates.push_back(c.name);
-        for (const DeclaredOutput& o : model.outputs) p.outputs.push_back({o.name, o.unit});
+        PlotRequest p = default_plot(model, o.csv, plot_);
         p.xy = xy;
         if (!plot_phase_.empty()) {
             const bool known = std::any_of(model.coordinates.begin(), model.coordinates.end(),

@@ -1,7 +1,9 @@
 /** @file run_command.hpp  `eomgen run MODEL.toml [options]` and `eomgen cache clear`. */
 #pragma once
 
+#include "cli/plot.hpp"
 #include "eomgen/simulation.hpp"
+#include "model/model.hpp"
 
 #include <string>
 #include <vector>
@@ -14,6 +16,9 @@ namespace eomgen::cli {
 
 /// Exit code when the C++ compiler is missing or fails (the message names the command and its log).
 constexpr int kExitCompiler = 4;
+
+/// The plot of a run of `model` whose samples are in `csv`: coordinates, invariants, residuals, outputs.
+PlotRequest default_plot(const Model& model, const std::string& csv, const std::string& output);
 
 /**
  * Registers `run` and `cache` on the `eomgen` command line:

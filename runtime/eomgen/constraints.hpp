@@ -4,6 +4,7 @@
 #include "eomgen/errors.hpp"
 #include "eomgen/integrate.hpp"
 #include "eomgen/linear_solve.hpp"
+#include "eomgen/model_traits.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -95,7 +96,7 @@ template <class Model>
 ConstraintResidual<Model> constraint_residual(const typename Model::Config::Scalar& t, const typename Model::State& x,
                                               const typename Model::Params& p) {
     typename Model::ConstraintVector g, c;
-    Model::constraint_residuals(t, x.template head<Model::nq>(), x.template tail<Model::nq>(), p, g, c);
+    Model::constraint_residuals(t, positions<Model::nq>(x), velocities<Model::nq>(x), p, g, c);
     ConstraintResidual<Model> r;
     for (int k = 0; k < Model::n_constraints; ++k) {
         using std::abs;
@@ -142,15 +143,16 @@ void project_onto_constraints(const typename Model::Config::Scalar& t, typename 
                               const typename Model::Config::Scalar& tol = typename Model::Config::Scalar(1e-13)) {
     using Scalar = typename Model::Config::Scalar;
     using Config = typename Model::Config;
-    constexpr int nq = Model::nq, nc = Model::n_constraints;
+    constexpr int nq = Model::nq;
+    const int nc = Model::n_constraints;
     int nh = 0;
     for (bool h : Model::constraint_is_holonomic) nh += h ? 1 : 0;
     typename Model::MassMatrix M;
     typename Model::ConstraintJacobian A;
     typename Model::ConstraintVector gamma, g, c;
-    Config q = x.template head<nq>(), qd = x.template tail<nq>();
+    Config q = positions<nq>(x), qd = velocities<nq>(x);
     if (nh > 0) {
-        Eigen::Matrix<Scalar, Eigen::Dynamic, nq> G(nh, nq);
+        Eigen::Matrix<Scalar, Eigen::Dynamic, nq> G(nh, q.size());
         Eigen::Matrix<Scalar, Eigen::Dynamic, 1> gh(nh);
         for (int iteration = 0;; ++iteration) {
             Model::constraint_residuals(t, q, qd, p, g, c);
@@ -173,8 +175,8 @@ void project_onto_constraints(const typename Model::Config::Scalar& t, typename 
     Model::constraints(t, q, qd, p, A, gamma);
     Model::constraint_residuals(t, q, qd, p, g, c);
     qd += detail::metric_correction(M, A, c);
-    x.template head<nq>() = q;
-    x.template tail<nq>() = qd;
+    positions<nq>(x) = q;
+    velocities<nq>(x) = qd;
 }
 
 /**
@@ -186,7 +188,7 @@ void check_consistent(const typename Model::Config::Scalar& t, const typename Mo
                       const typename Model::Params& p,
                       const typename Model::Config::Scalar& tol = typename Model::Config::Scalar(1e-9)) {
     typename Model::ConstraintVector g, c;
-    Model::constraint_residuals(t, x.template head<Model::nq>(), x.template tail<Model::nq>(), p, g, c);
+    Model::constraint_residuals(t, positions<Model::nq>(x), velocities<Model::nq>(x), p, g, c);
     const auto scale = typename Model::Config::Scalar(1) + x.cwiseAbs().maxCoeff();
     for (int k = 0; k < Model::n_constraints; ++k) {
         using std::abs;

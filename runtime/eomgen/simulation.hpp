@@ -7,6 +7,7 @@
 
 #include "eomgen/constraints.hpp"
 #include "eomgen/integrate.hpp"
+#include "eomgen/model_traits.hpp"
 #include "eomgen/output.hpp"
 #include "eomgen/symplectic.hpp"
 
@@ -64,11 +65,8 @@ std::string did_you_mean(const std::string& name, const Names& candidates) {
     return best.empty() ? "" : "; did you mean '" + best + "'?";
 }
 
-/// Models with constraints have n_constraints, multipliers() and constraint_residuals().
-template <class M, class = void>
-struct is_constrained : std::false_type {};
-template <class M>
-struct is_constrained<M, std::void_t<decltype(M::n_constraints)>> : std::true_type {};
+/// Models with constraints have n_constraints, multipliers() and constraint_residuals() (model_traits.hpp).
+using eomgen::is_constrained;
 
 /// The simulation options of `eomgen-sim` and `eomgen run` (the same meaning in both).
 struct Options {
@@ -168,7 +166,7 @@ void write_samples(const Options& o, const typename M::Params& params,
         }
     extra.insert(extra.end(), M::output_names.begin(), M::output_names.end());
     eomgen::write_csv(o.csv, names, extra, samples, [&params](double t, const State& x) {
-        const Config q = x.template head<M::nq>(), qd = x.template tail<M::nq>();
+        const Config q = positions<M::nq>(x), qd = velocities<M::nq>(x);
         typename M::Conserved c;
         M::conserved(t, q, qd, params, c);
         std::vector<double> row{M::energy(t, q, qd, params)};
@@ -241,7 +239,7 @@ int run(const Options& o) {
         x0(i) = v;
     }
     auto h = [&params](double t, const State& x) {
-        const Config q = x.template head<M::nq>(), qd = x.template tail<M::nq>();
+        const Config q = positions<M::nq>(x), qd = velocities<M::nq>(x);
         return M::energy(t, q, qd, params);
     };
     auto f = [&params](const double& t, const State& x, State& xdot) { M::rhs(t, x, params, xdot); };
@@ -293,7 +291,7 @@ int run(const Options& o) {
 
     bool done = false;
     if constexpr (is_constrained<M>::value) {
-        if (o.method == "dopri5") {
+        if (constraint_count<M>() > 0 && o.method == "dopri5") {
             eomgen::Dopri5Options<double> opt;
             opt.rtol = o.rtol;
             opt.atol = o.atol;
@@ -319,18 +317,18 @@ int run(const Options& o) {
         }
     }
     if (!done && o.method == "symplectic") {
-        if (is_constrained<M>::value || M::has_generalized_forces)
+        if (constraint_count<M>() > 0 || M::has_generalized_forces)
             throw UsageError("--method symplectic integrates unconstrained models without forces; use dopri5");
         eomgen::VariationalIntegrator<M> vi(params, o.dt);
-        vi.set_state(0.0, x0.template head<M::nq>(), x0.template tail<M::nq>());
+        vi.set_state(0.0, positions<M::nq>(x0), velocities<M::nq>(x0));
         const auto steps = static_cast<std::size_t>(std::llround(o.t_end / o.dt));
         const std::size_t every = std::max<std::size_t>(1, steps / std::size_t(std::max(o.samples, 1)));
         samples.push_back({0.0, x0});
         for (std::size_t k = 1; k <= steps; ++k) {
             vi.step();
-            State x;
-            x.template head<M::nq>() = vi.q();  // not `x << q, qd`: g++ 12 warns falsely for 1×1 blocks
-            x.template tail<M::nq>() = vi.velocity();
+            State x = x0;
+            positions<M::nq>(x) = vi.q();  // not `x << q, qd`: g++ 12 warns falsely for 1×1 blocks
+            velocities<M::nq>(x) = vi.velocity();
             track(vi.t(), x);
             if (k % every == 0 || k == steps) samples.push_back({vi.t(), x});
             x_final = x;
@@ -364,7 +362,8 @@ int run(const Options& o) {
     }
     std::cout.precision(15);
     std::cout << "t:       " << t_final << "\n";
-    for (int i = 0; i < M::nx; ++i) std::cout << "  " << M::state_names[std::size_t(i)] << " = " << x_final(i) << "\n";
+    for (Eigen::Index i = 0; i < x_final.size(); ++i)
+        std::cout << "  " << M::state_names[std::size_t(i)] << " = " << x_final(i) << "\n";
     std::cout << "energy h: " << h0 << " at t = 0, " << h(t_final, x_final) << " at the end; "
               << (std::abs(h0) < 1e-12 ? "max |dh| = " : "max |dh|/|h0| = ") << max_drift
               << (std::abs(h0) < 1e-12 ? "  (absolute: h0 is 0)" : "")

@@ -1,0 +1,432 @@
+/**
+ * @file model_table.hpp  A generated model behind a table of plain functions, so that a model compiled on
+ * its own (a shared object `eomgen run` builds and loads with dlopen) is integrated by a driver compiled
+ * once, in the program that loads it.
+ *
+ * Why: the simulation driver (simulation.hpp) instantiated for one generated model costs about 9 s of
+ * compilation, the model's own functions about 1 s. With the table, the shared object holds only the
+ * model's functions and the driver is compiled once into eomgen, instantiated for TableModel.
+ *
+ * The model's side (the shared object): model_table<Model<double>>() is the table of one generated model;
+ * its functions take and fill arrays (matrices column-major), catch every exception and return its kind
+ * (TableStatus), with the message and time kept per thread for error_message().
+ *
+ * The program's side: TableModel is a Model (docs/generated_code.md) whose sizes are known at run time
+ * (nq = Eigen::Dynamic; Config, State, ... are Eigen's dynamic vectors), calling through the table bound
+ * with TableModel::bind(); errors come back as the runtime's own exception classes.
+ */
+#pragma once
+
+#include "eomgen/errors.hpp"
+#include "eomgen/model_traits.hpp"
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <cstdint>
+#include <exception>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace eomgen {
+
+/// Raised when ModelTable's layout changes: a table of another layout is refused.
+constexpr std::uint32_t kModelTableAbi = 1;
+
+/// What a table function reports: success, or which of the runtime's errors it caught.
+enum TableStatus : int {
+    kTableOk = 0,
+    kTableSimulationError,
+    kTableSingularMassMatrix,
+    kTableNonFiniteState,
+    kTableSingularConstraints,
+    kTableOtherError,
+};
+
+/// One model as data and plain functions. Parameters live in an opaque block of params_size bytes that
+/// init_params fills with the model's defaults. Functions without constraints are null when n_constraints = 0.
+struct ModelTable {
+    std::uint32_t abi;
+    const char *name, *title, *source;
+    int nq, n_params, n_conserved, n_outputs, n_constraints;
+    bool explicit_time, has_generalized_forces;
+    const char* const* state_names;       ///< 2 nq: q, then q'
+    const char* const* param_names;       ///< n_params
+    const char* const* conserved_names;   ///< n_conserved
+    const char* const* output_names;      ///< n_outputs
+    const char* const* constraint_names;  ///< n_constraints
+    const bool* constraint_is_holonomic;  ///< n_constraints
+    std::size_t params_size, params_align;
+    void (*init_params)(void* p);
+    bool (*set_param)(void* p, const char* name, double value);
+    void (*param_values)(const void* p, double* values);
+    void (*default_state)(double* x);
+    int (*rhs)(double t, const double* x, const void* p, double* xdot);
+    int (*energy)(double t, const double* q, const double* qd, const void* p, double* h);
+    int (*conserved)(double t, const double* q, const double* qd, const void* p, double* out);
+    int (*outputs)(double t, const double* q, const double* qd, const void* p, double* out);
+    int (*mass_matrix)(double t, const double* q, const void* p, double* M);
+    int (*momenta)(double t, const double* q, const double* qd, const void* p, double* out);
+    int (*lagrangian_gradient)(double t, const double* q, const double* qd, const void* p, double* out);
+    int (*constraints)(double t, const double* q, const double* qd, const void* p, double* A, double* gamma);
+    int (*constraint_residuals)(double t, const double* q, const double* qd, const void* p, double* g, double* c);
+    int (*multipliers)(double t, const double* x, const void* p, double* lambda);
+    /// The message of the last error on this thread, and its time in *t.
+    const char* (*error_message)(double* t);
+};
+
+namespace table_detail {
+
+struct LastError {
+    std::string message;
+    double t = 0;
+};
+inline LastError& last_error() {
+    thread_local LastError e;
+    return e;
+}
+
+/// Runs f, turning what it throws into a TableStatus (the message kept for error_message()).
+template <class F>
+int guarded(F&& f) noexcept {
+    auto keep = [](const char* what, double t, int status) {
+        try {
+            last_error().message = what;
+            last_error().t = t;
+        } catch (...) {
+        }
+        return status;
+    };
+    try {
+        f();
+        return kTableOk;
+    } catch (const SingularMassMatrix& e) {
+        return keep(e.what(), e.t(), kTableSingularMassMatrix);
+    } catch (const NonFiniteState& e) {
+        return keep(e.what(), e.t(), kTableNonFiniteState);
+    } catch (const SingularConstraints& e) {
+        return keep(e.what(), e.t(), kTableSingularConstraints);
+    } catch (const SimulationError& e) {
+        return keep(e.what(), e.t(), kTableSimulationError);
+    } catch (const std::exception& e) {
+        return keep(e.what(), 0, kTableOtherError);
+    } catch (...) {
+        return keep("unknown error", 0, kTableOtherError);
+    }
+}
+
+template <class V>
+V read(const double* a) {
+    return Eigen::Map<const V>(a);
+}
+template <class V>
+void write(const V& v, double* a) {
+    Eigen::Map<V> out(a);
+    out = v;
+}
+
+/// The table's functions for generated model M (Model<double>).
+template <class M>
+struct Wrappers {
+    using Config = typename M::Config;
+    using State = typename M::State;
+    using Params = typename M::Params;
+    static const Params& params(const void* p) { return *static_cast<const Params*>(p); }
+
+    static void init_params(void* p) { new (p) Params(); }
+    static bool set_param(void* p, const char* name, double value) {
+        return M::set_param(*static_cast<Params*>(p), name, value);
+    }
+    static void param_values(const void* p, double* values) {
+        const auto v = M::param_values(params(p));
+        for (std::size_t i = 0; i < v.size(); ++i) values[i] = v[i];
+    }
+    static void default_state(double* x) { write<State>(M::default_state(), x); }
+    static int rhs(double t, const double* x, const void* p, double* xdot) {
+        return guarded([&] {
+            State out;
+            M::rhs(t, read<State>(x), params(p), out);
+            write<State>(out, xdot);
+        });
+    }
+    static int energy(double t, const double* q, const double* qd, const void* p, double* h) {
+        return guarded([&] { *h = M::energy(t, read<Config>(q), read<Config>(qd), params(p)); });
+    }
+    static int conserved(double t, const double* q, const double* qd, const void* p, double* out) {
+        return guarded([&] {
+            typename M::Conserved c;
+            M::conserved(t, read<Config>(q), read<Config>(qd), params(p), c);
+            write(c, out);
+        });
+    }
+    static int outputs(double t, const double* q, const double* qd, const void* p, double* out) {
+        return guarded([&] {
+            typename M::Outputs o;
+            M::outputs(t, read<Config>(q), read<Config>(qd), params(p), o);
+            write(o, out);
+        });
+    }
+    static int mass_matrix(double t, const double* q, const void* p, double* out) {
+        return guarded([&] {
+            typename M::MassMatrix m;
+            M::mass_matrix(t, read<Config>(q), params(p), m);
+            write(m, out);
+        });
+    }
+    static int momenta(double t, const double* q, const double* qd, const void* p, double* out) {
+        return guarded([&] {
+            Config m;
+            M::momenta(t, read<Config>(q), read<Config>(qd), params(p), m);
+            write(m, out);
+        });
+    }
+    static int lagrangian_gradient(double t, const double* q, const double* qd, const void* p, double* out) {
+        return guarded([&] {
+            Config g;
+            M::lagrangian_gradient(t, read<Config>(q), read<Config>(qd), params(p), g);
+            write(g, out);
+        });
+    }
+    static int constraints(double t, const double* q, const double* qd, const void* p, double* A, double* gamma) {
+        return guarded([&] {
+            if constexpr (is_constrained<M>::value) {
+                typename M::ConstraintJacobian a;
+                typename M::ConstraintVector g;
+                M::constraints(t, read<Config>(q), read<Config>(qd), params(p), a, g);
+                write(a, A);
+                write(g, gamma);
+            }
+        });
+    }
+    static int constraint_residuals(double t, const double* q, const double* qd, const void* p, double* g,
+                                    double* c) {
+        return guarded([&] {
+            if constexpr (is_constrained<M>::value) {
+                typename M::ConstraintVector position, velocity;
+                M::constraint_residuals(t, read<Config>(q), read<Config>(qd), params(p), position, velocity);
+                write(position, g);
+                write(velocity, c);
+            }
+        });
+    }
+    static int multipliers(double t, const double* x, const void* p, double* lambda) {
+        return guarded([&] {
+            if constexpr (is_constrained<M>::value) {
+                typename M::ConstraintVector l;
+                M::multipliers(t, read<State>(x), params(p), l);
+                write(l, lambda);
+            }
+        });
+    }
+    static const char* error_message(double* t) {
+        if (t) *t = last_error().t;
+        return last_error().message.c_str();
+    }
+};
+
+}  // namespace table_detail
+
+/// The table of generated model M (a Model<double> of a generated header).
+template <class M>
+const ModelTable& model_table() {
+    using W = table_detail::Wrappers<M>;
+    constexpr bool constrained = is_constrained<M>::value;
+    static const ModelTable table = [] {
+        ModelTable t{};
+        t.abi = kModelTableAbi;
+        t.name = M::name;
+        t.title = M::title;
+        t.source = M::source;
+        t.nq = M::nq;
+        t.n_params = M::n_params;
+        t.n_conserved = M::n_conserved;
+        t.n_outputs = M::n_outputs;
+        t.n_constraints = constraint_count<M>();
+        t.explicit_time = M::explicit_time;
+        t.has_generalized_forces = M::has_generalized_forces;
+        t.state_names = M::state_names.data();
+        t.param_names = M::param_names.data();
+        t.conserved_names = M::conserved_names.data();
+        t.output_names = M::output_names.data();
+        if constexpr (constrained) {
+            t.constraint_names = M::constraint_names.data();
+            t.constraint_is_holonomic = M::constraint_is_holonomic.data();
+            t.constraints = &W::constraints;
+            t.constraint_residuals = &W::constraint_residuals;
+            t.multipliers = &W::multipliers;
+        }
+        t.params_size = sizeof(typename M::Params);
+        t.params_align = alignof(typename M::Params);
+        t.init_params = &W::init_params;
+        t.set_param = &W::set_param;
+        t.param_values = &W::param_values;
+        t.default_state = &W::default_state;
+        t.rhs = &W::rhs;
+        t.energy = &W::energy;
+        t.conserved = &W::conserved;
+        t.outputs = &W::outputs;
+        t.mass_matrix = &W::mass_matrix;
+        t.momenta = &W::momenta;
+        t.lagrangian_gradient = &W::lagrangian_gradient;
+        t.error_message = &W::error_message;
+        return t;
+    }();
+    return table;
+}
+
+/**
+ * A Model whose functions are a ModelTable's: sizes at run time, the interface of a generated model
+ * (docs/generated_code.md) otherwise, so that simulation.hpp's driver runs it unchanged. One table is bound
+ * at a time (bind() before any other use); the table and the shared object holding it must outlive its use.
+ */
+class TableModel {
+  public:
+    using Scalar = double;
+    static constexpr int nq = Eigen::Dynamic;
+    static constexpr int nx = Eigen::Dynamic;
+    using Config = Eigen::VectorXd;
+    using State = Eigen::VectorXd;
+    using MassMatrix = Eigen::MatrixXd;
+    using Conserved = Eigen::VectorXd;
+    using Outputs = Eigen::VectorXd;
+    using ConstraintVector = Eigen::VectorXd;
+    using ConstraintJacobian = Eigen::MatrixXd;
+
+    /// The model's parameter block, holding its defaults when made.
+    class Params {
+      public:
+        Params() : storage_((table().params_size + sizeof(Slot) - 1) / sizeof(Slot) + 1) {
+            table().init_params(data());
+        }
+        const void* data() const { return storage_.data(); }
+        void* data() { return storage_.data(); }
+
+      private:
+        using Slot = std::max_align_t;
+        std::vector<Slot> storage_;
+    };
+
+    static inline const char* name = "";
+    static inline const char* title = "";
+    static inline const char* source = "";
+    static inline int n_params = 0, n_conserved = 0, n_outputs = 0, n_constraints = 0;
+    static inline bool explicit_time = false, has_generalized_forces = false;
+    static inline std::vector<const char*> state_names, coordinate_names, param_names, conserved_names, output_names,
+        constraint_names;
+    static inline std::vector<bool> constraint_is_holonomic;
+
+    /// Makes `t` the model of every TableModel call; throws std::invalid_argument for a table of another
+    /// layout or one this program cannot use.
+    static void bind(const ModelTable& t) {
+        if (t.abi != kModelTableAbi)
+            throw std::invalid_argument("the compiled model's table has layout " + std::to_string(t.abi) +
+                                        ", this eomgen reads " + std::to_string(kModelTableAbi));
+        if (t.params_align > alignof(std::max_align_t))
+            throw std::invalid_argument("the compiled model's parameters need an alignment this eomgen cannot give");
+        table_ = &t;
+        name = t.name;
+        title = t.title;
+        source = t.source;
+        n_params = t.n_params;
+        n_conserved = t.n_conserved;
+        n_outputs = t.n_outputs;
+        n_constraints = t.n_constraints;
+        explicit_time = t.explicit_time;
+        has_generalized_forces = t.has_generalized_forces;
+        state_names.assign(t.state_names, t.state_names + 2 * t.nq);
+        coordinate_names.assign(t.state_names, t.state_names + t.nq);
+        param_names.assign(t.param_names, t.param_names + t.n_params);
+        conserved_names.assign(t.conserved_names, t.conserved_names + t.n_conserved);
+        output_names.assign(t.output_names, t.output_names + t.n_outputs);
+        constraint_names.assign(t.constraint_names, t.constraint_names + t.n_constraints);
+        constraint_is_holonomic.assign(t.constraint_is_holonomic, t.constraint_is_holonomic + t.n_constraints);
+    }
+
+    static const ModelTable& table() {
+        if (!table_) throw std::logic_error("TableModel used before bind()");
+        return *table_;
+    }
+    static int dof() { return table().nq; }
+
+    static bool set_param(Params& p, const std::string& name, double value) {
+        return table().set_param(p.data(), name.c_str(), value);
+    }
+    static std::vector<double> param_values(const Params& p) {
+        std::vector<double> v(std::size_t(table().n_params));
+        table().param_values(p.data(), v.data());
+        return v;
+    }
+    static State default_state() {
+        State x(2 * dof());
+        table().default_state(x.data());
+        return x;
+    }
+
+    static void rhs(double t, const State& x, const Params& p, State& xdot) {
+        xdot.resize(x.size());
+        check(table().rhs(t, x.data(), p.data(), xdot.data()));
+    }
+    static double energy(double t, const Config& q, const Config& qd, const Params& p) {
+        double h = 0;
+        check(table().energy(t, q.data(), qd.data(), p.data(), &h));
+        return h;
+    }
+    static void conserved(double t, const Config& q, const Config& qd, const Params& p, Conserved& out) {
+        out.resize(n_conserved);
+        check(table().conserved(t, q.data(), qd.data(), p.data(), out.data()));
+    }
+    static void outputs(double t, const Config& q, const Config& qd, const Params& p, Outputs& out) {
+        out.resize(n_outputs);
+        check(table().outputs(t, q.data(), qd.data(), p.data(), out.data()));
+    }
+    static void mass_matrix(double t, const Config& q, const Params& p, MassMatrix& M) {
+        M.resize(dof(), dof());
+        check(table().mass_matrix(t, q.data(), p.data(), M.data()));
+    }
+    static void momenta(double t, const Config& q, const Config& qd, const Params& p, Config& out) {
+        out.resize(dof());
+        check(table().momenta(t, q.data(), qd.data(), p.data(), out.data()));
+    }
+    static void lagrangian_gradient(double t, const Config& q, const Config& qd, const Params& p, Config& out) {
+        out.resize(dof());
+        check(table().lagrangian_gradient(t, q.data(), qd.data(), p.data(), out.data()));
+    }
+    static void constraints(double t, const Config& q, const Config& qd, const Params& p, ConstraintJacobian& A,
+                            ConstraintVector& gamma) {
+        A.resize(n_constraints, dof());
+        gamma.resize(n_constraints);
+        if (n_constraints > 0) check(table().constraints(t, q.data(), qd.data(), p.data(), A.data(), gamma.data()));
+    }
+    static void constraint_residuals(double t, const Config& q, const Config& qd, const Params& p,
+                                     ConstraintVector& g, ConstraintVector& c) {
+        g.resize(n_constraints);
+        c.resize(n_constraints);
+        if (n_constraints > 0)
+            check(table().constraint_residuals(t, q.data(), qd.data(), p.data(), g.data(), c.data()));
+    }
+    static void multipliers(double t, const State& x, const Params& p, ConstraintVector& lambda) {
+        lambda.resize(n_constraints);
+        if (n_constraints > 0) check(table().multipliers(t, x.data(), p.data(), lambda.data()));
+    }
+
+  private:
+    static inline const ModelTable* table_ = nullptr;
+
+    /// Rethrows what a table function caught, as the class it was.
+    static void check(int status) {
+        if (status == kTableOk) return;
+        double t = 0;
+        const std::string what = table().error_message(&t);
+        switch (status) {
+        case kTableSingularMassMatrix: throw SingularMassMatrix(what, t);
+        case kTableNonFiniteState: throw NonFiniteState(what, t);
+        case kTableSingularConstraints: throw SingularConstraints(what, t);
+        case kTableSimulationError: throw SimulationError(what, t);
+        default: throw std::runtime_error(what);
+        }
+    }
+};
+
+}  // namespace eomgen

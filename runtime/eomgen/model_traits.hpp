@@ -1,0 +1,62 @@
+/**
+ * @file model_traits.hpp  What the runtime asks of a Model (docs/generated_code.md) whatever its storage: a
+ * generated model has sizes fixed at compile time (nq = 2), a model loaded at run time (TableModel,
+ * model_table.hpp) has nq = Eigen::Dynamic and its sizes in its vectors. The drivers go through these so
+ * that one implementation serves both.
+ */
+#pragma once
+
+#include <Eigen/Core>
+
+#include <type_traits>
+
+namespace eomgen {
+
+/// Models with constraints declare n_constraints (and constraints(), constraint_residuals(), multipliers()).
+template <class M, class = void>
+struct is_constrained : std::false_type {};
+template <class M>
+struct is_constrained<M, std::void_t<decltype(M::n_constraints)>> : std::true_type {};
+
+/// How many constraints a model has at run time (0 for a model without the constraint interface).
+template <class M>
+int constraint_count() {
+    if constexpr (is_constrained<M>::value)
+        return int(M::n_constraints);
+    else
+        return 0;
+}
+
+/// q, the first half of a state x = [q, q̇], as a block of x (writable when x is).
+template <int NQ, class Derived>
+auto positions(const Eigen::MatrixBase<Derived>& x) {
+    if constexpr (NQ == Eigen::Dynamic)
+        return x.head(x.size() / 2);
+    else
+        return x.template head<NQ>();
+}
+template <int NQ, class Derived>
+auto positions(Eigen::MatrixBase<Derived>& x) {
+    if constexpr (NQ == Eigen::Dynamic)
+        return x.head(x.size() / 2);
+    else
+        return x.template head<NQ>();
+}
+
+/// q̇, the second half of a state x = [q, q̇].
+template <int NQ, class Derived>
+auto velocities(const Eigen::MatrixBase<Derived>& x) {
+    if constexpr (NQ == Eigen::Dynamic)
+        return x.tail(x.size() / 2);
+    else
+        return x.template tail<NQ>();
+}
+template <int NQ, class Derived>
+auto velocities(Eigen::MatrixBase<Derived>& x) {
+    if constexpr (NQ == Eigen::Dynamic)
+        return x.tail(x.size() / 2);
+    else
+        return x.template tail<NQ>();
+}
+
+}  // namespace eomgen
