@@ -148,7 +148,7 @@ TEST_CASE("checker: planted mistakes in the pendulum are found and located", "[c
                           fixture("pendulum_planted.md"));
 }
 
-TEST_CASE("checker: identities in the text's own symbols agree; conditions are not compared", "[checker]") {
+TEST_CASE("checker: identities in the text's own symbols agree, conditions are not compared", "[checker]") {
     const std::string path = (std::filesystem::temp_directory_path() / "eomgen_checker_identity.md").string();
     {
         std::ofstream out(path);

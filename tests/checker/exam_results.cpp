@@ -120,7 +120,7 @@ TEST_CASE("results: bodies' inertia, principal moments, angular velocity", "[res
     }
 }
 
-TEST_CASE("checker: a wrong closed form and a wrong constraint are found; right ones agree", "[checker][results]") {
+TEST_CASE("checker: a wrong closed form and a wrong constraint are found, right ones agree", "[checker][results]") {
     const eomgen::Model model = eomgen::load_model(kSource + "/models/rolling_cone.toml");
     const eomgen::Equations eq = eomgen::derive_equations(model);
     const std::string path = kSource + "/tests/checker/fixtures/cone_planted.md";

@@ -101,7 +101,7 @@ TEST_CASE("bad constraints are errors at the constraint", "[constraints][errors]
     REQUIRE_THROWS_WITH(with_constraints({{"sliding", "x - y"}}), Catch::Contains("neither"));
 }
 
-TEST_CASE("forces and dissipation enter f; h and cyclic momenta are not claimed conserved", "[mechanics][forces]") {
+TEST_CASE("forces and dissipation enter f, h and cyclic momenta are not claimed conserved", "[mechanics][forces]") {
     const eomgen::Model md = eomgen::parse_model(
         "[[coordinates]]\nname = \"x\"\n[[coordinates]]\nname = \"y\"\n[[parameters]]\nname = \"c\"\nvalue = 1.0\n"
         "[lagrangian]\nT = \"1/2*(x'^2 + y'^2)\"\nR = \"1/2*c*x'^2\"\n[forces]\ny = \"sin(t)\"\n",

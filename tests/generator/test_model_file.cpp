@@ -132,7 +132,7 @@ TEST_CASE("model errors read file:line:col: message", "[model]") {
                       StartsWith("/nonexistent/model.toml: cannot open"));
 }
 
-TEST_CASE("a minimal model; defaults and constant expressions", "[model]") {
+TEST_CASE("a minimal model, defaults and constant expressions", "[model]") {
     const std::string text =
         "[[coordinates]]\nname = \"theta1\"\ninitial = \"pi/4\"\nrate = -1\n"
         "[[parameters]]\nname = \"m_rod\"\nvalue = \"sqrt(2)/2\"\n"

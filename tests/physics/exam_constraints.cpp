@@ -51,7 +51,7 @@ Sphere::State sphere_state(double th, double ph, double ps, double thd, double p
 
 }  // namespace
 
-TEST_CASE("rolling sphere: spin, speed and both kinetic energies are conserved; no drift", "[physics][constraints]") {
+TEST_CASE("rolling sphere: spin, speed and both kinetic energies are conserved, no drift", "[physics][constraints]") {
     Sphere::Params p;
     const Sphere::State x0 = Sphere::default_state();
     const auto r = eomgen::integrate_constrained<Sphere>(p, 0.0, x0, grid(200.0, 400), tight());
@@ -108,7 +108,7 @@ TEST_CASE("rolling sphere: the Euler-angle singularity sin(theta) = 0 stops with
     }
 }
 
-TEST_CASE("Cartesian pendulum: same trajectory as the angle formulation; lambda = -F/(2l)",
+TEST_CASE("Cartesian pendulum: same trajectory as the angle formulation, lambda = -F/(2l)",
           "[physics][constraints]") {
     Cartesian::Params pc;
     Pendulum::Params pa;
@@ -137,7 +137,7 @@ TEST_CASE("Cartesian pendulum: same trajectory as the angle formulation; lambda 
     REQUIRE(rc.max_position_residual <= 1e-10);
 }
 
-TEST_CASE("rolling disc: energy is conserved; fast rolling stays upright, slow rolling falls", "[physics][constraints]") {
+TEST_CASE("rolling disc: energy is conserved, fast rolling stays upright, slow rolling falls", "[physics][constraints]") {
     Disc::Params p;
     auto run = [&p](double spin, double t_end) {
         Disc::State x0 = Disc::State::Zero();
