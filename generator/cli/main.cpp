@@ -1,5 +1,7 @@
 /** @file main.cpp  The `eomgen` command: generate C++ from model files, show the derived mechanics. */
 #include "checker/check_command.hpp"
+#include "cli/latex_equations.hpp"
+#include "cli/report_command.hpp"
 #include "cli/run_command.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
@@ -84,24 +86,6 @@ int generate(const std::vector<std::string>& models, const std::vector<std::stri
 
 std::string rule(const std::string& title) { return "\n" + title + "\n" + std::string(title.size(), '-') + "\n"; }
 
-/// The model's symbols plus one λ per constraint, for printing the equations with multipliers.
-struct MultiplierTable {
-    eomgen::codegen::SymbolTable table;
-    std::vector<GiNaC::symbol> lambda;
-};
-
-MultiplierTable multiplier_table(const eomgen::Model& model, const eomgen::Equations& eq) {
-    MultiplierTable m{eomgen::codegen::symbol_table(model), {}};
-    for (std::size_t k = 0; k < eq.constraints.size(); ++k) {
-        const std::string& name = eq.constraints[k].name;
-        m.lambda.emplace_back("lambda_" + name);
-        m.table.info.push_back({eomgen::codegen::SymbolKind::Constant, int(k + 1), "lambda_" + name,
-                                "lambda_" + name, "\\lambda_{\\mathrm{" + name + "}}", ""});
-        m.table.exprs.push_back(m.lambda.back());
-    }
-    return m;
-}
-
 void show_constraints(const eomgen::Model& model, const eomgen::Equations& eq, eomgen::codegen::MathPrinter& pr,
                       const std::vector<GiNaC::symbol>& lambda, std::ostream& os) {
     using eomgen::codegen::MathStyle;
@@ -130,7 +114,7 @@ void show_constraints(const eomgen::Model& model, const eomgen::Equations& eq, e
 
 void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ostream& os) {
     using eomgen::codegen::MathStyle;
-    MultiplierTable mt = multiplier_table(model, eq);
+    eomgen::cli::MultiplierTable mt = eomgen::cli::multiplier_table(model, eq);
     eomgen::codegen::MathPrinter pr(mt.table);
     auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), MathStyle::Text); };
     os << model.name << ": " << model.title;
@@ -225,91 +209,12 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     }
 }
 
-void show_latex(const eomgen::Model& model, const eomgen::Equations& eq, std::ostream& os) {
-    using eomgen::codegen::MathStyle;
-    MultiplierTable mt = multiplier_table(model, eq);
-    eomgen::codegen::MathPrinter pr(mt.table);
-    auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), MathStyle::Latex); };
-    // Text from the model file is escaped for LaTeX (docs/security.md); names are identifiers, which may hold '_'.
-    using eomgen::text::latex_text;
-    os << "% " << model.name << ": " << latex_text(model.title)
-       << (model.source.empty() ? "" : " (" + latex_text(model.source) + ")") << "\n";
-    os << "\\begin{align}\n";
-    os << "T &= " << P(eq.T) << " \\\\\n";
-    os << "V &= " << P(eq.V) << " \\\\\n";
-    os << "L &= " << P(eq.L) << "\n\\end{align}\n";
-    if (!eq.bodies.empty() || !eq.springs.empty()) {
-        os << "% each body's and spring's share\n\\begin{align}\n";
-        std::vector<std::string> lines;
-        for (const eomgen::BodyEnergy& b : eq.bodies) {
-            lines.push_back("T_{\\text{" + latex_text(b.name) + "}} &= " + P(b.T));
-            lines.push_back("V_{\\text{" + latex_text(b.name) + "}} &= " + P(b.V));
-        }
-        for (const eomgen::SpringEnergy& sp : eq.springs) lines.push_back("V_{\\text{" + latex_text(sp.name) + "}} &= " + P(sp.V));
-        for (std::size_t i = 0; i < lines.size(); ++i) os << lines[i] << (i + 1 < lines.size() ? " \\\\" : "") << "\n";
-        os << "\\end{align}\n";
-    }
-    for (const eomgen::Body& body : model.bodies) {
-        const eomgen::BodyDynamics d = eomgen::body_dynamics(model, body);
-        if (d.omega_body.is_zero_matrix()) continue;
-        os << "% Euler's equations of " << latex_text(body.name)
-           << ": N' = I \\dot\\omega' + \\omega' \\times I \\omega' (body axes, about the centre of mass)\n"
-           << "\\begin{align}\n";
-        for (unsigned k = 0; k < 3; ++k)
-            os << "N'_{" << k + 1 << "} &= " << P(d.euler_torque(k, 0)) << (k < 2 ? " \\\\" : "") << "\n";
-        os << "\\end{align}\n";
-    }
-    if (!eq.constraints.empty()) {
-        os << "% constraints\n\\begin{align}\n";
-        for (std::size_t k = 0; k < eq.constraints.size(); ++k) {
-            const auto& c = eq.constraints[k];
-            const bool holonomic = c.kind == eomgen::ConstraintKind::Holonomic;
-            os << P(holonomic ? c.position : c.velocity) << " &= 0 && \\text{" << latex_text(c.name) << " ("
-               << (holonomic ? "holonomic" : "nonholonomic") << ")}" << (k + 1 < eq.constraints.size() ? " \\\\" : "")
-               << "\n";
-        }
-        os << "\\end{align}\n";
-    }
-    // Euler-Lagrange equations, with Q - dR/dq' + A^T lambda on the right when forces or constraints act.
-    os << "% Euler-Lagrange equations\n\\begin{align}\n";
-    for (std::size_t i = 0; i < model.dof(); ++i) {
-        GiNaC::ex rhs = eq.generalized_forces[i];
-        for (std::size_t k = 0; k < eq.constraints.size(); ++k) rhs += eq.constraints[k].jacobian[i] * mt.lambda[k];
-        os << P(eq.euler_lagrange[i]) << " &= " << P(rhs) << (i + 1 < model.dof() ? " \\\\" : "") << "\n";
-    }
-    os << "\\end{align}\n% energy function and momenta\n\\begin{align}\n";
-    os << "h &= " << P(eq.energy);
-    for (std::size_t i = 0; i < model.dof(); ++i)
-        os << " \\\\\np_{" << model.coordinates[i].latex << "} &= " << P(eq.momenta[i]);
-    os << "\n\\end{align}\n";
-    for (const eomgen::ConservedQuantity& c : eq.conserved) os << "% conserved: " << c.latex << " (" << latex_text(c.reason) << ")\n";
-    if (!model.results.empty()) {
-        os << "% declared results\n\\begin{align}\n";
-        for (std::size_t k = 0; k < model.results.size(); ++k)
-            os << model.results[k].latex << " &= " << P(model.results[k].expr.expr)
-               << (k + 1 < model.results.size() ? " \\\\" : "") << "  % " << latex_text(model.results[k].name)
-               << (model.results[k].equals.empty() ? "" : ", verified: equals " + model.results[k].equals)
-               << "\n";
-        os << "\\end{align}\n";
-    }
-    if (!model.outputs.empty()) {
-        os << "% outputs\n\\begin{align}\n";
-        for (std::size_t k = 0; k < model.outputs.size(); ++k) {
-            const eomgen::DeclaredOutput& o = model.outputs[k];
-            os << o.latex << " &= " << P(o.expr.expr) << (k + 1 < model.outputs.size() ? " \\\\" : "")
-               << "  % " << latex_text(o.name) << (o.unit.empty() ? "" : " [" + latex_text(o.unit) + "]")
-               << "\n";
-        }
-        os << "\\end{align}\n";
-    }
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"eomgen: equations of motion from a Lagrangian, as fast C++.\n"
                  "Exit codes: 0 ok, 1 model error (file:line:col: message), 2 usage (run: or the simulation failed),\n"
-                 "3 file I/O or cache, 4 the C++ compiler is missing or failed (run), 5 check: a disagreement."};
+                 "3 file I/O or cache, 4 the C++ compiler is missing or failed (run, report), 5 check: a disagreement."};
     app.set_version_flag("--version", fmt::format("eomgen {} (GiNaC {}.{}.{}, CLN {}.{}.{})", EOMGEN_VERSION,
                                                   GINACLIB_MAJOR_VERSION, GINACLIB_MINOR_VERSION,
                                                   GINACLIB_MICRO_VERSION, CL_VERSION_MAJOR, CL_VERSION_MINOR,
@@ -338,10 +243,13 @@ int main(int argc, char** argv) {
     bool latex = false;
     CLI::App* show = app.add_subcommand("show", "Print T, V, L, the equations, h, momenta and conserved quantities");
     show->add_option("model", show_model, "Model file (.toml)")->required()->check(CLI::ExistingFile);
-    show->add_flag("--latex", latex, "Print LaTeX instead of plain text");
+    show->add_flag("--latex", latex, "Print LaTeX instead of plain text (align environments: needs amsmath)");
+    bool standalone = false;
+    show->add_flag("--standalone", standalone, "With --latex: a complete document that pdflatex compiles");
 
     const eomgen::checker::CheckCommand check(app);  // `eomgen check MODEL DERIVATION.md`, see docs/checker.md
     eomgen::cli::RunCommand run(app);               // `eomgen run MODEL.toml`, `eomgen cache clear`
+    eomgen::cli::ReportCommand report(app);         // `eomgen report MODEL.toml`
 
     // A mistyped command: name it, with the closest one (CLI11 would say only "A subcommand is required").
     if (argc >= 2 && argv[1][0] != '-') {
@@ -382,16 +290,24 @@ int main(int argc, char** argv) {
             return generate(gen_models, gen_families, out_dir, gen_name);
         }
         if (*show) {
+            if (standalone && !latex) {
+                std::cerr << "eomgen show: --standalone needs --latex\n";
+                return kExitUsage;
+            }
             const eomgen::Model model = eomgen::load_model(show_model);
             const eomgen::Equations eq = eomgen::derive_equations(model);
-            if (latex)
-                show_latex(model, eq, std::cout);
-            else
+            if (latex) {
+                const std::string fragment =
+                    eomgen::cli::latex_fragment(model, eomgen::cli::latex_equations(model, eq));
+                std::cout << (standalone ? eomgen::cli::latex_document(model, fragment) : fragment);
+            } else {
                 show_text(model, eq, std::cout);
+            }
             return kExitOk;
         }
         if (check.selected()) return check.run();
         if (run.selected()) return run.run();
+        if (report.selected()) return report.run();
     } catch (const eomgen::ModelError& e) {
         std::cerr << e.what() << "\n";
         return kExitModelError;

@@ -1,12 +1,11 @@
 // `eomgen run` as a user runs it, on model files this test writes itself (none is in models/): exit codes,
 // CSV rows and columns, invariants along the trajectory, events, the cache (no compiler on a second run,
 // invalidated by an edit, safe under two concurrent runs, refused when unsafe), a broken compiler, plots.
+#include "cli/eomgen_process.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <fcntl.h>
-#include <spawn.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -18,61 +17,15 @@
 #include <string>
 #include <vector>
 
-extern char** environ;
-
 namespace fs = std::filesystem;
+using namespace eomgen_test;
 
 namespace {
 
 const fs::path kWork = fs::path(EOMGEN_BINARY_DIR) / "tests" / "cli" / "work" / "run";
 
-struct Result {
-    int code = -1;
-    std::string output;  // stdout and stderr together
-};
-
-std::string read(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-/// Starts eomgen with `args` and extra environment variables; returns the pid (output to `log`).
-pid_t start(const std::vector<std::string>& args, const std::map<std::string, std::string>& env, const fs::path& log) {
-    std::vector<std::string> argv = {EOMGEN_EXE};
-    argv.insert(argv.end(), args.begin(), args.end());
-    std::vector<std::string> envs;
-    for (char** e = environ; *e; ++e) {
-        const std::string kv = *e;
-        if (!env.count(kv.substr(0, kv.find('=')))) envs.push_back(kv);
-    }
-    for (const auto& [k, v] : env) envs.push_back(k + "=" + v);
-    std::vector<char*> a, en;
-    for (auto& s : argv) a.push_back(s.data());
-    a.push_back(nullptr);
-    for (auto& s : envs) en.push_back(s.data());
-    en.push_back(nullptr);
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&fa, 1, 2);
-    pid_t pid = 0;
-    REQUIRE(posix_spawn(&pid, a[0], &fa, nullptr, a.data(), en.data()) == 0);
-    posix_spawn_file_actions_destroy(&fa);
-    return pid;
-}
-
-Result finish(pid_t pid, const fs::path& log) {
-    int status = 0;
-    waitpid(pid, &status, 0);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : 128, read(log)};
-}
-
 Result eomgen(const std::vector<std::string>& args, std::map<std::string, std::string> env = {}) {
-    if (!env.count("XDG_CACHE_HOME")) env["XDG_CACHE_HOME"] = (kWork / "cache").string();
-    const fs::path log = kWork / "last.log";
-    return finish(start(args, env, log), log);
+    return run_eomgen(kWork, args, std::move(env));
 }
 
 fs::path write_model(const std::string& name, const std::string& text) {
@@ -80,25 +33,6 @@ fs::path write_model(const std::string& name, const std::string& text) {
     const fs::path p = kWork / name;
     std::ofstream(p) << text;
     return p;
-}
-
-std::vector<std::vector<std::string>> read_csv(const fs::path& p) {
-    std::vector<std::vector<std::string>> rows;
-    std::ifstream in(p);
-    for (std::string line; std::getline(in, line);) {
-        std::vector<std::string> row;
-        std::istringstream fields(line);
-        for (std::string f; std::getline(fields, f, ',');) row.push_back(f);
-        rows.push_back(row);
-    }
-    return rows;
-}
-
-int column(const std::vector<std::string>& header, const std::string& name) {
-    for (std::size_t i = 0; i < header.size(); ++i)
-        if (header[i] == name) return int(i);
-    FAIL("no column " << name);
-    return -1;
 }
 
 double max_relative_drift(const std::vector<std::vector<std::string>>& rows, const std::string& name) {
@@ -320,7 +254,7 @@ TEST_CASE("eomgen run refuses a cache others can write and an entry that is a sy
     CHECK(link.output.find("symbolic link") != std::string::npos);
 }
 
-TEST_CASE("eomgen run --plot writes a PNG and an SVG; a path with spaces and shell syntax is just a path", "[run][plot]") {
+TEST_CASE("eomgen run --plot writes a PNG and an SVG, a path with spaces and shell syntax is just a path", "[run][plot]") {
     const fs::path dir = kWork / "odd dir; $(echo PWNED) `x`";
     fs::create_directories(dir);
     const fs::path model = dir / "-spring pendulum.toml";

@@ -1,0 +1,449 @@
+/** @file report_command.cpp  `eomgen report`: model, equations, a simulation with its drift, checked derivations. */
+#include "cli/report_command.hpp"
+
+#include "checker/checker.hpp"
+#include "checker/derivation.hpp"
+#include "checker/report.hpp"
+#include "cli/compiled_model.hpp"
+#include "cli/latex_equations.hpp"
+#include "cli/plot.hpp"
+#include "cli/process.hpp"
+#include "cli/run_command.hpp"
+#include "codegen/cpp_emitter.hpp"
+#include "eomgen/model_table.hpp"
+#include "model/model_file.hpp"
+#include "options.hpp"
+#include "output/atomic_file.hpp"
+#include "text/escape.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include <unistd.h>
+
+#ifndef EOMGEN_VERSION
+#define EOMGEN_VERSION "0.0.0"
+#endif
+
+namespace eomgen::cli {
+namespace fs = std::filesystem;
+
+namespace {
+
+/// How an invariant held along the simulation, from its CSV column.
+struct Drift {
+    std::string name;   ///< the CSV column: energy, p_phi, ...
+    std::string latex;  ///< its symbol: h, p_{\phi}
+    double initial = 0, worst = 0;
+    bool relative = true;  ///< |c − c0|/|c0|, or absolute where c0 is (nearly) 0
+    bool conserved = true;  ///< false for h of a model whose L depends on t, or that forces act on
+};
+
+struct Simulation {
+    bool ran = false;
+    int code = 0;
+    std::string summary, errors;  ///< what the driver printed on stdout and stderr
+    std::string csv, plot;         ///< file names in the report's directory ("" when not written)
+    std::vector<Drift> drifts;
+    std::vector<std::pair<std::string, double>> residuals;  ///< constraint, largest residual
+};
+
+/// std::cout and std::cerr into strings while it lives.
+class Capture {
+  public:
+    Capture() : out_(std::cout.rdbuf(out_text_.rdbuf())), err_(std::cerr.rdbuf(err_text_.rdbuf())) {}
+    ~Capture() {
+        std::cout.rdbuf(out_);
+        std::cerr.rdbuf(err_);
+    }
+    std::string out() const { return out_text_.str(); }
+    std::string err() const { return err_text_.str(); }
+
+  private:
+    std::ostringstream out_text_, err_text_;
+    std::streambuf *out_, *err_;
+};
+
+/// The runtime's CSV (eomgen/output.hpp): a header of names, then rows of numbers.
+std::vector<std::vector<double>> read_samples(const fs::path& csv, std::vector<std::string>& header) {
+    std::ifstream in(csv);
+    std::string line;
+    std::vector<std::vector<double>> rows;
+    if (!std::getline(in, line)) return rows;
+    std::istringstream names(line);
+    for (std::string name; std::getline(names, name, ',');) header.push_back(name);
+    while (std::getline(in, line)) {
+        std::vector<double> row;
+        std::istringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::strtod(cell.c_str(), nullptr));
+        if (row.size() == header.size()) rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+void measure(const Model& model, const Equations& eq, Simulation& sim, const fs::path& csv) {
+    std::vector<std::string> header;
+    const auto rows = read_samples(csv, header);
+    if (rows.empty()) return;
+    auto column = [&](const std::string& name) {
+        const auto it = std::find(header.begin(), header.end(), name);
+        return it == header.end() ? -1 : int(it - header.begin());
+    };
+    auto drift_of = [&](const std::string& name, const std::string& latex, bool conserved) {
+        const int j = column(name);
+        if (j < 0) return;
+        Drift d{name, latex, rows.front()[std::size_t(j)], 0, true, conserved};
+        d.relative = std::abs(d.initial) >= 1e-12;
+        for (const auto& row : rows) {
+            const double change = std::abs(row[std::size_t(j)] - d.initial);
+            d.worst = std::max(d.worst, d.relative ? change / std::abs(d.initial) : change);
+        }
+        sim.drifts.push_back(d);
+    };
+    const bool h_conserved = std::any_of(eq.conserved.begin(), eq.conserved.end(),
+                                         [](const ConservedQuantity& c) { return c.name == "h"; });
+    drift_of("energy", "h", h_conserved);
+    for (const ConservedQuantity& c : eq.conserved)
+        if (c.name != "h") drift_of(c.name, c.latex, true);
+    for (const Constraint& c : model.constraints) {
+        const int j = column("residual_" + c.name);
+        if (j < 0) continue;
+        double worst = 0;
+        for (const auto& row : rows) worst = std::max(worst, std::abs(row[std::size_t(j)]));
+        sim.residuals.emplace_back(c.name, worst);
+    }
+}
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    return buf;
+}
+
+/// The lines of `s` (line breaks of any kind end a line), for writing text as a code block or verbatim.
+std::vector<std::string> lines_of(const std::string& s) {
+    std::vector<std::string> lines;
+    std::string line;
+    for (const char c : s) {
+        if (c == '\n' || c == '\r' || c == '\v' || c == '\f') {
+            lines.push_back(line);
+            line.clear();
+        } else {
+            line += c;
+        }
+    }
+    if (!line.empty()) lines.push_back(line);
+    return lines;
+}
+
+struct Checked {
+    std::string path;
+    checker::CheckReport report;
+};
+
+// ---------------------------------------------------------------- Markdown
+
+std::string markdown(const Model& model, const Equations& eq, const std::vector<LatexBlock>& blocks,
+                     const Simulation& sim, const std::vector<Checked>& checks, const sim::Options& o) {
+    using text::markdown_math;
+    using text::markdown_text;
+    std::ostringstream md;
+    md << "# " << markdown_text(model.title.empty() ? model.name : model.title) << "\n\n";
+    md << "Model `" << model.name << "`" << (model.source.empty() ? "" : ", " + markdown_text(model.source))
+       << ". Report written by eomgen " << EOMGEN_VERSION << " from " << markdown_text(fs::path(model.path).filename().string())
+       << ".\n\n";
+    if (!model.description.empty()) md << markdown_text(model.description) << "\n\n";
+
+    md << "## Model\n\n| coordinate | | q(0) | q̇(0) |\n|---|---|---|---|\n";
+    for (const Coordinate& c : model.coordinates)
+        md << "| `" << c.name << "` | $" << markdown_math(c.latex) << "$ | " << codegen::shortest_decimal(c.initial)
+           << " | " << codegen::shortest_decimal(c.rate) << " |\n";
+    if (!model.parameters.empty()) {
+        md << "\n| parameter | | value | unit | description |\n|---|---|---|---|---|\n";
+        for (const Parameter& p : model.parameters)
+            md << "| `" << p.name << "` | $" << markdown_math(p.latex) << "$ | " << codegen::shortest_decimal(p.value)
+               << " | " << markdown_text(p.unit) << " | " << markdown_text(p.description) << " |\n";
+    }
+    md << "\n## Equations\n\nDerived by eomgen (the same as `eomgen show --latex`).\n\n";
+    for (const LatexBlock& b : blocks) {
+        if (b.title == kConservedBlock) continue;  // listed below with the reasons
+        md << "**" << markdown_text(b.title) << "**\n\n$$" << markdown_display(b) << "$$\n\n";
+    }
+    md << "## Conserved quantities\n\n";
+    if (eq.conserved.empty()) md << "None found.\n";
+    for (const ConservedQuantity& c : eq.conserved)
+        md << "- $" << markdown_math(c.latex) << "$: " << markdown_text(c.reason) << "\n";
+    if (!eq.warnings.empty()) {
+        md << "\n## Warnings\n\n";
+        for (const std::string& w : eq.warnings) md << "- " << markdown_text(w) << "\n";
+    }
+    md << "\n## Simulation\n\n";
+    if (!sim.ran) {
+        md << "Not run (`--no-simulation`).\n";
+    } else {
+        md << "From the model's initial state" << (o.set.empty() && o.init.empty() ? "" : " with the options below")
+           << " to t = " << o.t_end << ", method " << markdown_text(o.method)
+           << (o.method == "dopri5" ? ", rtol " + number(o.rtol) + ", atol " + number(o.atol) : "") << ".";
+        if (sim.code != 0) md << " **The simulation failed**:";
+        md << "\n\n";
+        for (const std::string& line : lines_of(sim.summary + sim.errors)) md << "    " << line << "\n";
+        if (!sim.drifts.empty()) {
+            md << "\n| invariant | at t = 0 | largest change along the run |\n|---|---|---|\n";
+            for (const Drift& d : sim.drifts)
+                md << "| $" << markdown_math(d.latex) << "$ | " << number(d.initial) << " | " << number(d.worst)
+                   << (d.relative ? " (relative)" : " (absolute: it starts at 0)")
+                   << (d.conserved ? "" : "; not conserved by this model") << " |\n";
+        }
+        if (!sim.residuals.empty()) {
+            md << "\n| constraint | largest residual after projection |\n|---|---|\n";
+            for (const auto& [name, worst] : sim.residuals)
+                md << "| " << markdown_text(name) << " | " << number(worst) << " |\n";
+        }
+        if (!sim.plot.empty()) md << "\n![coordinates, invariants and residuals against t](" << sim.plot << ")\n";
+        if (!sim.csv.empty()) md << "\nSamples: [" << sim.csv << "](" << sim.csv << ").\n";
+    }
+    for (const Checked& c : checks) {
+        md << "\n## Derivation " << markdown_text(fs::path(c.path).filename().string()) << "\n\n";
+        // The checker's own Markdown (its headings one level down, under this one).
+        for (const std::string& line : lines_of(checker::format_markdown(c.report)))
+            md << (line.rfind('#', 0) == 0 ? "##" + line : line) << "\n";
+    }
+    return md.str();
+}
+
+// ---------------------------------------------------------------- LaTeX
+
+std::string latex(const Model& model, const Equations& eq, const std::vector<LatexBlock>& blocks,
+                  const Simulation& sim, const std::vector<Checked>& checks, const sim::Options& o) {
+    using text::latex_text;
+    std::ostringstream tex;
+    tex << "Model \\texttt{" << latex_text(model.name) << "}"
+        << (model.source.empty() ? "" : ", " + latex_text(model.source)) << ". Report written by eomgen "
+        << EOMGEN_VERSION << ".\n\n";
+    if (!model.description.empty()) tex << latex_text(model.description) << "\n\n";
+    tex << "\\section*{Model}\n\\begin{tabular}{llrr}\ncoordinate & & $q(0)$ & $\\dot q(0)$ \\\\ \\hline\n";
+    for (const Coordinate& c : model.coordinates)
+        tex << "\\texttt{" << latex_text(c.name) << "} & $" << c.latex << "$ & " << codegen::shortest_decimal(c.initial)
+            << " & " << codegen::shortest_decimal(c.rate) << " \\\\\n";
+    tex << "\\end{tabular}\n\n";
+    if (!model.parameters.empty()) {
+        tex << "\\begin{tabular}{llrll}\nparameter & & value & unit & description \\\\ \\hline\n";
+        for (const Parameter& p : model.parameters)
+            tex << "\\texttt{" << latex_text(p.name) << "} & $" << p.latex << "$ & " << codegen::shortest_decimal(p.value)
+                << " & " << latex_text(p.unit) << " & " << latex_text(p.description) << " \\\\\n";
+        tex << "\\end{tabular}\n";
+    }
+    tex << "\\section*{Equations}\n";
+    for (const LatexBlock& b : blocks) {
+        if (b.title == kConservedBlock) continue;  // listed below with the reasons
+        tex << "\\paragraph{" << latex_text(b.title) << "}\n\\begin{align}\n";
+        for (std::size_t i = 0; i < b.rows.size(); ++i)
+            tex << b.rows[i] << (b.notes[i].empty() ? "" : " && \\text{" + b.notes[i] + "}")
+                << (i + 1 < b.rows.size() ? " \\\\" : "") << "\n";
+        tex << "\\end{align}\n";
+    }
+    tex << "\\section*{Conserved quantities}\n";
+    if (eq.conserved.empty()) tex << "None found.\n";
+    else {
+        tex << "\\begin{itemize}\n";
+        for (const ConservedQuantity& c : eq.conserved) tex << "\\item $" << c.latex << "$: " << latex_text(c.reason) << "\n";
+        tex << "\\end{itemize}\n";
+    }
+    if (!eq.warnings.empty()) {
+        tex << "\\section*{Warnings}\n\\begin{itemize}\n";
+        for (const std::string& w : eq.warnings) tex << "\\item " << latex_text(w) << "\n";
+        tex << "\\end{itemize}\n";
+    }
+    tex << "\\section*{Simulation}\n";
+    if (!sim.ran) {
+        tex << "Not run.\n";
+    } else {
+        tex << "From the model's initial state to $t = " << o.t_end << "$, method " << latex_text(o.method) << ".";
+        if (sim.code != 0) tex << " \\textbf{The simulation failed}:";
+        tex << "\n\n{\\small\\noindent";
+        for (const std::string& line : lines_of(sim.summary + sim.errors))
+            tex << "\\texttt{" << latex_text(line) << "}\\\\\n";
+        tex << "}\n";
+        if (!sim.drifts.empty()) {
+            tex << "\n\\begin{tabular}{lll}\ninvariant & at $t = 0$ & largest change \\\\ \\hline\n";
+            for (const Drift& d : sim.drifts)
+                tex << "$" << d.latex << "$ & " << latex_text(number(d.initial)) << " & " << latex_text(number(d.worst))
+                    << (d.relative ? " (relative)" : " (absolute)") << (d.conserved ? "" : ", not conserved") << " \\\\\n";
+            tex << "\\end{tabular}\n";
+        }
+        if (!sim.residuals.empty()) {
+            tex << "\n\\begin{tabular}{ll}\nconstraint & largest residual \\\\ \\hline\n";
+            for (const auto& [name, worst] : sim.residuals)
+                tex << latex_text(name) << " & " << latex_text(number(worst)) << " \\\\\n";
+            tex << "\\end{tabular}\n";
+        }
+        if (!sim.plot.empty())
+            tex << "\n\\begin{center}\\includegraphics[width=\\textwidth]{" << latex_text(sim.plot) << "}\\end{center}\n";
+    }
+    // A derivation's text is a stranger's LaTeX: shown as escaped text here, never compiled.
+    for (const Checked& c : checks) {
+        tex << "\\section*{Derivation " << latex_text(fs::path(c.path).filename().string()) << "}\n";
+        tex << c.report.count(checker::Verdict::Agrees) << " agree, " << c.report.count(checker::Verdict::Disagrees)
+            << " disagree, " << c.report.count(checker::Verdict::NotComparable) << " not comparable.\n";
+        tex << "\\begin{itemize}\n";
+        for (const checker::EquationCheck& e : c.report.equations) {
+            tex << "\\item line " << e.where.line << ": \\textbf{" << checker::verdict_name(e.verdict) << "} \\texttt{"
+                << latex_text(e.equation) << "}";
+            if (e.verdict == checker::Verdict::Disagrees && !e.corrected.empty())
+                tex << "; corrected: \\texttt{" << latex_text(e.corrected) << "}";
+            else if (!e.reason.empty())
+                tex << " (" << latex_text(e.reason) << ")";
+            tex << "\n";
+        }
+        tex << "\\end{itemize}\n";
+    }
+    return latex_document(model, tex.str(), "\\usepackage{graphicx}\n");
+}
+
+}  // namespace
+
+ReportCommand::ReportCommand(CLI::App& app) {
+    report_ = app.add_subcommand("report", "Write one document about a model: equations, a simulation with its "
+                                           "plot and drift, checked derivations");
+    report_->add_option("model", model_path_, "Model file (.toml)")->required()->check(CLI::ExistingFile);
+    report_->add_option("-o,--output", out_dir_, "Directory for the report and its files (default <name>-report)");
+    report_->add_option("--derivation", derivations_, "A derivation (Markdown + LaTeX) to check; may be repeated")
+        ->check(CLI::ExistingFile);
+    report_->add_option("--format", format_, "markdown (<name>.md) or latex (<name>.tex, a complete document)")
+        ->check(CLI::IsMember({"markdown", "latex"}))
+        ->capture_default_str();
+    eomgen::sim::add_options(*report_, options_);
+    report_->remove_option(report_->get_option("--csv"));  // the report writes its own, beside itself
+    report_->add_flag("--no-simulation", no_simulation_, "Leave the simulation out (no compiler needed)");
+    report_->add_flag("--no-cache", no_cache_, "Compile afresh and keep nothing in the cache");
+    report_->add_flag("--quiet", quiet_, "No progress messages on stderr");
+    report_->add_flag("--progress", progress_, "Progress messages on stderr even when it is not a terminal");
+}
+
+bool ReportCommand::selected() const { return report_->parsed(); }
+
+int ReportCommand::run() {
+    const bool show_progress = !quiet_ && (progress_ || ::isatty(STDERR_FILENO));
+    const auto start = std::chrono::steady_clock::now();
+    auto progress = [&](const std::string& what) {
+        if (!show_progress) return;
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::fprintf(stderr, "eomgen report: [%.1f s] %s\n", s, what.c_str());
+    };
+    try {
+        eomgen::sim::check_options(options_);
+    } catch (const std::exception& e) {
+        std::cerr << "eomgen report: " << e.what() << "\n";
+        return 2;
+    }
+    const std::string text = read_model_file(model_path_);
+    const Model model = parse_model(text, model_path_);
+    progress("deriving " + model_path_);
+    const Equations eq = derive_equations(model);
+    for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
+
+    // The derivations are read and checked before anything is written: a bad one writes nothing.
+    std::vector<Checked> checks;
+    try {
+        for (const std::string& path : derivations_) {
+            progress("checking " + path);
+            const checker::Derivation d = checker::read_derivation(path);
+            checks.push_back({path, checker::check_derivation(model, eq, d, {})});
+        }
+    } catch (const checker::CheckError& e) {
+        std::cerr << "eomgen report: " << e.what() << "\n";
+        return 2;
+    } catch (const std::runtime_error& e) {
+        std::cerr << "eomgen report: " << e.what() << "\n";
+        return 3;
+    }
+
+    const fs::path dir = out_dir_.empty() ? fs::path(model.name + "-report") : fs::path(out_dir_);
+    // The directory is made once the compiler has succeeded: a failure leaves nothing behind.
+    auto make_directory = [&dir] {
+        std::error_code ec;
+        fs::create_directories(dir, ec);
+        if (ec || !fs::is_directory(dir)) {
+            std::cerr << "eomgen report: cannot create the directory " << dir.string()
+                      << (ec ? ": " + ec.message() : "") << "\n";
+            return false;
+        }
+        return true;
+    };
+
+    Simulation sim;
+    if (!no_simulation_) {
+        try {
+            CompileRequest request{text, model.name,
+                                   [&] { return codegen::emit_model_header(model, eq, fs::path(model_path_).filename().string()); },
+                                   !no_cache_, progress};
+            const CompiledModel compiled = compile_model(request);
+            eomgen::TableModel::bind(*compiled.table);
+        } catch (const CompileError& e) {
+            std::cerr << "eomgen report: " << e.what() << "\n  command: " << e.command << "\n  log: " << e.log << "\n";
+            return kExitCompiler;
+        } catch (const std::runtime_error& e) {  // the cache or a temporary directory
+            std::cerr << "eomgen report: " << e.what() << "\n";
+            return 3;
+        }
+        if (!make_directory()) return 3;
+        eomgen::sim::Options o = options_;
+        o.model = model.name;
+        sim.csv = model.name + ".csv";
+        o.csv = (dir / sim.csv).string();
+        progress("integrating");
+        {
+            Capture capture;
+            sim.code = eomgen::sim::run_reporting<eomgen::TableModel>(o, "eomgen report");
+            sim.summary = capture.out();
+            sim.errors = capture.err();
+        }
+        sim.ran = true;
+        if (sim.code == eomgen::sim::kExitOutput) {
+            std::cerr << sim.errors;
+            return 3;
+        }
+        if (sim.code == eomgen::sim::kExitOk) {
+            measure(model, eq, sim, o.csv);
+            sim.plot = model.name + ".png";
+            progress("plotting");
+            try {
+                plot(default_plot(model, o.csv, (dir / sim.plot).string()));
+            } catch (const std::exception& e) {
+                std::cerr << "eomgen report: no plot: " << e.what() << "\n";
+                sim.plot.clear();
+            }
+        } else {
+            std::cerr << sim.errors;
+            sim.csv.clear();
+        }
+    }
+
+    if (!sim.ran && !make_directory()) return 3;
+    const std::vector<LatexBlock> blocks = latex_equations(model, eq);
+    const bool tex = format_ == "latex";
+    const fs::path file = dir / (model.name + (tex ? ".tex" : ".md"));
+    try {
+        output::write_atomically(file, tex ? latex(model, eq, blocks, sim, checks, options_)
+                                           : markdown(model, eq, blocks, sim, checks, options_));
+    } catch (const output::WriteError& e) {
+        std::cerr << "eomgen report: " << e.what() << "\n";
+        return 3;
+    }
+    std::cout << "report:  " << file.string() << "\n";
+    if (sim.ran && sim.code != 0) {
+        std::cerr << "eomgen report: the simulation failed; the report says how\n";
+        return 2;
+    }
+    return 0;
+}
+
+}  // namespace eomgen::cli
