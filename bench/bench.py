@@ -231,6 +231,48 @@ def integrators(cfg, smoke):
     return by, p.stderr.strip()
 
 
+# ---- 7. eomgen run: first run, cached re-run, integration through the table ---------------------------------
+
+RUN_MODELS = [("examples/bead_on_hoop.toml", None), ("models/pendulum_5_20.toml", "pendulum_5_20"),
+              ("models/pendulum_cartesian.toml", "pendulum_cartesian")]
+
+
+def run_times(cfg, work, smoke):
+    """`eomgen run MODEL --t-end 5 --quiet` with a fresh cache (first run: derive, compile, integrate), then again
+    (cached), and eomgen-sim on the same model (compiled in: the integration and a process start) where it has
+    it; then a long integration through the table against eomgen-sim (the cost of the run-time-size driver)."""
+    reps = 1 if smoke else 3
+    out = {"models": []}
+    sim = cfg.get("eomgen_sim")
+    for rel, sim_name in (RUN_MODELS[1:2] if smoke else RUN_MODELS):
+        model = os.path.join(ROOT, rel)
+        row = {"model": rel, "first": [], "cached": [], "sim": []}
+        for k in range(reps):
+            env = dict(os.environ, XDG_CACHE_HOME=os.path.join(work, "run_cache", f"{os.path.basename(rel)}.{k}"))
+            w, c, _ = timed([cfg["eomgen"], "run", model, "--t-end", "5", "--quiet"], env=env)
+            row["first"].append({"wall_s": w, "cpu_s": c})
+            w, c, _ = timed([cfg["eomgen"], "run", model, "--t-end", "5", "--quiet"], env=env)
+            row["cached"].append({"wall_s": w, "cpu_s": c})
+            if sim and sim_name:
+                w, c, _ = timed([sim, sim_name, "--t-end", "5"])
+                row["sim"].append({"wall_s": w, "cpu_s": c})
+        out["models"].append(row)
+    if sim:
+        t_end = "50" if smoke else "2000"
+        env = dict(os.environ, XDG_CACHE_HOME=os.path.join(work, "run_cache", "pendulum_5_20.toml.0"))
+        model = os.path.join(ROOT, "models/pendulum_5_20.toml")
+        long = {"t_end": float(t_end), "table": [], "compiled_in": []}
+        for _ in range(reps):  # interleaved
+            w, c, p = timed([cfg["eomgen"], "run", model, "--t-end", t_end, "--quiet"], env=env)
+            long["table"].append(c)
+            w, c, q = timed([sim, "pendulum_5_20", "--t-end", t_end])
+            long["compiled_in"].append(c)
+            long["rhs"] = next((l for l in p.stdout.splitlines() if l.startswith("steps:")), "")
+            long["same_result"] = p.stdout == q.stdout
+        out["long"] = long
+    return out
+
+
 # ---- report ---------------------------------------------------------------------------------------------------
 
 def fmt_s(x):
@@ -312,7 +354,7 @@ unset multiplot
     return True
 
 
-def report(command, mach, gen, rods, sym, ops, rhs, agree, comp, by, ref_check, mem, sympy_ok, png_rel):
+def report(command, mach, gen, rods, sym, ops, rhs, agree, comp, by, ref_check, mem, sympy_ok, runs, png_rel):
     L = []
     a = L.append
     load0, load1 = mach["load"], mach["load_end"]
@@ -536,6 +578,35 @@ def report(command, mach, gen, rods, sym, ops, rhs, agree, comp, by, ref_check, 
     a(f"Peak resident set size of `eomgen generate --family pendulum:n={mem['n']}` (getrusage of the process): "
       f"**{mem['kb'] / 1024:.0f} MiB**." + (f" SymPy's script at n = {mem['sympy_n']}: {mem['sympy_kb'] / 1024:.0f} MiB."
                                               if mem.get("sympy_kb") else ""))
+
+    # 7. eomgen run
+    if runs:
+        med = lambda xs: sorted(xs)[len(xs) // 2]  # noqa: E731
+        a("")
+        a("## 7. `eomgen run`: first run, cached re-run (issue 10)")
+        a("")
+        a("`eomgen run MODEL --t-end 5 --quiet` with an empty `XDG_CACHE_HOME` (the first run derives the model, "
+          "compiles its functions with `c++ -O2` into a shared object and integrates it with the driver compiled into "
+          "eomgen), then the same command again (cached: no derivation, no compiler), and `eomgen-sim` on the same "
+          "model compiled in (the integration and a process start). Medians of "
+          f"{len(runs['models'][0]['first'])} (each first run with its own empty cache). Targets: first run of a "
+          "2-coordinate model ≤ 5 s; a cached re-run ≤ 0.1 s beyond the integration.")
+        a("")
+        a("| model | first run wall [s] | CPU [s] | cached re-run wall [s] | eomgen-sim wall [s] | cached − eomgen-sim [s] |")
+        a("|---|---|---|---|---|---|")
+        for r in runs["models"]:
+            fw, fc = med([x["wall_s"] for x in r["first"]]), med([x["cpu_s"] for x in r["first"]])
+            cw = med([x["wall_s"] for x in r["cached"]])
+            sw = med([x["wall_s"] for x in r["sim"]]) if r["sim"] else None
+            a(f"| {r['model']} | **{fw:.2f}** | {fc:.2f} | {cw:.3f} | " +
+              (f"{sw:.3f} | **{cw - sw:+.3f}** |" if sw is not None else "– | – |"))
+        lg = runs.get("long")
+        if lg:
+            t, c = med(lg["table"]), med(lg["compiled_in"])
+            a("")
+            a(f"A long integration, models/pendulum_5_20.toml to t = {lg['t_end']:g} ({lg['rhs'].replace('steps:', '').strip()}), "
+              f"CPU medians: through the table (`eomgen run`, cached) {t:.3f} s, compiled in (`eomgen-sim`) {c:.3f} s: "
+              f"**{t / c:.2f}×**; " + ("the same printed result." if lg["same_result"] else "the printed results differ."))
     return "\n".join(L) + "\n"
 
 
@@ -623,6 +694,8 @@ def main():
     if sym_done:
         mem["sympy_n"] = max(sym_done)
         mem["sympy_kb"] = sym[max(sym_done)]["peak_rss_kb"]
+    log("7. eomgen run")
+    runs = run_times(cfg, work, args.smoke)
     mach["load_end"] = os.getloadavg()
 
     command = "bash bench/run.sh" + (" --smoke" if args.smoke else "") + (" --no-build" if args.no_build else "") + \
@@ -632,7 +705,7 @@ def main():
                "sympy": {str(k): v for k, v in sym.items()}, "ops": {str(k): v for k, v in ops.items()},
                "rhs": {"/".join(map(str, k)): v for k, v in rhs.items()},
                "compile": {str(k): v for k, v in comp.items()},
-               "integrators": {"/".join(k): v for k, v in by.items()}, "memory": mem}
+               "integrators": {"/".join(k): v for k, v in by.items()}, "memory": mem, "run": runs}
     with open(os.path.join(work, "results.json"), "w") as fh:
         json.dump(results, fh, indent=1)
     render(results, work, out_md, out_png)
@@ -651,7 +724,7 @@ def render(results, work, out_md, out_png):
     os.makedirs(os.path.dirname(out_md), exist_ok=True)
     have_png = write_plot(work, out_png, gen, sym, ops, rhs, by)
     text = report(results.get("command", "bash bench/run.sh"), results["machine"], gen, rods, sym, ops, rhs, results["agree"], comp, by, results["ref_check"],
-                  results["memory"], results["sympy_ok"],
+                  results["memory"], results["sympy_ok"], results.get("run"),
                   os.path.relpath(out_png, os.path.dirname(out_md)) if have_png else "(no plot: gnuplot missing)")
     old = open(out_md).read() if os.path.exists(out_md) else NOTES_TEMPLATE.format(begin=BEGIN, end=END)
     if BEGIN not in old or END not in old:
