@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The main job: set up, regenerate every model into generated/, show what was derived, simulate the
 # door (Ex. 30) and the plane pendulum (5-20), run a model file that is compiled into nothing
-# (eomgen run, with its plot), and print the results. CSV and PNG output goes to out/.
+# (eomgen run, with its plot) and write its report (eomgen report), and print the results. CSV, PNG and
+# Markdown output goes to out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
@@ -68,3 +69,9 @@ echo "== eomgen run examples/bead_on_hoop.toml: a model file compiled into nothi
 echo "   in \${XDG_CACHE_HOME:-~/.cache}/eomgen) and integrated; the plot is out/bead_on_hoop.png"
 "$build/generator/eomgen" run examples/bead_on_hoop.toml --t-end 10 --rtol 1e-12 --atol 1e-14 \
   --csv out/bead_on_hoop.csv --plot out/bead_on_hoop.png --plot-phase a --plot-xy rho,z
+
+echo
+echo "== eomgen report examples/bead_on_hoop.toml: the equations, the simulation with its plot and the drift of"
+echo "   each invariant, in one Markdown file: out/bead_on_hoop-report/bead_on_hoop.md"
+"$build/generator/eomgen" report examples/bead_on_hoop.toml -o out/bead_on_hoop-report --t-end 10 --quiet
+sed -n '/^| invariant/,/^$/p' out/bead_on_hoop-report/bead_on_hoop.md
