@@ -1,6 +1,7 @@
 /** @file main.cpp  The `eomgen` command: generate C++ from model files, show the derived mechanics. */
 #include "checker/check_command.hpp"
 #include "cli/latex_equations.hpp"
+#include "cli/modes_command.hpp"
 #include "cli/report_command.hpp"
 #include "cli/run_command.hpp"
 #include "codegen/cpp_emitter.hpp"
@@ -250,6 +251,7 @@ int main(int argc, char** argv) {
     const eomgen::checker::CheckCommand check(app);  // `eomgen check MODEL DERIVATION.md`, see docs/checker.md
     eomgen::cli::RunCommand run(app);               // `eomgen run MODEL.toml`, `eomgen cache clear`
     eomgen::cli::ReportCommand report(app);         // `eomgen report MODEL.toml`
+    const eomgen::cli::ModesCommand modes(app);     // `eomgen modes MODEL.toml`
 
     // A mistyped command: name it, with the closest one (CLI11 would say only "A subcommand is required").
     if (argc >= 2 && argv[1][0] != '-') {
@@ -308,6 +310,7 @@ int main(int argc, char** argv) {
         if (check.selected()) return check.run();
         if (run.selected()) return run.run();
         if (report.selected()) return report.run();
+        if (modes.selected()) return modes.run();
     } catch (const eomgen::ModelError& e) {
         std::cerr << e.what() << "\n";
         return kExitModelError;

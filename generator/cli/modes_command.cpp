@@ -1,0 +1,269 @@
+/** @file modes_command.cpp  `eomgen modes`: the equilibria and their normal modes as text, Markdown or JSON. */
+#include "cli/modes_command.hpp"
+
+#include "codegen/cpp_emitter.hpp"
+#include "codegen/math_printer.hpp"
+#include "eomgen/simulation.hpp"
+#include "mechanics/lagrangian.hpp"
+#include "mechanics/small_oscillations.hpp"
+#include "model/model_file.hpp"
+#include "output/atomic_file.hpp"
+#include "text/escape.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+namespace eomgen::cli {
+
+namespace {
+
+std::string number(double v) {
+    if (v == 0) return "0";
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
+}
+
+std::string json_number(double v) { return std::isfinite(v) ? number(v) : "null"; }
+
+std::string complex_text(std::complex<double> z) {
+    const double re = std::abs(z.real()) < 1e-12 * (1 + std::abs(z.imag())) ? 0 : z.real();
+    const double im = std::abs(z.imag()) < 1e-12 * (1 + std::abs(z.real())) ? 0 : z.imag();
+    if (im == 0) return number(re);
+    return (re == 0 ? "" : number(re) + (im < 0 ? " - " : " + ")) + (re == 0 && im < 0 ? "-" : "") +
+           number(std::abs(im)) + "i";
+}
+
+/// The printer of the model's symbols and the reduced momenta.
+struct Printer {
+    Printer(const Model& model, const ModesResult& r) : table(codegen::symbol_table(model)) {
+        int k = 0;
+        for (const auto& [s, latex] : r.momentum_symbols) {
+            table.info.push_back({codegen::SymbolKind::Constant, ++k, s.get_name(), s.get_name(), latex, ""});
+            table.exprs.push_back(s);
+        }
+        printer.emplace(table);
+    }
+    std::string text(const GiNaC::ex& e) { return printer->print(e, codegen::MathStyle::Text); }
+    std::string latex(const GiNaC::ex& e) { return printer->print(e, codegen::MathStyle::Latex); }
+    codegen::SymbolTable table;
+    std::optional<codegen::MathPrinter> printer;
+};
+
+std::string matrix_text(const std::vector<std::vector<double>>& m) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < m.size(); ++i) {
+        s += i ? "; " : "";
+        for (std::size_t j = 0; j < m[i].size(); ++j) s += (j ? ", " : "") + number(m[i][j]);
+    }
+    return s + "]";
+}
+
+std::string matrix_json(const std::vector<std::vector<double>>& m) {
+    std::string s = "[";
+    for (std::size_t i = 0; i < m.size(); ++i) {
+        s += i ? ", [" : "[";
+        for (std::size_t j = 0; j < m[i].size(); ++j) s += (j ? ", " : "") + json_number(m[i][j]);
+        s += "]";
+    }
+    return s + "]";
+}
+
+std::string format_text(const Model& model, const ModesResult& r, Printer& p) {
+    std::ostringstream os;
+    os << model.name << ": " << model.title << "\n";
+    if (!r.reduced.empty()) {
+        os << "reduced (Routh): ";
+        for (std::size_t k = 0; k < r.reduced.size(); ++k)
+            os << (k ? ", " : "") << r.reduced[k] << " with p_" << r.reduced[k] << " given";
+        os << "\n";
+    }
+    os << "V_eff = " << p.text(r.V_eff) << "\n";
+    if (r.equilibria.empty()) os << "\nno equilibrium found\n";
+    for (std::size_t k = 0; k < r.equilibria.size(); ++k) {
+        const Equilibrium& e = r.equilibria[k];
+        os << "\nequilibrium " << k + 1 << ":";
+        for (std::size_t i = 0; i < e.q.size(); ++i) {
+            os << (i ? "," : "") << " " << r.coordinates[i] << " = " << number(e.q[i]);
+            if (e.exact[i] && !GiNaC::is_a<GiNaC::numeric>(*e.exact[i])) os << " (= " << p.text(*e.exact[i]) << ")";
+        }
+        os << "\n  " << stability_name(e.stability);
+        if (e.stability == Stability::Unstable) os << ": perturbations grow as exp(" << number(e.growth_rate) << " t)";
+        os << "\n  M0 = " << matrix_text(e.M) << "\n  K0 = " << matrix_text(e.K) << "\n";
+        if (e.gyroscopic) os << "  G0 = " << matrix_text(e.G) << "  (gyroscopic)\n";
+        if (e.damped) os << "  C0 = " << matrix_text(e.C) << "  (damping)\n";
+        if (!e.gyroscopic && !e.damped) {
+            for (std::size_t m = 0; m < e.modes.size(); ++m) {
+                const NormalMode& mode = e.modes[m];
+                os << "  mode " << m + 1 << ": ";
+                if (mode.omega2 >= 0)
+                    os << "omega = " << number(std::sqrt(mode.omega2));
+                else
+                    os << "grows at rate " << number(std::sqrt(-mode.omega2));
+                os << "  (omega^2 = " << number(mode.omega2);
+                if (mode.omega2_exact && !GiNaC::is_a<GiNaC::numeric>(*mode.omega2_exact))
+                    os << " = " << p.text(*mode.omega2_exact);
+                os << ")  shape (";
+                for (std::size_t i = 0; i < mode.shape.size(); ++i)
+                    os << (i ? ", " : "") << r.coordinates[i] << ": " << number(mode.shape[i]);
+                os << ")\n";
+            }
+        }
+        os << "  eigenvalues of the first-order system:";
+        for (const auto& z : e.eigenvalues) os << " " << complex_text(z) << ";";
+        os << "\n";
+    }
+    for (const std::string& n : r.notes) os << "\nnote: " << n << "\n";
+    return os.str();
+}
+
+std::string format_markdown(const Model& model, const ModesResult& r, Printer& p) {
+    using text::markdown_math;
+    using text::markdown_text;
+    std::ostringstream md;
+    md << "# Small oscillations of " << markdown_text(model.title.empty() ? model.name : model.title) << "\n\n";
+    if (!r.reduced.empty()) {
+        md << "Reduced by Routh's procedure over";
+        for (const std::string& c : r.reduced) md << " `" << c << "`";
+        md << ", with their momenta given.\n\n";
+    }
+    md << "$$V_{\\mathrm{eff}} = " << markdown_math(p.latex(r.V_eff)) << "$$\n";
+    for (std::size_t k = 0; k < r.equilibria.size(); ++k) {
+        const Equilibrium& e = r.equilibria[k];
+        md << "\n## Equilibrium " << k + 1 << ": " << stability_name(e.stability) << "\n\n| coordinate | value | exact |\n|---|---|---|\n";
+        for (std::size_t i = 0; i < e.q.size(); ++i)
+            md << "| $" << markdown_math(r.latex[i]) << "$ | " << number(e.q[i]) << " | "
+               << (e.exact[i] ? "$" + markdown_math(p.latex(*e.exact[i])) + "$" : "") << " |\n";
+        if (e.stability == Stability::Unstable)
+            md << "\nPerturbations grow as $e^{" << number(e.growth_rate) << " t}$.\n";
+        if (!e.gyroscopic && !e.damped) {
+            md << "\n| mode | ω | ω² | exact ω² | shape |\n|---|---|---|---|---|\n";
+            for (std::size_t m = 0; m < e.modes.size(); ++m) {
+                const NormalMode& mode = e.modes[m];
+                md << "| " << m + 1 << " | " << (mode.omega2 >= 0 ? number(std::sqrt(mode.omega2)) : "–") << " | "
+                   << number(mode.omega2) << " | "
+                   << (mode.omega2_exact ? "$" + markdown_math(p.latex(*mode.omega2_exact)) + "$" : "") << " | ";
+                for (std::size_t i = 0; i < mode.shape.size(); ++i) md << (i ? ", " : "") << number(mode.shape[i]);
+                md << " |\n";
+            }
+        } else {
+            md << "\n" << (e.gyroscopic ? "Gyroscopic" : "") << (e.gyroscopic && e.damped ? " and damping" : e.damped ? "Damping" : "")
+               << " terms: the motion follows the eigenvalues of the first-order system:";
+            for (const auto& z : e.eigenvalues) md << " " << complex_text(z) << ";";
+            md << "\n";
+        }
+    }
+    for (const std::string& n : r.notes) md << "\n> " << markdown_text(n) << "\n";
+    return md.str();
+}
+
+std::string format_json(const Model& model, const ModesResult& r, Printer& p) {
+    using text::json_string;
+    std::ostringstream js;
+    js << "{\"model\": " << json_string(model.name) << ", \"coordinates\": [";
+    for (std::size_t i = 0; i < r.coordinates.size(); ++i) js << (i ? ", " : "") << json_string(r.coordinates[i]);
+    js << "], \"reduced\": [";
+    for (std::size_t i = 0; i < r.reduced.size(); ++i) js << (i ? ", " : "") << json_string(r.reduced[i]);
+    js << "], \"V_eff\": " << json_string(p.latex(r.V_eff)) << ", \"equilibria\": [";
+    for (std::size_t k = 0; k < r.equilibria.size(); ++k) {
+        const Equilibrium& e = r.equilibria[k];
+        js << (k ? ", " : "") << "{\"q\": {";
+        for (std::size_t i = 0; i < e.q.size(); ++i) js << (i ? ", " : "") << json_string(r.coordinates[i]) << ": " << json_number(e.q[i]);
+        js << "}, \"exact\": {";
+        bool first = true;
+        for (std::size_t i = 0; i < e.q.size(); ++i)
+            if (e.exact[i]) {
+                js << (first ? "" : ", ") << json_string(r.coordinates[i]) << ": " << json_string(p.latex(*e.exact[i]));
+                first = false;
+            }
+        js << "}, \"stable\": " << (e.stability == Stability::Stable || e.stability == Stability::GyroscopicallyStable ? "true" : "false")
+           << ", \"stability\": " << json_string(stability_name(e.stability)) << ", \"growth_rate\": " << json_number(e.growth_rate)
+           << ", \"M\": " << matrix_json(e.M) << ", \"K\": " << matrix_json(e.K) << ", \"C\": " << matrix_json(e.C)
+           << ", \"G\": " << matrix_json(e.G) << ", \"modes\": [";
+        for (std::size_t m = 0; m < e.modes.size(); ++m) {
+            const NormalMode& mode = e.modes[m];
+            js << (m ? ", " : "") << "{\"omega\": " << (mode.omega2 >= 0 ? json_number(std::sqrt(mode.omega2)) : "null")
+               << ", \"omega2\": " << json_number(mode.omega2) << ", \"omega2_exact\": "
+               << (mode.omega2_exact ? json_string(p.latex(*mode.omega2_exact)) : "null") << ", \"shape\": {";
+            for (std::size_t i = 0; i < mode.shape.size(); ++i)
+                js << (i ? ", " : "") << json_string(r.coordinates[i]) << ": " << json_number(mode.shape[i]);
+            js << "}}";
+        }
+        js << "], \"eigenvalues\": [";
+        for (std::size_t m = 0; m < e.eigenvalues.size(); ++m)
+            js << (m ? ", " : "") << "[" << json_number(e.eigenvalues[m].real()) << ", " << json_number(e.eigenvalues[m].imag()) << "]";
+        js << "]}";
+    }
+    js << "], \"notes\": [";
+    for (std::size_t i = 0; i < r.notes.size(); ++i) js << (i ? ", " : "") << json_string(r.notes[i]);
+    js << "]}\n";
+    return js.str();
+}
+
+std::pair<std::string, double> assignment(const std::string& text, const char* option) {
+    try {
+        return eomgen::sim::parse_assignment(text, option);
+    } catch (const eomgen::sim::UsageError& e) {
+        throw ModesError(e.what());
+    }
+}
+
+}  // namespace
+
+ModesCommand::ModesCommand(CLI::App& app) {
+    command_ = app.add_subcommand("modes", "Equilibria, linearization, normal modes and stability (small oscillations)");
+    command_->add_option("model", model_, "Model file (.toml)")->required()->check(CLI::ExistingFile);
+    command_->add_option("--set", set_, "Parameter value, NAME=VALUE (repeatable)");
+    command_->add_option("--at", at_, "A starting guess, q=v[,q2=v...] (repeatable; coordinates not named start "
+                                      "at the model's initial values)");
+    command_->add_option("--momentum", momentum_, "Reduce a cyclic coordinate q with its momentum given, p_q=VALUE "
+                                                  "(Routh; repeatable), e.g. a top's p_phi and p_psi");
+    command_->add_option("--format", format_, "text, markdown or json")
+        ->check(CLI::IsMember({"text", "markdown", "json"}))
+        ->capture_default_str();
+    command_->add_option("-o,--output", output_, "Write to FILE instead of standard output");
+}
+
+bool ModesCommand::selected() const { return command_->parsed(); }
+
+int ModesCommand::run() const {
+    const Model model = load_model(model_);
+    const Equations eq = derive_equations(model);
+    ModesOptions options;
+    ModesResult result;
+    try {
+        for (const std::string& s : set_) options.set.insert(assignment(s, "--set"));
+        for (const std::string& s : momentum_) options.momentum.insert(assignment(s, "--momentum"));
+        for (const std::string& guess : at_) {
+            std::map<std::string, double> g;
+            std::istringstream parts(guess);
+            for (std::string part; std::getline(parts, part, ',');) g.insert(assignment(part, "--at"));
+            options.at.push_back(g);
+        }
+        result = small_oscillations(model, eq, options);
+    } catch (const ModesError& e) {
+        std::cerr << "eomgen modes: " << e.what() << "\n";
+        return 2;
+    }
+    Printer printer(model, result);
+    const std::string out = format_ == "json"       ? format_json(model, result, printer)
+                            : format_ == "markdown" ? format_markdown(model, result, printer)
+                                                    : format_text(model, result, printer);
+    if (output_.empty()) {
+        std::cout << out;
+        return 0;
+    }
+    try {
+        output::write_atomically(output_, out);
+    } catch (const output::WriteError& e) {
+        std::cerr << "eomgen modes: " << e.what() << "\n";
+        return 3;
+    }
+    return 0;
+}
+
+}  // namespace eomgen::cli

@@ -1,0 +1,35 @@
+/** @file modes_command.hpp  `eomgen modes MODEL.toml`: equilibria, linearization, normal modes, stability. */
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace eomgen::cli {
+
+/**
+ * Registers `modes` on the `eomgen` command line:
+ *
+ *     eomgen modes MODEL.toml [--set p=v ...] [--at q=v[,q2=v ...] ...] [--momentum p_q=v ...]
+ *                  [--format text|markdown|json] [-o FILE]
+ *
+ * run() derives the model (a ModelError propagates: exit 1), finds its equilibria and linearizes about each
+ * (mechanics/small_oscillations.hpp) and prints them. Returns 0; 2 for a bad option or a model it cannot
+ * linearize (the message says why); 3 when the output file cannot be written.
+ */
+class ModesCommand {
+  public:
+    explicit ModesCommand(CLI::App& app);
+    bool selected() const;
+    int run() const;
+
+  private:
+    CLI::App* command_ = nullptr;
+    std::string model_, format_ = "text", output_;
+    std::vector<std::string> set_, at_, momentum_;
+};
+
+}  // namespace eomgen::cli

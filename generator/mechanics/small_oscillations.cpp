@@ -1,0 +1,730 @@
+/** @file small_oscillations.cpp  Equilibria, linearization, normal modes, stability (small_oscillations.hpp). */
+#include "mechanics/small_oscillations.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <set>
+
+namespace eomgen {
+
+using GiNaC::ex;
+using GiNaC::exmap;
+using GiNaC::symbol;
+
+namespace {
+
+constexpr double kPi = 3.141592653589793238462643383279502884;
+
+/// The Lagrangian-like function the linearization works on: L(q_r, q̇_r) of the remaining coordinates, and the
+/// generalized forces on them (Q − ∂R/∂q̇), both in the remaining q, q̇ and the parameters.
+struct Reduced {
+    std::vector<std::size_t> index;  ///< model coordinate of each remaining one
+    std::vector<symbol> q, qd;
+    ex L;
+    std::vector<ex> Q;
+};
+
+/// Numbers for the parameters (the model's values, or --set's) and the momenta.
+struct Values {
+    exmap params;
+};
+
+/// e as a double at `at`; NaN where it cannot be evaluated (a pole, a complex value).
+double evaluate(const ex& e, const exmap& at) {
+    try {
+        const ex v = GiNaC::evalf(e.subs(at, GiNaC::subs_options::no_pattern));
+        if (!GiNaC::is_a<GiNaC::numeric>(v)) return std::nan("");
+        const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(v);
+        if (!n.is_real()) {
+            const double im = GiNaC::imag(n).to_double(), re = GiNaC::real(n).to_double();
+            return std::abs(im) <= 1e-12 * (1 + std::abs(re)) ? re : std::nan("");
+        }
+        return n.to_double();
+    } catch (const std::exception&) {
+        return std::nan("");
+    }
+}
+
+/// The limit of e as the coordinates approach q0 (numbers substituted for everything else): the ε⁰ term of
+/// e(q0 + ε d) for a fixed direction d. For a removable singularity such as (1 − cos θ)²/sin²θ at θ = 0.
+double limit_at(const ex& e, const std::vector<symbol>& q, const std::vector<double>& q0, const exmap& params) {
+    static const double direction[] = {1.0, 0.7071, 0.5477, 0.4472, 0.3780, 0.3333, 0.3015, 0.2774};
+    const symbol eps("eps");
+    exmap at = params;
+    for (std::size_t i = 0; i < q.size(); ++i)
+        at[q[i]] = GiNaC::numeric(q0[i]) + eps * GiNaC::numeric(direction[i % 8]);
+    try {
+        const ex s = GiNaC::series_to_poly(e.subs(at, GiNaC::subs_options::no_pattern).series(eps == 0, 2));
+        return evaluate(s.coeff(eps, 0), {});
+    } catch (const std::exception&) {
+        return std::nan("");
+    }
+}
+
+/// e at q0: directly, or as a limit where e is 0/0 there.
+double value_at(const ex& e, const std::vector<symbol>& q, const std::vector<double>& q0, const exmap& params) {
+    exmap at = params;
+    for (std::size_t i = 0; i < q.size(); ++i) at[q[i]] = q0[i];
+    const double v = evaluate(e, at);
+    return std::isfinite(v) ? v : limit_at(e, q, q0, params);
+}
+
+/// x as an exact rational (m·2^e), so that an evaluation at many digits is not spoiled by x's rounding.
+GiNaC::numeric exact(double x) {
+    if (x == 0 || !std::isfinite(x)) return 0;
+    int e = 0;
+    const double m = std::frexp(x, &e);
+    const auto mantissa = static_cast<long long>(std::ldexp(m, 53));
+    return GiNaC::numeric(mantissa) * GiNaC::ex_to<GiNaC::numeric>(GiNaC::pow(GiNaC::numeric(2), e - 53));
+}
+
+/// max |g_i(x)| evaluated with 40 digits from exact inputs: Newton in doubles can stop where cancellation
+/// (a removable singularity nearby) makes g look like 0; this tells a root from such a point.
+double precise_residual(const std::vector<ex>& g, const std::vector<symbol>& q, const std::vector<double>& x,
+                        const exmap& params) {
+    const long digits = GiNaC::Digits;
+    GiNaC::Digits = 40;
+    exmap at;
+    for (const auto& [k, v] : params)
+        at[k] = GiNaC::is_a<GiNaC::numeric>(v) ? ex(exact(GiNaC::ex_to<GiNaC::numeric>(v).to_double())) : v;
+    exmap point = at;
+    for (std::size_t i = 0; i < q.size(); ++i) point[q[i]] = exact(x[i]);
+    double worst = 0;
+    for (const ex& gi : g) {
+        double v = evaluate(gi, point);
+        if (!std::isfinite(v)) v = limit_at(gi, q, x, at);
+        if (!std::isfinite(v)) v = std::numeric_limits<double>::infinity();
+        worst = std::max(worst, std::abs(v));
+    }
+    GiNaC::Digits = digits;
+    return worst;
+}
+
+/// The remaining coordinates' Lagrangian: L itself, or Routh's L − p_c·q̇_c with q̇_c from p_c = ∂L/∂q̇_c.
+Reduced reduce(const Model& model, const Equations& eq, const ModesOptions& options,
+               std::vector<std::pair<symbol, std::size_t>>& momentum_symbols, std::vector<std::string>& reduced) {
+    const std::size_t n = model.dof();
+    std::vector<std::size_t> cyclic;
+    for (const auto& [name, value] : options.momentum) {
+        static_cast<void>(value);
+        std::size_t i = 0;
+        while (i < n && "p_" + model.coordinates[i].name != name) ++i;
+        if (i == n) throw ModesError("--momentum " + name + ": no coordinate '" + name.substr(name.rfind('_') + 1) +
+                                     "' (write p_<coordinate>)");
+        if (!eq.cyclic[i])
+            throw ModesError("--momentum " + name + ": " + model.coordinates[i].name +
+                             " is not cyclic (L depends on it), so its momentum is not a constant");
+        if (std::none_of(eq.conserved.begin(), eq.conserved.end(), [&](const auto& c) { return c.name == name; }))
+            throw ModesError("--momentum " + name + ": " + name + " is not conserved (a force acts along " +
+                             model.coordinates[i].name + ")");
+        cyclic.push_back(i);
+        momentum_symbols.emplace_back(symbol(name), i);
+        reduced.push_back(model.coordinates[i].name);
+    }
+    Reduced r;
+    for (std::size_t i = 0; i < n; ++i)
+        if (std::find(cyclic.begin(), cyclic.end(), i) == cyclic.end()) {
+            r.index.push_back(i);
+            r.q.push_back(model.coordinates[i].q);
+            r.qd.push_back(model.coordinates[i].qd);
+        }
+    if (r.index.empty()) throw ModesError("every coordinate was reduced away: nothing is left to oscillate");
+    r.L = eq.L;
+    for (std::size_t i : r.index) r.Q.push_back(eq.generalized_forces[i]);
+    if (cyclic.empty()) return r;
+
+    // p_c = ∂L/∂q̇_c is linear in the velocities: p_c = M_cc q̇_c + (M_cr q̇_r + b_c). Solve for q̇_c.
+    const std::size_t m = cyclic.size();
+    GiNaC::matrix Mcc{static_cast<unsigned>(m), static_cast<unsigned>(m)};
+    GiNaC::matrix rest{static_cast<unsigned>(m), 1};
+    exmap zero_c;
+    for (std::size_t k = 0; k < m; ++k) zero_c[model.coordinates[cyclic[k]].qd] = 0;
+    for (std::size_t k = 0; k < m; ++k) {
+        const ex p = eq.momenta[cyclic[k]];
+        for (std::size_t l = 0; l < m; ++l) Mcc(unsigned(k), unsigned(l)) = p.diff(model.coordinates[cyclic[l]].qd);
+        rest(unsigned(k), 0) = momentum_symbols[k].first - p.subs(zero_c);
+    }
+    GiNaC::matrix qd_c;
+    try {
+        qd_c = GiNaC::ex_to<GiNaC::matrix>(Mcc.inverse().mul(rest));
+    } catch (const std::exception&) {
+        throw ModesError("the cyclic coordinates' block of the mass matrix is singular for every q: their "
+                         "velocities do not follow from their momenta");
+    }
+    exmap velocity;
+    ex pq = 0;
+    for (std::size_t k = 0; k < m; ++k) {
+        velocity[model.coordinates[cyclic[k]].qd] = qd_c(unsigned(k), 0);
+        pq += momentum_symbols[k].first * qd_c(unsigned(k), 0);
+    }
+    // M_cc⁻¹ brings sin² + cos² that GiNaC does not cancel (a top's det M_cc = I₃(I₁ sin²θ + I₃ cos²θ) −
+    // I₃² cos²θ): sin² → 1 − cos², then normal(), gives the amended potential in its usual form.
+    const ex x = GiNaC::wild(0);
+    auto tidy = [&](const ex& e) {
+        try {
+            return e.subs(GiNaC::pow(GiNaC::sin(x), 2) == 1 - GiNaC::pow(GiNaC::cos(x), 2), GiNaC::subs_options::algebraic)
+                .normal();
+        } catch (const std::exception&) {
+            return e;
+        }
+    };
+    r.L = tidy(eq.L.subs(velocity, GiNaC::subs_options::no_pattern) - pq);
+    for (ex& Q : r.Q) Q = Q.subs(velocity, GiNaC::subs_options::no_pattern);
+    return r;
+}
+
+/// Coordinates that the gradient repeats in after 2π (angles): compared at a few random points.
+std::vector<bool> periodic(const std::vector<ex>& g, const std::vector<symbol>& q, const exmap& params) {
+    std::vector<bool> out(q.size(), true);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.3, 1.3);
+    for (std::size_t i = 0; i < q.size(); ++i)
+        for (int trial = 0; trial < 3 && out[i]; ++trial) {
+            std::vector<double> a(q.size());
+            for (double& x : a) x = u(rng);
+            std::vector<double> b = a;
+            b[i] += 2 * kPi;
+            for (const ex& gi : g) {
+                const double va = value_at(gi, q, a, params), vb = value_at(gi, q, b, params);
+                if (!(std::abs(va - vb) <= 1e-9 * (1 + std::abs(va)))) {
+                    out[i] = false;
+                    break;
+                }
+            }
+        }
+    return out;
+}
+
+/// Exact roots of one factor that depends on a single coordinate x: A·sin x + B, A·cos x + B, A·tan x + B or
+/// A·x + B with A, B free of x.
+std::vector<ex> solve_factor(const ex& f, const symbol& x) {
+    const symbol s("s_");
+    std::vector<ex> roots;
+    auto linear_in = [&](const ex& e, const symbol& v, ex& A, ex& B) {
+        if (!e.is_polynomial(v) || e.degree(v) != 1) return false;
+        A = e.coeff(v, 1);
+        B = e.coeff(v, 0);
+        return !A.has(x) && !B.has(x) && !A.is_zero();
+    };
+    ex A, B;
+    const ex e = f.expand();
+    if (linear_in(e, x, A, B)) return {-B / A};
+    const std::pair<ex, int> kinds[] = {{GiNaC::sin(x), 0}, {GiNaC::cos(x), 1}, {GiNaC::tan(x), 2}};
+    for (const auto& [fn, kind] : kinds) {
+        exmap sub;
+        sub[fn] = s;
+        const ex t = e.subs(sub, GiNaC::subs_options::no_pattern);
+        if (t.has(x) || !linear_in(t, s, A, B)) continue;
+        const ex c = (-B / A).normal();
+        if (kind == 0) roots = {GiNaC::asin(c), GiNaC::Pi - GiNaC::asin(c)};
+        if (kind == 1) roots = {GiNaC::acos(c), -GiNaC::acos(c)};
+        if (kind == 2) roots = {GiNaC::atan(c), GiNaC::atan(c) + GiNaC::Pi};
+        return roots;
+    }
+    return roots;
+}
+
+/// Factors of e (products and powers taken apart; sums kept whole).
+void factors_of(const ex& e, std::vector<ex>& out) {
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+        for (std::size_t k = 0; k < e.nops(); ++k) factors_of(e.op(k), out);
+    } else if (GiNaC::is_a<GiNaC::power>(e) && e.op(1).info(GiNaC::info_flags::posint)) {
+        factors_of(e.op(0), out);
+    } else {
+        out.push_back(e);
+    }
+}
+
+/// e factored as a polynomial in its symbols and in the function calls in it (sin a, cos a taken as
+/// unknowns): m R sin a (g − R ω² cos a) from m g R sin a − m R² ω² sin a cos a.
+ex factor_through_functions(const ex& e) {
+    try {
+        exmap calls;
+        const ex p = e.expand().to_polynomial(calls);
+        return GiNaC::factor(p).subs(calls, GiNaC::subs_options::no_pattern);
+    } catch (const std::exception&) {
+        return e;
+    }
+}
+
+/// sin, cos, tan of asin, acos, atan written out (GiNaC does it for numbers only): cos(acos x) = x,
+/// sin(acos x) = √(1 − x²), ...; then normal().
+ex simplify_inverse_trig(const ex& e) {
+    using namespace GiNaC;
+    // Each rule in a subs() of its own: in one subs() with several, cos(acos($0)) tried first keeps
+    // cos(-acos($1)) from matching at all (GiNaC 1.8.6).
+    unsigned k = 0;
+    std::vector<ex> rules;
+    auto rule = [&](auto outer, auto inner, auto value) {
+        const ex x = wild(k++);
+        rules.push_back(outer(inner(x)) == value(x));
+    };
+    auto sin_ = [](const ex& x) { return ex(sin(x)); };
+    auto cos_ = [](const ex& x) { return ex(cos(x)); };
+    auto tan_ = [](const ex& x) { return ex(tan(x)); };
+    auto acos_ = [](const ex& x) { return ex(acos(x)); };
+    auto asin_ = [](const ex& x) { return ex(asin(x)); };
+    auto atan_ = [](const ex& x) { return ex(atan(x)); };
+    auto neg_acos = [](const ex& x) { return -acos(x); };
+    auto pi_asin = [](const ex& x) { return Pi - asin(x); };
+    auto atan_pi = [](const ex& x) { return atan(x) + Pi; };
+    auto same = [](const ex& x) { return x; };
+    auto root = [](const ex& x) { return sqrt(1 - x * x); };
+    rule(cos_, acos_, same);
+    rule(sin_, acos_, root);
+    rule(tan_, acos_, [&](const ex& x) { return root(x) / x; });
+    rule(sin_, asin_, same);
+    rule(cos_, asin_, root);
+    rule(tan_, asin_, [&](const ex& x) { return x / root(x); });
+    rule(tan_, atan_, same);
+    rule(sin_, atan_, [](const ex& x) { return x / sqrt(1 + x * x); });
+    rule(cos_, atan_, [](const ex& x) { return 1 / sqrt(1 + x * x); });
+    // the other roots solve_factor gives: −acos x, π − asin x, atan x + π
+    rule(cos_, neg_acos, same);
+    rule(sin_, neg_acos, [&](const ex& x) { return -root(x); });
+    rule(tan_, neg_acos, [&](const ex& x) { return -root(x) / x; });
+    rule(sin_, pi_asin, same);
+    rule(cos_, pi_asin, [&](const ex& x) { return -root(x); });
+    rule(tan_, pi_asin, [&](const ex& x) { return -x / root(x); });
+    rule(tan_, atan_pi, same);
+    rule(sin_, atan_pi, [](const ex& x) { return -x / sqrt(1 + x * x); });
+    rule(cos_, atan_pi, [](const ex& x) { return -1 / sqrt(1 + x * x); });
+    ex out = e;
+    for (int pass = 0; pass < 3; ++pass) {
+        ex next = out;
+        for (const ex& r : rules) next = next.subs(r);
+        if (next.is_equal(out)) break;
+        out = next;
+    }
+    try {
+        return out.normal();
+    } catch (const std::exception&) {
+        return out;
+    }
+}
+
+double wrap(double x) {
+    double w = std::remainder(x, 2 * kPi);
+    if (w <= -kPi + 1e-12) w += 2 * kPi;
+    return w;
+}
+
+/// Damped Newton on g(q) = 0 with Jacobian K(q); true when |g| falls below tol.
+bool newton(const std::vector<ex>& g, const std::vector<std::vector<ex>>& K, const std::vector<symbol>& q,
+            const exmap& params, std::vector<double>& x) {
+    const std::size_t n = q.size();
+    auto residual = [&](const std::vector<double>& at, Eigen::VectorXd& r) {
+        r.resize(Eigen::Index(n));
+        for (std::size_t i = 0; i < n; ++i) r(Eigen::Index(i)) = value_at(g[i], q, at, params);
+        return r.allFinite() ? r.norm() : std::numeric_limits<double>::infinity();
+    };
+    Eigen::VectorXd r;
+    double norm = residual(x, r);
+    for (int iteration = 0; iteration < 60 && std::isfinite(norm); ++iteration) {
+        if (norm < 1e-12) return true;
+        Eigen::MatrixXd J(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j) J(Eigen::Index(i), Eigen::Index(j)) = value_at(K[i][j], q, x, params);
+        if (!J.allFinite()) return false;
+        const Eigen::VectorXd step = J.completeOrthogonalDecomposition().solve(-r);
+        double lambda = 1;
+        bool improved = false;
+        for (int half = 0; half < 30; ++half, lambda /= 2) {
+            std::vector<double> y = x;
+            for (std::size_t i = 0; i < n; ++i) y[i] += lambda * step(Eigen::Index(i));
+            Eigen::VectorXd ry;
+            const double ny = residual(y, ry);
+            if (ny < norm) {
+                x = y;
+                r = ry;
+                norm = ny;
+                improved = true;
+                break;
+            }
+        }
+        if (!improved) break;
+    }
+    return norm < 1e-10;
+}
+
+/// det(K − w M) for a small symbolic matrix, by cofactors (n ≤ 4 here).
+ex char_poly(const GiNaC::matrix& K, const GiNaC::matrix& M, const symbol& w) {
+    const unsigned n = K.rows();
+    GiNaC::matrix A(n, n);
+    for (unsigned i = 0; i < n; ++i)
+        for (unsigned j = 0; j < n; ++j) A(i, j) = K(i, j) - w * M(i, j);
+    return A.determinant(GiNaC::determinant_algo::laplace);
+}
+
+/// Roots in w of the factors of degree 1 and 2 of the polynomial p(w).
+std::vector<ex> exact_roots(const ex& p, const symbol& w) {
+    std::vector<ex> roots;
+    ex num = p.normal().numer().expand();
+    if (!num.is_polynomial(w)) return roots;
+    ex f;
+    try {
+        f = GiNaC::factor(num);
+    } catch (const std::exception&) {
+        f = num;
+    }
+    std::vector<ex> fs;
+    factors_of(f, fs);
+    for (const ex& factor : fs) {
+        if (!factor.has(w)) continue;
+        const ex e = factor.expand();
+        if (!e.is_polynomial(w)) continue;
+        const int d = e.degree(w);
+        if (d == 1) roots.push_back((-e.coeff(w, 0) / e.coeff(w, 1)).normal());
+        if (d == 2) {
+            const ex a = e.coeff(w, 2), b = e.coeff(w, 1), c = e.coeff(w, 0);
+            const ex disc = (b * b - 4 * a * c).expand();
+            roots.push_back(((-b - GiNaC::sqrt(disc)) / (2 * a)));
+            roots.push_back(((-b + GiNaC::sqrt(disc)) / (2 * a)));
+        }
+    }
+    return roots;
+}
+
+}  // namespace
+
+const char* stability_name(Stability s) {
+    switch (s) {
+    case Stability::Stable: return "stable";
+    case Stability::Marginal: return "marginally stable";
+    case Stability::Unstable: return "unstable";
+    case Stability::GyroscopicallyStable: return "gyroscopically stabilized";
+    }
+    return "?";
+}
+
+ModesResult small_oscillations(const Model& model, const Equations& eq, const ModesOptions& options) {
+    if (!eq.constraints.empty())
+        throw ModesError("models with constraints are not linearized yet (the equilibria would have to be found "
+                         "on the constraint manifold): not done");
+    const symbol& t = model.t;
+    if (eq.L.has(t) || std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(),
+                                   [&](const ex& Q) { return Q.has(t); }))
+        throw ModesError("L or the forces depend on t explicitly: the system has no equilibria in these coordinates");
+    for (const auto& [name, v] : options.set) {
+        static_cast<void>(v);
+        if (std::none_of(model.parameters.begin(), model.parameters.end(),
+                         [&](const Parameter& p) { return p.name == name; }))
+            throw ModesError("--set " + name + ": no such parameter");
+    }
+
+    ModesResult result;
+    std::vector<std::pair<symbol, std::size_t>> momenta;
+    const Reduced r = reduce(model, eq, options, momenta, result.reduced);
+    const std::size_t n = r.q.size();
+    for (std::size_t i : r.index) {
+        result.coordinates.push_back(model.coordinates[i].name);
+        result.latex.push_back(model.coordinates[i].latex);
+    }
+    for (const auto& [s, i] : momenta) result.momentum_symbols.push_back({s, "p_{" + model.coordinates[i].latex + "}"});
+
+    Values values;
+    for (const Parameter& p : model.parameters) {
+        const auto it = options.set.find(p.name);
+        values.params[p.symbol] = GiNaC::numeric(it == options.set.end() ? p.value : it->second);
+    }
+    for (const auto& [s, i] : momenta) values.params[s] = GiNaC::numeric(options.momentum.at(s.get_name()));
+    for (const auto& c : model.coordinates)
+        if (std::none_of(r.index.begin(), r.index.end(), [&](std::size_t i) { return model.coordinates[i].q == c.q; }))
+            values.params[c.q] = GiNaC::numeric(0);  // a cyclic coordinate does not appear; 0 if it did
+
+    // L = ½ q̇ᵀ M q̇ + βᵀ q̇ + L₀ (L is at most quadratic in the velocities: derive_equations checked T).
+    exmap rest;
+    for (const symbol& v : r.qd) rest[v] = 0;
+    const ex L0 = r.L.subs(rest, GiNaC::subs_options::no_pattern);
+    result.V_eff = -L0;
+    std::vector<ex> beta(n), Q0(n), g(n);
+    std::vector<std::vector<ex>> M(n, std::vector<ex>(n)), K(n, std::vector<ex>(n)), D(n, std::vector<ex>(n));
+    for (std::size_t i = 0; i < n; ++i) {
+        const ex dL = r.L.diff(r.qd[i]);
+        beta[i] = dL.subs(rest, GiNaC::subs_options::no_pattern);
+        for (std::size_t j = 0; j < n; ++j) M[i][j] = dL.diff(r.qd[j]).subs(rest, GiNaC::subs_options::no_pattern);
+        Q0[i] = r.Q[i].subs(rest, GiNaC::subs_options::no_pattern);
+        g[i] = -L0.diff(r.q[i]) - Q0[i];
+    }
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j) {
+            K[i][j] = g[i].diff(r.q[j]);
+            D[i][j] = beta[i].diff(r.q[j]) - beta[j].diff(r.q[i]) -
+                      r.Q[i].diff(r.qd[j]).subs(rest, GiNaC::subs_options::no_pattern);
+        }
+
+    // Exact candidates per coordinate, from the factors of the gradient that depend on that coordinate alone.
+    std::vector<std::vector<ex>> exact_candidates(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        std::vector<ex> fs;
+        factors_of(factor_through_functions(g[i].normal().numer()), fs);
+        for (const ex& f : fs) {
+            std::vector<std::size_t> depends;
+            for (std::size_t j = 0; j < n; ++j)
+                if (f.has(r.q[j])) depends.push_back(j);
+            if (depends.size() != 1) continue;
+            for (const ex& root : solve_factor(f, r.q[depends[0]])) {
+                auto& list = exact_candidates[depends[0]];
+                if (std::none_of(list.begin(), list.end(), [&](const ex& e) { return (e - root).is_zero(); }))
+                    list.push_back(root);
+            }
+        }
+    }
+    const std::vector<bool> angle = periodic(g, r.q, values.params);
+
+    // Starting points: the exact candidates' combinations, --at, the model's initial q, 0, and a scan.
+    std::vector<std::vector<double>> starts;
+    {
+        std::vector<std::vector<double>> numeric(n);
+        for (std::size_t i = 0; i < n; ++i)
+            for (const ex& c : exact_candidates[i]) {
+                const double v = evaluate(c, values.params);
+                if (std::isfinite(v)) numeric[i].push_back(v);
+            }
+        // Coordinates without candidates start from the model's value.
+        std::vector<std::size_t> counter(n, 0);
+        for (int combo = 0; combo < 256; ++combo) {
+            std::vector<double> x(n);
+            for (std::size_t i = 0; i < n; ++i)
+                x[i] = numeric[i].empty() ? model.coordinates[r.index[i]].initial : numeric[i][counter[i]];
+            starts.push_back(x);
+            std::size_t k = 0;
+            while (k < n && (numeric[k].empty() || ++counter[k] == numeric[k].size())) {
+                counter[k] = 0;
+                ++k;
+            }
+            if (k == n) break;
+        }
+    }
+    for (const auto& guess : options.at) {
+        std::vector<double> x(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            const auto it = guess.find(result.coordinates[i]);
+            x[i] = it == guess.end() ? model.coordinates[r.index[i]].initial : it->second;
+        }
+        for (const auto& [name, v] : guess) {
+            static_cast<void>(v);
+            if (std::find(result.coordinates.begin(), result.coordinates.end(), name) == result.coordinates.end())
+                throw ModesError("--at " + name + ": no coordinate of that name remains");
+        }
+        starts.push_back(x);
+    }
+    {
+        std::vector<double> initial(n), zero(n, 0.0);
+        for (std::size_t i = 0; i < n; ++i) initial[i] = model.coordinates[r.index[i]].initial;
+        starts.push_back(initial);
+        starts.push_back(zero);
+        std::mt19937 rng(20261124);
+        std::uniform_real_distribution<double> u(-1, 1);
+        const int scans = n <= 2 ? 48 : 96;
+        for (int k = 0; k < scans; ++k) {
+            std::vector<double> x(n);
+            for (std::size_t i = 0; i < n; ++i)
+                x[i] = angle[i] ? kPi * u(rng) : initial[i] + (1 + std::abs(initial[i])) * 2 * u(rng);
+            starts.push_back(x);
+        }
+    }
+
+    // Solve, and keep each equilibrium once (angles modulo 2π).
+    // Equilibria that differ only along the null space of K₀ (a free translation, an unreduced cyclic
+    // coordinate) are one family: the first found stands for it, the others are dropped.
+    struct Found {
+        std::vector<double> x;
+        Eigen::MatrixXd null;  ///< orthonormal basis of K₀'s null space there (n × k)
+    };
+    std::vector<Found> found;
+    auto same = [&](const Found& f, const std::vector<double>& x) {
+        Eigen::VectorXd d(static_cast<Eigen::Index>(n));
+        double size = 1;
+        for (std::size_t i = 0; i < n; ++i) {
+            d(Eigen::Index(i)) = angle[i] ? wrap(x[i] - f.x[i]) : x[i] - f.x[i];
+            size = std::max(size, std::abs(x[i]));
+        }
+        if (f.null.cols() > 0) d -= f.null * (f.null.transpose() * d);
+        return d.norm() <= 1e-7 * size;
+    };
+    for (std::vector<double> x : starts) {
+        if (!newton(g, K, r.q, values.params, x) || !(precise_residual(g, r.q, x, values.params) < 1e-9)) continue;
+        for (std::size_t i = 0; i < n; ++i)
+            if (angle[i]) x[i] = wrap(x[i]);
+        for (double& v : x)
+            if (std::abs(v) < 1e-13) v = 0;
+        if (std::any_of(found.begin(), found.end(), [&](const Found& f) { return same(f, x); })) continue;
+        Eigen::MatrixXd Kx(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j) Kx(Eigen::Index(i), Eigen::Index(j)) = value_at(K[i][j], r.q, x, values.params);
+        Found f{x, Eigen::MatrixXd(static_cast<Eigen::Index>(n), 0)};
+        if (Kx.allFinite()) {
+            const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es((Kx + Kx.transpose()) / 2);
+            const double big = es.eigenvalues().cwiseAbs().maxCoeff();
+            std::vector<Eigen::Index> zero;
+            for (Eigen::Index k = 0; k < es.eigenvalues().size(); ++k)
+                if (std::abs(es.eigenvalues()(k)) <= 1e-9 * std::max(big, 1e-300)) zero.push_back(k);
+            f.null.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(zero.size()));
+            for (std::size_t c = 0; c < zero.size(); ++c) f.null.col(Eigen::Index(c)) = es.eigenvectors().col(zero[c]);
+        }
+        found.push_back(std::move(f));
+    }
+    std::sort(found.begin(), found.end(), [](const Found& a, const Found& b) { return a.x < b.x; });
+
+    for (const Found& family : found) {
+        const std::vector<double>& x = family.x;
+        Equilibrium e;
+        e.q = x;
+        e.exact.resize(n);
+        exmap exact_at;
+        for (std::size_t i = 0; i < n; ++i) {
+            for (const ex& c : exact_candidates[i]) {
+                const double v = evaluate(c, values.params);
+                const double d = angle[i] ? wrap(v - x[i]) : v - x[i];
+                if (std::isfinite(v) && std::abs(d) < 1e-8) {
+                    e.exact[i] = std::abs(v - x[i]) < 1e-8 ? c : c + GiNaC::numeric(int(std::lround((x[i] - v) / (2 * kPi)))) * 2 * GiNaC::Pi;
+                    break;
+                }
+            }
+            if (e.exact[i])
+                exact_at[r.q[i]] = *e.exact[i];
+        }
+        // The linearization, as numbers.
+        auto mat = [&](const std::vector<std::vector<ex>>& S) {
+            std::vector<std::vector<double>> out(n, std::vector<double>(n));
+            for (std::size_t i = 0; i < n; ++i)
+                for (std::size_t j = 0; j < n; ++j) out[i][j] = value_at(S[i][j], r.q, x, values.params);
+            return out;
+        };
+        e.M = mat(M);
+        e.K = mat(K);
+        const auto Dn = mat(D);
+        e.C.assign(n, std::vector<double>(n));
+        e.G.assign(n, std::vector<double>(n));
+        double scale = 0;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j) {
+                e.C[i][j] = (Dn[i][j] + Dn[j][i]) / 2;
+                e.G[i][j] = (Dn[i][j] - Dn[j][i]) / 2;
+                scale = std::max({scale, std::abs(e.M[i][j]), std::abs(e.K[i][j])});
+            }
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j) {
+                e.damped = e.damped || std::abs(e.C[i][j]) > 1e-12 * (1 + scale);
+                e.gyroscopic = e.gyroscopic || std::abs(e.G[i][j]) > 1e-12 * (1 + scale);
+            }
+        Eigen::MatrixXd Mm(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+        Eigen::MatrixXd Km = Mm, Dm = Mm;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j) {
+                Mm(Eigen::Index(i), Eigen::Index(j)) = e.M[i][j];
+                Km(Eigen::Index(i), Eigen::Index(j)) = e.K[i][j];
+                Dm(Eigen::Index(i), Eigen::Index(j)) = Dn[i][j];
+            }
+        if (!Mm.allFinite() || !Km.allFinite() || !Dm.allFinite()) {
+            result.notes.push_back("an equilibrium where the linearization cannot be evaluated was left out");
+            continue;
+        }
+        const Eigen::LLT<Eigen::MatrixXd> llt(Mm);
+        if (llt.info() != Eigen::Success) {
+            result.notes.push_back("an equilibrium where the mass matrix is singular (the coordinates are singular "
+                                   "there) was left out; reduce the cyclic coordinates with --momentum");
+            continue;
+        }
+        // First-order system x' = A x, x = [δq, δq̇].
+        Eigen::MatrixXd A = Eigen::MatrixXd::Zero(Eigen::Index(2 * n), Eigen::Index(2 * n));
+        A.topRightCorner(Eigen::Index(n), Eigen::Index(n)).setIdentity();
+        A.bottomLeftCorner(Eigen::Index(n), Eigen::Index(n)) = -llt.solve(Km);
+        A.bottomRightCorner(Eigen::Index(n), Eigen::Index(n)) = -llt.solve(Dm);
+        const Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
+        double max_re = -std::numeric_limits<double>::infinity();
+        double lambda_scale = 0;
+        for (Eigen::Index k = 0; k < es.eigenvalues().size(); ++k) lambda_scale = std::max(lambda_scale, std::abs(es.eigenvalues()(k)));
+        for (Eigen::Index k = 0; k < es.eigenvalues().size(); ++k) {
+            std::complex<double> z = es.eigenvalues()(k);
+            // A double zero eigenvalue (a zero mode) splits into ±√ε: show it as the 0 it is.
+            if (std::abs(z) <= 1e-6 * std::max(lambda_scale, 1e-300)) z = 0;
+            e.eigenvalues.push_back(z);
+            max_re = std::max(max_re, z.real());
+        }
+        const double sort_tol = 1e-9 * std::max(lambda_scale, 1e-300);
+        std::sort(e.eigenvalues.begin(), e.eigenvalues.end(), [sort_tol](const auto& a, const auto& b) {
+            return std::abs(a.real() - b.real()) > sort_tol ? a.real() > b.real() : a.imag() > b.imag();
+        });
+        // Normal modes of the symmetric part of K: ω² and shapes.
+        const Eigen::MatrixXd Ks = (Km + Km.transpose()) / 2;
+        const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ges(Ks, Mm);
+        double omega_scale = 0;
+        for (Eigen::Index k = 0; k < ges.eigenvalues().size(); ++k)
+            omega_scale = std::max(omega_scale, std::abs(ges.eigenvalues()(k)));
+        const double zero_tol = 1e-9 * std::max(omega_scale, 1e-300);
+        bool negative = false, zero = false;
+        for (Eigen::Index k = 0; k < ges.eigenvalues().size(); ++k) {
+            NormalMode mode;
+            mode.omega2 = ges.eigenvalues()(k);
+            if (std::abs(mode.omega2) <= zero_tol) mode.omega2 = 0;
+            negative = negative || mode.omega2 < 0;
+            zero = zero || mode.omega2 == 0;
+            Eigen::VectorXd v = ges.eigenvectors().col(k);
+            Eigen::Index big = 0;
+            v.cwiseAbs().maxCoeff(&big);
+            v /= v(big);
+            for (Eigen::Index i = 0; i < v.size(); ++i) mode.shape.push_back(std::abs(v(i)) < 1e-12 ? 0.0 : v(i));
+            e.modes.push_back(mode);
+        }
+        const double lambda_tol = 1e-7 * std::sqrt(std::max(omega_scale, 1e-300));
+        // Conservative (no damping): every λ on the imaginary axis is stable (Lyapunov); with damping every λ must
+        // have Re λ < 0 for asymptotic stability, and Re λ = 0 is marginal.
+        if (max_re > lambda_tol) {
+            e.stability = Stability::Unstable;
+            e.growth_rate = max_re;
+        } else if (zero || (e.damped && max_re > -lambda_tol)) {
+            e.stability = Stability::Marginal;
+        } else if (negative) {
+            e.stability = Stability::GyroscopicallyStable;
+        } else {
+            e.stability = Stability::Stable;
+        }
+        if (zero)
+            result.notes.push_back("a mode with ω = 0 at an equilibrium: the equilibria there are not isolated "
+                                   "(a continuum along that shape, e.g. a free translation or a cyclic coordinate)");
+
+        // Exact ω²: the characteristic polynomial at the exact equilibrium, in the parameters, where it factors.
+        // (Where some coordinate has no exact value, K₀ and M₀ may still be free of it: a quadratic V.)
+        if (!e.damped && !e.gyroscopic && n <= 4) {
+            try {
+                GiNaC::matrix Ke{static_cast<unsigned>(n), static_cast<unsigned>(n)}, Me{static_cast<unsigned>(n), static_cast<unsigned>(n)};
+                for (std::size_t i = 0; i < n; ++i)
+                    for (std::size_t j = 0; j < n; ++j) {
+                        Ke(unsigned(i), unsigned(j)) =
+                            simplify_inverse_trig(K[i][j].subs(exact_at, GiNaC::subs_options::no_pattern).expand());
+                        Me(unsigned(i), unsigned(j)) =
+                            simplify_inverse_trig(M[i][j].subs(exact_at, GiNaC::subs_options::no_pattern).expand());
+                    }
+                bool free = true;
+                for (const symbol& qi : r.q) free = free && !Ke.has(qi) && !Me.has(qi);
+                if (!free) throw std::runtime_error("not exact");
+                const symbol w("w_");
+                std::vector<ex> roots = exact_roots(char_poly(Ke, Me, w), w);
+                for (NormalMode& mode : e.modes)
+                    for (const ex& root : roots) {
+                        const double v = evaluate(root, values.params);
+                        if (std::isfinite(v) && std::abs(v - mode.omega2) <= 1e-8 * (1 + std::abs(mode.omega2))) {
+                            mode.omega2_exact = root;
+                            break;
+                        }
+                    }
+            } catch (const std::exception&) {
+                // no exact frequencies: the numbers stand
+            }
+        }
+        result.equilibria.push_back(std::move(e));
+    }
+    if (result.equilibria.empty())
+        result.notes.push_back("no equilibrium found from " + std::to_string(starts.size()) +
+                               " starting points (give guesses with --at)");
+    std::sort(result.notes.begin(), result.notes.end());
+    result.notes.erase(std::unique(result.notes.begin(), result.notes.end()), result.notes.end());
+    return result;
+}
+
+}  // namespace eomgen
