@@ -96,6 +96,7 @@ std::string format_text(const Model& model, const ModesResult& r, Printer& p) {
         os << "\n  M0 = " << matrix_text(e.M) << "\n  K0 = " << matrix_text(e.K) << "\n";
         if (e.gyroscopic) os << "  G0 = " << matrix_text(e.G) << "  (gyroscopic)\n";
         if (e.damped) os << "  C0 = " << matrix_text(e.C) << "  (damping)\n";
+        if (!e.B.empty() && !e.B[0].empty()) os << "  A = " << matrix_text(e.A) << "\n  B = " << matrix_text(e.B) << "  (x = [q, q'], u = inputs)\n";
         if (!e.gyroscopic && !e.damped) {
             for (std::size_t m = 0; m < e.modes.size(); ++m) {
                 const NormalMode& mode = e.modes[m];
@@ -161,13 +162,15 @@ std::string format_markdown(const Model& model, const ModesResult& r, Printer& p
     return md.str();
 }
 
-std::string format_json(const Model& model, const ModesResult& r, Printer& p) {
+std::string format_json(const Model& model, const ModesResult& r, Printer& p, const std::vector<std::string>& inputs) {
     using text::json_string;
     std::ostringstream js;
     js << "{\"model\": " << json_string(model.name) << ", \"coordinates\": [";
     for (std::size_t i = 0; i < r.coordinates.size(); ++i) js << (i ? ", " : "") << json_string(r.coordinates[i]);
     js << "], \"reduced\": [";
     for (std::size_t i = 0; i < r.reduced.size(); ++i) js << (i ? ", " : "") << json_string(r.reduced[i]);
+    js << "], \"inputs\": [";
+    for (std::size_t i = 0; i < inputs.size(); ++i) js << (i ? ", " : "") << json_string(inputs[i]);
     js << "], \"V_eff\": " << json_string(p.latex(r.V_eff)) << ", \"equilibria\": [";
     for (std::size_t k = 0; k < r.equilibria.size(); ++k) {
         const Equilibrium& e = r.equilibria[k];
@@ -183,7 +186,8 @@ std::string format_json(const Model& model, const ModesResult& r, Printer& p) {
         js << "}, \"stable\": " << (e.stability == Stability::Stable || e.stability == Stability::GyroscopicallyStable ? "true" : "false")
            << ", \"stability\": " << json_string(stability_name(e.stability)) << ", \"growth_rate\": " << json_number(e.growth_rate)
            << ", \"M\": " << matrix_json(e.M) << ", \"K\": " << matrix_json(e.K) << ", \"C\": " << matrix_json(e.C)
-           << ", \"G\": " << matrix_json(e.G) << ", \"modes\": [";
+           << ", \"G\": " << matrix_json(e.G) << ", \"A\": " << matrix_json(e.A) << ", \"B\": " << matrix_json(e.B)
+           << ", \"modes\": [";
         for (std::size_t m = 0; m < e.modes.size(); ++m) {
             const NormalMode& mode = e.modes[m];
             js << (m ? ", " : "") << "{\"omega\": " << (mode.omega2 >= 0 ? json_number(std::sqrt(mode.omega2)) : "null")
@@ -214,6 +218,30 @@ std::pair<std::string, double> assignment(const std::string& text, const char* o
 
 }  // namespace
 
+std::string modes_markdown(const Model& model, const ModesResult& result) {
+    Printer printer(model, result);
+    return format_markdown(model, result, printer);
+}
+
+std::vector<std::string> modes_summary(const Model& model, const ModesResult& r) {
+    static_cast<void>(model);
+    std::vector<std::string> lines;
+    for (const Equilibrium& e : r.equilibria) {
+        std::string line;
+        for (std::size_t i = 0; i < e.q.size(); ++i) line += (i ? ", " : "") + r.coordinates[i] + " = " + number(e.q[i]);
+        line += std::string(": ") + stability_name(e.stability);
+        if (e.stability == Stability::Unstable) line += ", growth rate " + number(e.growth_rate);
+        if (!e.gyroscopic && !e.damped) {
+            line += "; omega =";
+            for (std::size_t m = 0; m < e.modes.size(); ++m)
+                line += (m ? ", " : " ") + (e.modes[m].omega2 >= 0 ? number(std::sqrt(e.modes[m].omega2))
+                                                                   : "i " + number(std::sqrt(-e.modes[m].omega2)));
+        }
+        lines.push_back(line);
+    }
+    return lines;
+}
+
 ModesCommand::ModesCommand(CLI::App& app) {
     command_ = app.add_subcommand("modes", "Equilibria, linearization, normal modes and stability (small oscillations)");
     command_->add_option("model", model_, "Model file (.toml)")->required()->check(CLI::ExistingFile);
@@ -222,6 +250,8 @@ ModesCommand::ModesCommand(CLI::App& app) {
                                       "at the model's initial values)");
     command_->add_option("--momentum", momentum_, "Reduce a cyclic coordinate q with its momentum given, p_q=VALUE "
                                                   "(Routh; repeatable), e.g. a top's p_phi and p_psi");
+    command_->add_option("--input", inputs_, "A parameter taken as a control input u (e.g. a torque in [forces]): "
+                                             "B of x' = A x + B u (repeatable)");
     command_->add_option("--format", format_, "text, markdown or json")
         ->check(CLI::IsMember({"text", "markdown", "json"}))
         ->capture_default_str();
@@ -244,13 +274,14 @@ int ModesCommand::run() const {
             for (std::string part; std::getline(parts, part, ',');) g.insert(assignment(part, "--at"));
             options.at.push_back(g);
         }
+        options.inputs = inputs_;
         result = small_oscillations(model, eq, options);
     } catch (const ModesError& e) {
         std::cerr << "eomgen modes: " << e.what() << "\n";
         return 2;
     }
     Printer printer(model, result);
-    const std::string out = format_ == "json"       ? format_json(model, result, printer)
+    const std::string out = format_ == "json"       ? format_json(model, result, printer, inputs_)
                             : format_ == "markdown" ? format_markdown(model, result, printer)
                                                     : format_text(model, result, printer);
     if (output_.empty()) {

@@ -8,13 +8,24 @@ namespace CLI {
 class App;
 }
 
+namespace eomgen {
+struct Model;
+struct ModesResult;
+}  // namespace eomgen
+
 namespace eomgen::cli {
+
+/// The modes as `eomgen modes --format markdown` writes them (also a section of `eomgen report`).
+std::string modes_markdown(const Model& model, const ModesResult& result);
+
+/// One line per equilibrium, as plain text (for the report's LaTeX form, which escapes it).
+std::vector<std::string> modes_summary(const Model& model, const ModesResult& result);
 
 /**
  * Registers `modes` on the `eomgen` command line:
  *
  *     eomgen modes MODEL.toml [--set p=v ...] [--at q=v[,q2=v ...] ...] [--momentum p_q=v ...]
- *                  [--format text|markdown|json] [-o FILE]
+ *                  [--input PARAM ...] [--format text|markdown|json] [-o FILE]
  *
  * run() derives the model (a ModelError propagates: exit 1), finds its equilibria and linearizes about each
  * (mechanics/small_oscillations.hpp) and prints them. Returns 0; 2 for a bad option or a model it cannot
@@ -29,7 +40,7 @@ class ModesCommand {
   private:
     CLI::App* command_ = nullptr;
     std::string model_, format_ = "text", output_;
-    std::vector<std::string> set_, at_, momentum_;
+    std::vector<std::string> set_, at_, momentum_, inputs_;
 };
 
 }  // namespace eomgen::cli

@@ -6,11 +6,13 @@
 #include "checker/report.hpp"
 #include "cli/compiled_model.hpp"
 #include "cli/latex_equations.hpp"
+#include "cli/modes_command.hpp"
 #include "cli/plot.hpp"
 #include "cli/process.hpp"
 #include "cli/run_command.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "eomgen/model_table.hpp"
+#include "mechanics/small_oscillations.hpp"
 #include "model/model_file.hpp"
 #include "options.hpp"
 #include "output/atomic_file.hpp"
@@ -25,6 +27,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include <unistd.h>
@@ -149,10 +152,29 @@ struct Checked {
     checker::CheckReport report;
 };
 
+/// The small oscillations (mechanics/small_oscillations.hpp) at the report's parameter values, or why not.
+struct Modes {
+    std::optional<ModesResult> result;
+    std::string why_not;
+};
+
+Modes small_oscillations_of(const Model& model, const Equations& eq, const sim::Options& o) {
+    Modes m;
+    try {
+        ModesOptions options;
+        for (const std::string& s : o.set) options.set.insert(sim::parse_assignment(s, "--set"));
+        m.result = small_oscillations(model, eq, options);
+    } catch (const std::exception& e) {
+        m.why_not = e.what();
+    }
+    return m;
+}
+
 // ---------------------------------------------------------------- Markdown
 
 std::string markdown(const Model& model, const Equations& eq, const std::vector<LatexBlock>& blocks,
-                     const Simulation& sim, const std::vector<Checked>& checks, const sim::Options& o) {
+                     const Simulation& sim, const std::vector<Checked>& checks, const sim::Options& o,
+                     const Modes& modes) {
     using text::markdown_math;
     using text::markdown_text;
     std::ostringstream md;
@@ -210,6 +232,14 @@ std::string markdown(const Model& model, const Equations& eq, const std::vector<
         if (!sim.plot.empty()) md << "\n![coordinates, invariants and residuals against t](" << sim.plot << ")\n";
         if (!sim.csv.empty()) md << "\nSamples: [" << sim.csv << "](" << sim.csv << ").\n";
     }
+    md << "\n## Small oscillations\n\n";
+    if (!modes.result) {
+        md << "Not computed: " << markdown_text(modes.why_not) << "\n";
+    } else {
+        md << "Equilibria, their stability and normal modes (`eomgen modes`, docs/modes.md).\n\n";
+        for (const std::string& line : lines_of(modes_markdown(model, *modes.result)))
+            if (line.rfind("# ", 0) != 0) md << (line.rfind('#', 0) == 0 ? "#" + line : line) << "\n";
+    }
     for (const Checked& c : checks) {
         md << "\n## Derivation " << markdown_text(fs::path(c.path).filename().string()) << "\n\n";
         // The checker's own Markdown (its headings one level down, under this one).
@@ -222,7 +252,8 @@ std::string markdown(const Model& model, const Equations& eq, const std::vector<
 // ---------------------------------------------------------------- LaTeX
 
 std::string latex(const Model& model, const Equations& eq, const std::vector<LatexBlock>& blocks,
-                  const Simulation& sim, const std::vector<Checked>& checks, const sim::Options& o) {
+                  const Simulation& sim, const std::vector<Checked>& checks, const sim::Options& o,
+                  const Modes& modes) {
     using text::latex_text;
     std::ostringstream tex;
     tex << "Model \\texttt{" << latex_text(model.name) << "}"
@@ -287,6 +318,15 @@ std::string latex(const Model& model, const Equations& eq, const std::vector<Lat
         }
         if (!sim.plot.empty())
             tex << "\n\\begin{center}\\includegraphics[width=\\textwidth]{" << latex_text(sim.plot) << "}\\end{center}\n";
+    }
+    tex << "\\section*{Small oscillations}\n";
+    if (!modes.result) {
+        tex << "Not computed: " << latex_text(modes.why_not) << "\n";
+    } else {
+        tex << "\\begin{itemize}\n";
+        for (const std::string& line : modes_summary(model, *modes.result)) tex << "\\item " << latex_text(line) << "\n";
+        if (modes.result->equilibria.empty()) tex << "\\item no equilibrium found\n";
+        tex << "\\end{itemize}\n";
     }
     // A derivation's text is a stranger's LaTeX: shown as escaped text here, never compiled.
     for (const Checked& c : checks) {
@@ -432,8 +472,9 @@ int ReportCommand::run() {
     const bool tex = format_ == "latex";
     const fs::path file = dir / (model.name + (tex ? ".tex" : ".md"));
     try {
-        output::write_atomically(file, tex ? latex(model, eq, blocks, sim, checks, options_)
-                                           : markdown(model, eq, blocks, sim, checks, options_));
+        const Modes modes = small_oscillations_of(model, eq, options_);
+        output::write_atomically(file, tex ? latex(model, eq, blocks, sim, checks, options_, modes)
+                                           : markdown(model, eq, blocks, sim, checks, options_, modes));
     } catch (const output::WriteError& e) {
         std::cerr << "eomgen report: " << e.what() << "\n";
         return 3;

@@ -415,6 +415,15 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
             throw ModesError("--set " + name + ": no such parameter");
     }
 
+    std::vector<symbol> inputs;
+    for (const std::string& name : options.inputs) {
+        const auto it = std::find_if(model.parameters.begin(), model.parameters.end(),
+                                     [&](const Parameter& p) { return p.name == name; });
+        if (it == model.parameters.end()) throw ModesError("--input " + name + ": no such parameter (an input is a "
+                                                           "parameter of the model, e.g. a torque in [forces])");
+        inputs.push_back(it->symbol);
+    }
+
     ModesResult result;
     std::vector<std::pair<symbol, std::size_t>> momenta;
     const Reduced r = reduce(model, eq, options, momenta, result.reduced);
@@ -620,7 +629,12 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
                 Km(Eigen::Index(i), Eigen::Index(j)) = e.K[i][j];
                 Dm(Eigen::Index(i), Eigen::Index(j)) = Dn[i][j];
             }
-        if (!Mm.allFinite() || !Km.allFinite() || !Dm.allFinite()) {
+        // b = −∂g/∂u: how each input pushes the generalized forces balance (g = ∂V_eff/∂q − Q).
+        Eigen::MatrixXd Bq(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(inputs.size()));
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t k = 0; k < inputs.size(); ++k)
+                Bq(Eigen::Index(i), Eigen::Index(k)) = -value_at(g[i].diff(inputs[k]), r.q, x, values.params);
+        if (!Mm.allFinite() || !Km.allFinite() || !Dm.allFinite() || !Bq.allFinite()) {
             result.notes.push_back("an equilibrium where the linearization cannot be evaluated was left out");
             continue;
         }
@@ -635,6 +649,16 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
         A.topRightCorner(Eigen::Index(n), Eigen::Index(n)).setIdentity();
         A.bottomLeftCorner(Eigen::Index(n), Eigen::Index(n)) = -llt.solve(Km);
         A.bottomRightCorner(Eigen::Index(n), Eigen::Index(n)) = -llt.solve(Dm);
+        auto rows = [](const Eigen::MatrixXd& m) {
+            std::vector<std::vector<double>> out(std::size_t(m.rows()), std::vector<double>(std::size_t(m.cols())));
+            for (Eigen::Index i = 0; i < m.rows(); ++i)
+                for (Eigen::Index j = 0; j < m.cols(); ++j) out[std::size_t(i)][std::size_t(j)] = m(i, j);
+            return out;
+        };
+        Eigen::MatrixXd B = Eigen::MatrixXd::Zero(Eigen::Index(2 * n), Bq.cols());
+        B.bottomRows(Eigen::Index(n)) = llt.solve(Bq);
+        e.A = rows(A);
+        e.B = rows(B);
         const Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
         double max_re = -std::numeric_limits<double>::infinity();
         double lambda_scale = 0;

@@ -40,6 +40,7 @@ struct ModesOptions {
     std::map<std::string, double> set;                 ///< parameter values instead of the model's
     std::vector<std::map<std::string, double>> at;     ///< starting guesses (coordinates not named: scanned)
     std::map<std::string, double> momentum;            ///< p_<q> = value: q is reduced away (Routh)
+    std::vector<std::string> inputs;                   ///< parameters taken as inputs u: B = ∂ẋ/∂u
 };
 
 /// A request that cannot be served: an unknown name, a model eomgen cannot linearize (the message says why).
@@ -60,6 +61,7 @@ struct Equilibrium {
     std::vector<double> q;                 ///< over the remaining coordinates
     std::vector<std::optional<GiNaC::ex>> exact;  ///< per coordinate, in the parameters (where found)
     std::vector<std::vector<double>> M, K, C, G;  ///< the linearization, numbers
+    std::vector<std::vector<double>> A, B;  ///< first-order form δẋ = A δx + B δu, x = [q, q̇] (B: 2n × inputs)
     std::vector<NormalMode> modes;         ///< K₀ a = ω² M₀ a (always; with C₀ or G₀ they are not the motion)
     std::vector<std::complex<double>> eigenvalues;  ///< λ of the full first-order system ẋ = A x
     Stability stability = Stability::Stable;

@@ -320,3 +320,23 @@ TEST_CASE("modes: an unstable equilibrium's growth in a simulation matches its e
     const auto result = eomgen::integrate(f, 0.0, x0, t_end, opt);
     CHECK(std::log(result.x(0) / 1e-9) / t_end == Approx(rate).epsilon(1e-6));
 }
+
+TEST_CASE("modes: the inverted pendulum on a cart, A and B of the control textbooks", "[physics][modes]") {
+    // Linearized about the upright rod (θ = 0): (M + m) ẍ + m l θ̈ = F, m l ẍ + m l² θ̈ − m g l θ = 0, so
+    // ẍ = (F − m g θ)/M and θ̈ = ((M + m) g θ − F)/(M l).
+    const Derived d = load("tests/physics/cart_pendulum.toml");
+    eomgen::ModesOptions o;
+    o.inputs = {"F"};
+    const eomgen::ModesResult r = eomgen::small_oscillations(d.model, d.eq, o);
+    const eomgen::Equilibrium& up = at(r, {0, 0});
+    const double M = 1.0, m = 0.2, l = 0.5, g = 9.81;
+    const std::vector<std::vector<double>> A = {{0, 0, 1, 0}, {0, 0, 0, 1}, {0, -m * g / M, 0, 0},
+                                                {0, (M + m) * g / (M * l), 0, 0}};
+    const std::vector<std::vector<double>> B = {{0}, {0}, {1 / M}, {-1 / (M * l)}};
+    for (std::size_t i = 0; i < 4; ++i) {
+        for (std::size_t j = 0; j < 4; ++j) CHECK(up.A[i][j] == Approx(A[i][j]).margin(1e-12));
+        CHECK(up.B[i][0] == Approx(B[i][0]).margin(1e-12));
+    }
+    CHECK(up.stability == eomgen::Stability::Unstable);
+    CHECK(up.growth_rate == Approx(std::sqrt((M + m) * g / (M * l))).epsilon(1e-10));
+}
