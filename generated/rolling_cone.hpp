@@ -16,12 +16,14 @@
 #pragma once
 
 #include "eomgen/constraints.hpp"
+#include "eomgen/linearize.hpp"
 
 #include <Eigen/Core>
 
 #include <array>
 #include <cmath>
 #include <string_view>
+#include <type_traits>
 
 namespace eomgen::models::rolling_cone {
 
@@ -49,6 +51,8 @@ struct Model {
     using MassMatrix = Eigen::Matrix<Scalar, nq, nq>;
     using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;
     using Outputs = Eigen::Matrix<Scalar, n_outputs, 1>;
+    using StateJacobian = Eigen::Matrix<Scalar, nx, nx>;
+    using ParameterJacobian = Eigen::Matrix<Scalar, nx, n_params>;
     using ConstraintVector = Eigen::Matrix<Scalar, n_constraints, 1>;
     using ConstraintJacobian = Eigen::Matrix<Scalar, n_constraints, nq>;
 
@@ -360,6 +364,15 @@ struct Model {
     static void multipliers(const Scalar& t, const State& x_, const Params& p_, ConstraintVector& lambda_) {
         Config qdd_;
         accelerations(t, x_, p_, Scalar(baumgarte_alpha), Scalar(baumgarte_beta), qdd_, lambda_);
+    }
+
+    /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward
+    /// differentiation through rhs (eomgen/linearize.hpp); for Scalar = double. A member template, so that
+    /// instantiating the class does not compile the differentiation.
+    template <class MatA = StateJacobian, class MatB = ParameterJacobian>
+    static void linearization(const Scalar& t, const State& x_, const Params& p_, MatA& A_, MatB& B_) {
+        static_assert(std::is_same_v<Scalar, double>, "linearization() is for Model<double>");
+        eomgen::linearize<Model>(t, x_, p_, A_, B_);
     }
 };
 

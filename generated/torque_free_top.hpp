@@ -14,12 +14,14 @@
 #pragma once
 
 #include "eomgen/linear_solve.hpp"
+#include "eomgen/linearize.hpp"
 
 #include <Eigen/Core>
 
 #include <array>
 #include <cmath>
 #include <string_view>
+#include <type_traits>
 
 namespace eomgen::models::torque_free_top {
 
@@ -43,6 +45,8 @@ struct Model {
     using MassMatrix = Eigen::Matrix<Scalar, nq, nq>;
     using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;
     using Outputs = Eigen::Matrix<Scalar, n_outputs, 1>;
+    using StateJacobian = Eigen::Matrix<Scalar, nx, nx>;
+    using ParameterJacobian = Eigen::Matrix<Scalar, nx, n_params>;
 
     /// Parameters with the model file's defaults.
     struct Params {
@@ -217,6 +221,15 @@ struct Model {
         eomgen::solve_mass_matrix(M_, f_, qdd_, t, x_);
         xdot_.template head<nq>() = qd_;
         xdot_.template tail<nq>() = qdd_;
+    }
+
+    /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward
+    /// differentiation through rhs (eomgen/linearize.hpp); for Scalar = double. A member template, so that
+    /// instantiating the class does not compile the differentiation.
+    template <class MatA = StateJacobian, class MatB = ParameterJacobian>
+    static void linearization(const Scalar& t, const State& x_, const Params& p_, MatA& A_, MatB& B_) {
+        static_assert(std::is_same_v<Scalar, double>, "linearization() is for Model<double>");
+        eomgen::linearize<Model>(t, x_, p_, A_, B_);
     }
 };
 

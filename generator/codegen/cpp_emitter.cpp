@@ -368,8 +368,9 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         os << "\n//   " << cpp_comment(o.name + " = " + printer.print(o.expr.expr, MathStyle::Text) +
                                      (o.unit.empty() ? "" : "  [" + o.unit + "]"));
     os << "\n#pragma once\n\n";
-    os << (eq.constraints.empty() ? "#include \"eomgen/linear_solve.hpp\"\n\n" : "#include \"eomgen/constraints.hpp\"\n\n");
-    os << "#include <Eigen/Core>\n\n#include <array>\n#include <cmath>\n#include <string_view>\n\n";
+    os << (eq.constraints.empty() ? "#include \"eomgen/linear_solve.hpp\"\n" : "#include \"eomgen/constraints.hpp\"\n");
+    os << "#include \"eomgen/linearize.hpp\"\n\n";
+    os << "#include <Eigen/Core>\n\n#include <array>\n#include <cmath>\n#include <string_view>\n#include <type_traits>\n\n";
     os << "namespace eomgen::models::" << model.name << " {\n\n";
     os << "/// x = [q, q'] with q = " << string_array(coords) << "; M(q,t) q'' = f(q,q',t) solved in rhs().\n";
     os << "template <class Scalar>\nstruct Model {\n";
@@ -401,6 +402,8 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "    using MassMatrix = Eigen::Matrix<Scalar, nq, nq>;\n";
     os << "    using Conserved = Eigen::Matrix<Scalar, n_conserved, 1>;\n";
     os << "    using Outputs = Eigen::Matrix<Scalar, n_outputs, 1>;\n";
+    os << "    using StateJacobian = Eigen::Matrix<Scalar, nx, nx>;\n";
+    os << "    using ParameterJacobian = Eigen::Matrix<Scalar, nx, n_params>;\n";
     if (nc > 0) {
         os << "    using ConstraintVector = Eigen::Matrix<Scalar, n_constraints, 1>;\n";
         os << "    using ConstraintJacobian = Eigen::Matrix<Scalar, n_constraints, nq>;\n";
@@ -583,6 +586,13 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         os << "        Config qdd_;\n";
         os << "        accelerations(t, x_, p_, Scalar(baumgarte_alpha), Scalar(baumgarte_beta), qdd_, lambda_);\n    }\n";
     }
+    os << "\n    /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward\n"
+          "    /// differentiation through rhs (eomgen/linearize.hpp); for Scalar = double. A member template, so that\n"
+          "    /// instantiating the class does not compile the differentiation.\n";
+    os << "    template <class MatA = StateJacobian, class MatB = ParameterJacobian>\n";
+    os << "    static void linearization(const Scalar& t, const State& x_, const Params& p_, MatA& A_, MatB& B_) {\n";
+    os << "        static_assert(std::is_same_v<Scalar, double>, \"linearization() is for Model<double>\");\n";
+    os << "        eomgen::linearize<Model>(t, x_, p_, A_, B_);\n    }\n";
     os << "};\n\n}  // namespace eomgen::models::" << model.name << "\n";
     return os.str();
 }

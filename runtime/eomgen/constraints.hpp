@@ -57,7 +57,7 @@ void solve_constrained(const MatM& M, const VecF& f, const MatA& A, const VecG& 
                        const Scalar& t, const VecX& x) {
     using S = typename MatM::Scalar;
     if (!M.allFinite() || !f.allFinite() || !A.allFinite() || !gamma.allFinite())
-        throw NonFiniteState(describe_state("mass matrix, forcing or constraints are not finite", t, x), double(t));
+        throw NonFiniteState(describe_state("mass matrix, forcing or constraints are not finite", t, x), value_of(t));
     const S eps = std::numeric_limits<S>::epsilon();
     Eigen::LLT<typename MatM::PlainObject> llt(M);
     auto fine = [&] { return llt.info() == Eigen::Success && llt.rcond() > S(M.rows()) * eps; };
@@ -69,7 +69,7 @@ void solve_constrained(const MatM& M, const VecF& f, const MatA& A, const VecG& 
             throw SingularMassMatrix(
                 describe_state("mass matrix is singular or not positive definite on the motions the constraints allow",
                                t, x),
-                double(t));
+                value_of(t));
         rhs += w * (A.transpose() * gamma);
     }
     const auto Y = llt.solve(A.transpose()).eval();   // n×m
@@ -79,7 +79,7 @@ void solve_constrained(const MatM& M, const VecF& f, const MatA& A, const VecG& 
     if (s_llt.info() != Eigen::Success || !(s_llt.rcond() > S(schur.rows()) * eps * S(1e3)))
         throw SingularConstraints(
             describe_state("constraint Jacobian lost rank (redundant constraints or a singular configuration)", t, x),
-            double(t));
+            value_of(t));
     lambda = s_llt.solve(gamma - A * Minv_f);
     qdd = Minv_f + Y * lambda;
 }
@@ -166,7 +166,7 @@ void project_onto_constraints(const typename Model::Config::Scalar& t, typename 
             if (gh.cwiseAbs().maxCoeff() <= tol * scale) break;
             if (iteration == 50)
                 throw SimulationError(describe_state("projection onto the holonomic constraints did not converge", t, x),
-                                      double(t));
+                                      value_of(t));
             Model::mass_matrix(t, q, p, M);
             q += detail::metric_correction(M, G, gh);
         }
@@ -200,8 +200,8 @@ void check_consistent(const typename Model::Config::Scalar& t, const typename Mo
         os.precision(17);
         os << "initial conditions violate constraint '" << Model::constraint_names[std::size_t(k)] << "' at "
            << (bad_position ? "position" : "velocity") << " level (residual "
-           << double(bad_position ? g(k) : c(k)) << ")";
-        throw InconsistentInitialConditions(describe_state(os.str(), t, x), double(t));
+           << value_of(bad_position ? g(k) : c(k)) << ")";
+        throw InconsistentInitialConditions(describe_state(os.str(), t, x), value_of(t));
     }
 }
 

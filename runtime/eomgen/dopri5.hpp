@@ -96,11 +96,11 @@ class Dopri5 {
         dir_ = t_end >= t0 ? Scalar(1) : Scalar(-1);
         hmax_ = opts_.hmax > Scalar(0) ? opts_.hmax : abs(t_end - t0);
         if (!x0.allFinite())
-            throw NonFiniteState(describe_state("initial state is not finite", t0, x0), double(t0));
+            throw NonFiniteState(describe_state("initial state is not finite", t0, x0), value_of(t0));
         if (t_end == t0) return;
         evaluate(f, t_, x_, k1_);
         if (!k1_.allFinite())
-            throw NonFiniteState(describe_state("right-hand side is not finite", t_, x_), double(t_));
+            throw NonFiniteState(describe_state("right-hand side is not finite", t_, x_), value_of(t_));
         h_ = opts_.h0 != Scalar(0) ? dir_ * std::min(abs(opts_.h0), hmax_) : initial_step(f);
     }
 
@@ -119,7 +119,7 @@ class Dopri5 {
                 throw TooManySteps(describe_state("more than max_steps = " + std::to_string(opts_.max_steps) +
                                                       " steps attempted",
                                                   t_, x_),
-                                   double(t_));
+                                   value_of(t_));
             const Scalar ulp16 =
                 Scalar(16) * abs(std::nextafter(t_, dir_ * std::numeric_limits<Scalar>::infinity()) - t_);
             const Scalar hmin = max(opts_.hmin, ulp16);
@@ -131,10 +131,10 @@ class Dopri5 {
                 std::ostringstream why;
                 why << (last_nonfinite ? "right-hand side or state not finite for every step size down to "
                                        : "step size fell below hmin = ")
-                    << double(hmin);
+                    << value_of(hmin);
                 const std::string msg = describe_state(why.str(), t_, x_);
-                if (last_nonfinite) throw NonFiniteState(msg, double(t_));
-                throw StepSizeUnderflow(msg, double(t_));
+                if (last_nonfinite) throw NonFiniteState(msg, value_of(t_));
+                throw StepSizeUnderflow(msg, value_of(t_));
             }
             const Scalar h = h_;
             const Scalar err = attempt(f, h);

@@ -8,8 +8,22 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace eomgen {
+
+/// A scalar's value as a double for messages: the number itself, or the value of an automatic-differentiation
+/// scalar (Eigen::AutoDiffScalar and the like, through .value()), so that the runtime and generated code
+/// compile for such scalars (a Jacobian by forward differentiation: linearize.hpp).
+template <class S>
+double value_of(const S& x) {
+    if constexpr (std::is_arithmetic_v<S>)
+        return static_cast<double>(x);
+    else if constexpr (std::is_convertible_v<S, double>)
+        return static_cast<double>(x);
+    else
+        return value_of(x.value());
+}
 
 /// Base of every simulation error; what() carries the time and the state.
 class SimulationError : public std::runtime_error {
@@ -62,9 +76,9 @@ public:
 template <class Scalar, class Derived>
 std::string describe_state(const std::string& message, const Scalar& t, const Eigen::MatrixBase<Derived>& x) {
     std::ostringstream os;
-    os << std::setprecision(std::numeric_limits<double>::max_digits10) << message << " at t = " << double(t)
+    os << std::setprecision(std::numeric_limits<double>::max_digits10) << message << " at t = " << value_of(t)
        << " with state [";
-    for (Eigen::Index i = 0; i < x.size(); ++i) os << (i ? ", " : "") << double(x(i));
+    for (Eigen::Index i = 0; i < x.size(); ++i) os << (i ? ", " : "") << value_of(x(i));
     os << "]";
     return os.str();
 }

@@ -121,7 +121,7 @@ IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State
         const Scalar value = event.g(t, x);
         if (!std::isfinite(value))
             throw NonFiniteState(describe_state("event '" + event.name + "' function is not finite", t, x),
-                                 double(t));
+                                 value_of(t));
         return value;
     };
 

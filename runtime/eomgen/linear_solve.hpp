@@ -25,16 +25,16 @@ template <class MatM, class VecF, class VecQdd, class Scalar, class VecX>
 void solve_mass_matrix(const MatM& M, const VecF& f, VecQdd& qdd, const Scalar& t, const VecX& x) {
     using S = typename MatM::Scalar;
     if (!M.allFinite() || !f.allFinite())
-        throw NonFiniteState(describe_state("mass matrix or forcing is not finite", t, x), double(t));
+        throw NonFiniteState(describe_state("mass matrix or forcing is not finite", t, x), value_of(t));
     Eigen::LLT<typename MatM::PlainObject> llt(M);
     bool singular = llt.info() != Eigen::Success;
     if (!singular) {
         const auto pivots = llt.matrixLLT().diagonal().cwiseAbs2();
-        singular = !(pivots.minCoeff() > S(M.rows()) * std::numeric_limits<S>::epsilon() * pivots.maxCoeff());
+        singular = !(pivots.minCoeff() > S(M.rows()) * S(Eigen::NumTraits<S>::epsilon()) * pivots.maxCoeff());
     }
     if (singular)
         throw SingularMassMatrix(describe_state("mass matrix is singular or not positive definite", t, x),
-                                 double(t));
+                                 value_of(t));
     qdd = llt.solve(f);
 }
 

@@ -77,7 +77,7 @@ class Rk4Stepper {
         if (!(dt > Scalar(0)) || !std::isfinite(dt))
             throw std::invalid_argument("Rk4Stepper: dt must be positive and finite");
         if (!x0.allFinite())
-            throw NonFiniteState(describe_state("initial state is not finite", t0, x0), double(t0));
+            throw NonFiniteState(describe_state("initial state is not finite", t0, x0), value_of(t0));
         dt_ = t_end >= t0 ? dt : -dt;
         const Scalar ratio = (t_end - t0) / dt_;
         n_steps_ = ratio > Scalar(1e-6) ? static_cast<std::size_t>(ceil(ratio - Scalar(1e-6))) : 0;
@@ -85,7 +85,7 @@ class Rk4Stepper {
         f(t_, x_, f_);
         ++n_rhs_;
         if (!f_.allFinite())
-            throw NonFiniteState(describe_state("right-hand side is not finite", t_, x_), double(t_));
+            throw NonFiniteState(describe_state("right-hand side is not finite", t_, x_), value_of(t_));
     }
 
     /// Advances one grid step (the last one ends exactly at t_end). Four evaluations of f.
@@ -99,15 +99,15 @@ class Rk4Stepper {
         n_rhs_ += 3;
         if (!x_next.allFinite()) {
             std::ostringstream what;
-            what << "RK4 step of size " << double(h) << " produced a non-finite state, starting";
-            throw NonFiniteState(describe_state(what.str(), t_, x_), double(t_));
+            what << "RK4 step of size " << value_of(h) << " produced a non-finite state, starting";
+            throw NonFiniteState(describe_state(what.str(), t_, x_), value_of(t_));
         }
         State f_next = x_next;
         f(t_next, x_next, f_next);
         ++n_rhs_;
         if (!f_next.allFinite())
             throw NonFiniteState(describe_state("right-hand side is not finite", t_next, x_next),
-                                 double(t_next));
+                                 value_of(t_next));
         t_prev_ = t_;
         x_prev_.swap(x_);
         f_prev_.swap(f_);

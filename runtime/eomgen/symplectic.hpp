@@ -94,7 +94,7 @@ int solve_midpoint_velocity(const typename Model::Config::Scalar& t, const typen
             throw SimulationError(describe_state("variational step: Newton iteration produced a non-finite "
                                                  "velocity (singular Jacobian?), from [q; p]",
                                                  t, phase_point(q, p)),
-                                  double(t));
+                                  value_of(t));
         Scalar err(0);
         for (Eigen::Index i = 0; i < n; ++i)
             err = max(err, abs(h * dv(i)) / (Scalar(1) + abs(q(i) + h * v(i))));
@@ -106,9 +106,9 @@ int solve_midpoint_velocity(const typename Model::Config::Scalar& t, const typen
     throw SimulationError(
         describe_state("variational step: Newton did not converge in " +
                            std::to_string(options.max_iterations) + " iterations (last update " +
-                           std::to_string(double(err_prev)) + "), from [q; p]",
+                           std::to_string(value_of(err_prev)) + "), from [q; p]",
                        t, phase_point(q, p)),
-        double(t));
+        value_of(t));
 }
 
 }  // namespace detail
@@ -218,7 +218,7 @@ class VariationalIntegrator {
     void set_phase_state(const Scalar& t0, const Config& q0, const Config& p0) {
         if (!q0.allFinite() || !p0.allFinite())
             throw NonFiniteState(
-                describe_state("initial [q; p] is not finite", t0, detail::phase_point(q0, p0)), double(t0));
+                describe_state("initial [q; p] is not finite", t0, detail::phase_point(q0, p0)), value_of(t0));
         t0_ = t0;
         t_ = t0;
         k_ = 0;
@@ -238,7 +238,7 @@ class VariationalIntegrator {
         if (!q_next.allFinite() || !p_next.allFinite())
             throw NonFiniteState(describe_state("variational step produced a non-finite state, from [q; p]",
                                                 t_, detail::phase_point(q_, p_)),
-                                 double(t_));
+                                 value_of(t_));
         q_.swap(q_next);
         p_.swap(p_next);
         ++k_;

@@ -4,6 +4,7 @@
 #include "eomgen/integrate.hpp"
 #include "eomgen/models/bead_on_hoop.hpp"
 #include "eomgen/models/pendulum_5_20.hpp"
+#include "eomgen/models/pendulum_cartesian.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "mechanics/small_oscillations.hpp"
 #include "model/model_file.hpp"
@@ -339,4 +340,73 @@ TEST_CASE("modes: the inverted pendulum on a cart, A and B of the control textbo
     }
     CHECK(up.stability == eomgen::Stability::Unstable);
     CHECK(up.growth_rate == Approx(std::sqrt((M + m) * g / (M * l))).epsilon(1e-10));
+}
+
+namespace {
+
+/// Central differences of M's rhs in x and in the parameters (set_param by name), step h.
+template <class M>
+void finite_differences(const typename M::State& x, const typename M::Params& p, Eigen::MatrixXd& A, Eigen::MatrixXd& B) {
+    const double h = 1e-6;
+    A.resize(M::nx, M::nx);
+    B.resize(M::nx, M::n_params);
+    typename M::State fp, fm;
+    for (int j = 0; j < M::nx; ++j) {
+        typename M::State xp = x, xm = x;
+        xp(j) += h;
+        xm(j) -= h;
+        M::rhs(0.0, xp, p, fp);
+        M::rhs(0.0, xm, p, fm);
+        A.col(j) = (fp - fm) / (2 * h);
+    }
+    const auto values = M::param_values(p);
+    for (int k = 0; k < M::n_params; ++k) {
+        typename M::Params pp = p, pm = p;
+        M::set_param(pp, M::param_names[std::size_t(k)], values[std::size_t(k)] + h);
+        M::set_param(pm, M::param_names[std::size_t(k)], values[std::size_t(k)] - h);
+        M::rhs(0.0, x, pp, fp);
+        M::rhs(0.0, x, pm, fm);
+        B.col(k) = (fp - fm) / (2 * h);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("linearization(): the generated header's A and B by forward differentiation, at any state, with and "
+          "without constraints",
+          "[physics][modes][linearize]") {
+    using P = eomgen::models::pendulum_5_20::Model<double>;
+    const P::Params p;
+    // At the equilibrium: the A of eomgen modes.
+    P::StateJacobian A;
+    P::ParameterJacobian B;
+    P::linearization(0.0, P::State::Zero(), p, A, B);
+    const Derived d = load("models/pendulum_5_20.toml");
+    const eomgen::ModesResult r = eomgen::small_oscillations(d.model, d.eq, {});
+    const eomgen::Equilibrium& e = at(r, {0, 0});
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) CHECK(A(i, j) == Approx(e.A[std::size_t(i)][std::size_t(j)]).margin(1e-12));
+    // At states away from rest: finite differences (error O(h²) ~ 1e-9 of the entries).
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.5, 1.5);
+    for (int trial = 0; trial < 3; ++trial) {
+        P::State x;
+        for (int i = 0; i < 4; ++i) x(i) = u(rng);
+        P::linearization(0.0, x, p, A, B);
+        Eigen::MatrixXd fa, fb;
+        finite_differences<P>(x, p, fa, fb);
+        CHECK((fa - A).cwiseAbs().maxCoeff() <= 1e-6 * (1 + A.cwiseAbs().maxCoeff()));
+        CHECK((fb - B).cwiseAbs().maxCoeff() <= 1e-6 * (1 + B.cwiseAbs().maxCoeff()));
+    }
+    // Through the constrained solve (the multipliers depend on x and p too).
+    using C = eomgen::models::pendulum_cartesian::Model<double>;
+    const C::Params pc;
+    const C::State xc = C::default_state();
+    C::StateJacobian Ac;
+    C::ParameterJacobian Bc;
+    C::linearization(0.0, xc, pc, Ac, Bc);
+    Eigen::MatrixXd fa, fb;
+    finite_differences<C>(xc, pc, fa, fb);
+    CHECK((fa - Ac).cwiseAbs().maxCoeff() <= 1e-6 * (1 + Ac.cwiseAbs().maxCoeff()));
+    CHECK((fb - Bc).cwiseAbs().maxCoeff() <= 1e-6 * (1 + Bc.cwiseAbs().maxCoeff()));
 }

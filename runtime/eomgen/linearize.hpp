@@ -1,0 +1,62 @@
+/**
+ * @file linearize.hpp  The Jacobians of a generated model's equations of motion, exact to round-off, by forward
+ * differentiation through its own rhs (Eigen's AutoDiffScalar): for state-space control design about any state,
+ * implicit integrators, sensitivities.
+ *
+ *     Eigen::Matrix<double, M::nx, M::nx> A;
+ *     Eigen::Matrix<double, M::nx, M::n_params> B;
+ *     eomgen::linearize<eomgen::models::door::Model>(t, x, p, A, B);   // or Model<double>::linearization(...)
+ *
+ * A = ∂ẋ/∂x and B = ∂ẋ/∂p at (t, x; p), x = [q, q̇], B's columns in param_names order: a parameter that a force
+ * is written with (a torque `tau` in [forces]) is an input u, and its column is the B of ẋ = A x + B u. For a
+ * constrained model the derivative goes through the multipliers' solve as well. At an equilibrium A is the
+ * matrix `eomgen modes` gives (docs/modes.md); tests/physics/exam_modes.cpp checks both against finite
+ * differences.
+ */
+#pragma once
+
+#include <Eigen/Core>
+#include <unsupported/Eigen/AutoDiff>
+
+#include <cmath>
+#include <cstddef>
+
+namespace Eigen {
+
+/// atan, which the model language has and Eigen 3.4's AutoDiff lacks: d atan(v) = dv / (1 + v²).
+template <typename DerType>
+inline AutoDiffScalar<typename internal::remove_all<DerType>::type::PlainObject> atan(const AutoDiffScalar<DerType>& x) {
+    using std::atan;
+    using Plain = typename internal::remove_all<DerType>::type::PlainObject;
+    const auto v = x.value();
+    return AutoDiffScalar<Plain>(atan(v), Plain(x.derivatives() / (1 + v * v)));
+}
+
+}  // namespace Eigen
+
+namespace eomgen {
+
+/// A and B of a generated model class template (`eomgen::models::<name>::Model`) at (t, x) with parameters p.
+template <template <class> class ModelT, class MatA, class MatB>
+void linearize(double t, const typename ModelT<double>::State& x, const typename ModelT<double>::Params& p, MatA& A,
+               MatB& B) {
+    using D = ModelT<double>;
+    constexpr int nx = D::nx, np = D::n_params, N = nx + np;
+    using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
+    using M = ModelT<AD>;
+    typename M::State xa;
+    for (int i = 0; i < nx; ++i) xa(i) = AD(x(i), N, i);
+    typename M::Params pa;
+    const auto values = D::param_values(p);
+    for (int k = 0; k < np; ++k) M::set_param(pa, D::param_names[std::size_t(k)], AD(values[std::size_t(k)], N, nx + k));
+    typename M::State f;
+    M::rhs(AD(t), xa, pa, f);
+    A.resize(nx, nx);
+    B.resize(nx, np);
+    for (int i = 0; i < nx; ++i) {
+        for (int j = 0; j < nx; ++j) A(i, j) = f(i).derivatives()(j);
+        for (int k = 0; k < np; ++k) B(i, k) = f(i).derivatives()(nx + k);
+    }
+}
+
+}  // namespace eomgen
