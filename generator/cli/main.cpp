@@ -204,6 +204,8 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
             if (!o.description.empty()) os << "    " << o.description << "\n";
         }
     }
+    os << rule("Equilibria and small oscillations  (with the parameters' values; eomgen modes for M0, K0, shapes)");
+    os << eomgen::cli::modes_show_section(model, eq);
     if (!eq.warnings.empty()) {
         os << rule("Warnings");
         for (const std::string& w : eq.warnings) os << "  " << w << "\n";
