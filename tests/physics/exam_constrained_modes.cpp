@@ -6,6 +6,7 @@
 #include "mechanics/lagrangian.hpp"
 #include "mechanics/small_oscillations.hpp"
 #include "model/model_file.hpp"
+#include "modes_support.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -16,27 +17,9 @@
 
 namespace {
 
-struct Derived {
-    eomgen::Model model;
-    eomgen::Equations eq;
-};
-
-Derived derive(const std::string& text) {
-    Derived d{eomgen::parse_model(text, "exam_constrained_modes.toml"), {}};
-    d.eq = eomgen::derive_equations(d.model);
-    return d;
-}
-
-/// The equilibrium at q (to 1e-9), or FAIL.
-const eomgen::Equilibrium& at(const eomgen::ModesResult& r, const std::vector<double>& q) {
-    for (const auto& e : r.equilibria) {
-        bool same = true;
-        for (std::size_t i = 0; i < q.size(); ++i) same = same && std::abs(e.q[i] - q[i]) < 1e-9;
-        if (same) return e;
-    }
-    FAIL("no equilibrium at the given q among " << r.equilibria.size());
-    return r.equilibria.front();
-}
+using modes_support::at;
+using modes_support::derive;
+using modes_support::Derived;
 
 Eigen::MatrixXd matrix(const std::vector<std::vector<double>>& rows) {
     Eigen::MatrixXd m(Eigen::Index(rows.size()), Eigen::Index(rows.empty() ? 0 : rows[0].size()));
@@ -167,9 +150,8 @@ expr = "(x2 - x1)^2 + (y2 - y1)^2 - l2^2"
 TEST_CASE("modes with constraints: A is the generated rhs's Jacobian on the tangent space",
           "[physics][modes][constraints][linearize]") {
     using P = eomgen::models::pendulum_cartesian::Model<double>;
-    const Derived d{eomgen::load_model(std::string(EOMGEN_SOURCE_DIR) + "/models/pendulum_cartesian.toml"), {}};
-    const eomgen::Equations eq = eomgen::derive_equations(d.model);
-    const eomgen::ModesResult r = eomgen::small_oscillations(d.model, eq, {});
+    const Derived d = modes_support::load("models/pendulum_cartesian.toml");
+    const eomgen::ModesResult r = eomgen::small_oscillations(d.model, d.eq, {});
     const P::Params p;
     for (const double y : {-p.l, p.l}) {
         const eomgen::Equilibrium& e = at(r, {0, y});
