@@ -2,6 +2,7 @@
 #include "mechanics/small_oscillations.hpp"
 
 #include "mechanics/constrained_equilibria.hpp"
+#include "mechanics/rest_linearization.hpp"
 
 #include <Eigen/Dense>
 
@@ -456,25 +457,10 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
             values.params[c.q] = GiNaC::numeric(0);  // a cyclic coordinate does not appear; 0 if it did
 
     // L = ½ q̇ᵀ M q̇ + βᵀ q̇ + L₀ (L is at most quadratic in the velocities: derive_equations checked T).
-    exmap rest;
-    for (const symbol& v : r.qd) rest[v] = 0;
-    const ex L0 = r.L.subs(rest, GiNaC::subs_options::no_pattern);
-    result.V_eff = -L0;
-    std::vector<ex> beta(n), Q0(n), g(n);
-    std::vector<std::vector<ex>> M(n, std::vector<ex>(n)), K(n, std::vector<ex>(n)), D(n, std::vector<ex>(n));
-    for (std::size_t i = 0; i < n; ++i) {
-        const ex dL = r.L.diff(r.qd[i]);
-        beta[i] = dL.subs(rest, GiNaC::subs_options::no_pattern);
-        for (std::size_t j = 0; j < n; ++j) M[i][j] = dL.diff(r.qd[j]).subs(rest, GiNaC::subs_options::no_pattern);
-        Q0[i] = r.Q[i].subs(rest, GiNaC::subs_options::no_pattern);
-        g[i] = -L0.diff(r.q[i]) - Q0[i];
-    }
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j) {
-            K[i][j] = g[i].diff(r.q[j]);
-            D[i][j] = beta[i].diff(r.q[j]) - beta[j].diff(r.q[i]) -
-                      r.Q[i].diff(r.qd[j]).subs(rest, GiNaC::subs_options::no_pattern);
-        }
+    const RestLinearization lin = linearize_about_rest(r.L, r.Q, r.q, r.qd);
+    result.V_eff = lin.V_eff;
+    const std::vector<ex>& g = lin.gradient;
+    const std::vector<std::vector<ex>>&M = lin.M, &K = lin.K, &D = lin.D;
 
     // The rest conditions in (q, λ): G − Aᵀλ = 0 and g = 0 (just G = 0 without constraints), with their Jacobian,
     // whose q-block is the stiffness K₀ − Σ λ_k ∂²g_k/∂q².
