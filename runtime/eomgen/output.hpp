@@ -28,6 +28,23 @@ inline std::string csv_field(const std::string& text) {
 }
 
 /**
+ * What a program does with the temporary files the runtime writes: `guard(path)` right after one is created,
+ * `release(path)` once it is renamed into place or removed. A library installs no signal handler of its own, so
+ * by default both do nothing; the eomgen command and eomgen-sim point them at their handler of SIGINT, SIGTERM
+ * and SIGHUP (generator/output/atomic_file.hpp), so that an interrupt while a CSV is written leaves no
+ * `<path>.tmp` behind. An app that wants the same sets them once, before writing.
+ */
+struct TemporaryFileHooks {
+    void (*guard)(const char* path) = nullptr;
+    void (*release)(const char* path) = nullptr;
+};
+
+inline TemporaryFileHooks& temporary_file_hooks() {
+    static TemporaryFileHooks hooks;
+    return hooks;
+}
+
+/**
  * Writes `t,<state names...>,<extra names...>` and then one row per call of write_row, every number at
  * std::numeric_limits<Scalar>::max_digits10 significant digits (so each value reads back exactly).
  *
@@ -44,6 +61,8 @@ class CsvWriter {
         : path_(path), tmp_path_(path + ".tmp"), columns_(state_names.size() + extra_names.size()) {
         out_.open(tmp_path_, std::ios::out | std::ios::trunc);
         if (!out_) throw std::runtime_error("cannot open '" + tmp_path_ + "' for writing");
+        if (temporary_file_hooks().guard) temporary_file_hooks().guard(tmp_path_.c_str());
+        guarded_ = true;
         out_.precision(std::numeric_limits<Scalar>::max_digits10);
         out_ << "t";
         for (const auto& name : state_names) out_ << ',' << csv_field(name);
@@ -59,6 +78,7 @@ class CsvWriter {
         out_.close();
         std::error_code ignored;
         std::filesystem::remove(tmp_path_, ignored);
+        release();
     }
 
     /// One row: t, the state x (size = number of state names) and the extras (any indexable, e.g. an
@@ -92,9 +112,16 @@ class CsvWriter {
         if (ec)
             throw std::runtime_error("cannot rename '" + tmp_path_ + "' to '" + path_ + "': " + ec.message());
         committed_ = true;
+        release();
     }
 
   private:
+    void release() {
+        if (guarded_ && temporary_file_hooks().release) temporary_file_hooks().release(tmp_path_.c_str());
+        guarded_ = false;
+    }
+
+    bool guarded_ = false;
     std::string path_, tmp_path_;
     std::ofstream out_;
     std::size_t columns_, n_state_ = 0;
