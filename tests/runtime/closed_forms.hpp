@@ -1,4 +1,5 @@
-/** @file closed_forms.hpp  Test problems with known solutions for the integrators: oscillator, Kepler orbit. */
+/** @file closed_forms.hpp  Test problems with known solutions for the integrators: oscillator, Kepler orbit.
+ */
 #pragma once
 
 #include <Eigen/Core>

@@ -1,4 +1,5 @@
-/** @file exam_dop853.cpp  DOP853 against closed forms: order 8, dense output of order 7, counts, errors, long double. */
+/** @file exam_dop853.cpp  DOP853 against closed forms: order 8, dense output of order 7, counts, errors, long
+ * double. */
 #include "../approx.hpp"
 #include "closed_forms.hpp"
 
@@ -122,7 +123,8 @@ TEST_CASE("DOP853 dense output has order 7: local error O(h^8) inside a step", "
     for (const auto& s : r.samples)
         sample_err = std::max(sample_err, (s.x - osc.exact(s.t, y0)).lpNorm<Eigen::Infinity>());
     const double end_err = (r.x - osc.exact(10.0, y0)).lpNorm<Eigen::Infinity>();
-    INFO("sample error " << sample_err << ", end error " << end_err << " in " << r.accepted_steps << " steps");
+    INFO("sample error " << sample_err << ", end error " << end_err << " in " << r.accepted_steps
+                         << " steps");
     CHECK(sample_err < 3 * end_err + 1e-12);
     // Each step with a sample inside pays the 3 dense stages; none other does.
     const auto plain = eomgen::integrate_dop853(osc, 0.0, y0, 10.0, opts);
@@ -141,8 +143,8 @@ TEST_CASE("DOP853 at tight tolerance: Kepler orbit, events, backwards, fewer eva
     opts.atol = 1e-14;
     // y crosses 0 falling at apoapsis, t = period/2: located on the dense output.
     const std::vector<eomgen::Event<Eigen::Vector4d>> events{
-        {"apoapsis", [](const double&, const Eigen::Vector4d& x) { return x(1); }, eomgen::EventDirection::Falling,
-         eomgen::EventAction::Record}};
+        {"apoapsis", [](const double&, const Eigen::Vector4d& x) { return x(1); },
+         eomgen::EventDirection::Falling, eomgen::EventAction::Record}};
     const auto r = eomgen::integrate_dop853(kepler<Eigen::Vector4d>, 0.0, x0, 2 * period, opts, events);
     const double err = (r.x - x0).lpNorm<Eigen::Infinity>();
     INFO("Kepler error " << err << " in " << r.accepted_steps << " steps, " << r.rhs_evaluations << " f");
@@ -170,7 +172,8 @@ TEST_CASE("DOP853 at tight tolerance: Kepler orbit, events, backwards, fewer eva
     REQUIRE_THAT(Eigen::MatrixXd(rd.x), AllClose(r.x, 1e-14, 1e-14));
 }
 
-TEST_CASE("DOP853 reports failures like DOPRI5: NaN, blow-up, max_steps, bad options", "[runtime][dop853][errors]") {
+TEST_CASE("DOP853 reports failures like DOPRI5: NaN, blow-up, max_steps, bad options",
+          "[runtime][dop853][errors]") {
     using State = Eigen::Vector2d;
     const Oscillator<State> osc;
     const auto nan_after_one = [&osc](const double& t, const State& x, State& xdot) {
@@ -208,7 +211,8 @@ TEST_CASE("DOP853 reports failures like DOPRI5: NaN, blow-up, max_steps, bad opt
     eomgen::Dop853Options<double> bad;
     bad.atol = 0;
     CHECK_THROWS_AS(eomgen::integrate_dop853(osc, 0.0, State(1.0, 0.0), 1.0, bad), std::invalid_argument);
-    CHECK_THROWS_AS(eomgen::integrate_dop853(osc, 0.0, State(std::nan(""), 0.0), 1.0), eomgen::NonFiniteState);
+    CHECK_THROWS_AS(eomgen::integrate_dop853(osc, 0.0, State(std::nan(""), 0.0), 1.0),
+                    eomgen::NonFiniteState);
     // DOP853's own controller defaults (Hairer's dop853.f), the other fields as DOPRI5's.
     const eomgen::Dop853Options<double> defaults;
     CHECK(defaults.min_factor == 0.333);
