@@ -81,6 +81,37 @@ struct Options {
     bool project_initial = false;
 };
 
+/// An adaptive method of --method: the stepper template (integrate_with, integrate_constrained) and its
+/// options from --rtol, --atol and --max-steps (the method's own defaults for the rest).
+template <template <class> class Stepper>
+struct AdaptiveMethod {
+    template <class State>
+    using type = Stepper<State>;
+
+    template <class State>
+    static typename Stepper<State>::Options options(const Options& o) {
+        typename Stepper<State>::Options opt;
+        opt.rtol = o.rtol;
+        opt.atol = o.atol;
+        opt.max_steps = o.max_steps;
+        return opt;
+    }
+};
+
+/// Calls use(AdaptiveMethod<...>{}) for the adaptive method `name` and returns true, or returns false when
+/// `name` is none of them. A new adaptive method joins with one line here.
+template <class Use>
+bool with_adaptive_method(const std::string& name, Use&& use) {
+    if (name == "dopri5") return use(AdaptiveMethod<eomgen::Dopri5>{}), true;
+    if (name == "dop853") return use(AdaptiveMethod<eomgen::Dop853>{}), true;
+    return false;
+}
+
+/// Whether --method `name` is adaptive (takes --rtol, --atol; no --dt).
+inline bool is_adaptive_method(const std::string& name) {
+    return with_adaptive_method(name, [](auto) {});
+}
+
 /// A number as written on the command line: "0.5", "-pi/2", "2*pi", "pi/4", "1e-3".
 inline double parse_value(const std::string& text) {
     std::string s = text;
@@ -267,10 +298,11 @@ int run(const Options& o) {
     double t_final = 0;
     State x_final = x0;
     std::string how;
-    // --until NAME=VALUE: a terminal event where state NAME crosses VALUE (dense output: dopri5, rk4).
+    // --until NAME=VALUE: a terminal event where state NAME crosses VALUE (dense output: dopri5, dop853, rk4).
     std::vector<eomgen::Event<State>> events;
     if (!o.until.empty()) {
-        if (o.method == "symplectic") throw UsageError("--until needs --method dopri5 or rk4 (events use dense output)");
+        if (o.method == "symplectic")
+            throw UsageError("--until needs --method dopri5, dop853 or rk4 (events use dense output)");
         const auto [name, value] = parse_assignment(o.until, "--until");
         const int i = index_of(M::state_names, name);
         if (i < 0) throw UsageError("--until " + o.until + ": no state '" + name + "'" + did_you_mean(name, M::state_names) + " (states: " +
@@ -291,34 +323,34 @@ int run(const Options& o) {
 
     bool done = false;
     if constexpr (is_constrained<M>::value) {
-        if (constraint_count<M>() > 0 && o.method == "dopri5") {
-            eomgen::Dopri5Options<double> opt;
-            opt.rtol = o.rtol;
-            opt.atol = o.atol;
-            opt.max_steps = o.max_steps;
-            const auto r =
-                eomgen::integrate_constrained<M>(params, 0.0, x0, sample_times, opt, o.project_initial, events);
-            // Energy drift from the (possibly projected) start, not from the state given.
-            h0 = h(r.run.samples.front().t, r.run.samples.front().x);
-            for (const auto& s : r.run.samples) max_drift = std::max(max_drift, drift(h(s.t, s.x)));
-            samples = r.run.samples;
-            typename M::ConstraintVector lambda;
-            M::multipliers(r.run.t, r.run.x, params, lambda);
-            std::cout << "method:  dopri5 with projection onto the constraints after each of " << o.samples
-                      << " segments, rtol " << o.rtol << ", atol " << o.atol << "\n";
-            report_run(r.run);
-            std::cout << "constraint residuals before projection: position " << r.max_position_residual
-                      << ", velocity " << r.max_velocity_residual << "\n";
-            for (int k = 0; k < M::n_constraints; ++k)
-                std::cout << "multiplier " << M::constraint_names[std::size_t(k)] << " = " << lambda(k) << " at the end\n";
-            t_final = r.run.t;
-            x_final = r.run.x;
-            done = true;
-        }
+        if (constraint_count<M>() > 0)
+            done = with_adaptive_method(o.method, [&](auto method) {
+                using Method = decltype(method);
+                const auto r = eomgen::integrate_constrained<M, Method::template type>(
+                    params, 0.0, x0, sample_times, Method::template options<State>(o), o.project_initial,
+                    events);
+                // Energy drift from the (possibly projected) start, not from the state given.
+                h0 = h(r.run.samples.front().t, r.run.samples.front().x);
+                for (const auto& s : r.run.samples) max_drift = std::max(max_drift, drift(h(s.t, s.x)));
+                samples = r.run.samples;
+                typename M::ConstraintVector lambda;
+                M::multipliers(r.run.t, r.run.x, params, lambda);
+                std::cout << "method:  " << o.method << " with projection onto the constraints after each of "
+                          << o.samples << " segments, rtol " << o.rtol << ", atol " << o.atol << "\n";
+                report_run(r.run);
+                std::cout << "constraint residuals before projection: position " << r.max_position_residual
+                          << ", velocity " << r.max_velocity_residual << "\n";
+                for (int k = 0; k < M::n_constraints; ++k)
+                    std::cout << "multiplier " << M::constraint_names[std::size_t(k)] << " = " << lambda(k)
+                              << " at the end\n";
+                t_final = r.run.t;
+                x_final = r.run.x;
+            });
     }
     if (!done && o.method == "symplectic") {
         if (constraint_count<M>() > 0 || M::has_generalized_forces)
-            throw UsageError("--method symplectic integrates unconstrained models without forces; use dopri5");
+            throw UsageError(
+                "--method symplectic integrates unconstrained models without forces; use dopri5 or dop853");
         eomgen::VariationalIntegrator<M> vi(params, o.dt);
         vi.set_state(0.0, positions<M::nq>(x0), velocities<M::nq>(x0));
         const auto steps = static_cast<std::size_t>(std::llround(o.t_end / o.dt));
@@ -345,15 +377,15 @@ int run(const Options& o) {
         if (o.method == "rk4") {
             r = eomgen::integrate_rk4(f, 0.0, x0, o.t_end, o.dt, events, sample_times, observer);
             std::cout << "method:  rk4, dt " << o.dt << "\n";
-        } else if (o.method == "dopri5") {
-            eomgen::Dopri5Options<double> opt;
-            opt.rtol = o.rtol;
-            opt.atol = o.atol;
-            opt.max_steps = o.max_steps;
-            r = eomgen::integrate(f, 0.0, x0, o.t_end, opt, events, sample_times, observer);
-            std::cout << "method:  dopri5, rtol " << o.rtol << ", atol " << o.atol << "\n";
-        } else {
-            throw UsageError("--method " + o.method + ": expected dopri5, rk4 or symplectic");
+        } else if (!with_adaptive_method(o.method, [&](auto method) {
+                       using Method = decltype(method);
+                       r = eomgen::integrate_with<Method::template type>(f, 0.0, x0, o.t_end,
+                                                                         Method::template options<State>(o),
+                                                                         events, sample_times, observer);
+                       std::cout << "method:  " << o.method << ", rtol " << o.rtol << ", atol " << o.atol
+                                 << "\n";
+                   })) {
+            throw UsageError("--method " + o.method + ": expected dopri5, dop853, rk4 or symplectic");
         }
         t_final = r.t;
         x_final = r.x;
