@@ -3,6 +3,7 @@
 #include "checker/checker.hpp"
 
 #include "checker/budget.hpp"
+#include "checker/latex_normalize.hpp"
 #include "checker/latex_parser.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
@@ -237,6 +238,7 @@ struct Prepared {
     std::string problem;  ///< when !ok
     GiNaC::ex value;
     std::vector<const FreeName*> unknown, vectors, units;
+    std::vector<GiNaC::ex> constants;  ///< `\text{const}`: an arbitrary additive constant
     bool has_truth_label = false;  ///< refers to eomgen's T, V, L, ...
     bool has_part = false;         ///< uses a part T_{x} whose value came from the text
     std::vector<std::string> notes;
@@ -374,6 +376,26 @@ class Checker {
         }
         if (!any) return std::nullopt;
         return whole - others;
+    }
+    /// `V = -m g l \cos\theta + \text{const}`: agrees (true) when the sides differ by a constant; else
+    /// the constants are dropped from a and b for the other comparisons (false).
+    bool up_to_constant(Prepared& a, Prepared& b, double tol, EquationCheck& r) {
+        if (a.constants.empty() && b.constants.empty()) return false;
+        GiNaC::exmap zero;
+        for (const Prepared* p : {&a, &b})
+            for (const GiNaC::ex& k : p->constants) zero[k] = 0;
+        a.value = a.value.subs(zero);
+        b.value = b.value.subs(zero);
+        if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
+        const GiNaC::ex diff = a.value - b.value;
+        std::vector<GiNaC::symbol> state{model_.t};
+        for (const Coordinate& q : model_.coordinates) state.insert(state.end(), {q.q, q.qd, q.qdd});
+        for (const GiNaC::symbol& x : state)
+            if (equal(GiNaC::diff(diff, x), 0, tol) != Tri::Yes) return false;
+        r.verdict = Verdict::Agrees;
+        r.compared_with = "an identity up to an additive constant";
+        r.reason = "the two sides differ by a constant, which the text's constant stands for";
+        return true;
     }
     void check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a, const Prepared& b,
                       double tol, EquationCheck& r);
@@ -587,6 +609,8 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
                 p.vectors.push_back(f);
             else if (f->kind == NameKind::Unit)
                 p.units.push_back(f);
+            else if (is_constant_name(f->name))
+                p.constants.push_back(sym);
             else
                 p.unknown.push_back(f);
         }
@@ -1233,6 +1257,7 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     }
     double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
     if (rel == Relation::Approx) tol = std::max(tol, 1e-2);
+    if (up_to_constant(a, b, tol, r)) return r;
     check_values(c, i, j, a, b, tol, r);
     return r;
 }

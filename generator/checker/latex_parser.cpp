@@ -1,6 +1,8 @@
 /** @file latex_parser.cpp  Tokenizer, chain splitter and recursive-descent parser for derivation LaTeX. */
 #include "checker/latex_parser.hpp"
 
+#include "checker/latex_normalize.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -100,6 +102,22 @@ std::vector<Token> tokenize(std::string_view s) {
         if (c == '~') {
             ++i;
             continue;
+        }
+        // HTML entities, Unicode letters and signs, combining dots (latex_normalize): their LaTeX tokens.
+        if (c >= 0x80 || c == '&' ||
+            (std::isalpha(c) && i + 1 < s.size() && (static_cast<unsigned char>(s[i + 1]) == 0xCC || s[i + 1] == '&'))) {
+            if (const auto sp = spelled_as_latex(s, i)) {
+                for (const std::string& w : sp->tokens) {
+                    const unsigned char w0 = static_cast<unsigned char>(w[0]);
+                    const Tok kind = w.size() > 1 && w0 == '\\' ? Tok::Word
+                                     : std::isalpha(w0)          ? Tok::Letter
+                                     : std::isdigit(w0)          ? Tok::Digit
+                                                                 : Tok::Char;
+                    out.push_back({kind, w, i, sp->length, "", false});
+                }
+                i += sp->length;
+                continue;
+            }
         }
         if (c == '\\') {
             std::size_t j = i + 1;
@@ -766,6 +784,8 @@ class Parser {
                 ++pos_;
             } else if (is_char(s, "^") && prime_superscript(n)) {
                 continue;
+            } else if (is_char(s, "^") && exponent_before_subscript(n)) {
+                continue;
             } else {
                 break;
             }
@@ -807,6 +827,25 @@ class Parser {
             has_pending_power_ = true;
         }
         pos_ = close + 1;
+        return true;
+    }
+
+    /// At '^': `x^{2}_{1}` (as many editors write x₁²): the exponent comes before the subscript. Leaves the
+    /// exponent in pending_power_ and returns true when a subscript follows it and the name has none yet.
+    bool exponent_before_subscript(const NameParts& n) {
+        if (!n.sub.empty()) return false;
+        std::size_t q = pos_ + 1;
+        while (q < end_ && t_[q].space) ++q;
+        if (q >= end_) return false;
+        const std::size_t after = is_char(&t_[q], "{") ? match_brace(q) + 1 : q + 1;
+        std::size_t u = after;
+        while (u < end_ && t_[u].space) ++u;
+        if (u >= end_ || !is_char(&t_[u], "_")) return false;
+        const std::size_t at = pos_;
+        if (has_pending_power_) fail(at, "double exponent");
+        ++pos_;
+        pending_power_ = superscript(at);
+        has_pending_power_ = true;
         return true;
     }
 
