@@ -3,6 +3,7 @@
 #include "checker/checker.hpp"
 
 #include "checker/budget.hpp"
+#include "checker/definitions.hpp"
 #include "checker/latex_normalize.hpp"
 #include "checker/latex_parser.hpp"
 #include "codegen/cpp_emitter.hpp"
@@ -241,6 +242,7 @@ struct Prepared {
     std::vector<GiNaC::ex> constants;  ///< `\text{const}`: an arbitrary additive constant
     bool has_truth_label = false;  ///< refers to eomgen's T, V, L, ...
     bool has_part = false;         ///< uses a part T_{x} whose value came from the text
+    bool from_definition = false;  ///< differentiates a quantity the text defines (the step's reference)
     std::vector<std::string> notes;
     bool comparable() const { return ok && unknown.empty() && vectors.empty(); }
 };
@@ -418,6 +420,9 @@ class Checker {
     std::vector<GiNaC::ex> motion_;   ///< the equations of motion, = 0
     std::vector<std::pair<GiNaC::ex, std::string>> integrals_of_motion_;
     ExMap<std::vector<Complex>> signatures_;
+    TextDefinitions definitions_;   ///< K = ..., used where the text differentiates K
+    std::size_t current_offset_ = 0;  ///< file offset of the side being prepared (definitions before it apply)
+    void collect_definitions(const std::vector<FullChain>& chains);
 };
 
 // ------------------------------------------------------------------------------------------------ setup
@@ -506,11 +511,23 @@ void Checker::apply_map(int line) {
 // ------------------------------------------------------------------------------------------- evaluation
 
 GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
-    if (is_ex_the_function(e, ddt)) return time_derivative(resolve_operators(e.op(0)), model_);
+    // A name inside a derivative is its definition in the text, or the derivative cannot be evaluated.
+    if (is_ex_the_function(e, ddt)) {
+        const GiNaC::ex inner = resolve_operators(definitions_.expand(e.op(0), current_offset_));
+        if (TextDefinitions::has_vector(inner, ctx_)) return ddt(inner);  // kept: vectors are not compared
+        TextDefinitions::require_defined(inner, ctx_, "time derivative");
+        return time_derivative(inner, model_);
+    }
     if (is_ex_the_function(e, pdiff)) {
-        const GiNaC::ex inner = resolve_operators(e.op(0));
+        const GiNaC::ex inner = resolve_operators(definitions_.expand(e.op(0), current_offset_));
         if (!GiNaC::is_a<GiNaC::symbol>(e.op(1)))
             throw std::runtime_error("a derivative with respect to an expression");
+        if (const FreeName* f = ctx_.free_name_of(e.op(1)))
+            throw UndefinedInDerivative(f->name, "a partial derivative with respect to $" + f->name +
+                                                     "$, which is not a coordinate, a velocity or a parameter "
+                                                     "of the model");
+        if (TextDefinitions::has_vector(inner, ctx_)) return pdiff(inner, e.op(1));
+        TextDefinitions::require_defined(inner, ctx_, "partial derivative");
         return GiNaC::diff(inner, GiNaC::ex_to<GiNaC::symbol>(e.op(1)));
     }
     if (e.nops() == 0) return e;
@@ -582,7 +599,13 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
             }
         }
         GiNaC::ex v = subs.empty() ? side.value : side.value.subs(subs);
+        current_offset_ = s.base + side.begin;
+        definitions_.take_used();
         v = resolve_operators(v);
+        for (const std::string& n : definitions_.take_used()) {
+            p.notes.push_back(n);
+            p.from_definition = true;
+        }
         // Every comparison expands or normalizes the side: refuse one too large for that up front.
         if (const double terms = expanded_terms(v); terms > kMaxExpandedTerms) {
             std::ostringstream os;
@@ -620,6 +643,17 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
         std::sort(p.unknown.begin(), p.unknown.end(), by_name);
         std::sort(p.notes.begin(), p.notes.end());
         p.ok = true;
+    } catch (const UndefinedInDerivative& u) {
+        std::string at;
+        for (const NameUse& use : side.uses)
+            if (use.name == u.name) {
+                at = " (" + where(s.base + use.offset) + ")";
+                break;
+            }
+        std::string why = u.what();
+        const std::string shown = "$" + u.name + "$";
+        if (const std::size_t k = why.find(shown); k != std::string::npos) why.insert(k + shown.size(), at);
+        p.problem = why;
     } catch (const std::exception& e) {
         p.problem = "cannot evaluate " + m(side.source) + ": " + e.what();
     }
@@ -1162,6 +1196,22 @@ int Checker::best_factor(const GiNaC::ex& text, const GiNaC::ex& truth, double t
 
 // ---------------------------------------------------------------------------------------------- checking
 
+void Checker::collect_definitions(const std::vector<FullChain>& chains) {
+    for (const FullChain& c : chains) {
+        if (c.sides.size() < 2 || !c.sides[0].side->ok) continue;
+        const GiNaC::ex head = c.sides[0].side->value;
+        const FreeName* f = ctx_.free_name_of(head);
+        if (!f || f->kind != NameKind::Unknown || is_part(head) || is_constant_name(f->name)) continue;
+        for (std::size_t k = c.sides.size(); k-- > 1;) {
+            const Prepared p = prepare(c.sides[k]);
+            if (!p.comparable() || !p.units.empty() || p.value.has(head)) continue;
+            const std::size_t at = c.sides[k].base + c.sides[k].side->begin;
+            definitions_.add(head, f->name, p.value, at, d_.position(at).line);
+            break;
+        }
+    }
+}
+
 void Checker::collect_parts(const std::vector<FullChain>& chains) {
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2 || !c.sides[0].side->ok) continue;
@@ -1583,8 +1633,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         return;
     }
     // 4. It disagrees with what it tries to be.
-    const bool left_ref = a.has_truth_label && !a.has_part;
-    const bool right_ref = b.has_truth_label && !b.has_part;
+    const bool left_ref = (a.has_truth_label || a.from_definition) && !a.has_part;
+    const bool right_ref = !left_ref && (b.has_truth_label || b.from_definition) && !b.has_part;
     if (left_ref || right_ref) {
         const bool left_is_truth = left_ref;
         const PSide& ref = left_is_truth ? L : R;
@@ -1595,7 +1645,9 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             // check.
         } else {
             r.verdict = Verdict::Disagrees;
-            if (r.compared_with.empty()) r.compared_with = "eomgen's value of " + m(ref.side->source);
+            if (r.compared_with.empty())
+                r.compared_with = truth.has_truth_label ? "eomgen's value of " + m(ref.side->source)
+                                                        : m(ref.side->source) + " from the text's definition";
             const Diagnosis dg = compare_to(text.value, truth.value, tol);
             r.difference = dg.difference;
             r.wrong_terms = dg.lines;
@@ -1849,6 +1901,7 @@ CheckReport Checker::run() {
         at.offset = tp.offset;
         if (row_selected(d_, at, selected, whole)) report.problems.push_back({d_.position(tp.offset), tp.message});
     }
+    collect_definitions(chains);
     collect_parts(chains);
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2) continue;  // an expression, not an equation

@@ -3,7 +3,7 @@
 #include "checker/checker.hpp"
 #include "checker/latex_normalize.hpp"
 #include "checker/latex_parser.hpp"
-#include "model/model_file.hpp"
+#include "checked_text.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -40,15 +40,7 @@ bool same(const GiNaC::ex& a, const GiNaC::ex& b) {
 const std::string kSource = EOMGEN_SOURCE_DIR;
 
 eomgen::checker::CheckReport check(const std::string& model_path, const std::string& text) {
-    static std::map<std::string, std::pair<eomgen::Model, eomgen::Equations>> cache;
-    auto it = cache.find(model_path);
-    if (it == cache.end()) {
-        eomgen::Model m = eomgen::load_model(kSource + "/" + model_path);
-        eomgen::Equations e = eomgen::derive_equations(m);
-        it = cache.emplace(model_path, std::make_pair(std::move(m), std::move(e))).first;
-    }
-    return eomgen::checker::check_derivation(it->second.first, it->second.second,
-                                             eomgen::checker::parse_derivation(text, "text.md"), {});
+    return eomgen::test::check_text(model_path, text);
 }
 
 }  // namespace
