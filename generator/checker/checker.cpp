@@ -3,6 +3,7 @@
 #include "checker/checker.hpp"
 
 #include "checker/budget.hpp"
+#include "checker/correction_check.hpp"
 #include "checker/definitions.hpp"
 #include "checker/latex_normalize.hpp"
 #include "checker/latex_parser.hpp"
@@ -351,7 +352,9 @@ class Checker {
     /// check_link, with anything GiNaC throws on a strange input turned into a "not comparable" verdict.
     EquationCheck safe_check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
         try {
-            return check_link(c, i, j, bridge);
+            EquationCheck r = check_link(c, i, j, bridge);
+            if (!r.corrected.empty() && !verifying_) verify_correction(c, j, r);
+            return r;
         } catch (const std::exception& e) {
             EquationCheck r;
             r.where = d_.position(c.relation_offsets[j - 1]);
@@ -361,6 +364,10 @@ class Checker {
             return r;
         }
     }
+    /// Parses r.corrected back with the names of its line and checks it (correction_check.hpp); a correction
+    /// that does not agree is withheld, with a note.
+    void verify_correction(const FullChain& c, std::size_t j, EquationCheck& r);
+    bool verifying_ = false;
     void check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other, double tol,
                     EquationCheck& r);
     /// T (or V) minus the text's other parts of it, when the text defines other parts.
@@ -1312,6 +1319,34 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     return r;
 }
 
+void Checker::verify_correction(const FullChain& c, std::size_t j, EquationCheck& r) {
+    const std::size_t at = c.relation_offsets[j - 1];
+    const auto saved_names = ctx_.names;
+    const auto saved_free = ctx_.free_names;
+    verifying_ = true;
+    apply_map(d_.position(at).line);
+    std::string why;
+    try {
+        why = correction_problem(r.corrected, ctx_, [&](const Chain& ch, std::size_t a, std::size_t b) {
+            FullChain f;
+            f.section = c.section;
+            f.display = c.display;
+            for (const Side& s : ch.sides) f.sides.push_back({&s, at});
+            f.relations = ch.relations;
+            for (std::size_t off : ch.relation_offsets) f.relation_offsets.push_back(at + off);
+            return safe_check_link(f, a, b, false);
+        });
+    } catch (const std::exception& e) {
+        why = std::string("it could not be checked: ") + e.what();
+    }
+    verifying_ = false;
+    ctx_.names = saved_names;
+    ctx_.free_names = saved_free;
+    if (why.empty()) return;
+    r.notes.push_back("no correction is printed: the one computed does not check (" + why + ")");
+    r.corrected.clear();
+}
+
 std::vector<std::string> Checker::factor_analysis(const GiNaC::ex& a, const GiNaC::ex& b, double tol,
                                                   std::string* ratio) {
     std::vector<std::string> out;
@@ -1717,8 +1752,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         if (slip_left)
             r.corrected = latex(b.value) + " = " + R.side->source;
         else
-            r.corrected = !ratio.empty()
-                              ? L.side->source + " = " + ratio + " \\left(" + R.side->source + "\\right)"
+            r.corrected = !scaled_step(L.side->source, ratio, R.side->source).empty()
+                              ? scaled_step(L.side->source, ratio, R.side->source)
                               : L.side->source + " = " + latex(a.value);
         return;
     }
@@ -1797,9 +1832,10 @@ void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, con
             // c·(d/dt p − ∂L/∂q) when sign·k·X = c·p and −sign·(rest − other side) = c·∂L/∂q.
             const GiNaC::ex p_text = (sign * k * X).expand();
             const GiNaC::ex dLdq_text = (-sign * (rest - other)).expand();
-            const GiNaC::ex p_true = (best_c * eq_.momenta[i]).expand();
-            const GiNaC::ex dLdq_true =
-                (best_c * (time_derivative(eq_.momenta[i], model_) - motion_[i])).expand();
+            // d/dt(c p) is c d/dt(p) only for a constant c: a factor that depends on the state stays outside.
+            const GiNaC::ex c = depends_on_state(best_c) || best_c.has(model_.t) ? GiNaC::ex(1) : best_c;
+            const GiNaC::ex p_true = (c * eq_.momenta[i]).expand();
+            const GiNaC::ex dLdq_true = (c * (time_derivative(eq_.momenta[i], model_) - motion_[i])).expand();
             const std::string pl = m("\\partial L/\\partial \\dot{" + q.latex + "}");
             const std::string ql = m("\\partial L/\\partial " + q.latex);
             if (equal(p_text, p_true, tol) == Tri::Yes) {
@@ -1815,8 +1851,7 @@ void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, con
                 const Diagnosis dq = compare_to(dLdq_text, dLdq_true, tol);
                 for (const std::string& line : dq.lines) out.wrong_terms.push_back("in " + ql + ", " + line);
             }
-            out.corrected = "\\frac{d}{dt}\\left(" + latex(p_true) + "\\right) - \\left(" + latex(dLdq_true) +
-                            "\\right) = 0";
+            out.corrected = lagrange_form(latex(p_true), latex(dLdq_true));
         } catch (...) {
         }
     }
