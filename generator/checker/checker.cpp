@@ -5,6 +5,7 @@
 #include "checker/budget.hpp"
 #include "checker/correction_check.hpp"
 #include "checker/definitions.hpp"
+#include "checker/hamiltonian_check.hpp"
 #include "checker/latex_normalize.hpp"
 #include "checker/latex_parser.hpp"
 #include "codegen/cpp_emitter.hpp"
@@ -244,6 +245,8 @@ struct Prepared {
     bool has_truth_label = false;  ///< refers to eomgen's T, V, L, ...
     bool has_part = false;         ///< uses a part T_{x} whose value came from the text
     bool from_definition = false;  ///< differentiates a quantity the text defines (the step's reference)
+    bool has_momenta = false;      ///< written in the momenta p_q (or ∂H/∂·): `value_p` is in them
+    GiNaC::ex value_p;             ///< the value before p_q → p(q, q̇) (hamiltonian_check.hpp)
     std::vector<std::string> notes;
     bool comparable() const { return ok && unknown.empty() && vectors.empty(); }
 };
@@ -268,7 +271,8 @@ class Checker {
           d_(d),
           options_(options),
           numbers_(model, ctx_),
-          printer_table_(codegen::symbol_table(model)) {}
+          printer_table_(codegen::symbol_table(model)),
+          hamilton_(model, eq) {}
 
     CheckReport run();
 
@@ -397,6 +401,23 @@ class Checker {
         b.value = b.value.subs(zero);
         if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
         const GiNaC::ex diff = a.value - b.value;
+        // `p_\phi = \text{const}`: a constant of the motion, when its time derivative vanishes on the equations
+        // of motion.
+        if ((a.value.is_zero() && !a.constants.empty()) || (b.value.is_zero() && !b.constants.empty())) {
+            const GiNaC::ex rate = time_derivative(diff, model_);
+            int only = -1;
+            std::string factor;
+            r.compared_with = "the equations of motion";
+            if (equal(rate, 0, tol) == Tri::Yes ||
+                (has_acceleration(rate) && euler_lagrange_combination(rate, tol, &only, &factor) == Tri::Yes)) {
+                r.verdict = Verdict::Agrees;
+                r.reason = "a constant of the motion: its time derivative vanishes on the equations of motion";
+            } else {
+                r.reason = "said to be constant, but its time derivative does not vanish on the equations of "
+                           "motion (not a constant of this model's motion)";
+            }
+            return true;
+        }
         std::vector<GiNaC::symbol> state{model_.t};
         for (const Coordinate& q : model_.coordinates) state.insert(state.end(), {q.q, q.qd, q.qdd});
         for (const GiNaC::symbol& x : state)
@@ -430,6 +451,21 @@ class Checker {
     TextDefinitions definitions_;   ///< K = ..., used where the text differentiates K
     std::size_t current_offset_ = 0;  ///< file offset of the side being prepared (definitions before it apply)
     void collect_definitions(const std::vector<FullChain>& chains);
+    HamiltonianReading hamilton_;  ///< p_q as variables, H(q, p, t) inside ∂
+    /// The reference's value as a correction prints it: in the momenta when the text's side is written in them.
+    std::string printed_value(const Prepared& ref, const PSide& ref_side, const Prepared& text) {
+        const std::string in_velocities = latex(ref.value);
+        std::optional<GiNaC::ex> in_p;
+        if (text.has_momenta && ref.has_momenta) in_p = hamilton_.in_momenta(ref.value_p);
+        if (text.has_momenta && ref_side.side->ok && hamilton_.is_hamiltonian(ref_side.side->value))
+            in_p = hamilton_.hamiltonian();
+        // In the momenta unless that is much longer (an inverse mass matrix GiNaC cannot simplify).
+        if (in_p && expanded_terms(*in_p) <= kMaxExpandedTerms / 10) {
+            const std::string shown = latex(*in_p);
+            if (shown.size() <= 2 * in_velocities.size()) return shown;
+        }
+        return in_velocities;
+    }
 };
 
 // ------------------------------------------------------------------------------------------------ setup
@@ -454,11 +490,17 @@ void Checker::setup_names() {
     add_label("h", eq_.energy, "h");
     for (const char* b : {"H", "h"})
         if (truth_.count(ctx_.names.at(b))) bare_only_.insert(ctx_.names.at(b));
+    std::vector<GiNaC::ex> momentum_labels;  // a model's own p_{q} is not a label: set_labels skips it
     for (std::size_t i = 0; i < model_.dof(); ++i) {
         std::string c = canonical_name(model_.coordinates[i].latex);
         if (c.empty()) c = model_.coordinates[i].latex;
-        add_label("p_{" + c + "}", eq_.momenta[i], "p_{" + c + "}");
+        // The key as the text's p_{\theta_1} reads (a subscript inside a subscript is flattened).
+        std::string key = canonical_name("p_{" + c + "}");
+        if (key.empty()) key = "p_{" + c + "}";
+        add_label(key, eq_.momenta[i], "p_{" + c + "}");
+        momentum_labels.push_back(ctx_.names.at(key));
     }
+    hamilton_.set_labels(momentum_labels, truth_.count(ctx_.names.at("H")) ? ctx_.names.at("H") : GiNaC::ex(0));
     // Declared results ([[results]]): their LaTeX stands for their closed form, before eomgen's own labels
     // (a result written 'T' is the closed form), after the model's coordinates and parameters.
     for (const Result& res : model_.results) {
@@ -520,7 +562,8 @@ void Checker::apply_map(int line) {
 GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
     // A name inside a derivative is its definition in the text, or the derivative cannot be evaluated.
     if (is_ex_the_function(e, ddt)) {
-        const GiNaC::ex inner = resolve_operators(definitions_.expand(e.op(0), current_offset_));
+        const GiNaC::ex inner =
+            hamilton_.in_velocities(resolve_operators(definitions_.expand(e.op(0), current_offset_)));
         if (TextDefinitions::has_vector(inner, ctx_)) return ddt(inner);  // kept: vectors are not compared
         TextDefinitions::require_defined(inner, ctx_, "time derivative");
         return time_derivative(inner, model_);
@@ -534,6 +577,7 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
                                                      "$, which is not a coordinate, a velocity or a parameter "
                                                      "of the model");
         if (TextDefinitions::has_vector(inner, ctx_)) return pdiff(inner, e.op(1));
+        if (hamilton_.has_hamiltonian(inner)) return hamilton_.derivative(inner, GiNaC::ex_to<GiNaC::symbol>(e.op(1)));
         TextDefinitions::require_defined(inner, ctx_, "partial derivative");
         return GiNaC::diff(inner, GiNaC::ex_to<GiNaC::symbol>(e.op(1)));
     }
@@ -580,6 +624,13 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
             for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
         }
         for (const GiNaC::ex& sym : symbols) {
+            // The momenta stay variables while the text differentiates (∂H/∂p_θ), and H inside ∂ is H(q, p, t).
+            if (hamilton_.is_momentum(sym) && truth_.count(sym)) {
+                p.has_truth_label = p.has_truth_label || side.value.is_equal(sym);
+                p.has_momenta = true;
+                continue;
+            }
+            if (hamilton_.is_hamiltonian(sym) && !side.value.is_equal(sym)) continue;
             auto t = truth_.find(sym);
             // h and H are common letters (a height): they stand for the energy function only as a whole side.
             if (t != truth_.end() && bare_only_.count(sym) && !side.value.is_equal(sym)) {
@@ -608,11 +659,17 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
         GiNaC::ex v = subs.empty() ? side.value : side.value.subs(subs);
         current_offset_ = s.base + side.begin;
         definitions_.take_used();
+        const bool H_inside = hamilton_.has_hamiltonian(v);
         v = resolve_operators(v);
         for (const std::string& n : definitions_.take_used()) {
             p.notes.push_back(n);
             p.from_definition = true;
         }
+        if (H_inside && !hamilton_.has_hamiltonian(v)) p.has_truth_label = p.has_momenta = true;
+        if (hamilton_.has_hamiltonian(v))  // H outside a derivative, inside an expression: a letter (a height)
+            v = v.subs(ctx_.names.at("H") == ctx_.free_symbol("H", NameKind::Unknown));
+        p.value_p = v;
+        v = hamilton_.in_velocities(v);
         // Every comparison expands or normalizes the side: refuse one too large for that up front.
         if (const double terms = expanded_terms(v); terms > kMaxExpandedTerms) {
             std::ostringstream os;
@@ -1685,8 +1742,13 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
                                                         : m(ref.side->source) + " from the text's definition";
             const Diagnosis dg = compare_to(text.value, truth.value, tol);
             r.difference = dg.difference;
+            // A text in momenta, in velocities: sin² + cos² = 1 may shorten the difference a lot.
+            if (text.has_momenta)
+                if (const std::string s = latex(shorter_trig((text.value - truth.value).expand()));
+                    s.size() < r.difference.size())
+                    r.difference = s;
             r.wrong_terms = dg.lines;
-            r.corrected = ref.side->source + " = " + latex(truth.value);
+            r.corrected = ref.side->source + " = " + printed_value(truth, ref, text);
             return;
         }
     }
@@ -1754,7 +1816,7 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         else
             r.corrected = !scaled_step(L.side->source, ratio, R.side->source).empty()
                               ? scaled_step(L.side->source, ratio, R.side->source)
-                              : L.side->source + " = " + latex(a.value);
+                              : L.side->source + " = " + printed_value(a, L, b);
         return;
     }
     if (has_velocity(r_ex) && !integrals_of_motion_.empty()) {

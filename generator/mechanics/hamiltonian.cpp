@@ -32,8 +32,8 @@ std::vector<std::vector<unsigned>> coupled_blocks(const GiNaC::matrix& M, const 
     return out;
 }
 
-/// sin² + cos² = 1 applied where it shortens e (GiNaC has no trigonometric simplifier): the shortest of e
-/// and e with cos² → 1 − sin², or sin² → 1 − cos², each over a common denominator. The value is unchanged.
+}  // namespace
+
 GiNaC::ex shorter_trig(const GiNaC::ex& e) {
     const GiNaC::ex w = GiNaC::wild(0);
     auto length = [](const GiNaC::ex& x) {
@@ -47,13 +47,13 @@ GiNaC::ex shorter_trig(const GiNaC::ex& e) {
         try {
             const GiNaC::ex x = GiNaC::normal(e.subs(rule, GiNaC::subs_options::algebraic));
             if (length(x) < length(best)) best = x;
+            const GiNaC::ex f = GiNaC::factor(x);  // (I1 + M l²) sin²θ rather than its expansion
+            if (length(f) < length(best)) best = f;
         } catch (const std::exception&) {
         }
     }
     return best;
 }
-
-}  // namespace
 
 Hamiltonian derive_hamiltonian(const Model& model, const Equations& eq) {
     Hamiltonian h;

@@ -42,6 +42,10 @@ struct Hamiltonian {
 /// Forms the Hamiltonian of a model whose equations `eq` are derived (derive_equations).
 Hamiltonian derive_hamiltonian(const Model& model, const Equations& eq);
 
+/// sin² + cos² = 1 applied where it shortens e (GiNaC has no trigonometric simplifier): the shortest, as
+/// printed, of e and e with cos² → 1 − sin² or sin² → 1 − cos², over a common denominator and factored.
+GiNaC::ex shorter_trig(const GiNaC::ex& e);
+
 /// e(q, p, t) with every momentum symbol replaced by p_i(q, q̇, t): how a Hamiltonian expression is compared
 /// with the Lagrangian quantities.
 GiNaC::ex in_velocities(const GiNaC::ex& e, const Hamiltonian& h);

@@ -1,0 +1,144 @@
+/** @file exam_hamiltonian.cpp  Hamilton's equations as people publish them: the plane pendulum, the spherical
+ * pendulum and the heavy symmetric top agree line by line; a slip planted in each disagrees, on its line, with
+ * a correction that checks itself; without a symbolic M⁻¹ the canonical identities are used. */
+#include "checked_text.hpp"
+#include "model/families.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace {
+
+using eomgen::checker::CheckOptions;
+using eomgen::checker::CheckReport;
+using eomgen::checker::EquationCheck;
+using eomgen::checker::Verdict;
+
+const std::string kSource = EOMGEN_SOURCE_DIR;
+
+std::string read(const std::string& fixture) {
+    std::ifstream in(kSource + "/tests/checker/fixtures/" + fixture, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+std::string describe(const EquationCheck& e) {
+    std::string s = std::to_string(e.where.line) + ": " + eomgen::checker::verdict_name(e.verdict) + ": " +
+                    e.equation + " [" + e.compared_with + "] " + e.reason;
+    for (const std::string& w : e.wrong_terms) s += "\n  - " + w;
+    for (const std::string& n : e.notes) s += "\n  note: " + n;
+    return s;
+}
+
+struct Fixture {
+    const char* model;
+    const char* correct;
+    const char* planted;
+    std::size_t equations;
+    CheckOptions options;
+};
+
+std::vector<Fixture> fixtures() {
+    CheckOptions top;
+    top.map.push_back({"I", "I_{1} + M l^{2}", "the moment of inertia about the pivot"});
+    return {{"tests/checker/models/plane_pendulum.toml", "hamilton_pendulum.md", "hamilton_pendulum_planted.md", 13, {}},
+            {"tests/checker/models/spherical_pendulum.toml", "hamilton_spherical_pendulum.md",
+             "hamilton_spherical_pendulum_planted.md", 16, {}},
+            {"models/heavy_symmetric_top.toml", "hamilton_heavy_top.md", "hamilton_heavy_top_planted.md", 17, top}};
+}
+
+}  // namespace
+
+TEST_CASE("hamilton: correct derivations agree line by line", "[checker][hamiltonian]") {
+    for (const Fixture& f : fixtures()) {
+        INFO(f.correct);
+        const CheckReport r = eomgen::test::check_text(f.model, read(f.correct), f.options);
+        for (const EquationCheck& e : r.equations) {
+            INFO(describe(e));
+            CHECK(e.verdict == Verdict::Agrees);
+        }
+        CHECK(r.equations.size() == f.equations);
+    }
+}
+
+TEST_CASE("hamilton: what each kind of line is compared with", "[checker][hamiltonian]") {
+    const CheckReport r = eomgen::test::check_text(fixtures()[0].model, read("hamilton_pendulum.md"));
+    std::map<int, std::vector<const EquationCheck*>> by_line;
+    for (const EquationCheck& e : r.equations) by_line[e.where.line].push_back(&e);
+    // The two lines: ṗ_θ = −∂H/∂θ (an Euler–Lagrange equation, then an identity) and θ̇ = ∂H/∂p_θ.
+    REQUIRE(by_line[19].size() == 2);
+    CHECK(by_line[19][0]->compared_with == "the Euler–Lagrange equation for $\\theta$");
+    REQUIRE(by_line[17].size() == 2);
+    CHECK(by_line[17][1]->verdict == Verdict::Agrees);
+    // H in momenta (line 13) and in velocities (line 15) are both eomgen's H.
+    for (int line : {13, 15}) {
+        REQUIRE(by_line[line].size() == 1);
+        CHECK(by_line[line][0]->verdict == Verdict::Agrees);
+    }
+}
+
+TEST_CASE("hamilton: a slip in each is found on its line, with a correction that checks itself", "[checker][hamiltonian]") {
+    for (const Fixture& f : fixtures()) {
+        INFO(f.planted);
+        const std::string text = read(f.planted);
+        int planted_line = 0;
+        std::string phrase;
+        {
+            std::istringstream in(text);
+            std::string line;
+            for (int n = 1; std::getline(in, line); ++n)
+                if (const std::size_t at = line.find("% planted["); at != std::string::npos) {
+                    planted_line = n;
+                    phrase = line.substr(at + 10, line.rfind(']') - at - 10);
+                }
+        }
+        REQUIRE(planted_line > 0);
+        const CheckReport r = eomgen::test::check_text(f.model, text, f.options);
+        int found = 0;
+        for (const EquationCheck& e : r.equations) {
+            INFO(describe(e));
+            if (e.verdict != Verdict::Disagrees) continue;
+            CHECK(e.where.line == planted_line);  // no false alarm
+            ++found;
+            std::string all;
+            for (const std::string& w : e.wrong_terms) all += w + "\n";
+            CHECK(all.find(phrase) != std::string::npos);
+            REQUIRE_FALSE(e.corrected.empty());
+            // The correction, written into the text in place of the slip's display, agrees.
+            std::string fixed;
+            std::istringstream in(text);
+            std::string line;
+            for (int n = 1; std::getline(in, line); ++n) fixed += (n == planted_line ? "$$" + e.corrected + "$$" : line) + "\n";
+            const CheckReport again = eomgen::test::check_text(f.model, fixed, f.options);
+            for (const EquationCheck& a : again.equations) {
+                INFO("after the correction: " << describe(a));
+                CHECK(a.verdict != Verdict::Disagrees);
+            }
+        }
+        CHECK(found >= 1);
+    }
+}
+
+TEST_CASE("hamilton: without a symbolic inverse mass matrix, the canonical identities", "[checker][hamiltonian]") {
+    const eomgen::Model m = eomgen::parse_model(
+        eomgen::family_model_text(eomgen::parse_family_spec("pendulum:n=4")), "--family pendulum:n=4");
+    const eomgen::Equations eq = eomgen::derive_equations(m);
+    const std::string latex = m.coordinates[0].latex;  // \theta_{1}
+    const std::string text = "$$\\dot{" + latex + "} = \\frac{\\partial H}{\\partial p_{" + latex + "}}$$\n" +
+                             "$$\\dot{p}_{" + latex + "} = -\\frac{\\partial H}{\\partial " + latex + "}$$\n" +
+                             "$$\\frac{\\partial (H + H^2)}{\\partial " + latex + "} = 0$$\n";
+    const CheckReport r = eomgen::checker::check_derivation(m, eq, eomgen::checker::parse_derivation(text, "x.md"), {});
+    REQUIRE(r.equations.size() == 3);
+    for (std::size_t k = 0; k < 2; ++k) {
+        INFO(describe(r.equations[k]));
+        CHECK(r.equations[k].verdict == Verdict::Agrees);
+    }
+    INFO(describe(r.equations[2]));
+    CHECK(r.equations[2].verdict == Verdict::NotComparable);
+    CHECK(r.equations[2].reason.find("couples 4 coordinates") != std::string::npos);
+}
