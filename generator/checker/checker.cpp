@@ -2,6 +2,7 @@
  * motion. */
 #include "checker/checker.hpp"
 
+#include "checker/approximation.hpp"
 #include "checker/budget.hpp"
 #include "checker/correction_check.hpp"
 #include "checker/definitions.hpp"
@@ -371,6 +372,11 @@ class Checker {
     /// Parses r.corrected back with the names of its line and checks it (correction_check.hpp); a correction
     /// that does not agree is withheld, with a note.
     void verify_correction(const FullChain& c, std::size_t j, EquationCheck& r);
+    /// a ≈ b compared with the Taylor expansion about q = 0 of the coordinates the text calls small (or, when
+    /// `implied`, every coordinate it holds), to the order it keeps (approximation.hpp). False when it does
+    /// not apply (no side is a polynomial in them).
+    bool approximation(std::size_t at, const std::string& left, const std::string& right, const Prepared& a,
+                       const Prepared& b, bool implied, EquationCheck& r);
     bool verifying_ = false;
     void check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other, double tol,
                     EquationCheck& r);
@@ -1372,8 +1378,61 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
     if (rel == Relation::Approx) tol = std::max(tol, 1e-2);
     if (up_to_constant(a, b, tol, r)) return r;
+    // \approx, \simeq: the Taylor expansion to the order the text keeps; "= ... for small θ" too, where it
+    // would otherwise disagree.
+    const bool approx = rel == Relation::Approx;
+    if (approx && approximation(rel_at, L.side->source, R.side->source, a, b, true, r)) return r;
     check_values(c, i, j, a, b, tol, r);
+    if (!approx && r.verdict == Verdict::Disagrees) {
+        EquationCheck alt;
+        alt.where = r.where;
+        alt.section = r.section;
+        alt.equation = r.equation;
+        if (approximation(rel_at, L.side->source, R.side->source, a, b, false, alt) && alt.verdict == Verdict::Agrees)
+            return alt;
+    }
     return r;
+}
+
+bool Checker::approximation(std::size_t at, const std::string& left, const std::string& right, const Prepared& a,
+                            const Prepared& b, bool implied, EquationCheck& r) {
+    if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
+    std::vector<std::size_t> small = small_coordinates_in_prose(d_, at, model_);
+    const std::string said = small.empty() ? "" : " (the text says it is small)";
+    if (small.empty() && implied)  // implied: every coordinate the equation holds
+        for (std::size_t k = 0; k < model_.dof(); ++k)
+            if ((a.value - b.value).has(model_.coordinates[k].q) || (a.value - b.value).has(model_.coordinates[k].qd))
+                small.push_back(k);
+    const int ref_side = a.has_truth_label && !a.has_part ? 0 : (b.has_truth_label && !b.has_part ? 1 : -1);
+    const ApproxVerdict v = compare_approximation(a.value, b.value, ref_side, model_, motion_, small,
+                                                  [&](const GiNaC::ex& x, const GiNaC::ex& y) {
+                                                      return equal(x, y, 1e-9) == Tri::Yes;
+                                                  });
+    if (!v.applies) return false;
+    std::string vars, point;
+    for (std::size_t k : small) {
+        vars += (vars.empty() ? "" : ", ") + m(model_.coordinates[k].latex);
+        point += (point.empty() ? "" : ", ") + model_.coordinates[k].latex + " = 0";
+    }
+    const std::string about = " about " + m(point) + said;
+    r.compared_with = v.equation >= 0 ? "the Euler–Lagrange equation for " +
+                                            m(model_.coordinates[std::size_t(v.equation)].latex) + ", expanded" + about
+                                      : "the Taylor expansion" + about;
+    if (v.agrees) {
+        r.verdict = Verdict::Agrees;
+        r.reason = "agrees to " + ordinal(v.order) + " order in " + vars;
+        return true;
+    }
+    if (v.reference.is_zero() && v.equation < 0) return false;  // nothing to say what it should be
+    r.verdict = Verdict::Disagrees;
+    r.reason = "disagrees at " + ordinal(std::max(v.wrong_order, 1)) + " order in " + vars + " (the text keeps order " +
+               std::to_string(v.order) + ")";
+    const Diagnosis dg = compare_to(v.text, v.reference, 1e-9);
+    r.difference = latex((v.text - v.reference).expand());
+    r.wrong_terms = dg.lines;
+    r.corrected = v.equation >= 0 ? latex(v.reference) + " \\approx 0"
+                                  : (ref_side == 0 ? left : right) + " \\approx " + latex(v.reference);
+    return true;
 }
 
 void Checker::verify_correction(const FullChain& c, std::size_t j, EquationCheck& r) {

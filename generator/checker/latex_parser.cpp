@@ -1448,6 +1448,9 @@ std::vector<Chain> parse_math(std::string_view text, LatexContext& context) {
         // Merge a piece without a relation into its neighbour: the breaker was not a separator there.
         std::vector<std::pair<std::size_t, std::size_t>> merged;
         for (const auto& p : pieces) {
+            // Nothing between two breakers (`\qquad\text{or}\qquad`): the breakers are not a formula.
+            if (std::all_of(t.begin() + long(p.first), t.begin() + long(p.second), [](const Token& k) { return k.space; }))
+                continue;
             const bool rel = !relations_in(t, d, p.first, p.second).empty();
             if (!merged.empty() &&
                 (!rel || relations_in(t, d, merged.back().first, merged.back().second).empty()))
