@@ -142,3 +142,46 @@ TEST_CASE("hamilton: without a symbolic inverse mass matrix, the canonical ident
     CHECK(r.equations[2].verdict == Verdict::NotComparable);
     CHECK(r.equations[2].reason.find("couples 4 coordinates") != std::string::npos);
 }
+
+TEST_CASE("hamilton: dH/dt = -dL/dt, and a term linear in the velocities", "[checker][hamiltonian]") {
+    // A charge in a magnetic field and a driving force: L = m/2 (ẋ² + ẏ²) + (b/2)(x ẏ − y ẋ) + k cos(w t) x.
+    const eomgen::Model m = eomgen::parse_model(R"toml(name = "charge"
+[[coordinates]]
+name = "x"
+[[coordinates]]
+name = "y"
+[[parameters]]
+name = "m"
+value = 1.0
+[[parameters]]
+name = "b"
+value = 2.0
+[[parameters]]
+name = "k"
+value = 0.5
+[[parameters]]
+name = "w"
+latex = '\omega'
+value = 3.0
+[lagrangian]
+T = "m/2*(x'^2 + y'^2) + b/2*(x*y' - y*x')"
+V = "-k*cos(w*t)*x"
+)toml", "charge.toml");
+    const eomgen::Equations eq = eomgen::derive_equations(m);
+    const std::string text =
+        "$$p_x = m \\dot x - \\frac{b}{2} y, \\quad p_y = m \\dot y + \\frac{b}{2} x$$\n"
+        "$$H = \\frac{(p_x + \\frac{b}{2} y)^2 + (p_y - \\frac{b}{2} x)^2}{2m} - k x \\cos(\\omega t)$$\n"
+        "$$\\frac{\\partial H}{\\partial t} = -\\frac{\\partial L}{\\partial t} = k \\omega x \\sin(\\omega t)$$\n"
+        "$$\\dot x = \\frac{\\partial H}{\\partial p_x} = \\frac{1}{m}\\left(p_x + \\frac{b}{2} y\\right)$$\n"
+        "$$\\dot p_x = -\\frac{\\partial H}{\\partial x} = \\frac{b}{2m}\\left(p_y - \\frac{b}{2} x\\right) + k \\cos(\\omega t)$$\n"
+        "$$\\frac{\\partial H}{\\partial t} = -k \\omega x \\sin(\\omega t)$$\n";
+    const CheckReport r = eomgen::checker::check_derivation(m, eq, eomgen::checker::parse_derivation(text, "x.md"), {});
+    REQUIRE(r.equations.size() == 10);
+    for (std::size_t k = 0; k + 1 < r.equations.size(); ++k) {
+        INFO(describe(r.equations[k]));
+        CHECK(r.equations[k].verdict == Verdict::Agrees);
+    }
+    INFO(describe(r.equations.back()));
+    CHECK(r.equations.back().verdict == Verdict::Disagrees);  // the sign of ∂H/∂t
+    CHECK(r.equations.back().corrected == "\\frac{\\partial H}{\\partial t} = k \\omega x \\sin\\left(\\omega t\\right)");
+}
