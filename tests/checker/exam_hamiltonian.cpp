@@ -145,29 +145,7 @@ TEST_CASE("hamilton: without a symbolic inverse mass matrix, the canonical ident
 
 TEST_CASE("hamilton: dH/dt = -dL/dt, and a term linear in the velocities", "[checker][hamiltonian]") {
     // A charge in a magnetic field and a driving force: L = m/2 (ẋ² + ẏ²) + (b/2)(x ẏ − y ẋ) + k cos(w t) x.
-    const eomgen::Model m = eomgen::parse_model(R"toml(name = "charge"
-[[coordinates]]
-name = "x"
-[[coordinates]]
-name = "y"
-[[parameters]]
-name = "m"
-value = 1.0
-[[parameters]]
-name = "b"
-value = 2.0
-[[parameters]]
-name = "k"
-value = 0.5
-[[parameters]]
-name = "w"
-latex = '\omega'
-value = 3.0
-[lagrangian]
-T = "m/2*(x'^2 + y'^2) + b/2*(x*y' - y*x')"
-V = "-k*cos(w*t)*x"
-)toml", "charge.toml");
-    const eomgen::Equations eq = eomgen::derive_equations(m);
+    const auto& [m, eq] = eomgen::test::derived_model("tests/checker/models/charge_in_field.toml");
     const std::string text =
         "$$p_x = m \\dot x - \\frac{b}{2} y, \\quad p_y = m \\dot y + \\frac{b}{2} x$$\n"
         "$$H = \\frac{(p_x + \\frac{b}{2} y)^2 + (p_y - \\frac{b}{2} x)^2}{2m} - k x \\cos(\\omega t)$$\n"

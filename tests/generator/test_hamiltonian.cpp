@@ -113,29 +113,9 @@ TEST_CASE("hamiltonian: four coupled coordinates are not inverted symbolically",
 
 TEST_CASE("hamiltonian: a term linear in the velocities, a charge in a magnetic field", "[hamiltonian]") {
     // L = m/2 (x'² + y'²) + (e B/2)(x y' − y x') + k cos(w t) x: b = (e B/2)(−y, x), explicit time in L₀.
-    const Derived d = derive(eomgen::parse_model(R"toml(name = "charge"
-[[coordinates]]
-name = "x"
-[[coordinates]]
-name = "y"
-[[parameters]]
-name = "m"
-value = 1.0
-[[parameters]]
-name = "eB"
-value = 2.0
-[[parameters]]
-name = "k"
-value = 0.5
-[[parameters]]
-name = "w"
-value = 3.0
-[lagrangian]
-T = "m/2*(x'^2 + y'^2) + eB/2*(x*y' - y*x')"
-V = "-k*cos(w*t)*x"
-)toml", "charge.toml"));
+    const Derived d = load("tests/checker/models/charge_in_field.toml");
     require_canonical(d);
-    const GiNaC::ex m = sym(d, "m"), eB = sym(d, "eB"), x = sym(d, "x"), y = sym(d, "y");
+    const GiNaC::ex m = sym(d, "m"), eB = sym(d, "b"), x = sym(d, "x"), y = sym(d, "y");
     CHECK((d.h.b[0] + eB * y / 2).expand().is_zero());
     CHECK((d.h.b[1] - eB * x / 2).expand().is_zero());
     // H = ((p_x + eB y/2)² + (p_y − eB x/2)²)/(2m) − k cos(w t) x
