@@ -485,6 +485,8 @@ void Checker::setup_names() {
         add_name("\\ddot{" + c.latex + "}", c.qdd);
     }
     for (const Parameter& p : model_.parameters) add_name(p.latex, p.symbol);
+    // \ell is how many texts typeset a length l (add_name keeps a model's own \ell).
+    if (auto l = ctx_.names.find("l"); l != ctx_.names.end()) add_name("\\ell", l->second);
 
     // Labels for eomgen's quantities, unless the model uses the letter for something of its own.
     add_label("T", eq_.T, "T");

@@ -31,7 +31,7 @@ bool has_note(const EquationCheck& e, const std::string& part) {
 TEST_CASE("definitions: the derivative of a quantity the text defines uses its definition", "[checker][definitions]") {
     // The lecture notes: {\mbox K} defined two lines before it is differentiated.
     const auto r = eomgen::test::check_text(kSpherical,
-                                            "$${\\mbox K} = \\frac{1}{2} m l^2 \\left( \\dot\\theta^2 + \\sin^2\\theta \\, "
+                                            "$${\\mbox K} = \\frac{1}{2} m \\ell^2 \\left( \\dot\\theta^2 + \\sin^2\\theta \\, "
                                             "\\dot\\phi^2 \\right)$$\n"
                                             "$$\\frac{\\partial {\\mbox K}}{\\partial \\dot{\\phi}} = m l^2 \\sin^2\\theta \\, \\dot\\phi$$\n"
                                             "$$\\frac{\\partial K}{\\partial \\dot{\\phi}} = m l^2 \\sin\\theta \\, \\dot\\phi$$\n"
