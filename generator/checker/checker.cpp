@@ -458,6 +458,8 @@ class Checker {
     std::size_t current_offset_ = 0;  ///< file offset of the side being prepared (definitions before it apply)
     void collect_definitions(const std::vector<FullChain>& chains);
     HamiltonianReading hamilton_;  ///< p_q as variables, H(q, p, t) inside ∂
+    int velocity_h_line_ = 0;       ///< the first line where the text writes H in velocities (0: none)
+    std::size_t velocity_h_at_ = 0;  ///< its file offset
     /// The reference's value as a correction prints it: in the momenta when the text's side is written in them.
     std::string printed_value(const Prepared& ref, const PSide& ref_side, const Prepared& text) {
         const std::string in_velocities = latex(ref.value);
@@ -1385,6 +1387,25 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     const bool approx = rel == Relation::Approx;
     if (approx && approximation(rel_at, L.side->source, R.side->source, a, b, true, r)) return r;
     check_values(c, i, j, a, b, tol, r);
+    // ∂H/∂θ after the text wrote H in velocities: the reading it set up (at fixed θ̇) when Hamilton's disagrees.
+    if (r.verdict == Verdict::Disagrees && velocity_h_line_ > 0 && rel_at > velocity_h_at_ &&
+        (hamilton_.has_hamiltonian(L.side->value) || hamilton_.has_hamiltonian(R.side->value))) {
+        hamilton_.set_velocity_reading(true);
+        Prepared va = prepare(L), vb = prepare(R);
+        EquationCheck alt;
+        alt.where = r.where;
+        alt.section = r.section;
+        alt.equation = r.equation;
+        if (va.ok && vb.ok) check_values(c, i, j, va, vb, tol, alt);
+        hamilton_.set_velocity_reading(false);
+        if (alt.verdict == Verdict::Agrees) {
+            alt.notes.push_back("read as the text set it up: H written in velocities (line " +
+                                std::to_string(velocity_h_line_) +
+                                ") and differentiated at fixed velocities; Hamilton's equations take ∂H/∂q at "
+                                "fixed momenta, under which this line does not hold");
+            return alt;
+        }
+    }
     if (!approx && r.verdict == Verdict::Disagrees) {
         EquationCheck alt;
         alt.where = r.where;
@@ -2060,6 +2081,15 @@ CheckReport Checker::run() {
         if (row_selected(d_, at, selected, whole)) report.problems.push_back({d_.position(tp.offset), tp.message});
     }
     collect_definitions(chains);
+    // Where the text first writes H = (an expression in velocities, without momenta).
+    for (const FullChain& c : chains) {
+        if (c.sides.size() < 2 || !c.sides[0].side->ok || !hamilton_.is_hamiltonian(c.sides[0].side->value)) continue;
+        const Prepared p = prepare(c.sides.back());
+        if (!p.comparable() || p.has_momenta || !has_velocity(p.value)) continue;
+        velocity_h_at_ = c.relation_offsets.front();
+        velocity_h_line_ = d_.position(velocity_h_at_).line;
+        break;
+    }
     collect_parts(chains);
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2) continue;  // an expression, not an equation

@@ -43,6 +43,7 @@ GiNaC::ex HamiltonianReading::derivative(const GiNaC::ex& e, const GiNaC::symbol
     // derivative of H(q, p, t) is not (the heavy top's ∂H/∂θ): ∂H/∂p_i = q̇_i and, for a coordinate, time or a
     // parameter a, ∂H/∂a at fixed p = −∂L/∂a at fixed q̇.
     if (auto it = index_.find(wrt); it != index_.end()) return model_.coordinates[it->second].qd;
+    if (velocity_reading_) return GiNaC::diff(eq_.energy, wrt);  // h(q, q̇, t) at fixed q̇
     for (const Coordinate& c : model_.coordinates)
         if (wrt.is_equal(c.qd) || wrt.is_equal(c.qdd))
             throw std::runtime_error("H is a function of the coordinates and momenta: ∂H/∂" + wrt.get_name() +

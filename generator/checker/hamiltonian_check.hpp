@@ -44,6 +44,14 @@ class HamiltonianReading {
     /// a correction printed in the momenta the text uses.
     GiNaC::ex in_momenta(const GiNaC::ex& e) const;
 
+    /**
+     * The reading a text sets up when it writes H in velocities (`H = \frac12 m l^2 \dot\theta^2 - …`) and then
+     * differentiates it by a coordinate: h(q, q̇) at fixed q̇, not H(q, p) at fixed p. While `on`, derivative()
+     * reads ∂H/∂q, ∂H/∂t (and ∂H/∂a of a parameter) so; ∂H/∂p stays q̇.
+     */
+    void set_velocity_reading(bool on) { velocity_reading_ = on; }
+    bool velocity_reading() const { return velocity_reading_; }
+
     /// H(q, p, t) in the label symbols, or std::nullopt when M⁻¹ is not formed.
     std::optional<GiNaC::ex> hamiltonian() const;
 
@@ -55,6 +63,7 @@ class HamiltonianReading {
     GiNaC::exmap to_labels_;      ///< mechanics' p_i symbol → the label symbol
     std::map<GiNaC::ex, std::size_t, GiNaC::ex_is_less> index_;  ///< p label → i
     GiNaC::ex H_label_ = 0;
+    bool velocity_reading_ = false;
 };
 
 }  // namespace eomgen::checker

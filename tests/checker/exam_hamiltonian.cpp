@@ -163,3 +163,26 @@ TEST_CASE("hamilton: dH/dt = -dL/dt, and a term linear in the velocities", "[che
     CHECK(r.equations.back().verdict == Verdict::Disagrees);  // the sign of ∂H/∂t
     CHECK(r.equations.back().corrected == "\\frac{\\partial H}{\\partial t} = k \\omega x \\sin\\left(\\omega t\\right)");
 }
+
+TEST_CASE("hamilton: H written in velocities and differentiated so is read as the text set it up", "[checker][hamiltonian]") {
+    // ∂H/∂θ of the spherical pendulum: at fixed θ̇, φ̇ it has +m l² sinθ cosθ φ̇²; at fixed p (Hamilton) −.
+    const std::string h = "$$H = \\frac{1}{2} m l^2 \\left(\\dot\\theta^2 + \\sin^2\\theta\\,\\dot\\phi^2\\right) - m g l \\cos\\theta$$\n\n";
+    const std::string at_fixed_velocities =
+        "$$-\\frac{\\partial H}{\\partial \\theta} = -m l^2 \\sin\\theta\\cos\\theta\\,\\dot\\phi^2 - m g l \\sin\\theta$$\n";
+    const std::string at_fixed_momenta =
+        "$$-\\frac{\\partial H}{\\partial \\theta} = m l^2 \\sin\\theta\\cos\\theta\\,\\dot\\phi^2 - m g l \\sin\\theta$$\n";
+    const char* model = "tests/checker/models/spherical_pendulum.toml";
+    const CheckReport set_up = eomgen::test::check_text(model, h + at_fixed_velocities + at_fixed_momenta);
+    REQUIRE(set_up.equations.size() == 3);
+    for (const EquationCheck& e : set_up.equations) {
+        INFO(describe(e));
+        CHECK(e.verdict == Verdict::Agrees);
+    }
+    bool noted = false;
+    for (const std::string& n : set_up.equations[1].notes) noted = noted || n.find("read as the text set it up") != std::string::npos;
+    CHECK(noted);
+    // Without H in velocities before it, the line at fixed velocities is not Hamilton's: it disagrees.
+    const CheckReport bare = eomgen::test::check_text(model, at_fixed_velocities);
+    REQUIRE(bare.equations.size() == 1);
+    CHECK(bare.equations[0].verdict == Verdict::Disagrees);
+}
