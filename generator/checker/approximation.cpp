@@ -156,4 +156,43 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
     return v;
 }
 
+bool check_approximation(const Derivation& d, const Model& model, const std::vector<GiNaC::ex>& motion, std::size_t at,
+                         const std::pair<std::string, std::string>& sources, const GiNaC::ex& a, const GiNaC::ex& b,
+                         int reference_side, bool implied, Comparisons& cmp, EquationCheck& r) {
+    std::vector<std::size_t> small = small_coordinates_in_prose(d, at, model);
+    const std::string said = small.empty() ? "" : " (the text says it is small)";
+    if (small.empty() && implied)  // implied: every coordinate the equation holds
+        for (std::size_t k = 0; k < model.dof(); ++k)
+            if ((a - b).has(model.coordinates[k].q) || (a - b).has(model.coordinates[k].qd)) small.push_back(k);
+    const ApproxVerdict v = compare_approximation(a, b, reference_side, model, motion, small,
+                                                  [&](const GiNaC::ex& x, const GiNaC::ex& y) { return cmp.same(x, y, 1e-9); });
+    if (!v.applies) return false;
+    auto m = [](const std::string& latex) { return "$" + latex + "$"; };
+    std::string vars, point;
+    for (std::size_t k : small) {
+        vars += (vars.empty() ? "" : ", ") + m(model.coordinates[k].latex);
+        point += (point.empty() ? "" : ", ") + model.coordinates[k].latex + " = 0";
+    }
+    const std::string about = " about " + m(point) + said;
+    if (v.agrees || !v.reference.is_zero() || v.equation >= 0)
+        r.compared_with = v.equation >= 0 ? "the Euler–Lagrange equation for " +
+                                                 m(model.coordinates[std::size_t(v.equation)].latex) + ", expanded" + about
+                                           : "the Taylor expansion" + about;
+    if (v.agrees) {
+        r.verdict = Verdict::Agrees;
+        r.reason = "agrees to " + ordinal(v.order) + " order in " + vars;
+        return true;
+    }
+    if (v.reference.is_zero() && v.equation < 0) return false;  // nothing to say what it should be
+    r.verdict = Verdict::Disagrees;
+    r.reason = "disagrees at " + ordinal(std::max(v.wrong_order, 1)) + " order in " + vars +
+               " (the text keeps order " + std::to_string(v.order) + ")";
+    r.difference = cmp.latex((v.text - v.reference).expand());
+    r.wrong_terms = cmp.wrong_terms(v.text, v.reference, 1e-9);
+    r.corrected = v.equation >= 0 ? cmp.latex(v.reference) + " \\approx 0"
+                                  : (reference_side == 0 ? sources.first : sources.second) + " \\approx " +
+                                        cmp.latex(v.reference);
+    return true;
+}
+
 }  // namespace eomgen::checker

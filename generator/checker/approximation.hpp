@@ -2,6 +2,8 @@
  * with the Taylor expansion of the model's equation about the point, to the order the text keeps. */
 #pragma once
 
+#include "checker/checker.hpp"
+#include "checker/comparisons.hpp"
 #include "checker/derivation.hpp"
 #include "model/model.hpp"
 
@@ -10,6 +12,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eomgen::checker {
@@ -45,5 +48,16 @@ struct ApproxVerdict {
 ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int reference_side, const Model& model,
                                     const std::vector<GiNaC::ex>& motion, const std::vector<std::size_t>& small,
                                     const std::function<bool(const GiNaC::ex&, const GiNaC::ex&)>& same);
+
+/**
+ * The verdict on a ≈ b (a link at file offset `at`, its sides' LaTeX `sources`): the small coordinates are
+ * those the prose names (small_coordinates_in_prose), or, when `implied`, every coordinate a − b holds. Agrees
+ * "to first order in $\theta$", or disagrees "at first order" with the expanded reference as the correction
+ * (written with `\approx`). False when it does not apply (no side polynomial in the small coordinates, or
+ * nothing to compare a disagreement with).
+ */
+bool check_approximation(const Derivation& d, const Model& model, const std::vector<GiNaC::ex>& motion, std::size_t at,
+                         const std::pair<std::string, std::string>& sources, const GiNaC::ex& a, const GiNaC::ex& b,
+                         int reference_side, bool implied, Comparisons& cmp, EquationCheck& r);
 
 }  // namespace eomgen::checker

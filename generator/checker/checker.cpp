@@ -2,6 +2,7 @@
  * motion. */
 #include "checker/checker.hpp"
 
+#include "checker/additive_constant.hpp"
 #include "checker/approximation.hpp"
 #include "checker/budget.hpp"
 #include "checker/correction_check.hpp"
@@ -264,8 +265,20 @@ struct Diagnosis {
     std::vector<std::string> lines;
 };
 
-class Checker {
+class Checker : public Comparisons {
   public:
+    // Comparisons, for the files of one capability (approximation, additive_constant).
+    bool same(const GiNaC::ex& a, const GiNaC::ex& b, double tol) override { return equal(a, b, tol) == Tri::Yes; }
+    bool equation_of_motion(const GiNaC::ex& r, double tol) override {
+        int only = -1;
+        std::string factor;
+        return has_acceleration(r) && euler_lagrange_combination(r, tol, &only, &factor) == Tri::Yes;
+    }
+    std::string latex(const GiNaC::ex& e) override;
+    std::vector<std::string> wrong_terms(const GiNaC::ex& text, const GiNaC::ex& truth, double tol) override {
+        return compare_to(text, truth, tol).lines;
+    }
+
     Checker(const Model& model, const Equations& eq, const Derivation& d, const CheckOptions& options)
         : model_(model),
           eq_(eq),
@@ -348,7 +361,6 @@ class Checker {
     std::string pair_kind(const GiNaC::ex& t, const GiNaC::ex& u, double tol, int* score);
     /// The factor c making c·truth closest to text group by group; the number of groups that then agree.
     int best_factor(const GiNaC::ex& text, const GiNaC::ex& truth, double tol, GiNaC::ex* c);
-    std::string latex(const GiNaC::ex& e);
 
     // ----- checking
     void collect_parts(const std::vector<FullChain>& chains);
@@ -406,32 +418,10 @@ class Checker {
         a.value = a.value.subs(zero);
         b.value = b.value.subs(zero);
         if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
-        const GiNaC::ex diff = a.value - b.value;
-        // `p_\phi = \text{const}`: a constant of the motion, when its time derivative vanishes on the equations
-        // of motion.
-        if ((a.value.is_zero() && !a.constants.empty()) || (b.value.is_zero() && !b.constants.empty())) {
-            const GiNaC::ex rate = time_derivative(diff, model_);
-            int only = -1;
-            std::string factor;
-            r.compared_with = "the equations of motion";
-            if (equal(rate, 0, tol) == Tri::Yes ||
-                (has_acceleration(rate) && euler_lagrange_combination(rate, tol, &only, &factor) == Tri::Yes)) {
-                r.verdict = Verdict::Agrees;
-                r.reason = "a constant of the motion: its time derivative vanishes on the equations of motion";
-            } else {
-                r.reason = "said to be constant, but its time derivative does not vanish on the equations of "
-                           "motion (not a constant of this model's motion)";
-            }
-            return true;
-        }
-        std::vector<GiNaC::symbol> state{model_.t};
-        for (const Coordinate& q : model_.coordinates) state.insert(state.end(), {q.q, q.qd, q.qdd});
-        for (const GiNaC::symbol& x : state)
-            if (equal(GiNaC::diff(diff, x), 0, tol) != Tri::Yes) return false;
-        r.verdict = Verdict::Agrees;
-        r.compared_with = "an identity up to an additive constant";
-        r.reason = "the two sides differ by a constant, which the text's constant stands for";
-        return true;
+        const int constant_side = a.value.is_zero() && !a.constants.empty()
+                                      ? 0
+                                      : (b.value.is_zero() && !b.constants.empty() ? 1 : -1);
+        return check_additive_constant(a.value, b.value, constant_side, model_, *this, tol, r);
     }
     void check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a, const Prepared& b,
                       double tol, EquationCheck& r);
@@ -1420,42 +1410,8 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
 bool Checker::approximation(std::size_t at, const std::string& left, const std::string& right, const Prepared& a,
                             const Prepared& b, bool implied, EquationCheck& r) {
     if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
-    std::vector<std::size_t> small = small_coordinates_in_prose(d_, at, model_);
-    const std::string said = small.empty() ? "" : " (the text says it is small)";
-    if (small.empty() && implied)  // implied: every coordinate the equation holds
-        for (std::size_t k = 0; k < model_.dof(); ++k)
-            if ((a.value - b.value).has(model_.coordinates[k].q) || (a.value - b.value).has(model_.coordinates[k].qd))
-                small.push_back(k);
     const int ref_side = a.has_truth_label && !a.has_part ? 0 : (b.has_truth_label && !b.has_part ? 1 : -1);
-    const ApproxVerdict v = compare_approximation(a.value, b.value, ref_side, model_, motion_, small,
-                                                  [&](const GiNaC::ex& x, const GiNaC::ex& y) {
-                                                      return equal(x, y, 1e-9) == Tri::Yes;
-                                                  });
-    if (!v.applies) return false;
-    std::string vars, point;
-    for (std::size_t k : small) {
-        vars += (vars.empty() ? "" : ", ") + m(model_.coordinates[k].latex);
-        point += (point.empty() ? "" : ", ") + model_.coordinates[k].latex + " = 0";
-    }
-    const std::string about = " about " + m(point) + said;
-    r.compared_with = v.equation >= 0 ? "the Euler–Lagrange equation for " +
-                                            m(model_.coordinates[std::size_t(v.equation)].latex) + ", expanded" + about
-                                      : "the Taylor expansion" + about;
-    if (v.agrees) {
-        r.verdict = Verdict::Agrees;
-        r.reason = "agrees to " + ordinal(v.order) + " order in " + vars;
-        return true;
-    }
-    if (v.reference.is_zero() && v.equation < 0) return false;  // nothing to say what it should be
-    r.verdict = Verdict::Disagrees;
-    r.reason = "disagrees at " + ordinal(std::max(v.wrong_order, 1)) + " order in " + vars + " (the text keeps order " +
-               std::to_string(v.order) + ")";
-    const Diagnosis dg = compare_to(v.text, v.reference, 1e-9);
-    r.difference = latex((v.text - v.reference).expand());
-    r.wrong_terms = dg.lines;
-    r.corrected = v.equation >= 0 ? latex(v.reference) + " \\approx 0"
-                                  : (ref_side == 0 ? left : right) + " \\approx " + latex(v.reference);
-    return true;
+    return check_approximation(d_, model_, motion_, at, {left, right}, a.value, b.value, ref_side, implied, *this, r);
 }
 
 void Checker::verify_correction(const FullChain& c, std::size_t j, EquationCheck& r) {
