@@ -581,6 +581,9 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
         TextDefinitions::require_defined(inner, ctx_, "partial derivative");
         return GiNaC::diff(inner, GiNaC::ex_to<GiNaC::symbol>(e.op(1)));
     }
+    if (is_ex_the_function(e, pbracket))
+        return hamilton_.poisson(resolve_operators(definitions_.expand(e.op(0), current_offset_)),
+                                 resolve_operators(definitions_.expand(e.op(1), current_offset_)));
     if (e.nops() == 0) return e;
     struct Each : GiNaC::map_function {
         const Checker* self;
@@ -660,6 +663,8 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
         current_offset_ = s.base + side.begin;
         definitions_.take_used();
         const bool H_inside = hamilton_.has_hamiltonian(v);
+        // A Poisson bracket is eomgen's to compute: the side is a reference, like a label.
+        if (v.has(pbracket(GiNaC::wild(0), GiNaC::wild(1)))) p.has_truth_label = p.has_momenta = true;
         v = resolve_operators(v);
         for (const std::string& n : definitions_.take_used()) {
             p.notes.push_back(n);

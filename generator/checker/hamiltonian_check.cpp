@@ -31,6 +31,29 @@ std::optional<GiNaC::ex> HamiltonianReading::hamiltonian() const {
     return ham_.H.subs(to_labels_);
 }
 
+GiNaC::ex HamiltonianReading::poisson(const GiNaC::ex& a, const GiNaC::ex& b) const {
+    const auto H = hamiltonian();
+    auto canonical = [&](const GiNaC::ex& e) {
+        GiNaC::ex x = e;
+        if (has_hamiltonian(x)) {
+            if (!H) throw std::runtime_error("a Poisson bracket of H: " + ham_.why_not_symbolic);
+            x = x.subs(H_label_ == *H);
+        }
+        for (const Coordinate& c : model_.coordinates)
+            if (x.has(c.qd) && !H)
+                throw std::runtime_error("a Poisson bracket of velocities: " + ham_.why_not_symbolic);
+        return in_momenta(x);
+    };
+    const GiNaC::ex A = canonical(a), B = canonical(b);
+    GiNaC::ex sum = 0;
+    for (const auto& [label, i] : index_) {
+        const GiNaC::symbol& q = model_.coordinates[i].q;
+        const GiNaC::symbol& p = GiNaC::ex_to<GiNaC::symbol>(label);
+        sum += GiNaC::diff(A, q) * GiNaC::diff(B, p) - GiNaC::diff(A, p) * GiNaC::diff(B, q);
+    }
+    return sum;
+}
+
 GiNaC::ex HamiltonianReading::derivative(const GiNaC::ex& e, const GiNaC::symbol& wrt) const {
     if (!e.is_equal(H_label_)) {
         // H inside an expression: H(q, p, t) itself, when M⁻¹ is formed.

@@ -52,6 +52,13 @@ class HamiltonianReading {
     void set_velocity_reading(bool on) { velocity_reading_ = on; }
     bool velocity_reading() const { return velocity_reading_; }
 
+    /**
+     * The Poisson bracket {a, b} = Σ_i ∂a/∂q_i ∂b/∂p_i − ∂a/∂p_i ∂b/∂q_i (Goldstein (9.67)), a and b in q, the
+     * momentum labels and t (H is H(q, p, t), a velocity q̇(q, p)). Throws std::runtime_error when a or b holds
+     * H or a velocity and M⁻¹ is not formed.
+     */
+    GiNaC::ex poisson(const GiNaC::ex& a, const GiNaC::ex& b) const;
+
     /// H(q, p, t) in the label symbols, or std::nullopt when M⁻¹ is not formed.
     std::optional<GiNaC::ex> hamiltonian() const;
 

@@ -13,6 +13,7 @@ namespace eomgen::checker {
 
 REGISTER_FUNCTION(ddt, dummy().latex_name("\\frac{d}{dt}"))
 REGISTER_FUNCTION(pdiff, dummy().latex_name("\\partial"))
+REGISTER_FUNCTION(pbracket, dummy().latex_name("\\{\\}"))
 
 const FreeName* LatexContext::free_name_of(const GiNaC::ex& symbol) const {
     if (!GiNaC::is_a<GiNaC::symbol>(symbol)) return nullptr;
@@ -411,7 +412,7 @@ class Parser {
             return is_one_of(t->text, {")", "]", "}", ",", ";", "=", "<", ">", "&"}) ||
                    (t->text == "|" && abs_depth_ > 0);
         if (t->kind == Tok::Word)
-            return t->text == "\\right" || t->text == "\\\\" || is_relation_word(t->text) ||
+            return t->text == "\\right" || t->text == "\\}" || t->text == "\\\\" || is_relation_word(t->text) ||
                    is_hard_breaker(t->text) || t->text == "\\end";
         return false;
     }
@@ -642,6 +643,18 @@ class Parser {
         }
         ++pos_;
         return e;
+    }
+
+    /// `\{a, b\}`: a Poisson bracket, evaluated by the checker (it knows the momenta).
+    GiNaC::ex poisson_bracket(std::size_t at) {
+        ++pos_;
+        const GiNaC::ex a = expr();
+        if (!is_char(peek(), ",")) fail(at, "a brace \\{ that is not a Poisson bracket \\{a, b\\} is not read");
+        ++pos_;
+        const GiNaC::ex b = expr();
+        if (!is_word(peek(), "\\}")) fail(at, "missing '\\}' for this '\\{'");
+        ++pos_;
+        return pbracket(a, b);
     }
 
     GiNaC::ex absolute_value(std::size_t at) {
@@ -1028,6 +1041,7 @@ class Parser {
         const std::string w = t.text;
         const std::string bare = w.substr(1);
         if (w == "\\left") return left_right(at);
+        if (w == "\\{") return poisson_bracket(at);
         if (w == "\\pi") {
             ++pos_;
             auto it = ctx_.names.find("\\pi");
@@ -1301,11 +1315,11 @@ std::vector<int> depths(const std::vector<Token>& t) {
     for (std::size_t i = 0; i < t.size(); ++i) {
         const Token& k = t[i];
         const bool closes = (k.kind == Tok::Char && (k.text == "}" || k.text == ")" || k.text == "]")) ||
-                            (k.kind == Tok::Word && (k.text == "\\right" || k.text == "\\end"));
+                            (k.kind == Tok::Word && (k.text == "\\right" || k.text == "\\end" || k.text == "\\}"));
         if (closes && depth > 0) --depth;
         d[i] = depth;
         const bool opens = (k.kind == Tok::Char && (k.text == "{" || k.text == "(" || k.text == "[")) ||
-                           (k.kind == Tok::Word && (k.text == "\\left" || k.text == "\\begin"));
+                           (k.kind == Tok::Word && (k.text == "\\left" || k.text == "\\begin" || k.text == "\\{"));
         if (opens) ++depth;
         // \left( and \right): the delimiter token that follows is part of the command.
         if (k.kind == Tok::Word && (k.text == "\\left" || k.text == "\\right") && i + 1 < t.size()) {

@@ -186,3 +186,26 @@ TEST_CASE("hamilton: H written in velocities and differentiated so is read as th
     REQUIRE(bare.equations.size() == 1);
     CHECK(bare.equations[0].verdict == Verdict::Disagrees);
 }
+
+TEST_CASE("hamilton: Poisson brackets of coordinates, momenta and H", "[checker][hamiltonian]") {
+    const CheckReport r = eomgen::test::check_text(
+        "tests/checker/models/spherical_pendulum.toml",
+        "$$\\{\\theta, p_\\theta\\} = 1, \\quad \\{\\theta, p_\\phi\\} = 0, \\quad \\{p_\\theta, \\theta\\} = -1$$\n\n"
+        "$$\\{\\theta, H\\} = \\frac{p_\\theta}{m l^2} = \\dot\\theta$$\n\n"
+        "$$\\{p_\\phi, H\\} = 0$$\n\n"  // φ is cyclic: p_φ is conserved
+        "$$\\{p_\\theta, H\\} = \\frac{p_\\phi^2 \\cos\\theta}{m l^2 \\sin^3\\theta} - m g l \\sin\\theta$$\n\n"
+        "$$\\{\\theta, p_\\theta\\} = -1$$\n");
+    REQUIRE(r.equations.size() == 8);
+    for (std::size_t k = 0; k < 7; ++k) {
+        INFO(describe(r.equations[k]));
+        CHECK(r.equations[k].verdict == Verdict::Agrees);
+    }
+    INFO(describe(r.equations[7]));
+    CHECK(r.equations[7].verdict == Verdict::Disagrees);
+    CHECK(r.equations[7].corrected == "\\{\\theta, p_\\theta\\} = 1");
+    // A brace that is not a bracket is refused with its reason.
+    const CheckReport bad = eomgen::test::check_text("tests/checker/models/spherical_pendulum.toml", "$$\\{\\theta\\} = 1$$\n");
+    REQUIRE(bad.equations.size() == 1);
+    CHECK(bad.equations[0].verdict == Verdict::NotComparable);
+    CHECK(bad.equations[0].reason.find("Poisson bracket") != std::string::npos);
+}
