@@ -2,7 +2,13 @@
  * motion. */
 #include "checker/checker.hpp"
 
+#include "checker/additive_constant.hpp"
+#include "checker/approximation.hpp"
 #include "checker/budget.hpp"
+#include "checker/correction_check.hpp"
+#include "checker/definitions.hpp"
+#include "checker/hamiltonian_check.hpp"
+#include "checker/latex_normalize.hpp"
 #include "checker/latex_parser.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
@@ -237,8 +243,12 @@ struct Prepared {
     std::string problem;  ///< when !ok
     GiNaC::ex value;
     std::vector<const FreeName*> unknown, vectors, units;
+    std::vector<GiNaC::ex> constants;  ///< `\text{const}`: an arbitrary additive constant
     bool has_truth_label = false;  ///< refers to eomgen's T, V, L, ...
     bool has_part = false;         ///< uses a part T_{x} whose value came from the text
+    bool from_definition = false;  ///< differentiates a quantity the text defines (the step's reference)
+    bool has_momenta = false;      ///< written in the momenta p_q (or ∂H/∂·): `value_p` is in them
+    GiNaC::ex value_p;             ///< the value before p_q → p(q, q̇) (hamiltonian_check.hpp)
     std::vector<std::string> notes;
     bool comparable() const { return ok && unknown.empty() && vectors.empty(); }
 };
@@ -255,15 +265,28 @@ struct Diagnosis {
     std::vector<std::string> lines;
 };
 
-class Checker {
+class Checker : public Comparisons {
   public:
+    // Comparisons, for the files of one capability (approximation, additive_constant).
+    bool same(const GiNaC::ex& a, const GiNaC::ex& b, double tol) override { return equal(a, b, tol) == Tri::Yes; }
+    bool equation_of_motion(const GiNaC::ex& r, double tol) override {
+        int only = -1;
+        std::string factor;
+        return has_acceleration(r) && euler_lagrange_combination(r, tol, &only, &factor) == Tri::Yes;
+    }
+    std::string latex(const GiNaC::ex& e) override;
+    std::vector<std::string> wrong_terms(const GiNaC::ex& text, const GiNaC::ex& truth, double tol) override {
+        return compare_to(text, truth, tol).lines;
+    }
+
     Checker(const Model& model, const Equations& eq, const Derivation& d, const CheckOptions& options)
         : model_(model),
           eq_(eq),
           d_(d),
           options_(options),
           numbers_(model, ctx_),
-          printer_table_(codegen::symbol_table(model)) {}
+          printer_table_(codegen::symbol_table(model)),
+          hamilton_(model, eq) {}
 
     CheckReport run();
 
@@ -338,7 +361,6 @@ class Checker {
     std::string pair_kind(const GiNaC::ex& t, const GiNaC::ex& u, double tol, int* score);
     /// The factor c making c·truth closest to text group by group; the number of groups that then agree.
     int best_factor(const GiNaC::ex& text, const GiNaC::ex& truth, double tol, GiNaC::ex* c);
-    std::string latex(const GiNaC::ex& e);
 
     // ----- checking
     void collect_parts(const std::vector<FullChain>& chains);
@@ -347,7 +369,9 @@ class Checker {
     /// check_link, with anything GiNaC throws on a strange input turned into a "not comparable" verdict.
     EquationCheck safe_check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
         try {
-            return check_link(c, i, j, bridge);
+            EquationCheck r = check_link(c, i, j, bridge);
+            if (!r.corrected.empty() && !verifying_) verify_correction(c, j, r);
+            return r;
         } catch (const std::exception& e) {
             EquationCheck r;
             r.where = d_.position(c.relation_offsets[j - 1]);
@@ -357,6 +381,15 @@ class Checker {
             return r;
         }
     }
+    /// Parses r.corrected back with the names of its line and checks it (correction_check.hpp); a correction
+    /// that does not agree is withheld, with a note.
+    void verify_correction(const FullChain& c, std::size_t j, EquationCheck& r);
+    /// a ≈ b compared with the Taylor expansion about q = 0 of the coordinates the text calls small (or, when
+    /// `implied`, every coordinate it holds), to the order it keeps (approximation.hpp). False when it does
+    /// not apply (no side is a polynomial in them).
+    bool approximation(std::size_t at, const std::string& left, const std::string& right, const Prepared& a,
+                       const Prepared& b, bool implied, EquationCheck& r);
+    bool verifying_ = false;
     void check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other, double tol,
                     EquationCheck& r);
     /// T (or V) minus the text's other parts of it, when the text defines other parts.
@@ -374,6 +407,21 @@ class Checker {
         }
         if (!any) return std::nullopt;
         return whole - others;
+    }
+    /// `V = -m g l \cos\theta + \text{const}`: agrees (true) when the sides differ by a constant; else
+    /// the constants are dropped from a and b for the other comparisons (false).
+    bool up_to_constant(Prepared& a, Prepared& b, double tol, EquationCheck& r) {
+        if (a.constants.empty() && b.constants.empty()) return false;
+        GiNaC::exmap zero;
+        for (const Prepared* p : {&a, &b})
+            for (const GiNaC::ex& k : p->constants) zero[k] = 0;
+        a.value = a.value.subs(zero);
+        b.value = b.value.subs(zero);
+        if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
+        const int constant_side = a.value.is_zero() && !a.constants.empty()
+                                      ? 0
+                                      : (b.value.is_zero() && !b.constants.empty() ? 1 : -1);
+        return check_additive_constant(a.value, b.value, constant_side, model_, *this, tol, r);
     }
     void check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a, const Prepared& b,
                       double tol, EquationCheck& r);
@@ -396,6 +444,26 @@ class Checker {
     std::vector<GiNaC::ex> motion_;   ///< the equations of motion, = 0
     std::vector<std::pair<GiNaC::ex, std::string>> integrals_of_motion_;
     ExMap<std::vector<Complex>> signatures_;
+    TextDefinitions definitions_;   ///< K = ..., used where the text differentiates K
+    std::size_t current_offset_ = 0;  ///< file offset of the side being prepared (definitions before it apply)
+    void collect_definitions(const std::vector<FullChain>& chains);
+    HamiltonianReading hamilton_;  ///< p_q as variables, H(q, p, t) inside ∂
+    int velocity_h_line_ = 0;       ///< the first line where the text writes H in velocities (0: none)
+    std::size_t velocity_h_at_ = 0;  ///< its file offset
+    /// The reference's value as a correction prints it: in the momenta when the text's side is written in them.
+    std::string printed_value(const Prepared& ref, const PSide& ref_side, const Prepared& text) {
+        const std::string in_velocities = latex(ref.value);
+        std::optional<GiNaC::ex> in_p;
+        if (text.has_momenta && ref.has_momenta) in_p = hamilton_.in_momenta(ref.value_p);
+        if (text.has_momenta && ref_side.side->ok && hamilton_.is_hamiltonian(ref_side.side->value))
+            in_p = hamilton_.hamiltonian();
+        // In the momenta unless that is much longer (an inverse mass matrix GiNaC cannot simplify).
+        if (in_p && expanded_terms(*in_p) <= kMaxExpandedTerms / 10) {
+            const std::string shown = latex(*in_p);
+            if (shown.size() <= 2 * in_velocities.size()) return shown;
+        }
+        return in_velocities;
+    }
 };
 
 // ------------------------------------------------------------------------------------------------ setup
@@ -409,6 +477,8 @@ void Checker::setup_names() {
         add_name("\\ddot{" + c.latex + "}", c.qdd);
     }
     for (const Parameter& p : model_.parameters) add_name(p.latex, p.symbol);
+    // \ell is how many texts typeset a length l (add_name keeps a model's own \ell).
+    if (auto l = ctx_.names.find("l"); l != ctx_.names.end()) add_name("\\ell", l->second);
 
     // Labels for eomgen's quantities, unless the model uses the letter for something of its own.
     add_label("T", eq_.T, "T");
@@ -420,11 +490,17 @@ void Checker::setup_names() {
     add_label("h", eq_.energy, "h");
     for (const char* b : {"H", "h"})
         if (truth_.count(ctx_.names.at(b))) bare_only_.insert(ctx_.names.at(b));
+    std::vector<GiNaC::ex> momentum_labels;  // a model's own p_{q} is not a label: set_labels skips it
     for (std::size_t i = 0; i < model_.dof(); ++i) {
         std::string c = canonical_name(model_.coordinates[i].latex);
         if (c.empty()) c = model_.coordinates[i].latex;
-        add_label("p_{" + c + "}", eq_.momenta[i], "p_{" + c + "}");
+        // The key as the text's p_{\theta_1} reads (a subscript inside a subscript is flattened).
+        std::string key = canonical_name("p_{" + c + "}");
+        if (key.empty()) key = "p_{" + c + "}";
+        add_label(key, eq_.momenta[i], "p_{" + c + "}");
+        momentum_labels.push_back(ctx_.names.at(key));
     }
+    hamilton_.set_labels(momentum_labels, truth_.count(ctx_.names.at("H")) ? ctx_.names.at("H") : GiNaC::ex(0));
     // Declared results ([[results]]): their LaTeX stands for their closed form, before eomgen's own labels
     // (a result written 'T' is the closed form), after the model's coordinates and parameters.
     for (const Result& res : model_.results) {
@@ -484,13 +560,30 @@ void Checker::apply_map(int line) {
 // ------------------------------------------------------------------------------------------- evaluation
 
 GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
-    if (is_ex_the_function(e, ddt)) return time_derivative(resolve_operators(e.op(0)), model_);
+    // A name inside a derivative is its definition in the text, or the derivative cannot be evaluated.
+    if (is_ex_the_function(e, ddt)) {
+        const GiNaC::ex inner =
+            hamilton_.in_velocities(resolve_operators(definitions_.expand(e.op(0), current_offset_)));
+        if (TextDefinitions::has_vector(inner, ctx_)) return ddt(inner);  // kept: vectors are not compared
+        TextDefinitions::require_defined(inner, ctx_, "time derivative");
+        return time_derivative(inner, model_);
+    }
     if (is_ex_the_function(e, pdiff)) {
-        const GiNaC::ex inner = resolve_operators(e.op(0));
+        const GiNaC::ex inner = resolve_operators(definitions_.expand(e.op(0), current_offset_));
         if (!GiNaC::is_a<GiNaC::symbol>(e.op(1)))
             throw std::runtime_error("a derivative with respect to an expression");
+        if (const FreeName* f = ctx_.free_name_of(e.op(1)))
+            throw UndefinedInDerivative(f->name, "a partial derivative with respect to $" + f->name +
+                                                     "$, which is not a coordinate, a velocity or a parameter "
+                                                     "of the model");
+        if (TextDefinitions::has_vector(inner, ctx_)) return pdiff(inner, e.op(1));
+        if (hamilton_.has_hamiltonian(inner)) return hamilton_.derivative(inner, GiNaC::ex_to<GiNaC::symbol>(e.op(1)));
+        TextDefinitions::require_defined(inner, ctx_, "partial derivative");
         return GiNaC::diff(inner, GiNaC::ex_to<GiNaC::symbol>(e.op(1)));
     }
+    if (is_ex_the_function(e, pbracket))
+        return hamilton_.poisson(resolve_operators(definitions_.expand(e.op(0), current_offset_)),
+                                 resolve_operators(definitions_.expand(e.op(1), current_offset_)));
     if (e.nops() == 0) return e;
     struct Each : GiNaC::map_function {
         const Checker* self;
@@ -534,6 +627,13 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
             for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
         }
         for (const GiNaC::ex& sym : symbols) {
+            // The momenta stay variables while the text differentiates (∂H/∂p_θ), and H inside ∂ is H(q, p, t).
+            if (hamilton_.is_momentum(sym) && truth_.count(sym)) {
+                p.has_truth_label = p.has_truth_label || side.value.is_equal(sym);
+                p.has_momenta = true;
+                continue;
+            }
+            if (hamilton_.is_hamiltonian(sym) && !side.value.is_equal(sym)) continue;
             auto t = truth_.find(sym);
             // h and H are common letters (a height): they stand for the energy function only as a whole side.
             if (t != truth_.end() && bare_only_.count(sym) && !side.value.is_equal(sym)) {
@@ -560,7 +660,21 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
             }
         }
         GiNaC::ex v = subs.empty() ? side.value : side.value.subs(subs);
+        current_offset_ = s.base + side.begin;
+        definitions_.take_used();
+        const bool H_inside = hamilton_.has_hamiltonian(v);
+        // A Poisson bracket is eomgen's to compute: the side is a reference, like a label.
+        if (v.has(pbracket(GiNaC::wild(0), GiNaC::wild(1)))) p.has_truth_label = p.has_momenta = true;
         v = resolve_operators(v);
+        for (const std::string& n : definitions_.take_used()) {
+            p.notes.push_back(n);
+            p.from_definition = true;
+        }
+        if (H_inside && !hamilton_.has_hamiltonian(v)) p.has_truth_label = p.has_momenta = true;
+        if (hamilton_.has_hamiltonian(v))  // H outside a derivative, inside an expression: a letter (a height)
+            v = v.subs(ctx_.names.at("H") == ctx_.free_symbol("H", NameKind::Unknown));
+        p.value_p = v;
+        v = hamilton_.in_velocities(v);
         // Every comparison expands or normalizes the side: refuse one too large for that up front.
         if (const double terms = expanded_terms(v); terms > kMaxExpandedTerms) {
             std::ostringstream os;
@@ -587,6 +701,8 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
                 p.vectors.push_back(f);
             else if (f->kind == NameKind::Unit)
                 p.units.push_back(f);
+            else if (is_constant_name(f->name))
+                p.constants.push_back(sym);
             else
                 p.unknown.push_back(f);
         }
@@ -596,6 +712,17 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
         std::sort(p.unknown.begin(), p.unknown.end(), by_name);
         std::sort(p.notes.begin(), p.notes.end());
         p.ok = true;
+    } catch (const UndefinedInDerivative& u) {
+        std::string at;
+        for (const NameUse& use : side.uses)
+            if (use.name == u.name) {
+                at = " (" + where(s.base + use.offset) + ")";
+                break;
+            }
+        std::string why = u.what();
+        const std::string shown = "$" + u.name + "$";
+        if (const std::size_t k = why.find(shown); k != std::string::npos) why.insert(k + shown.size(), at);
+        p.problem = why;
     } catch (const std::exception& e) {
         p.problem = "cannot evaluate " + m(side.source) + ": " + e.what();
     }
@@ -1138,6 +1265,22 @@ int Checker::best_factor(const GiNaC::ex& text, const GiNaC::ex& truth, double t
 
 // ---------------------------------------------------------------------------------------------- checking
 
+void Checker::collect_definitions(const std::vector<FullChain>& chains) {
+    for (const FullChain& c : chains) {
+        if (c.sides.size() < 2 || !c.sides[0].side->ok) continue;
+        const GiNaC::ex head = c.sides[0].side->value;
+        const FreeName* f = ctx_.free_name_of(head);
+        if (!f || f->kind != NameKind::Unknown || is_part(head) || is_constant_name(f->name)) continue;
+        for (std::size_t k = c.sides.size(); k-- > 1;) {
+            const Prepared p = prepare(c.sides[k]);
+            if (!p.comparable() || !p.units.empty() || p.value.has(head)) continue;
+            const std::size_t at = c.sides[k].base + c.sides[k].side->begin;
+            definitions_.add(head, f->name, p.value, at, d_.position(at).line);
+            break;
+        }
+    }
+}
+
 void Checker::collect_parts(const std::vector<FullChain>& chains) {
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2 || !c.sides[0].side->ok) continue;
@@ -1233,8 +1376,75 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     }
     double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
     if (rel == Relation::Approx) tol = std::max(tol, 1e-2);
+    if (up_to_constant(a, b, tol, r)) return r;
+    // \approx, \simeq: the Taylor expansion to the order the text keeps; "= ... for small θ" too, where it
+    // would otherwise disagree.
+    const bool approx = rel == Relation::Approx;
+    if (approx && approximation(rel_at, L.side->source, R.side->source, a, b, true, r)) return r;
     check_values(c, i, j, a, b, tol, r);
+    // ∂H/∂θ after the text wrote H in velocities: the reading it set up (at fixed θ̇) when Hamilton's disagrees.
+    if (r.verdict == Verdict::Disagrees && velocity_h_line_ > 0 && rel_at > velocity_h_at_ &&
+        (hamilton_.has_hamiltonian(L.side->value) || hamilton_.has_hamiltonian(R.side->value))) {
+        hamilton_.set_velocity_reading(true);
+        Prepared va = prepare(L), vb = prepare(R);
+        EquationCheck alt;
+        alt.where = r.where;
+        alt.section = r.section;
+        alt.equation = r.equation;
+        if (va.ok && vb.ok) check_values(c, i, j, va, vb, tol, alt);
+        hamilton_.set_velocity_reading(false);
+        if (alt.verdict == Verdict::Agrees) {
+            alt.notes.push_back("read as the text set it up: H written in velocities (line " +
+                                std::to_string(velocity_h_line_) +
+                                ") and differentiated at fixed velocities; Hamilton's equations take ∂H/∂q at "
+                                "fixed momenta, under which this line does not hold");
+            return alt;
+        }
+    }
+    if (!approx && r.verdict == Verdict::Disagrees) {
+        EquationCheck alt;
+        alt.where = r.where;
+        alt.section = r.section;
+        alt.equation = r.equation;
+        if (approximation(rel_at, L.side->source, R.side->source, a, b, false, alt) && alt.verdict == Verdict::Agrees)
+            return alt;
+    }
     return r;
+}
+
+bool Checker::approximation(std::size_t at, const std::string& left, const std::string& right, const Prepared& a,
+                            const Prepared& b, bool implied, EquationCheck& r) {
+    if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
+    const int ref_side = a.has_truth_label && !a.has_part ? 0 : (b.has_truth_label && !b.has_part ? 1 : -1);
+    return check_approximation(d_, model_, motion_, at, {left, right}, a.value, b.value, ref_side, implied, *this, r);
+}
+
+void Checker::verify_correction(const FullChain& c, std::size_t j, EquationCheck& r) {
+    const std::size_t at = c.relation_offsets[j - 1];
+    const auto saved_names = ctx_.names;
+    const auto saved_free = ctx_.free_names;
+    verifying_ = true;
+    apply_map(d_.position(at).line);
+    std::string why;
+    try {
+        why = correction_problem(r.corrected, ctx_, [&](const Chain& ch, std::size_t a, std::size_t b) {
+            FullChain f;
+            f.section = c.section;
+            f.display = c.display;
+            for (const Side& s : ch.sides) f.sides.push_back({&s, at});
+            f.relations = ch.relations;
+            for (std::size_t off : ch.relation_offsets) f.relation_offsets.push_back(at + off);
+            return safe_check_link(f, a, b, false);
+        });
+    } catch (const std::exception& e) {
+        why = std::string("it could not be checked: ") + e.what();
+    }
+    verifying_ = false;
+    ctx_.names = saved_names;
+    ctx_.free_names = saved_free;
+    if (why.empty()) return;
+    r.notes.push_back("no correction is printed: the one computed does not check (" + why + ")");
+    r.corrected.clear();
 }
 
 std::vector<std::string> Checker::factor_analysis(const GiNaC::ex& a, const GiNaC::ex& b, double tol,
@@ -1558,8 +1768,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         return;
     }
     // 4. It disagrees with what it tries to be.
-    const bool left_ref = a.has_truth_label && !a.has_part;
-    const bool right_ref = b.has_truth_label && !b.has_part;
+    const bool left_ref = (a.has_truth_label || a.from_definition) && !a.has_part;
+    const bool right_ref = !left_ref && (b.has_truth_label || b.from_definition) && !b.has_part;
     if (left_ref || right_ref) {
         const bool left_is_truth = left_ref;
         const PSide& ref = left_is_truth ? L : R;
@@ -1570,11 +1780,18 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             // check.
         } else {
             r.verdict = Verdict::Disagrees;
-            if (r.compared_with.empty()) r.compared_with = "eomgen's value of " + m(ref.side->source);
+            if (r.compared_with.empty())
+                r.compared_with = truth.has_truth_label ? "eomgen's value of " + m(ref.side->source)
+                                                        : m(ref.side->source) + " from the text's definition";
             const Diagnosis dg = compare_to(text.value, truth.value, tol);
             r.difference = dg.difference;
+            // A text in momenta, in velocities: sin² + cos² = 1 may shorten the difference a lot.
+            if (text.has_momenta)
+                if (const std::string s = latex(shorter_trig((text.value - truth.value).expand()));
+                    s.size() < r.difference.size())
+                    r.difference = s;
             r.wrong_terms = dg.lines;
-            r.corrected = ref.side->source + " = " + latex(truth.value);
+            r.corrected = ref.side->source + " = " + printed_value(truth, ref, text);
             return;
         }
     }
@@ -1640,9 +1857,9 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         if (slip_left)
             r.corrected = latex(b.value) + " = " + R.side->source;
         else
-            r.corrected = !ratio.empty()
-                              ? L.side->source + " = " + ratio + " \\left(" + R.side->source + "\\right)"
-                              : L.side->source + " = " + latex(a.value);
+            r.corrected = !scaled_step(L.side->source, ratio, R.side->source).empty()
+                              ? scaled_step(L.side->source, ratio, R.side->source)
+                              : L.side->source + " = " + printed_value(a, L, b);
         return;
     }
     if (has_velocity(r_ex) && !integrals_of_motion_.empty()) {
@@ -1720,9 +1937,10 @@ void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, con
             // c·(d/dt p − ∂L/∂q) when sign·k·X = c·p and −sign·(rest − other side) = c·∂L/∂q.
             const GiNaC::ex p_text = (sign * k * X).expand();
             const GiNaC::ex dLdq_text = (-sign * (rest - other)).expand();
-            const GiNaC::ex p_true = (best_c * eq_.momenta[i]).expand();
-            const GiNaC::ex dLdq_true =
-                (best_c * (time_derivative(eq_.momenta[i], model_) - motion_[i])).expand();
+            // d/dt(c p) is c d/dt(p) only for a constant c: a factor that depends on the state stays outside.
+            const GiNaC::ex c = depends_on_state(best_c) || best_c.has(model_.t) ? GiNaC::ex(1) : best_c;
+            const GiNaC::ex p_true = (c * eq_.momenta[i]).expand();
+            const GiNaC::ex dLdq_true = (c * (time_derivative(eq_.momenta[i], model_) - motion_[i])).expand();
             const std::string pl = m("\\partial L/\\partial \\dot{" + q.latex + "}");
             const std::string ql = m("\\partial L/\\partial " + q.latex);
             if (equal(p_text, p_true, tol) == Tri::Yes) {
@@ -1738,8 +1956,7 @@ void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, con
                 const Diagnosis dq = compare_to(dLdq_text, dLdq_true, tol);
                 for (const std::string& line : dq.lines) out.wrong_terms.push_back("in " + ql + ", " + line);
             }
-            out.corrected = "\\frac{d}{dt}\\left(" + latex(p_true) + "\\right) - \\left(" + latex(dLdq_true) +
-                            "\\right) = 0";
+            out.corrected = lagrange_form(latex(p_true), latex(dLdq_true));
         } catch (...) {
         }
     }
@@ -1823,6 +2040,16 @@ CheckReport Checker::run() {
         MathRow at;
         at.offset = tp.offset;
         if (row_selected(d_, at, selected, whole)) report.problems.push_back({d_.position(tp.offset), tp.message});
+    }
+    collect_definitions(chains);
+    // Where the text first writes H = (an expression in velocities, without momenta).
+    for (const FullChain& c : chains) {
+        if (c.sides.size() < 2 || !c.sides[0].side->ok || !hamilton_.is_hamiltonian(c.sides[0].side->value)) continue;
+        const Prepared p = prepare(c.sides.back());
+        if (!p.comparable() || p.has_momenta || !has_velocity(p.value)) continue;
+        velocity_h_at_ = c.relation_offsets.front();
+        velocity_h_line_ = d_.position(velocity_h_at_).line;
+        break;
     }
     collect_parts(chains);
     for (const FullChain& c : chains) {

@@ -1,6 +1,8 @@
 /** @file derivation.cpp  Finding headings, display and inline math, and the rows of aligned environments. */
 #include "checker/derivation.hpp"
 
+#include "checker/latex_normalize.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <fstream>
@@ -155,7 +157,13 @@ void split_display(const std::string& file, const Block& b, int block, std::vect
         }
         if (c == '{') ++brace;
         if (c == '}' && brace > 0) --brace;
-        if (c == '&' && brace == 0 && envs == 0 && rows_env) s[k] = ' ';
+        if (c == '&' && brace == 0 && envs == 0 && rows_env) {
+            // `&amp;` is the alignment mark of a page written in HTML; `&theta;` is a letter.
+            if (s.compare(k, 5, "&amp;") == 0)
+                blank(s, k, k + 5);
+            else if (!entity_at(s, k))
+                s[k] = ' ';
+        }
     }
     pieces.push_back({start, s.size()});
     int n = 0;
@@ -380,6 +388,7 @@ Derivation parse_derivation(std::string text, std::string path) {
         for (std::size_t k = 0; k < d.sections.size(); ++k)
             if (d.sections[k].begin <= r.offset && r.offset < d.sections[k].end) r.section = int(k);
     }
+    normalize_rows(d);  // equation numbers, HTML's &amp;, displays continued over several rows
     return d;
 }
 

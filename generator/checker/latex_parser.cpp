@@ -1,6 +1,8 @@
 /** @file latex_parser.cpp  Tokenizer, chain splitter and recursive-descent parser for derivation LaTeX. */
 #include "checker/latex_parser.hpp"
 
+#include "checker/latex_normalize.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -11,6 +13,7 @@ namespace eomgen::checker {
 
 REGISTER_FUNCTION(ddt, dummy().latex_name("\\frac{d}{dt}"))
 REGISTER_FUNCTION(pdiff, dummy().latex_name("\\partial"))
+REGISTER_FUNCTION(pbracket, dummy().latex_name("\\{\\}"))
 
 const FreeName* LatexContext::free_name_of(const GiNaC::ex& symbol) const {
     if (!GiNaC::is_a<GiNaC::symbol>(symbol)) return nullptr;
@@ -100,6 +103,22 @@ std::vector<Token> tokenize(std::string_view s) {
         if (c == '~') {
             ++i;
             continue;
+        }
+        // HTML entities, Unicode letters and signs, combining dots (latex_normalize): their LaTeX tokens.
+        if (c >= 0x80 || c == '&' ||
+            (std::isalpha(c) && i + 1 < s.size() && (static_cast<unsigned char>(s[i + 1]) == 0xCC || s[i + 1] == '&'))) {
+            if (const auto sp = spelled_as_latex(s, i)) {
+                for (const std::string& w : sp->tokens) {
+                    const unsigned char w0 = static_cast<unsigned char>(w[0]);
+                    const Tok kind = w.size() > 1 && w0 == '\\' ? Tok::Word
+                                     : std::isalpha(w0)          ? Tok::Letter
+                                     : std::isdigit(w0)          ? Tok::Digit
+                                                                 : Tok::Char;
+                    out.push_back({kind, w, i, sp->length, "", false});
+                }
+                i += sp->length;
+                continue;
+            }
         }
         if (c == '\\') {
             std::size_t j = i + 1;
@@ -393,7 +412,7 @@ class Parser {
             return is_one_of(t->text, {")", "]", "}", ",", ";", "=", "<", ">", "&"}) ||
                    (t->text == "|" && abs_depth_ > 0);
         if (t->kind == Tok::Word)
-            return t->text == "\\right" || t->text == "\\\\" || is_relation_word(t->text) ||
+            return t->text == "\\right" || t->text == "\\}" || t->text == "\\\\" || is_relation_word(t->text) ||
                    is_hard_breaker(t->text) || t->text == "\\end";
         return false;
     }
@@ -626,6 +645,18 @@ class Parser {
         return e;
     }
 
+    /// `\{a, b\}`: a Poisson bracket, evaluated by the checker (it knows the momenta).
+    GiNaC::ex poisson_bracket(std::size_t at) {
+        ++pos_;
+        const GiNaC::ex a = expr();
+        if (!is_char(peek(), ",")) fail(at, "a brace \\{ that is not a Poisson bracket \\{a, b\\} is not read");
+        ++pos_;
+        const GiNaC::ex b = expr();
+        if (!is_word(peek(), "\\}")) fail(at, "missing '\\}' for this '\\{'");
+        ++pos_;
+        return pbracket(a, b);
+    }
+
     GiNaC::ex absolute_value(std::size_t at) {
         ++pos_;
         ++abs_depth_;
@@ -766,6 +797,8 @@ class Parser {
                 ++pos_;
             } else if (is_char(s, "^") && prime_superscript(n)) {
                 continue;
+            } else if (is_char(s, "^") && exponent_before_subscript(n)) {
+                continue;
             } else {
                 break;
             }
@@ -807,6 +840,25 @@ class Parser {
             has_pending_power_ = true;
         }
         pos_ = close + 1;
+        return true;
+    }
+
+    /// At '^': `x^{2}_{1}` (as many editors write x₁²): the exponent comes before the subscript. Leaves the
+    /// exponent in pending_power_ and returns true when a subscript follows it and the name has none yet.
+    bool exponent_before_subscript(const NameParts& n) {
+        if (!n.sub.empty()) return false;
+        std::size_t q = pos_ + 1;
+        while (q < end_ && t_[q].space) ++q;
+        if (q >= end_) return false;
+        const std::size_t after = is_char(&t_[q], "{") ? match_brace(q) + 1 : q + 1;
+        std::size_t u = after;
+        while (u < end_ && t_[u].space) ++u;
+        if (u >= end_ || !is_char(&t_[u], "_")) return false;
+        const std::size_t at = pos_;
+        if (has_pending_power_) fail(at, "double exponent");
+        ++pos_;
+        pending_power_ = superscript(at);
+        has_pending_power_ = true;
         return true;
     }
 
@@ -989,6 +1041,7 @@ class Parser {
         const std::string w = t.text;
         const std::string bare = w.substr(1);
         if (w == "\\left") return left_right(at);
+        if (w == "\\{") return poisson_bracket(at);
         if (w == "\\pi") {
             ++pos_;
             auto it = ctx_.names.find("\\pi");
@@ -1262,11 +1315,11 @@ std::vector<int> depths(const std::vector<Token>& t) {
     for (std::size_t i = 0; i < t.size(); ++i) {
         const Token& k = t[i];
         const bool closes = (k.kind == Tok::Char && (k.text == "}" || k.text == ")" || k.text == "]")) ||
-                            (k.kind == Tok::Word && (k.text == "\\right" || k.text == "\\end"));
+                            (k.kind == Tok::Word && (k.text == "\\right" || k.text == "\\end" || k.text == "\\}"));
         if (closes && depth > 0) --depth;
         d[i] = depth;
         const bool opens = (k.kind == Tok::Char && (k.text == "{" || k.text == "(" || k.text == "[")) ||
-                           (k.kind == Tok::Word && (k.text == "\\left" || k.text == "\\begin"));
+                           (k.kind == Tok::Word && (k.text == "\\left" || k.text == "\\begin" || k.text == "\\{"));
         if (opens) ++depth;
         // \left( and \right): the delimiter token that follows is part of the command.
         if (k.kind == Tok::Word && (k.text == "\\left" || k.text == "\\right") && i + 1 < t.size()) {
@@ -1409,6 +1462,9 @@ std::vector<Chain> parse_math(std::string_view text, LatexContext& context) {
         // Merge a piece without a relation into its neighbour: the breaker was not a separator there.
         std::vector<std::pair<std::size_t, std::size_t>> merged;
         for (const auto& p : pieces) {
+            // Nothing between two breakers (`\qquad\text{or}\qquad`): the breakers are not a formula.
+            if (std::all_of(t.begin() + long(p.first), t.begin() + long(p.second), [](const Token& k) { return k.space; }))
+                continue;
             const bool rel = !relations_in(t, d, p.first, p.second).empty();
             if (!merged.empty() &&
                 (!rel || relations_in(t, d, merged.back().first, merged.back().second).empty()))

@@ -16,6 +16,7 @@ namespace eomgen::checker {
 // they stay in the expression as functions and are evaluated after the labels (T, V, L, ...) are replaced.
 DECLARE_FUNCTION_1P(ddt)    ///< ddt(x): the total time derivative d/dt x (`\frac{d}{dt} x`, `\frac{dx}{dt}`)
 DECLARE_FUNCTION_2P(pdiff)  ///< pdiff(x, y): ∂x/∂y (`\frac{\partial L}{\partial \dot{\theta}}`)
+DECLARE_FUNCTION_2P(pbracket)  ///< pbracket(a, b): the Poisson bracket {a, b} (`\{\theta, p_\theta\}`)
 
 /// What a name the parser did not find among the known names stands for.
 enum class NameKind {

@@ -21,8 +21,14 @@ void add(LatexBlock& b, std::string row, std::string note = "") {
 
 }  // namespace
 
-MultiplierTable multiplier_table(const Model& model, const Equations& eq) {
+MultiplierTable multiplier_table(const Model& model, const Equations& eq, const Hamiltonian* h) {
     MultiplierTable m{codegen::symbol_table(model), {}};
+    for (std::size_t i = 0; h && i < h->p.size(); ++i) {
+        const std::string name = "p_" + model.coordinates[i].name;
+        m.table.info.push_back({codegen::SymbolKind::Constant, int(i + 1), name, name,
+                                "p_{" + model.coordinates[i].latex + "}", ""});
+        m.table.exprs.push_back(h->p[i]);
+    }
     for (std::size_t k = 0; k < eq.constraints.size(); ++k) {
         const std::string& name = eq.constraints[k].name;
         m.lambda.emplace_back("lambda_" + name);
@@ -34,7 +40,8 @@ MultiplierTable multiplier_table(const Model& model, const Equations& eq) {
 }
 
 std::vector<LatexBlock> latex_equations(const Model& model, const Equations& eq) {
-    MultiplierTable mt = multiplier_table(model, eq);
+    const Hamiltonian ham = derive_hamiltonian(model, eq);
+    MultiplierTable mt = multiplier_table(model, eq, &ham);
     codegen::MathPrinter pr(mt.table);
     auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), codegen::MathStyle::Latex); };
     const std::size_t n = model.dof();
@@ -99,6 +106,20 @@ std::vector<LatexBlock> latex_equations(const Model& model, const Equations& eq)
     add(momenta, "h &= " + P(eq.energy));
     for (std::size_t i = 0; i < n; ++i) add(momenta, "p_{" + model.coordinates[i].latex + "} &= " + P(eq.momenta[i]));
     blocks.push_back(std::move(momenta));
+
+    LatexBlock hamilton{"Hamiltonian H(q, p, t) = p q' - L and Hamilton's equations (partial derivatives at fixed p)",
+                        {}, {}};
+    if (ham.symbolic) {
+        add(hamilton, "H &= " + P(ham.H));
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::string& q = model.coordinates[i].latex;
+            add(hamilton, "\\dot{" + q + "} &= \\frac{\\partial H}{\\partial p_{" + q + "}} = " + P(ham.qdot[i]));
+            add(hamilton, "\\dot{p}_{" + q + "} &= -\\frac{\\partial H}{\\partial " + q + "} = " + P(ham.pdot[i]));
+        }
+    } else {
+        add(hamilton, "H &= h, \\quad \\dot q = M^{-1}(p - b)", latex_text(ham.why_not_symbolic));
+    }
+    blocks.push_back(std::move(hamilton));
 
     if (!eq.conserved.empty()) {
         LatexBlock conserved{kConservedBlock, {}, {}};

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "codegen/cpp_emitter.hpp"
+#include "mechanics/hamiltonian.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model.hpp"
 
@@ -17,12 +18,13 @@
 
 namespace eomgen::cli {
 
-/// The model's symbols plus one λ per constraint (lambda_<name>), for printing equations with multipliers.
+/// The model's symbols plus one λ per constraint (lambda_<name>), for printing equations with multipliers,
+/// and the canonical momenta p_<name> of `h` when given, for printing the Hamiltonian.
 struct MultiplierTable {
     codegen::SymbolTable table;
     std::vector<GiNaC::symbol> lambda;
 };
-MultiplierTable multiplier_table(const Model& model, const Equations& eq);
+MultiplierTable multiplier_table(const Model& model, const Equations& eq, const Hamiltonian* h = nullptr);
 
 /// The title of the block that lists the conserved quantities (a report lists them with their reasons instead).
 constexpr const char* kConservedBlock = "conserved quantities";
@@ -37,7 +39,8 @@ struct LatexBlock {
 /**
  * T, V, L; each body's and spring's share; Euler's equations of each rotating body; the constraints, their
  * Jacobian rows A and γ; the Euler–Lagrange equations (with Q − ∂R/∂q̇ + Aᵀλ where forces or constraints
- * act); the mass-matrix form M q̈ = f; h and the momenta; the conserved quantities; declared results and
+ * act); the mass-matrix form M q̈ = f; h and the momenta; the Hamiltonian H(q, p, t) and Hamilton's
+ * equations (mechanics/hamiltonian.hpp; a note instead where M⁻¹ is not formed); the conserved quantities; declared results and
  * outputs. Every expression is printed by MathPrinter in canonical order, expanded.
  */
 std::vector<LatexBlock> latex_equations(const Model& model, const Equations& eq);

@@ -115,7 +115,8 @@ void show_constraints(const eomgen::Model& model, const eomgen::Equations& eq, e
 
 void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ostream& os) {
     using eomgen::codegen::MathStyle;
-    eomgen::cli::MultiplierTable mt = eomgen::cli::multiplier_table(model, eq);
+    const eomgen::Hamiltonian ham = eomgen::derive_hamiltonian(model, eq);
+    eomgen::cli::MultiplierTable mt = eomgen::cli::multiplier_table(model, eq, &ham);
     eomgen::codegen::MathPrinter pr(mt.table);
     auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), MathStyle::Text); };
     os << model.name << ": " << model.title;
@@ -177,6 +178,17 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     for (std::size_t i = 0; i < model.dof(); ++i)
         os << "  p_" << model.coordinates[i].name << " = dL/d" << model.coordinates[i].name << "' = " << P(eq.momenta[i])
            << "\n";
+    os << rule("Hamiltonian  H(q,p,t) = p.q' - L,  Hamilton's equations  q' = dH/dp, p' = -dH/dq (+ Q)");
+    if (ham.symbolic) {
+        os << "  H = " << P(ham.H) << "\n";
+        for (std::size_t i = 0; i < model.dof(); ++i) {
+            const std::string& q = model.coordinates[i].name;
+            os << "  " << q << "' = dH/dp_" << q << " = " << P(ham.qdot[i]) << "\n";
+            os << "  p_" << q << "' = -dH/d" << q << " = " << P(ham.pdot[i]) << "\n";
+        }
+    } else {
+        os << "  H = h with q' = M^-1 (p - b): " << ham.why_not_symbolic << "\n";
+    }
     os << rule("Conserved quantities");
     if (eq.conserved.empty()) os << "  none found\n";
     for (const eomgen::ConservedQuantity& c : eq.conserved) os << "  " << c.name << ": " << c.reason << "\n";

@@ -71,7 +71,11 @@ const std::vector<std::string> kPieces = {"\\frac",
                                           "1",
                                           "\\infty",
                                           "\\sum",
-                                          "0"};
+                                          "0",
+                                          // The LaTeX people publish (latex_normalize, Poisson brackets).
+                                          "&theta;", "&#952;", "&#x3b8", "&amp;", "&", "\xCE\xB8", "\xCC\x87",
+                                          "\xC2\xB2", "\xC2\xBD", "\xE2\x88\x92", "\\{", "\\}", "\\tag{1}",
+                                          "\\quad (1)", "\\text{const}", "p_\\psi", "H", "\\simeq"};
 
 std::string random_formula(std::mt19937& rng, int length) {
     std::uniform_int_distribution<std::size_t> pick(0, kPieces.size() - 1);

@@ -1,0 +1,35 @@
+/** @file additive_constant.cpp  Equal up to a constant, or a constant of the motion. */
+#include "checker/additive_constant.hpp"
+
+#include "mechanics/lagrangian.hpp"
+
+namespace eomgen::checker {
+
+bool check_additive_constant(const GiNaC::ex& a, const GiNaC::ex& b, int constant_side, const Model& model,
+                             Comparisons& cmp, double tol, EquationCheck& r) {
+    const GiNaC::ex diff = a - b;
+    if (constant_side == 0 || constant_side == 1) {
+        const GiNaC::ex rate = time_derivative(diff, model);
+        bool accelerations = false;
+        for (const Coordinate& c : model.coordinates) accelerations = accelerations || rate.has(c.qdd);
+        r.compared_with = "the equations of motion";
+        if (cmp.same(rate, 0, tol) || (accelerations && cmp.equation_of_motion(rate, tol))) {
+            r.verdict = Verdict::Agrees;
+            r.reason = "a constant of the motion: its time derivative vanishes on the equations of motion";
+        } else {
+            r.reason = "said to be constant, but its time derivative does not vanish on the equations of motion "
+                       "(not a constant of this model's motion)";
+        }
+        return true;
+    }
+    std::vector<GiNaC::symbol> state{model.t};
+    for (const Coordinate& q : model.coordinates) state.insert(state.end(), {q.q, q.qd, q.qdd});
+    for (const GiNaC::symbol& x : state)
+        if (!cmp.same(GiNaC::diff(diff, x), 0, tol)) return false;
+    r.verdict = Verdict::Agrees;
+    r.compared_with = "an identity up to an additive constant";
+    r.reason = "the two sides differ by a constant, which the text's constant stands for";
+    return true;
+}
+
+}  // namespace eomgen::checker

@@ -1,0 +1,198 @@
+/** @file approximation.cpp  Taylor expansions about q = 0 to the order the text keeps. */
+#include "checker/approximation.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <optional>
+
+namespace eomgen::checker {
+namespace {
+
+/// The Taylor polynomial of e in ε to `order`, with ε then set to 1; nullopt when it cannot be expanded.
+std::optional<GiNaC::ex> taylor(const GiNaC::ex& e, const GiNaC::symbol& eps, int order) {
+    try {
+        const GiNaC::ex s = e.series(eps == 0, order + 1);
+        GiNaC::ex p = GiNaC::series_to_poly(s);
+        return p.subs(eps == 1).expand();
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
+}
+
+/// The degree in ε of a side that is a polynomial in it, else −1.
+int polynomial_degree(const GiNaC::ex& e, const GiNaC::symbol& eps) {
+    try {
+        const GiNaC::ex x = e.expand();
+        if (!x.is_polynomial(eps)) return -1;
+        return x.degree(eps);
+    } catch (const std::exception&) {
+        return -1;
+    }
+}
+
+std::string lower(std::string s) {
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+}  // namespace
+
+std::string ordinal(int order) {
+    switch (order) {
+        case 1:
+            return "first";
+        case 2:
+            return "second";
+        case 3:
+            return "third";
+        default:
+            return std::to_string(order) + "th";
+    }
+}
+
+std::vector<std::size_t> small_coordinates_in_prose(const Derivation& d, std::size_t at, const Model& model) {
+    const std::string& s = d.text;
+    if (at > s.size()) return {};
+    std::size_t begin = s.rfind("\n\n", at);
+    begin = begin == std::string::npos ? 0 : begin;
+    std::size_t end = s.find("\n\n", at);
+    end = end == std::string::npos ? s.size() : end;
+    const std::string window = lower(s.substr(begin, end - begin));
+    std::vector<std::size_t> out;
+    for (std::size_t k = window.find("small"); k != std::string::npos; k = window.find("small", k + 5)) {
+        const std::string after = window.substr(k + 5, 40);
+        if (after.find("oscillation") != std::string::npos || after.find("angle") != std::string::npos ||
+            after.find("amplitude") != std::string::npos) {
+            for (std::size_t i = 0; i < model.coordinates.size(); ++i) out.push_back(i);
+            break;
+        }
+        for (std::size_t i = 0; i < model.coordinates.size(); ++i) {
+            const Coordinate& c = model.coordinates[i];
+            for (const std::string& spelled : {lower(c.latex), lower(c.name)})
+                if (!spelled.empty() && after.find(spelled) != std::string::npos &&
+                    std::find(out.begin(), out.end(), i) == out.end())
+                    out.push_back(i);
+        }
+    }
+    return out;
+}
+
+ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int reference_side, const Model& model,
+                                    const std::vector<GiNaC::ex>& motion, const std::vector<std::size_t>& small,
+                                    const std::function<bool(const GiNaC::ex&, const GiNaC::ex&)>& same) {
+    ApproxVerdict v;
+    if (small.empty()) return v;
+    const GiNaC::symbol eps("__eps");
+    GiNaC::exmap scale, at_zero;
+    for (std::size_t i : small) {
+        const Coordinate& c = model.coordinates[i];
+        scale[c.q] = eps * c.q;
+        scale[c.qd] = eps * c.qd;
+        scale[c.qdd] = eps * c.qdd;
+        at_zero[c.q] = 0;
+        at_zero[c.qd] = 0;
+    }
+    const GiNaC::ex A = a.subs(scale), B = b.subs(scale);
+    const int k = std::max(polynomial_degree(A, eps), polynomial_degree(B, eps));
+    if (k <= 0 || k > 6) return v;
+    const auto R = taylor(A - B, eps, k);
+    if (!R) return v;
+    v.applies = true;
+    v.order = k;
+    v.text = *R;
+    // The lowest order at which x and y differ (x, y scaled), or 0.
+    auto first_difference = [&](const GiNaC::ex& x, const GiNaC::ex& y) {
+        for (int o = 0; o <= k; ++o) {
+            const auto tx = taylor(x, eps, o), ty = taylor(y, eps, o);
+            if (!tx || !ty || !same(*tx, *ty)) return o;
+        }
+        return 0;
+    };
+    if (same(*R, 0)) {
+        v.agrees = true;
+        return v;
+    }
+    bool accelerations = false;
+    for (const Coordinate& c : model.coordinates) accelerations = accelerations || R->has(c.qdd);
+    if (accelerations) {
+        // c·EL_i to order k, c constant: the ratio of the q̈_i coefficients at q = 0. The equation whose
+        // acceleration the text has, the best match first.
+        for (std::size_t i = 0; i < motion.size(); ++i) {
+            const GiNaC::symbol& qdd = model.coordinates[i].qdd;
+            if (!R->has(qdd)) continue;
+            const GiNaC::ex E = motion[i].subs(scale);
+            const auto Ek = taylor(E, eps, k);
+            if (!Ek) continue;
+            GiNaC::ex c;
+            try {
+                const GiNaC::ex den = GiNaC::diff(*Ek, qdd).subs(at_zero).expand();
+                if (den.is_zero()) continue;
+                c = GiNaC::normal(GiNaC::diff(*R, qdd).subs(at_zero) / den);
+            } catch (const std::exception&) {
+                continue;
+            }
+            const GiNaC::ex ref = (c * *Ek).expand();
+            if (v.equation < 0 || same(*R, ref)) {
+                v.equation = int(i);
+                v.reference = ref;
+                v.wrong_order = first_difference((A - B), c * E);
+            }
+            if (same(*R, ref)) {
+                v.agrees = true;
+                return v;
+            }
+        }
+        return v;
+    }
+    if (reference_side == 0 || reference_side == 1) {
+        const GiNaC::ex ref = reference_side == 0 ? A : B, text = reference_side == 0 ? B : A;
+        const auto rk = taylor(ref, eps, k), tk = taylor(text, eps, k);
+        if (rk && tk) {
+            v.text = *tk;
+            v.reference = *rk;
+            v.wrong_order = first_difference(text, ref);
+        }
+    }
+    return v;
+}
+
+bool check_approximation(const Derivation& d, const Model& model, const std::vector<GiNaC::ex>& motion, std::size_t at,
+                         const std::pair<std::string, std::string>& sources, const GiNaC::ex& a, const GiNaC::ex& b,
+                         int reference_side, bool implied, Comparisons& cmp, EquationCheck& r) {
+    std::vector<std::size_t> small = small_coordinates_in_prose(d, at, model);
+    const std::string said = small.empty() ? "" : " (the text says it is small)";
+    if (small.empty() && implied)  // implied: every coordinate the equation holds
+        for (std::size_t k = 0; k < model.dof(); ++k)
+            if ((a - b).has(model.coordinates[k].q) || (a - b).has(model.coordinates[k].qd)) small.push_back(k);
+    const ApproxVerdict v = compare_approximation(a, b, reference_side, model, motion, small,
+                                                  [&](const GiNaC::ex& x, const GiNaC::ex& y) { return cmp.same(x, y, 1e-9); });
+    if (!v.applies) return false;
+    auto m = [](const std::string& latex) { return "$" + latex + "$"; };
+    std::string vars, point;
+    for (std::size_t k : small) {
+        vars += (vars.empty() ? "" : ", ") + m(model.coordinates[k].latex);
+        point += (point.empty() ? "" : ", ") + model.coordinates[k].latex + " = 0";
+    }
+    const std::string about = " about " + m(point) + said;
+    if (v.agrees || !v.reference.is_zero() || v.equation >= 0)
+        r.compared_with = v.equation >= 0 ? "the Euler–Lagrange equation for " +
+                                                 m(model.coordinates[std::size_t(v.equation)].latex) + ", expanded" + about
+                                           : "the Taylor expansion" + about;
+    if (v.agrees) {
+        r.verdict = Verdict::Agrees;
+        r.reason = "agrees to " + ordinal(v.order) + " order in " + vars;
+        return true;
+    }
+    if (v.reference.is_zero() && v.equation < 0) return false;  // nothing to say what it should be
+    r.verdict = Verdict::Disagrees;
+    r.reason = "disagrees at " + ordinal(std::max(v.wrong_order, 1)) + " order in " + vars +
+               " (the text keeps order " + std::to_string(v.order) + ")";
+    r.difference = cmp.latex((v.text - v.reference).expand());
+    r.wrong_terms = cmp.wrong_terms(v.text, v.reference, 1e-9);
+    r.corrected = v.equation >= 0 ? cmp.latex(v.reference) + " \\approx 0"
+                                  : (reference_side == 0 ? sources.first : sources.second) + " \\approx " +
+                                        cmp.latex(v.reference);
+    return true;
+}
+
+}  // namespace eomgen::checker

@@ -1,0 +1,25 @@
+/** @file comparisons.hpp  What the checker's comparisons offer the files of one capability (approximations,
+ * constants): equality for all values, the equations-of-motion test, eomgen's LaTeX and the wrong terms. */
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <string>
+#include <vector>
+
+namespace eomgen::checker {
+
+class Comparisons {
+  public:
+    virtual ~Comparisons() = default;
+    /// a = b for all values: symbolically, else at random points, within the relative tolerance `tol`.
+    virtual bool same(const GiNaC::ex& a, const GiNaC::ex& b, double tol) = 0;
+    /// r (with accelerations) is a combination Σ c_i EL_i of the model's Euler–Lagrange equations.
+    virtual bool equation_of_motion(const GiNaC::ex& r, double tol) = 0;
+    /// LaTeX by eomgen's canonical printer (symbols in the model's order).
+    virtual std::string latex(const GiNaC::ex& e) = 0;
+    /// The wrong, missing and extra terms of `text` against `truth`, one sentence each.
+    virtual std::vector<std::string> wrong_terms(const GiNaC::ex& text, const GiNaC::ex& truth, double tol) = 0;
+};
+
+}  // namespace eomgen::checker

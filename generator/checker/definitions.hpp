@@ -1,0 +1,69 @@
+/** @file definitions.hpp  Quantities a derivation defines (`K = \frac12 m l^2 \dot\phi^2`) and uses inside
+ * derivatives (`\frac{\partial K}{\partial \dot\phi}`): the definition is differentiated, never the bare
+ * symbol, which would count as a constant and give 0. */
+#pragma once
+
+#include "checker/latex_parser.hpp"
+
+#include <ginac/ginac.h>
+
+#include <cstddef>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace eomgen::checker {
+
+/// A derivative of a name the text does not define and the model does not know: it cannot be evaluated
+/// (taking the name as a constant would make it 0). `name` is the canonical LaTeX name.
+class UndefinedInDerivative : public std::runtime_error {
+  public:
+    UndefinedInDerivative(std::string name_, std::string what)
+        : std::runtime_error(what), name(std::move(name_)) {}
+    std::string name;
+};
+
+/**
+ * The text's definitions, in file order: a free name set equal to an expression the checker can evaluate
+ * (the last comparable side of a chain that starts with the name alone). A later definition of the same name
+ * replaces an earlier one from its place on.
+ */
+class TextDefinitions {
+  public:
+    /// Records that `symbol` (the free name `name`) is `value` from file offset `offset` (line `line`) on.
+    void add(const GiNaC::ex& symbol, const std::string& name, const GiNaC::ex& value, std::size_t offset,
+             int line);
+
+    /// The operand of a derivative at file offset `at`, with the defined names in it replaced by their
+    /// definitions (which may use earlier ones). Records the definitions used (see take_used()).
+    GiNaC::ex expand(const GiNaC::ex& operand, std::size_t at) const;
+
+    /**
+     * Throws UndefinedInDerivative when `operand` (already expanded) holds a free name of `ctx` that is a
+     * scalar without a definition (an additive constant, `\text{const}`, is a constant). `what`
+     * says what the derivative is ("d/dt", "\partial/\partial \theta").
+     */
+    static void require_defined(const GiNaC::ex& operand, const LatexContext& ctx, const std::string& what);
+
+    /// True when `operand` holds a vector name (`\mathbf{L}`): its derivative is left unevaluated, and the
+    /// side is not compared because of the vector.
+    static bool has_vector(const GiNaC::ex& operand, const LatexContext& ctx);
+
+    /// "uses $K$ as the text defines it at line 12", for each definition expand() used since the last call.
+    std::vector<std::string> take_used() const;
+
+    bool empty() const { return defs_.empty(); }
+
+  private:
+    struct Definition {
+        std::string name;
+        GiNaC::ex value;
+        std::size_t offset = 0;
+        int line = 0;
+    };
+    std::map<GiNaC::ex, std::vector<Definition>, GiNaC::ex_is_less> defs_;
+    mutable std::vector<std::string> used_;
+};
+
+}  // namespace eomgen::checker

@@ -1,0 +1,118 @@
+/** @file hamiltonian.cpp  Legendre transform L(q, q̇, t) → H(q, p, t), block by block of the mass matrix. */
+#include "mechanics/hamiltonian.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+namespace eomgen {
+namespace {
+
+/// The blocks of coordinates M couples (connected components of its non-zero entries), in coordinate order.
+std::vector<std::vector<unsigned>> coupled_blocks(const GiNaC::matrix& M, const Model& model) {
+    const unsigned n = M.rows();
+    std::vector<int> block(n, -1);
+    std::vector<std::vector<unsigned>> out;
+    for (unsigned s = 0; s < n; ++s) {
+        if (block[s] >= 0) continue;
+        out.push_back({});
+        std::vector<unsigned> stack{s};
+        block[s] = int(out.size() - 1);
+        while (!stack.empty()) {
+            const unsigned i = stack.back();
+            stack.pop_back();
+            out.back().push_back(i);
+            for (unsigned j = 0; j < n; ++j)
+                if (block[j] < 0 && !is_zero(M(i, j), model)) {
+                    block[j] = block[s];
+                    stack.push_back(j);
+                }
+        }
+        std::sort(out.back().begin(), out.back().end());
+    }
+    return out;
+}
+
+}  // namespace
+
+GiNaC::ex shorter_trig(const GiNaC::ex& e) {
+    const GiNaC::ex w = GiNaC::wild(0);
+    auto length = [](const GiNaC::ex& x) {
+        std::ostringstream os;
+        os << x;
+        return os.str().size();
+    };
+    GiNaC::ex best = e;
+    for (const GiNaC::ex& rule : {GiNaC::ex(GiNaC::pow(GiNaC::cos(w), 2) == 1 - GiNaC::pow(GiNaC::sin(w), 2)),
+                                  GiNaC::ex(GiNaC::pow(GiNaC::sin(w), 2) == 1 - GiNaC::pow(GiNaC::cos(w), 2))}) {
+        try {
+            const GiNaC::ex x = GiNaC::normal(e.subs(rule, GiNaC::subs_options::algebraic));
+            if (length(x) < length(best)) best = x;
+            const GiNaC::ex f = GiNaC::factor(x);  // (I1 + M l²) sin²θ rather than its expansion
+            if (length(f) < length(best)) best = f;
+        } catch (const std::exception&) {
+        }
+    }
+    return best;
+}
+
+Hamiltonian derive_hamiltonian(const Model& model, const Equations& eq) {
+    Hamiltonian h;
+    const unsigned n = unsigned(model.dof());
+    GiNaC::exmap rest;  // q̇ = 0
+    for (const Coordinate& c : model.coordinates) rest[c.qd] = 0;
+    for (const Coordinate& c : model.coordinates)
+        h.p.emplace_back("p_" + c.name, "p_{" + c.latex + "}");
+    h.momenta = eq.momenta;
+    h.M = eq.M;
+    for (unsigned i = 0; i < n; ++i) h.b.push_back(eq.momenta[i].subs(rest).expand());
+    h.L0 = eq.L.subs(rest).expand();
+
+    const std::vector<std::vector<unsigned>> blocks = coupled_blocks(h.M, model);
+    for (const std::vector<unsigned>& blk : blocks)
+        if (blk.size() > 3) {
+            std::string names;
+            for (unsigned i : blk) names += (names.empty() ? "" : ", ") + model.coordinates[i].name;
+            h.why_not_symbolic = "the mass matrix couples " + std::to_string(blk.size()) + " coordinates (" + names +
+                                 "): its inverse is not formed symbolically";
+            return h;
+        }
+    h.Minv = GiNaC::matrix(n, n);
+    for (const std::vector<unsigned>& blk : blocks) {
+        const unsigned k = unsigned(blk.size());
+        GiNaC::matrix sub(k, k);
+        for (unsigned r = 0; r < k; ++r)
+            for (unsigned c = 0; c < k; ++c) sub(r, c) = h.M(blk[r], blk[c]);
+        const GiNaC::matrix inv = sub.inverse();
+        for (unsigned r = 0; r < k; ++r)
+            for (unsigned c = 0; c < k; ++c) h.Minv(blk[r], blk[c]) = shorter_trig(GiNaC::normal(inv(r, c)));
+    }
+    std::vector<GiNaC::ex> shifted(n);  // p − b
+    for (unsigned i = 0; i < n; ++i) shifted[i] = h.p[i] - h.b[i];
+    GiNaC::ex H = -h.L0;
+    for (unsigned i = 0; i < n; ++i) {
+        GiNaC::ex v = 0;
+        for (unsigned j = 0; j < n; ++j) v += h.Minv(i, j) * shifted[j];
+        h.velocities.push_back(v);
+        for (unsigned j = 0; j < n; ++j)
+            if (!h.Minv(i, j).is_zero()) H += h.Minv(i, j) * shifted[i] * shifted[j] / 2;
+    }
+    h.H = H;
+    GiNaC::exmap qdot_of_p;
+    for (unsigned i = 0; i < n; ++i) qdot_of_p[model.coordinates[i].qd] = h.velocities[i];
+    for (unsigned i = 0; i < n; ++i) {
+        h.qdot.push_back(GiNaC::diff(H, h.p[i]));
+        GiNaC::ex pdot = -GiNaC::diff(H, model.coordinates[i].q);
+        if (i < eq.generalized_forces.size()) pdot += eq.generalized_forces[i].subs(qdot_of_p);
+        h.pdot.push_back(pdot);
+    }
+    h.symbolic = true;
+    return h;
+}
+
+GiNaC::ex in_velocities(const GiNaC::ex& e, const Hamiltonian& h) {
+    GiNaC::exmap m;
+    for (std::size_t i = 0; i < h.p.size(); ++i) m[h.p[i]] = h.momenta[i];
+    return e.subs(m);
+}
+
+}  // namespace eomgen

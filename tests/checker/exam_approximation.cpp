@@ -1,0 +1,91 @@
+/** @file exam_approximation.cpp  `\approx`, `\simeq` and "for small θ": compared with the Taylor expansion of
+ * the model's equation (or quantity) about θ = 0, to the order the text keeps. */
+#include "checked_text.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+using eomgen::checker::CheckReport;
+using eomgen::checker::EquationCheck;
+using eomgen::checker::Verdict;
+
+std::string describe(const EquationCheck& e) {
+    std::string s = std::to_string(e.where.line) + ": " + eomgen::checker::verdict_name(e.verdict) + ": " +
+                    e.equation + " [" + e.compared_with + "] " + e.reason;
+    for (const std::string& w : e.wrong_terms) s += "\n  - " + w;
+    return s;
+}
+
+std::string fixture(const std::string& name) {
+    std::ifstream in(std::string(EOMGEN_SOURCE_DIR) + "/tests/checker/fixtures/" + name, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+}  // namespace
+
+TEST_CASE("approximations: the pendulum to first and second order, and the slips", "[checker][approximation]") {
+    const std::string text = fixture("small_oscillations.md");
+    const CheckReport r = eomgen::test::check_text("tests/checker/models/plane_pendulum.toml", text);
+    std::map<int, std::string> planted;
+    {
+        std::istringstream in(text);
+        std::string line;
+        for (int n = 1; std::getline(in, line); ++n)
+            if (const std::size_t at = line.find("% planted["); at != std::string::npos)
+                planted[n] = line.substr(at + 10, line.rfind(']') - at - 10);
+    }
+    REQUIRE(planted.size() == 2);
+    int agree_first = 0, agree_second = 0, found = 0;
+    for (const EquationCheck& e : r.equations) {
+        INFO(describe(e));
+        if (planted.count(e.where.line)) {
+            CHECK(e.verdict == Verdict::Disagrees);
+            CHECK(e.reason.find("disagrees at ") != std::string::npos);
+            std::string all;
+            for (const std::string& w : e.wrong_terms) all += w + "\n";
+            CHECK(all.find(planted.at(e.where.line)) != std::string::npos);
+            CHECK(e.corrected.find("\\approx") != std::string::npos);
+            ++found;
+            continue;
+        }
+        CHECK(e.verdict == Verdict::Agrees);
+        if (e.reason == "agrees to first order in $\\theta$") ++agree_first;
+        if (e.reason == "agrees to second order in $\\theta$") ++agree_second;
+    }
+    CHECK(found == 2);
+    CHECK(agree_first == 4);   // sin θ ≈ θ, the two forms of line 7, and "=" for small angles (line 9)
+    CHECK(agree_second == 1);  // V to second order
+}
+
+TEST_CASE("approximations: an exact equation without 'small' is still exact", "[checker][approximation]") {
+    // θ̈ = −(g/l) θ with no word of small angles: it disagrees with the pendulum, as before.
+    const CheckReport r = eomgen::test::check_text("tests/checker/models/plane_pendulum.toml",
+                                                   "# Exact\n\n$$\\ddot{\\theta} = -\\frac{g}{l}\\theta$$\n");
+    REQUIRE(r.equations.size() == 1);
+    CHECK(r.equations[0].verdict == Verdict::Disagrees);
+}
+
+TEST_CASE("approximations: the double pendulum's small oscillations, two coupled equations", "[checker][approximation]") {
+    // Linearized about θ₁ = θ₂ = 0 (Goldstein §6.4's double pendulum): the θ₁ and θ₂ equations.
+    const CheckReport r = eomgen::test::check_text(
+        "examples/double_pendulum.toml",
+        "For small oscillations:\n"
+        "$$(m_1 + m_2) l_1^2 \\ddot\\theta_1 + m_2 l_1 l_2 \\ddot\\theta_2 + (m_1 + m_2) g l_1 \\theta_1 \\approx 0$$\n"
+        "$$m_2 l_2^2 \\ddot\\theta_2 + m_2 l_1 l_2 \\ddot\\theta_1 + m_2 g l_2 \\theta_2 \\approx 0$$\n"
+        "$$m_2 l_2^2 \\ddot\\theta_2 + m_2 l_1 l_2 \\ddot\\theta_1 + m_2 g l_1 \\theta_2 \\approx 0$$\n");
+    REQUIRE(r.equations.size() == 3);
+    for (std::size_t k = 0; k < 2; ++k) {
+        INFO(describe(r.equations[k]));
+        CHECK(r.equations[k].verdict == Verdict::Agrees);
+        CHECK(r.equations[k].reason.find("first order") != std::string::npos);
+    }
+    INFO(describe(r.equations[2]));
+    CHECK(r.equations[2].verdict == Verdict::Disagrees);  // l_1 where l_2 belongs
+}

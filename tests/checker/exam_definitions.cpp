@@ -1,0 +1,80 @@
+/** @file exam_definitions.cpp  Derivatives of quantities the text defines use the definition; a symbol the
+ * text does not define is never differentiated to 0. */
+#include "checked_text.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+namespace {
+
+using eomgen::checker::EquationCheck;
+using eomgen::checker::Verdict;
+
+const char* const kSpherical = "tests/checker/models/spherical_pendulum.toml";
+
+std::string describe(const EquationCheck& e) {
+    std::string s = std::to_string(e.where.line) + ": " + eomgen::checker::verdict_name(e.verdict) + ": " +
+                    e.equation + " — " + e.reason;
+    for (const std::string& n : e.notes) s += "\n  note: " + n;
+    return s;
+}
+
+bool has_note(const EquationCheck& e, const std::string& part) {
+    for (const std::string& n : e.notes)
+        if (n.find(part) != std::string::npos) return true;
+    return false;
+}
+
+}  // namespace
+
+TEST_CASE("definitions: the derivative of a quantity the text defines uses its definition", "[checker][definitions]") {
+    // The lecture notes: {\mbox K} defined two lines before it is differentiated.
+    const auto r = eomgen::test::check_text(kSpherical,
+                                            "$${\\mbox K} = \\frac{1}{2} m \\ell^2 \\left( \\dot\\theta^2 + \\sin^2\\theta \\, "
+                                            "\\dot\\phi^2 \\right)$$\n"
+                                            "$$\\frac{\\partial {\\mbox K}}{\\partial \\dot{\\phi}} = m l^2 \\sin^2\\theta \\, \\dot\\phi$$\n"
+                                            "$$\\frac{\\partial K}{\\partial \\dot{\\phi}} = m l^2 \\sin\\theta \\, \\dot\\phi$$\n"
+                                            "$$\\frac{d}{dt} \\frac{\\partial K}{\\partial \\dot{\\theta}} = m l^2 \\ddot\\theta$$\n");
+    REQUIRE(r.equations.size() == 4);
+    INFO(describe(r.equations[1]));
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    CHECK(has_note(r.equations[1], "uses $K$ as the text defines it at line 1"));
+    INFO(describe(r.equations[2]));
+    CHECK(r.equations[2].verdict == Verdict::Disagrees);  // sin θ where sin² θ belongs
+    INFO(describe(r.equations[3]));
+    CHECK(r.equations[3].verdict == Verdict::Agrees);
+    // The defining line itself says what it cannot compare: K is not a quantity of the model.
+    CHECK(r.equations[0].verdict == Verdict::NotComparable);
+}
+
+TEST_CASE("definitions: a later definition of the same name applies from its place on", "[checker][definitions]") {
+    const auto r = eomgen::test::check_text(kSpherical, "$$K = m l^2 \\dot\\theta^2$$\n"
+                                                        "$$\\frac{\\partial K}{\\partial \\dot\\theta} = 2 m l^2 \\dot\\theta$$\n"
+                                                        "$$K = m l^2 \\dot\\phi^2$$\n"
+                                                        "$$\\frac{\\partial K}{\\partial \\dot\\theta} = 0$$\n");
+    REQUIRE(r.equations.size() == 4);
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    CHECK(has_note(r.equations[3], "line 3"));
+    CHECK(r.equations[3].verdict == Verdict::Agrees);
+}
+
+TEST_CASE("definitions: an unknown symbol is never differentiated to 0", "[checker][definitions]") {
+    // Before: ∂U/∂θ was 0 (U a constant), so "∂U/∂θ = 0" agreed and the right line disagreed.
+    const auto r = eomgen::test::check_text(kSpherical, "$$\\frac{\\partial U}{\\partial \\theta} = m g l \\sin\\theta$$\n"
+                                                        "$$\\frac{\\partial U}{\\partial \\theta} = 0$$\n"
+                                                        "$$\\frac{d}{dt}\\left(I_0 \\dot\\phi\\right) = 0$$\n"
+                                                        "$$\\frac{\\partial L}{\\partial x} = 0$$\n"
+                                                        "$$\\frac{d}{dt}\\left(\\text{const}\\right) = 0$$\n");
+    REQUIRE(r.equations.size() == 5);
+    for (std::size_t k = 0; k < 4; ++k) {
+        INFO(describe(r.equations[k]));
+        CHECK(r.equations[k].verdict == Verdict::NotComparable);
+    }
+    CHECK(r.equations[0].reason.find("partial derivative of $U$ (1:") != std::string::npos);
+    CHECK(r.equations[1].reason.find("$U$") != std::string::npos);
+    CHECK(r.equations[2].reason.find("time derivative of $I_{0}$") != std::string::npos);
+    CHECK(r.equations[3].reason.find("with respect to $x$") != std::string::npos);
+    // An additive constant is a constant.
+    CHECK(r.equations[4].verdict == Verdict::Agrees);
+}
