@@ -29,6 +29,13 @@ inline std::string csv_field(const std::string& text) {
     return quoted + "\"";
 }
 
+/// A line of CSV: the fields escaped by csv_field(), separated by commas, ended by a newline.
+inline std::string csv_row(const std::vector<std::string>& fields) {
+    std::string line;
+    for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? "," : "") + csv_field(fields[i]);
+    return line + "\n";
+}
+
 /// A number as the CSV writers write it: max_digits10 significant digits, so that it reads back exactly.
 template <class Scalar = double>
 std::string csv_number(const Scalar& value) {
@@ -132,35 +139,6 @@ class CsvWriter {
   private:
     AtomicOutputFile file_;
     std::size_t columns_, n_state_;
-};
-
-/**
- * A CSV table of named columns whose fields are text, each escaped by csv_field() (numbers as csv_number()
- * writes them), e.g. an ensemble's one row per member. Atomic as AtomicOutputFile.
- */
-class CsvTable {
-  public:
-    CsvTable(const std::string& path, const std::vector<std::string>& columns)
-        : file_(path), columns_(columns.size()) {
-        write_row(columns);
-    }
-
-    /// One row of exactly as many fields as there are columns.
-    void write_row(const std::vector<std::string>& fields) {
-        if (fields.size() != columns_)
-            throw std::invalid_argument("CsvTable: row does not match the header of '" + file_.path() + "'");
-        std::ostream& out = file_.stream();
-        for (std::size_t i = 0; i < fields.size(); ++i) out << (i ? "," : "") << csv_field(fields[i]);
-        out << '\n';
-        file_.check();
-    }
-
-    /// Flushes, closes and renames the temporary file over `path`.
-    void commit() { file_.commit(); }
-
-  private:
-    AtomicOutputFile file_;
-    std::size_t columns_;
 };
 
 /**

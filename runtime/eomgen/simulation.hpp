@@ -189,6 +189,18 @@ void write_samples(const Options& o, const typename M::Params& params,
     std::cout << "csv:     " << o.csv << " (" << samples.size() << " rows)\n";
 }
 
+/// Why the file `path` that `option` names cannot be written (its directory is missing, it is a directory),
+/// or "" when nothing says it cannot.
+inline std::string output_path_problem(const std::string& option, const std::string& path) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(path).parent_path();
+    std::error_code ec;
+    if (!dir.empty() && !fs::is_directory(dir, ec))
+        return option + " " + path + ": the directory '" + dir.string() + "' does not exist";
+    if (fs::is_directory(path, ec)) return option + " " + path + ": is a directory";
+    return "";
+}
+
 /// The options' values that no model accepts, refused before anything runs (UsageError, OutputError).
 inline void check_options(const Options& o) {
     auto finite = [](double v) { return std::isfinite(v); };
@@ -207,14 +219,8 @@ inline void check_options(const Options& o) {
             throw UsageError(os.str());
         }
     }
-    if (!o.csv.empty()) {
-        namespace fs = std::filesystem;
-        const fs::path dir = fs::path(o.csv).parent_path();
-        std::error_code ec;
-        if (!dir.empty() && !fs::is_directory(dir, ec))
-            throw OutputError("--csv " + o.csv + ": the directory '" + dir.string() + "' does not exist");
-        if (fs::is_directory(o.csv, ec)) throw OutputError("--csv " + o.csv + ": is a directory");
-    }
+    if (!o.csv.empty())
+        if (const std::string problem = output_path_problem("--csv", o.csv); !problem.empty()) throw OutputError(problem);
 }
 
 /// The parameters after `--set` and the initial state after `--init` (UsageError for an unknown name or value).

@@ -1,0 +1,238 @@
+/** @file ensemble_command.cpp  `eomgen run --sweep/--sample`: members → rows of a CSV table, and its plot. */
+#include "cli/ensemble_command.hpp"
+
+#include "cli/plot.hpp"
+#include "cli/process.hpp"
+#include "eomgen/ensemble.hpp"
+#include "eomgen/model_table.hpp"
+#include "eomgen/output.hpp"
+#include "output/atomic_file.hpp"
+
+#ifdef EOMGEN_HAVE_MPI
+#include "cli/ensemble_mpi.hpp"
+#endif
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+
+namespace eomgen::cli {
+namespace fs = std::filesystem;
+using eomgen::TableModel;
+using eomgen::sim::UsageError;
+
+namespace {
+
+std::string number(double v) { return std::isnan(v) ? "" : eomgen::csv_number(v); }
+
+/// The row of one member: its varied values, then what it gave (ensemble_columns' order).
+std::vector<std::string> row(const eomgen::MemberResult<TableModel>& r, const std::vector<double>& varied,
+                             std::size_t n_state, std::size_t n_outputs) {
+    std::vector<std::string> f{std::to_string(r.index)};
+    for (const double v : varied) f.push_back(number(v));
+    f.push_back(r.ok ? "ok" : "failed");
+    f.push_back(r.ok ? (r.stopped_by.empty() ? "t_end" : r.stopped_by) : "");
+    f.push_back(number(r.t));
+    for (std::size_t i = 0; i < n_state; ++i) f.push_back(r.ok ? number(r.x(Eigen::Index(i))) : "");
+    f.push_back(r.ok ? number(r.energy) : "");
+    for (std::size_t i = 0; i < n_outputs; ++i) f.push_back(r.ok ? number(r.outputs(Eigen::Index(i))) : "");
+    f.push_back(r.error);
+    return f;
+}
+
+/// The unit of a column for the plot's axes: a parameter's or an output's from the model file, s for t.
+std::string unit_of(const Model& model, const std::string& column) {
+    if (column == "t") return "s";
+    for (const Parameter& p : model.parameters)
+        if (p.name == column) return p.unit;
+    for (const DeclaredOutput& o : model.outputs)
+        if (o.name == column) return o.unit;
+    return "";
+}
+
+/// Where an ensemble's rows go: an atomically written file, stdout, or both (a plot's copy and stdout).
+class TableSink {
+  public:
+    TableSink(const std::string& path, bool to_stdout, const std::vector<std::string>& columns)
+        : to_stdout_(to_stdout) {
+        if (!path.empty()) file_.emplace(path);
+        write(eomgen::csv_row(columns));
+    }
+    void write(const std::string& line) {
+        if (file_) file_->write(line);
+        if (to_stdout_) std::cout << line;
+    }
+    void commit() {
+        if (file_) file_->commit();
+        std::cout.flush();
+    }
+
+  private:
+    std::optional<eomgen::output::AtomicFile> file_;
+    bool to_stdout_;
+};
+
+}  // namespace
+
+std::vector<std::string> ensemble_columns(const EnsembleDesign& design, const std::vector<std::string>& states,
+                                          const std::vector<std::string>& outputs) {
+    std::vector<std::string> c{"member"};
+    for (const EnsembleVariable& v : design.variables()) c.push_back(v.is_state ? v.name + "(0)" : v.name);
+    c.insert(c.end(), {"status", "stopped", "t"});
+    c.insert(c.end(), states.begin(), states.end());
+    c.push_back("energy");
+    c.insert(c.end(), outputs.begin(), outputs.end());
+    c.push_back("message");
+    return c;
+}
+
+int run_ensemble(const EnsembleRequest& req) {
+    int rank = 0;
+#ifdef EOMGEN_HAVE_MPI
+    // Every rank reads the same command line and so refuses the same mistakes; rank 0 alone says so.
+    MpiSession mpi;
+    rank = mpi.rank();
+#else
+    if (const char* size = std::getenv("OMPI_COMM_WORLD_SIZE"); size && std::atoi(size) > 1)
+        std::cerr << "eomgen run: warning: this eomgen was built without MPI, so each of the " << size
+                  << " processes runs the whole ensemble\n";
+#endif
+    auto fail = [rank](int code, const std::string& message) {
+        if (rank == 0) std::cerr << "eomgen run: " << message << "\n";
+        return code;
+    };
+    const eomgen::sim::Options& o = req.options;
+    std::vector<std::string> states(TableModel::state_names.begin(), TableModel::state_names.end());
+    std::vector<std::string> outputs(TableModel::output_names.begin(), TableModel::output_names.end());
+    std::optional<EnsembleDesign> design;
+    TableModel::Params base;
+    TableModel::State x0 = TableModel::default_state();
+    std::vector<std::string> columns;
+    std::pair<PlotColumn, PlotColumn> xy;
+    try {
+        const EnsembleNames names{{TableModel::param_names.begin(), TableModel::param_names.end()}, states};
+        design.emplace(req.design, names);
+        if (!o.csv.empty())
+            throw UsageError("--csv writes the samples of one run; an ensemble writes one row per member to --out");
+        eomgen::sim::check_options(o);
+        eomgen::sim::apply_settings<TableModel>(o, base, x0);
+        for (const EnsembleVariable& v : design->variables())
+            for (const std::string& s : v.is_state ? o.init : o.set)
+                if (s.rfind(v.name + "=", 0) == 0)
+                    throw UsageError((v.is_state ? "--init " : "--set ") + s + ": " + v.name +
+                                     " is varied by the ensemble; leave it out of " +
+                                     (v.is_state ? "--init" : "--set"));
+        columns = ensemble_columns(*design, states, outputs);
+        if (!req.plot.empty()) {
+            if (const std::string problem = plot_format_problem(req.plot); !problem.empty()) throw UsageError(problem);
+            if (req.plot_xy.size() > 1) throw UsageError("--plot-xy: an ensemble's plot takes one X,Y");
+            std::string x = columns[1], y = o.until.empty() ? (outputs.empty() ? states[0] : outputs[0]) : "t";
+            if (!req.plot_xy.empty()) {
+                const std::string& spec = req.plot_xy[0];
+                const auto comma = spec.find(',');
+                if (comma == std::string::npos) throw UsageError("--plot-xy " + spec + ": expected X,Y, e.g. theta,t");
+                x = spec.substr(0, comma);
+                y = spec.substr(comma + 1);
+                for (const std::string& name : {x, y})
+                    if (std::find(columns.begin() + 1, columns.end() - 1, name) == columns.end() - 1 ||
+                        name == "status" || name == "stopped")
+                        throw UsageError("--plot-xy " + spec + ": no numeric column '" + name + "'" +
+                                         eomgen::sim::did_you_mean(name, columns) + " (columns: " +
+                                         eomgen::sim::list(columns) + ")");
+            }
+            xy = {{x, unit_of(*req.model, x)}, {y, unit_of(*req.model, y)}};
+        } else if (!req.plot_xy.empty()) {
+            throw UsageError("--plot-xy needs --plot");
+        }
+        (void)eomgen::sim::until_events<TableModel>(o);  // a bad --until is refused before any member runs
+    } catch (const UsageError& e) {
+        return fail(2, e.what());
+    }
+    for (const auto& [option, path] : {std::pair<std::string, std::string>{"--out", req.out}, {"--plot", req.plot}})
+        if (!path.empty())
+            if (const std::string problem = eomgen::sim::output_path_problem(option, path); !problem.empty())
+                return fail(3, problem);
+
+    eomgen::EnsembleOptions options;
+    options.simulation = o;
+    options.simulation.set.clear();
+    options.simulation.init.clear();
+    options.threads = req.threads;
+    auto member = [&](std::size_t i) {
+        eomgen::Member<TableModel> m{base, x0};
+        const std::vector<double> v = design->values(i);
+        for (std::size_t k = 0; k < v.size(); ++k) {
+            const EnsembleVariable& var = design->variables()[k];
+            if (var.is_state)
+                m.x0(var.index) = v[k];
+            else
+                TableModel::set_param(m.params, var.name, v[k]);
+        }
+        return m;
+    };
+
+    // A plot without --out draws from a private temporary copy of the table.
+    std::optional<TempDir> tmp;
+    std::string table_path = req.out;
+    if (!req.plot.empty() && table_path.empty() && rank == 0) {
+        tmp.emplace(fs::temp_directory_path(), "eomgen-ensemble.");
+        table_path = (tmp->path() / "ensemble.csv").string();
+    }
+    const auto start = std::chrono::steady_clock::now();
+    std::size_t failed = 0;
+    try {
+        std::optional<TableSink> table;
+        if (rank == 0) table.emplace(table_path, req.out.empty(), columns);
+        auto sink = [&](const eomgen::MemberResult<TableModel>& r) {
+            failed += r.ok ? 0 : 1;
+            table->write(eomgen::csv_row(row(r, design->values(r.index), states.size(), outputs.size())));
+        };
+#ifdef EOMGEN_HAVE_MPI
+        if (mpi.size() > 1)
+            mpi_ensemble(mpi, design->size(), member, options, sink);
+        else
+#endif
+            eomgen::ensemble<TableModel>(design->size(), member, options, sink);
+        if (table) table->commit();
+    } catch (const UsageError& e) {
+        return fail(2, e.what());
+    } catch (const eomgen::output::WriteError& e) {
+        return fail(3, e.what());
+    }
+    if (rank != 0) return 0;
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // With the table on stdout, the summary goes to stderr.
+    std::ostream& say = req.out.empty() ? std::cerr : std::cout;
+    say << "ensemble: " << design->size() << " members (" << design->describe() << "), " << failed
+        << " failed, on " << eomgen::thread_count(req.threads) << " threads"
+#ifdef EOMGEN_HAVE_MPI
+        << (mpi.size() > 1 ? " in each of " + std::to_string(mpi.size()) + " MPI ranks" : "")
+#endif
+        << ", " << std::to_string(seconds).substr(0, 5) << " s\n";
+    if (!req.out.empty()) say << "table:   " << req.out << "\n";
+    if (!req.plot.empty()) {
+        TablePlotRequest p;
+        p.csv = table_path;
+        p.output = req.plot;
+        p.title = req.model->title.empty() ? req.model->name : req.model->title;
+        p.key = xy.second.name + " against " + xy.first.name + " (" + design->describe() + ")";
+        p.x = xy.first;
+        p.y = xy.second;
+        p.status = "status";
+        p.lines = design->variables().size() == 1 && req.design.sweeps.size() == 1;
+        try {
+            plot_table(p);
+        } catch (const std::runtime_error& e) {
+            return fail(3, e.what());
+        }
+        say << "plot:    " << req.plot << "\n";
+    }
+    return 0;
+}
+
+}  // namespace eomgen::cli
