@@ -208,12 +208,13 @@ int run_ensemble(const EnsembleRequest& req) {
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     // With the table on stdout, the summary goes to stderr.
     std::ostream& say = req.out.empty() ? std::cerr : std::cout;
-    say << "ensemble: " << design->size() << " members (" << design->describe() << "), " << failed
-        << " failed, on " << eomgen::thread_count(req.threads) << " threads"
+    auto threads = [](unsigned n) { return std::to_string(n) + (n == 1 ? " thread" : " threads"); };
+    std::string where = threads(eomgen::thread_count(req.threads));
 #ifdef EOMGEN_HAVE_MPI
-        << (mpi.size() > 1 ? " in each of " + std::to_string(mpi.size()) + " MPI ranks" : "")
+    if (mpi.size() > 1) where = threads(mpi.threads(req.threads)) + " in each of " + std::to_string(mpi.size()) + " MPI ranks";
 #endif
-        << ", " << std::to_string(seconds).substr(0, 5) << " s\n";
+    say << "ensemble: " << design->size() << " members (" << design->describe() << "), " << failed << " failed, on "
+        << where << ", " << std::to_string(seconds).substr(0, 5) << " s\n";
     if (!req.out.empty()) say << "table:   " << req.out << "\n";
     if (!req.plot.empty()) {
         TablePlotRequest p;
