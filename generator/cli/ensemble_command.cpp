@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <sstream>
 
 namespace eomgen::cli {
 namespace fs = std::filesystem;
@@ -213,8 +214,11 @@ int run_ensemble(const EnsembleRequest& req) {
 #ifdef EOMGEN_HAVE_MPI
     if (mpi.size() > 1) where = threads(mpi.threads(req.threads)) + " in each of " + std::to_string(mpi.size()) + " MPI ranks";
 #endif
+    std::ostringstream took;
+    took.precision(3);
+    took << seconds;
     say << "ensemble: " << design->size() << " members (" << design->describe() << "), " << failed << " failed, on "
-        << where << ", " << std::to_string(seconds).substr(0, 5) << " s\n";
+        << where << ", " << took.str() << " s\n";
     if (!req.out.empty()) say << "table:   " << req.out << "\n";
     if (!req.plot.empty()) {
         TablePlotRequest p;
