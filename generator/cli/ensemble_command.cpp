@@ -29,19 +29,20 @@ using eomgen::sim::UsageError;
 
 namespace {
 
-std::string number(double v) { return std::isnan(v) ? "" : eomgen::csv_number(v); }
+using eomgen::csv_number;
 
-/// The row of one member: its varied values, then what it gave (ensemble_columns' order).
+/// The row of one member: its varied values, then what it gave (ensemble_columns' order). Only t may be
+/// unknown (a failure without a time: empty); any other NaN, e.g. an output's, is written as nan.
 std::vector<std::string> row(const eomgen::MemberResult<TableModel>& r, const std::vector<double>& varied,
                              std::size_t n_state, std::size_t n_outputs) {
     std::vector<std::string> f{std::to_string(r.index)};
-    for (const double v : varied) f.push_back(number(v));
+    for (const double v : varied) f.push_back(csv_number(v));
     f.push_back(r.ok ? "ok" : "failed");
     f.push_back(r.ok ? (r.stopped_by.empty() ? "t_end" : r.stopped_by) : "");
-    f.push_back(number(r.t));
-    for (std::size_t i = 0; i < n_state; ++i) f.push_back(r.ok ? number(r.x(Eigen::Index(i))) : "");
-    f.push_back(r.ok ? number(r.energy) : "");
-    for (std::size_t i = 0; i < n_outputs; ++i) f.push_back(r.ok ? number(r.outputs(Eigen::Index(i))) : "");
+    f.push_back(std::isnan(r.t) ? "" : csv_number(r.t));
+    for (std::size_t i = 0; i < n_state; ++i) f.push_back(r.ok ? csv_number(r.x(Eigen::Index(i))) : "");
+    f.push_back(r.ok ? csv_number(r.energy) : "");
+    for (std::size_t i = 0; i < n_outputs; ++i) f.push_back(r.ok ? csv_number(r.outputs(Eigen::Index(i))) : "");
     f.push_back(r.error);
     return f;
 }
@@ -79,6 +80,12 @@ class TableSink {
 };
 
 }  // namespace
+
+bool first_rank() {
+    for (const char* v : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+        if (const char* rank = std::getenv(v)) return std::atoi(rank) == 0;
+    return true;
+}
 
 std::vector<std::string> ensemble_columns(const EnsembleDesign& design, const std::vector<std::string>& states,
                                           const std::vector<std::string>& outputs) {
@@ -221,6 +228,7 @@ int run_ensemble(const EnsembleRequest& req) {
         << where << ", " << took.str() << " s\n";
     if (!req.out.empty()) say << "table:   " << req.out << "\n";
     if (!req.plot.empty()) {
+        if (failed == design->size()) return fail(2, "--plot " + req.plot + ": every member failed, nothing to draw");
         TablePlotRequest p;
         p.csv = table_path;
         p.output = req.plot;

@@ -30,6 +30,10 @@ struct EnsembleRequest {
 std::vector<std::string> ensemble_columns(const EnsembleDesign& design, const std::vector<std::string>& states,
                                           const std::vector<std::string>& outputs);
 
+/// False in a rank other than 0 of an MPI job (its launcher's OMPI_COMM_WORLD_RANK, PMI_RANK or PMIX_RANK),
+/// so that a mistake every rank finds is said once.
+bool first_rank();
+
 /**
  * Runs the ensemble with the model bound to TableModel (TableModel::bind). Returns 0 when the table is
  * written (members that failed are rows that say so), 2 for a bad option (the message on stderr), 3 when

@@ -144,7 +144,7 @@ int RunCommand::run_model() {
         try {
             (void)EnsembleDesign(design_, names);
         } catch (const eomgen::sim::UsageError& e) {
-            std::cerr << "eomgen run: " << e.what() << "\n";
+            if (first_rank()) std::cerr << "eomgen run: " << e.what() << "\n";
             return 2;
         }
     }
