@@ -11,6 +11,9 @@
 #ifdef EOMGEN_HAVE_MPI
 #include "cli/ensemble_mpi.hpp"
 #endif
+#ifdef EOMGEN_HAVE_HDF5
+#include "cli/ensemble_hdf5.hpp"
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -57,26 +60,41 @@ std::string unit_of(const Model& model, const std::string& column) {
     return "";
 }
 
-/// Where an ensemble's rows go: an atomically written file, stdout, or both (a plot's copy and stdout).
+bool is_hdf5(const std::string& path) { return fs::path(path).extension() == ".h5"; }
+
+/// Where an ensemble's rows go: a CSV file written atomically, stdout, or both (a plot's copy and stdout),
+/// and an HDF5 file (--out FILE.h5) beside them.
 class TableSink {
   public:
-    TableSink(const std::string& path, bool to_stdout, const std::vector<std::string>& columns)
-        : to_stdout_(to_stdout) {
-        if (!path.empty()) file_.emplace(path);
-        write(eomgen::csv_row(columns));
+    TableSink(const std::string& csv, bool to_stdout, const std::vector<std::string>& columns) : to_stdout_(to_stdout) {
+        if (!csv.empty()) file_.emplace(csv);
+        write(columns);  // the CSV's header; an HDF5 table, added after, names its datasets instead
     }
-    void write(const std::string& line) {
+#ifdef EOMGEN_HAVE_HDF5
+    void also_hdf5(Hdf5Table table) { hdf5_.emplace(std::move(table)); }
+#endif
+    void write(const std::vector<std::string>& fields) {
+        const std::string line = eomgen::csv_row(fields);
         if (file_) file_->write(line);
         if (to_stdout_) std::cout << line;
+#ifdef EOMGEN_HAVE_HDF5
+        if (hdf5_) hdf5_->add(fields);
+#endif
     }
     void commit() {
         if (file_) file_->commit();
+#ifdef EOMGEN_HAVE_HDF5
+        if (hdf5_) hdf5_->commit();
+#endif
         std::cout.flush();
     }
 
   private:
     std::optional<eomgen::output::AtomicFile> file_;
     bool to_stdout_;
+#ifdef EOMGEN_HAVE_HDF5
+    std::optional<Hdf5Table> hdf5_;
+#endif
 };
 
 }  // namespace
@@ -136,6 +154,10 @@ int run_ensemble(const EnsembleRequest& req) {
                                      " is varied by the ensemble; leave it out of " +
                                      (v.is_state ? "--init" : "--set"));
         columns = ensemble_columns(*design, states, outputs);
+#ifndef EOMGEN_HAVE_HDF5
+        if (is_hdf5(req.out))
+            throw UsageError("--out " + req.out + ": this eomgen was built without HDF5 (libhdf5-dev); write a .csv");
+#endif
         if (!req.plot.empty()) {
             if (const std::string problem = plot_format_problem(req.plot); !problem.empty()) throw UsageError(problem);
             if (req.plot_xy.size() > 1) throw UsageError("--plot-xy: an ensemble's plot takes one X,Y");
@@ -186,7 +208,7 @@ int run_ensemble(const EnsembleRequest& req) {
 
     // A plot without --out draws from a private temporary copy of the table.
     std::optional<TempDir> tmp;
-    std::string table_path = req.out;
+    std::string table_path = is_hdf5(req.out) ? "" : req.out;  // the CSV
     if (!req.plot.empty() && table_path.empty() && rank == 0) {
         tmp.emplace(fs::temp_directory_path(), "eomgen-ensemble.");
         table_path = (tmp->path() / "ensemble.csv").string();
@@ -196,9 +218,39 @@ int run_ensemble(const EnsembleRequest& req) {
     try {
         std::optional<TableSink> table;
         if (rank == 0) table.emplace(table_path, req.out.empty(), columns);
+#ifdef EOMGEN_HAVE_HDF5
+        if (table && is_hdf5(req.out)) {
+            std::vector<bool> numeric;
+            for (const std::string& c : columns) numeric.push_back(c != "status" && c != "stopped" && c != "message");
+            std::string sets, inits, varied;
+            for (const std::string& v : o.set) sets += (sets.empty() ? "" : " ") + v;
+            for (const std::string& v : o.init) inits += (inits.empty() ? "" : " ") + v;
+            for (const std::string& v : req.design.sweeps) varied += (varied.empty() ? "--sweep " : " --sweep ") + v;
+            if (req.design.sample >= 0) varied = "--sample " + std::to_string(req.design.sample);
+            for (const std::string& v : req.design.dists) varied += " --dist " + v;
+            if (req.design.sample >= 0) varied += " --seed " + std::to_string(req.design.seed);
+            table->also_hdf5(Hdf5Table(req.out, columns, numeric,
+                                       {{"eomgen_version", EOMGEN_VERSION},
+                                        {"model", req.model->name},
+                                        {"model_file", req.model_path},
+                                        {"model_hash", req.model_hash},
+                                        {"design", design->describe()},
+                                        {"varied", varied},
+                                        {"members", std::to_string(design->size())},
+                                        {"method", o.method},
+                                        {"rtol", csv_number(o.rtol)},
+                                        {"atol", csv_number(o.atol)},
+                                        {"dt", csv_number(o.dt)},
+                                        {"t_end", csv_number(o.t_end)},
+                                        {"until", o.until},
+                                        {"max_steps", std::to_string(o.max_steps)},
+                                        {"set", sets},
+                                        {"init", inits}}));
+        }
+#endif
         auto sink = [&](const eomgen::MemberResult<TableModel>& r) {
             failed += r.ok ? 0 : 1;
-            table->write(eomgen::csv_row(row(r, design->values(r.index), states.size(), outputs.size())));
+            table->write(row(r, design->values(r.index), states.size(), outputs.size()));
         };
 #ifdef EOMGEN_HAVE_MPI
         if (mpi.size() > 1)

@@ -19,7 +19,8 @@ struct EnsembleRequest {
     eomgen::sim::Options options;   ///< every member's: --set and --init are the defaults the design varies
     EnsembleDesign::Request design;
     unsigned threads = 0;           ///< 0: every core
-    std::string out;                ///< the table's CSV, "" for stdout
+    std::string out;                ///< the table: FILE.csv, FILE.h5 (HDF5, where built with it), "" for stdout
+    std::string model_path, model_hash;  ///< recorded in an HDF5 table's metadata
     std::string plot;               ///< FILE.png or FILE.svg, or ""
     std::vector<std::string> plot_xy;  ///< at most one X,Y: the columns plotted (default: the first varied one, t)
     bool progress = false;

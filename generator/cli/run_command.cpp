@@ -173,7 +173,8 @@ int RunCommand::run_model() {
         }
         progress("integrating the ensemble");
         eomgen::TableModel::bind(*compiled.table);
-        EnsembleRequest e{&model, options_, design_, threads_, out_, plot_, plot_xy_, show_progress};
+        EnsembleRequest e{&model, options_, design_, threads_, out_, model_path_, text_hash(text), plot_, plot_xy_,
+                          show_progress};
         e.options.model = model.name;
         return run_ensemble(e);
     }

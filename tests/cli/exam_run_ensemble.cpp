@@ -5,7 +5,13 @@
 
 #include <catch2/catch.hpp>
 
+#ifdef EOMGEN_HAVE_HDF5
+#include <hdf5.h>
+#endif
+
+#include <cctype>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -22,10 +28,15 @@ const std::string kDoor = std::string(EOMGEN_SOURCE_DIR) + "/models/door.toml";
 const std::string kPendulum = std::string(EOMGEN_SOURCE_DIR) + "/models/pendulum.toml";
 const double kPi = std::acos(-1.0);
 
+/// eomgen run with `args`: its log in a directory of the running test case's own (ctest runs the cases in
+/// parallel), the compiled model in one cache for all (the cache is safe for concurrent runs).
 Result eomgen(std::vector<std::string> args) {
     args.insert(args.begin(), "run");
     args.push_back("--quiet");
-    return run_eomgen(kWork, args);
+    std::string name = Catch::getResultCapture().getCurrentTestName();
+    for (char& c : name)
+        if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+    return run_eomgen(kWork / "cases" / name.substr(0, 80), args, {{"XDG_CACHE_HOME", (kWork / "cache").string()}});
 }
 
 /// A CSV table as RFC 4180 reads it (quoted fields may hold commas and doubled quotes).
@@ -235,3 +246,113 @@ TEST_CASE("run --sweep: mistakes on the command line are exit 2 with what is wro
     REQUIRE(r.code == 3);
     REQUIRE(r.output.find("does not exist") != std::string::npos);
 }
+
+#ifdef EOMGEN_HAVE_HDF5
+namespace {
+
+/// /ensemble/<name> of an HDF5 table: its numbers (empty when it holds text) or its texts.
+struct Column {
+    std::vector<double> numbers;
+    std::vector<std::string> texts;
+};
+
+std::vector<std::string> read_texts(hid_t object, bool attribute) {
+    const hid_t space = attribute ? H5Aget_space(object) : H5Dget_space(object);
+    const hssize_t n = H5Sget_simple_extent_npoints(space);
+    std::vector<char*> p(std::size_t(std::max<hssize_t>(n, 0)));
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8);  // as written: HDF5 does not convert between character sets
+    REQUIRE((attribute ? H5Aread(object, type, p.data()) : H5Dread(object, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, p.data())) >= 0);
+    std::vector<std::string> out(p.begin(), p.end());
+    H5Dvlen_reclaim(type, space, H5P_DEFAULT, p.data());
+    H5Tclose(type);
+    H5Sclose(space);
+    return out;
+}
+
+Column read_column(hid_t group, const std::string& name) {
+    const hid_t d = H5Dopen2(group, name.c_str(), H5P_DEFAULT);
+    REQUIRE(d >= 0);
+    Column c;
+    const hid_t type = H5Dget_type(d);
+    if (H5Tget_class(type) == H5T_STRING) {
+        c.texts = read_texts(d, false);
+    } else {
+        const hid_t space = H5Dget_space(d);
+        c.numbers.resize(std::size_t(H5Sget_simple_extent_npoints(space)));
+        REQUIRE(H5Dread(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, c.numbers.data()) >= 0);
+        H5Sclose(space);
+    }
+    H5Tclose(type);
+    H5Dclose(d);
+    return c;
+}
+
+std::string read_attribute(hid_t group, const std::string& name) {
+    const hid_t a = H5Aopen(group, name.c_str(), H5P_DEFAULT);
+    REQUIRE(a >= 0);
+    const std::vector<std::string> v = read_texts(a, true);
+    H5Aclose(a);
+    REQUIRE(v.size() == 1);
+    return v[0];
+}
+
+}  // namespace
+
+TEST_CASE("run --out FILE.h5: the CSV table's columns as HDF5 datasets, with the run's metadata", "[cli][ensemble][hdf5]") {
+    const std::vector<std::string> args =
+        with(kClosing, {"--sweep", "theta=0.1:1.5:7", "--sweep", "w=0.9,0", "--threads", "2", "--out"});
+    const fs::path csv = kWork / "h5.csv", h5 = kWork / "table.h5";
+    REQUIRE(eomgen(with(args, {csv.string()})).code == 0);
+    fs::remove(h5);
+    const Result r = eomgen(with(args, {h5.string()}));
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const auto table = read_table(csv);  // 14 members, 7 failed (w = 0: M singular)
+    const std::vector<std::string> header = read_csv(csv)[0];
+
+    const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    REQUIRE(file >= 0);
+    const hid_t group = H5Gopen2(file, "ensemble", H5P_DEFAULT);
+    REQUIRE(group >= 0);
+    const hid_t columns = H5Aopen(group, "columns", H5P_DEFAULT);
+    REQUIRE(read_texts(columns, true) == header);
+    H5Aclose(columns);
+    for (const std::string& name : header) {
+        INFO("column " << name);
+        const Column c = read_column(group, name);
+        const bool text = name == "status" || name == "stopped" || name == "message";
+        REQUIRE((text ? c.texts.size() : c.numbers.size()) == table.size());
+        for (std::size_t i = 0; i < table.size(); ++i) {
+            const std::string& field = table[i].at(name);
+            if (text) {
+                REQUIRE(c.texts[i] == field);
+            } else if (field.empty()) {
+                REQUIRE(std::isnan(c.numbers[i]));
+            } else {
+                const double v = std::stod(field);  // the same double, bit for bit
+                REQUIRE(std::memcmp(&v, &c.numbers[i], sizeof v) == 0);
+            }
+        }
+    }
+    REQUIRE(read_attribute(group, "model") == "door");
+    REQUIRE(read_attribute(group, "members") == "14");
+    REQUIRE(read_attribute(group, "design") == "grid 7 x 2 over theta, w");
+    REQUIRE(read_attribute(group, "varied") == "--sweep theta=0.1:1.5:7 --sweep w=0.9,0");
+    REQUIRE(read_attribute(group, "until") == "psi=-pi/2");
+    REQUIRE(read_attribute(group, "rtol") == "9.9999999999999998e-13");
+    REQUIRE(read_attribute(group, "model_hash").size() == 32);
+    REQUIRE_FALSE(read_attribute(group, "eomgen_version").empty());
+    H5Gclose(group);
+    H5Fclose(file);
+    // Nothing is left beside it.
+    for (const auto& e : fs::directory_iterator(kWork)) REQUIRE(e.path().string().find("table.h5.tmp") == std::string::npos);
+}
+#else
+TEST_CASE("run --out FILE.h5 without HDF5 in this eomgen is refused with exit 2", "[cli][ensemble][hdf5]") {
+    const Result r = eomgen({kDoor, "--sweep", "theta=1,2", "--out", (kWork / "x.h5").string()});
+    REQUIRE(r.code == 2);
+    REQUIRE(r.output.find("built without HDF5") != std::string::npos);
+}
+#endif
