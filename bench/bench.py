@@ -2,11 +2,12 @@
 """The benchmark run behind bench/run.sh: eomgen against SymPy and Boost.Odeint, in one run.
 
 Usage: bench.py --build-dir DIR [--smoke] [--no-build] [--sympy-cap SECONDS] [--out-md FILE] [--out-png FILE]
+       bench.py --build-dir DIR --only integrators [--smoke]   (section 5b on stdout, in a minute; docs/ untouched)
 
 Items (issue 6): 1 generation time (eomgen CLI vs SymPy LagrangesMethod + cse + ccode; eomgen alone to n = 30),
 2 operation counts (one counter, bench/op_count.py, for both), 3 right-hand-side time (bench/time_rhs),
 4 compile time of each generated header at -O2, 5 work-precision against odeint (bench/time_integrators),
-6 peak memory of generation at n = 30. Writes the measured part of docs/benchmarks.md (between the
+5b DOP853 against Dormand–Prince 5(4) (issue 15; the same program), 6 peak memory of generation at n = 30. Writes the measured part of docs/benchmarks.md (between the
 MEASURED markers; the rest of the file is kept) and docs/benchmarks.png. --smoke: tiny sizes, output to
 DIR/bench_smoke/, nothing asserted about times. Needs python3 only; SymPy is optional (its parts are
 skipped with a message when it is missing).
@@ -231,6 +232,52 @@ def integrators(cfg, smoke):
     return by, p.stderr.strip()
 
 
+HIGH_ORDER_ERRORS = [1e-6, 1e-8, 1e-10, 1e-12, 1e-13, 1e-14]
+
+
+def high_order_md(by):
+    """Section 5b: DOP853 against Dormand–Prince 5(4) on the same problems and driver (issue 15), as lines."""
+    L = []
+    a = L.append
+    a("## 5b. High order: DOP853 against Dormand–Prince 5(4) (issue 15)")
+    a("")
+    a("`bench/time_integrators` as in section 5, eomgen's two adaptive steppers through the same driver "
+      "(`eomgen::integrate_with<Dopri5>` and `<Dop853>`: Hairer's defaults each, atol = rtol; the door's tolerances "
+      "go down to 1e-16). DOP853's dense output costs three more evaluations on the step where the door's event "
+      "falls, counted. A cell: the cheapest run from which on every tighter tolerance also reaches the error, "
+      "RHS evaluations (µs); the ratios are Dormand–Prince 5(4) over DOP853, of evaluations and of time.")
+    a("")
+    a("| error reached | door: dopri5 | door: dop853 | evals ratio | time ratio | pendulum: dopri5 | pendulum: dop853 "
+      "| evals ratio | time ratio |")
+    a("|---|---|---|---|---|---|---|---|---|")
+
+    def cells(problem, t):
+        r5 = to_reach(by.get((problem, "eomgen_dopri5"), []), t)
+        r8 = to_reach(by.get((problem, "eomgen_dop853"), []), t)
+        c = [f"{r['rhs_evals']} ({r['seconds'] * 1e6:.0f})" if r else "not reached" for r in (r5, r8)]
+        if r5 and r8:
+            c += [f"{r5['rhs_evals'] / r8['rhs_evals']:.2f}", f"{r5['seconds'] / r8['seconds']:.2f}"]
+        else:
+            c += ["–", "–"]
+        return c
+
+    for t in HIGH_ORDER_ERRORS:
+        a(f"| {t:.0e} | " + " | ".join(cells("door", t) + cells("pendulum", t)) + " |")
+    a("")
+    r5 = to_reach(by.get(("door", "eomgen_dopri5"), []), 1e-14)
+    r8 = to_reach(by.get(("door", "eomgen_dop853"), []), 1e-14)
+    if r5 and r8:
+        ev, tm = r5["rhs_evals"] / r8["rhs_evals"], r5["seconds"] / r8["seconds"]
+        a(f"Target (issue 15): the door's closing time to 1e-14 relative in double at least 3× cheaper than "
+          f"Dormand–Prince 5(4): {r5['rhs_evals']} / {r8['rhs_evals']} = **{ev:.2f}×** fewer evaluations, "
+          f"{r5['seconds'] * 1e6:.1f} / {r8['seconds'] * 1e6:.1f} µs = **{tm:.2f}×** less time: "
+          f"{verdict(min(ev, tm) >= 3)}.")
+    else:
+        a("Target (issue 15): the door's closing time to 1e-14 at least 3× cheaper than Dormand–Prince 5(4): "
+          "not reached by both in this run.")
+    return L
+
+
 # ---- 7. eomgen run: first run, cached re-run, integration through the table ---------------------------------
 
 RUN_MODELS = [("examples/bead_on_hoop.toml", None), ("models/pendulum_5_20.toml", "pendulum_5_20"),
@@ -345,6 +392,7 @@ set xlabel "RHS evaluations"
 set ylabel "relative error of the closing time"
 set title "5. Work-precision: door closing time"
 plot "{d}/wp_door_eomgen_dopri5.dat" u 1:2 w lp pt 7 t "eomgen Dopri5 (+ event on dense output)", \\
+     "{d}/wp_door_eomgen_dop853.dat" u 1:2 w lp pt 9 t "eomgen Dop853 (+ event on dense output)", \\
      "{d}/wp_door_odeint_dense.dat" u 1:2 w lp pt 5 t "odeint runge_kutta_dopri5 (dense output)"
 unset multiplot
 """
@@ -572,6 +620,9 @@ def report(command, mach, gen, rods, sym, ops, rhs, agree, comp, by, ref_check, 
         a(f"| {t:.0e} | " + " | ".join(cells) + f" | {ratio} |")
     a("")
 
+    L.extend(high_order_md(by))
+    a("")
+
     # 6. memory
     a("## 6. Peak memory of generation")
     a("")
@@ -630,8 +681,20 @@ def main():
     ap.add_argument("--out-png")
     ap.add_argument("--render-only", metavar="RESULTS_JSON",
                     help="rewrite the report and plot from a finished run's results.json, measuring nothing")
+    ap.add_argument("--only", choices=["integrators"],
+                    help="run only bench/time_integrators and print its sections (5, 5b) on stdout; docs/ untouched")
     args = ap.parse_args()
     args.build_dir = os.path.abspath(args.build_dir)
+    if args.only == "integrators":
+        with open(os.path.join(args.build_dir, "bench", "bench_config.json")) as fh:
+            cfg = json.load(fh)
+        mach = machine(cfg)
+        by, ref_check = integrators(cfg, args.smoke)
+        print(f"Measured by `python3 bench/bench.py --only integrators{' --smoke' if args.smoke else ''}` on "
+              f"{mach['date']}: {mach['cpu']}, {mach['cores']} cores, {mach['compiler']}; load average (1 min) "
+              f"{mach['load'][0]:.2f} at the start, {os.getloadavg()[0]:.2f} at the end.\n")
+        print("\n".join(high_order_md(by)))
+        return
     if args.render_only:
         with open(args.render_only) as fh:
             results = json.load(fh)

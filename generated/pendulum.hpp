@@ -177,6 +177,34 @@ struct Model {
         static_cast<void>(out_);
     }
 
+    /// Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq = 0 about an equilibrium.
+    static void stiffness(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& K_) {
+        static_cast<void>(t);
+        using std::cos;
+        const Scalar m = p_.m;
+        const Scalar l = p_.l;
+        const Scalar g = p_.g;
+        const Scalar phi = q_(0);
+        const Scalar cos_phi = cos(phi);
+        K_(0, 0) = m*l*g*cos_phi;
+    }
+
+    /// Damping about rest, C: the symmetric part of D = dbeta_i/dq_j - dbeta_j/dq_i - dQ_i/dq'_j at q' = 0 (beta = dL/dq' at q' = 0).
+    static void damping(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& C_) {
+        static_cast<void>(t);
+        static_cast<void>(q_);
+        static_cast<void>(p_);
+        C_(0, 0) = Scalar(0);
+    }
+
+    /// Gyroscopic matrix about rest, G: the skew part of D (does no work).
+    static void gyroscopic(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& G_) {
+        static_cast<void>(t);
+        static_cast<void>(q_);
+        static_cast<void>(p_);
+        G_(0, 0) = Scalar(0);
+    }
+
     /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.
     static void rhs(const Scalar& t, const State& x_, const Params& p_, State& xdot_) {
         const Config q_ = x_.template head<nq>();

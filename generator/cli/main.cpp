@@ -204,6 +204,8 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
             if (!o.description.empty()) os << "    " << o.description << "\n";
         }
     }
+    os << rule("Equilibria and small oscillations  (with the parameters' values; eomgen modes for M0, K0, shapes)");
+    os << eomgen::cli::modes_show_section(model, eq);
     if (!eq.warnings.empty()) {
         os << rule("Warnings");
         for (const std::string& w : eq.warnings) os << "  " << w << "\n";
@@ -213,6 +215,7 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
 }  // namespace
 
 int main(int argc, char** argv) {
+    eomgen::output::guard_runtime_temporaries();  // the CSVs of run and report, as AtomicFile's own files
     CLI::App app{"eomgen: equations of motion from a Lagrangian, as fast C++.\n"
                  "Exit codes: 0 ok, 1 model error (file:line:col: message), 2 usage (run: or the simulation failed),\n"
                  "3 file I/O or cache, 4 the C++ compiler is missing or failed (run, report), 5 check: a disagreement."};

@@ -83,6 +83,11 @@ std::string format_text(const Model& model, const ModesResult& r, Printer& p) {
         os << "\n";
     }
     os << "V_eff = " << p.text(r.V_eff) << "\n";
+    if (!r.constraints.empty()) {
+        os << "on the constraints:";
+        for (const std::string& c : r.constraints) os << " " << c << " = 0;";
+        os << " the modes are those of the motion on them\n";
+    }
     if (r.equilibria.empty()) os << "\nno equilibrium found\n";
     for (std::size_t k = 0; k < r.equilibria.size(); ++k) {
         const Equilibrium& e = r.equilibria[k];
@@ -93,7 +98,11 @@ std::string format_text(const Model& model, const ModesResult& r, Printer& p) {
         }
         os << "\n  " << stability_name(e.stability);
         if (e.stability == Stability::Unstable) os << ": perturbations grow as exp(" << number(e.growth_rate) << " t)";
-        os << "\n  M0 = " << matrix_text(e.M) << "\n  K0 = " << matrix_text(e.K) << "\n";
+        for (std::size_t c = 0; c < e.multipliers.size(); ++c)
+            os << "\n  multiplier lambda_" << r.constraints[c] << " = " << number(e.multipliers[c]);
+        os << "\n  M0 = " << matrix_text(e.M) << "\n  K0 = " << matrix_text(e.K)
+           << (e.multipliers.empty() ? "" : "  (with the constraints' curvature: K - sum lambda_k d2g_k/dq2)") << "\n";
+        if (!e.multipliers.empty()) os << "  tangent space (columns) = " << matrix_text(e.tangent) << "\n";
         if (e.gyroscopic) os << "  G0 = " << matrix_text(e.G) << "  (gyroscopic)\n";
         if (e.damped) os << "  C0 = " << matrix_text(e.C) << "  (damping)\n";
         if (!e.B.empty() && !e.B[0].empty()) os << "  A = " << matrix_text(e.A) << "\n  B = " << matrix_text(e.B) << "  (x = [q, q'], u = inputs)\n";
@@ -141,6 +150,11 @@ std::string format_markdown(const Model& model, const ModesResult& r, Printer& p
                << (e.exact[i] ? "$" + markdown_math(p.latex(*e.exact[i])) + "$" : "") << " |\n";
         if (e.stability == Stability::Unstable)
             md << "\nPerturbations grow as $e^{" << number(e.growth_rate) << " t}$.\n";
+        if (!e.multipliers.empty()) {
+            md << "\n| constraint | multiplier λ at rest |\n|---|---|\n";
+            for (std::size_t c = 0; c < e.multipliers.size(); ++c)
+                md << "| " << markdown_text(r.constraints[c]) << " | " << number(e.multipliers[c]) << " |\n";
+        }
         if (!e.gyroscopic && !e.damped) {
             md << "\n| mode | ω | ω² | exact ω² | shape |\n|---|---|---|---|---|\n";
             for (std::size_t m = 0; m < e.modes.size(); ++m) {
@@ -171,6 +185,8 @@ std::string format_json(const Model& model, const ModesResult& r, Printer& p, co
     for (std::size_t i = 0; i < r.reduced.size(); ++i) js << (i ? ", " : "") << json_string(r.reduced[i]);
     js << "], \"inputs\": [";
     for (std::size_t i = 0; i < inputs.size(); ++i) js << (i ? ", " : "") << json_string(inputs[i]);
+    js << "], \"constraints\": [";
+    for (std::size_t i = 0; i < r.constraints.size(); ++i) js << (i ? ", " : "") << json_string(r.constraints[i]);
     js << "], \"V_eff\": " << json_string(p.latex(r.V_eff)) << ", \"equilibria\": [";
     for (std::size_t k = 0; k < r.equilibria.size(); ++k) {
         const Equilibrium& e = r.equilibria[k];
@@ -187,7 +203,10 @@ std::string format_json(const Model& model, const ModesResult& r, Printer& p, co
            << ", \"stability\": " << json_string(stability_name(e.stability)) << ", \"growth_rate\": " << json_number(e.growth_rate)
            << ", \"M\": " << matrix_json(e.M) << ", \"K\": " << matrix_json(e.K) << ", \"C\": " << matrix_json(e.C)
            << ", \"G\": " << matrix_json(e.G) << ", \"A\": " << matrix_json(e.A) << ", \"B\": " << matrix_json(e.B)
-           << ", \"modes\": [";
+           << ", \"multipliers\": {";
+        for (std::size_t c = 0; c < e.multipliers.size(); ++c)
+            js << (c ? ", " : "") << json_string(r.constraints[c]) << ": " << json_number(e.multipliers[c]);
+        js << "}, \"tangent\": " << matrix_json(e.tangent) << ", \"modes\": [";
         for (std::size_t m = 0; m < e.modes.size(); ++m) {
             const NormalMode& mode = e.modes[m];
             js << (m ? ", " : "") << "{\"omega\": " << (mode.omega2 >= 0 ? json_number(std::sqrt(mode.omega2)) : "null")
@@ -229,6 +248,9 @@ std::vector<std::string> modes_summary(const Model& model, const ModesResult& r)
     for (const Equilibrium& e : r.equilibria) {
         std::string line;
         for (std::size_t i = 0; i < e.q.size(); ++i) line += (i ? ", " : "") + r.coordinates[i] + " = " + number(e.q[i]);
+        for (std::size_t c = 0; c < e.multipliers.size(); ++c)
+            line += (c ? ", " : " (") + std::string("lambda_") + r.constraints[c] + " = " + number(e.multipliers[c]) +
+                    (c + 1 == e.multipliers.size() ? ")" : "");
         line += std::string(": ") + stability_name(e.stability);
         if (e.stability == Stability::Unstable) line += ", growth rate " + number(e.growth_rate);
         if (!e.gyroscopic && !e.damped) {
@@ -240,6 +262,22 @@ std::vector<std::string> modes_summary(const Model& model, const ModesResult& r)
         lines.push_back(line);
     }
     return lines;
+}
+
+std::string modes_show_section(const Model& model, const Equations& eq) {
+    // A scan with many coordinates can take seconds: show stays quick, modes is there for more.
+    constexpr std::size_t kMaxCoordinates = 8;
+    if (model.dof() > kMaxCoordinates)
+        return "  " + std::to_string(model.dof()) + " coordinates: run `eomgen modes` for the equilibria\n";
+    try {
+        const ModesResult result = small_oscillations(model, eq, {});
+        std::string out;
+        for (const std::string& line : modes_summary(model, result)) out += "  " + line + "\n";
+        for (const std::string& note : result.notes) out += "  note: " + note + "\n";
+        return out.empty() ? "  none found\n" : out;
+    } catch (const ModesError& e) {
+        return "  none: " + std::string(e.what()) + "\n";
+    }
 }
 
 ModesCommand::ModesCommand(CLI::App& app) {

@@ -10,6 +10,7 @@ class App;
 
 namespace eomgen {
 struct Model;
+struct Equations;
 struct ModesResult;
 }  // namespace eomgen
 
@@ -20,6 +21,11 @@ std::string modes_markdown(const Model& model, const ModesResult& result);
 
 /// One line per equilibrium, as plain text (for the report's LaTeX form, which escapes it).
 std::vector<std::string> modes_summary(const Model& model, const ModesResult& result);
+
+/// `eomgen show`'s section: the equilibria with the model's values, their stability and frequencies, one line
+/// each; or why there are none to show (a moving or nonholonomic constraint, more than 8 coordinates: then it
+/// points to `eomgen modes`).
+std::string modes_show_section(const Model& model, const Equations& eq);
 
 /**
  * Registers `modes` on the `eomgen` command line:

@@ -2,6 +2,7 @@
 #include "codegen/cpp_emitter.hpp"
 
 #include "codegen/math_printer.hpp"
+#include "mechanics/rest_linearization.hpp"
 #include "text/escape.hpp"
 
 #include <fmt/format.h>
@@ -502,6 +503,22 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         recorded.push_back({fmt::format("out_({})", i), model.outputs[i].expr.expr});
     std::vector<Output> both = mass;
     both.insert(both.end(), force.begin(), force.end());
+    // About rest (q' = 0): K = d(dV_eff/dq - Q)/dq, and D's symmetric (damping) and skew (gyroscopic) parts.
+    std::vector<Output> stiff, damp, gyro;
+    {
+        std::vector<GiNaC::symbol> qs, qds;
+        for (const Coordinate& c : model.coordinates) {
+            qs.push_back(c.q);
+            qds.push_back(c.qd);
+        }
+        const RestLinearization lin = linearize_about_rest(eq.L, eq.generalized_forces, qs, qds);
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j) {
+                stiff.push_back({fmt::format("K_({}, {})", i, j), lin.K[i][j]});
+                damp.push_back({fmt::format("C_({}, {})", i, j), (lin.D[i][j] + lin.D[j][i]) / 2});
+                gyro.push_back({fmt::format("G_({}, {})", i, j), (lin.D[i][j] - lin.D[j][i]) / 2});
+            }
+    }
 
     std::vector<FunctionSpec> functions = {
         // mass_matrix() and forcing() call dynamics() (M does not depend on q', so at q' = 0) instead of holding
@@ -529,6 +546,14 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
          {{"Conserved", "out_"}}, cons, conserved_calls},
         {"Declared outputs ([outputs] of the model file), in the order of output_names.", "void", "outputs",
          {t_in, q_in, qd_in, p_in}, {{"Outputs", "out_"}}, recorded},
+        {"Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq "
+         "= 0 about an equilibrium.",
+         "void", "stiffness", {t_in, q_in, p_in}, {{"MassMatrix", "K_"}}, stiff},
+        {"Damping about rest, C: the symmetric part of D = dbeta_i/dq_j - dbeta_j/dq_i - dQ_i/dq'_j at q' = 0 "
+         "(beta = dL/dq' at q' = 0).",
+         "void", "damping", {t_in, q_in, p_in}, {{"MassMatrix", "C_"}}, damp},
+        {"Gyroscopic matrix about rest, G: the skew part of D (does no work).", "void", "gyroscopic", {t_in, q_in, p_in},
+         {{"MassMatrix", "G_"}}, gyro},
     };
     if (nc > 0) {
         std::vector<Output> jac_gamma, residuals, all = both;

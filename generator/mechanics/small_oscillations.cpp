@@ -1,6 +1,9 @@
 /** @file small_oscillations.cpp  Equilibria, linearization, normal modes, stability (small_oscillations.hpp). */
 #include "mechanics/small_oscillations.hpp"
 
+#include "mechanics/constrained_equilibria.hpp"
+#include "mechanics/rest_linearization.hpp"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -306,6 +309,14 @@ ex simplify_inverse_trig(const ex& e) {
     }
 }
 
+/// A matrix as rows of numbers (the results' form).
+std::vector<std::vector<double>> rows_of(const Eigen::MatrixXd& m) {
+    std::vector<std::vector<double>> out(std::size_t(m.rows()), std::vector<double>(std::size_t(m.cols())));
+    for (Eigen::Index i = 0; i < m.rows(); ++i)
+        for (Eigen::Index j = 0; j < m.cols(); ++j) out[std::size_t(i)][std::size_t(j)] = m(i, j);
+    return out;
+}
+
 double wrap(double x) {
     double w = std::remainder(x, 2 * kPi);
     if (w <= -kPi + 1e-12) w += 2 * kPi;
@@ -401,9 +412,6 @@ const char* stability_name(Stability s) {
 }
 
 ModesResult small_oscillations(const Model& model, const Equations& eq, const ModesOptions& options) {
-    if (!eq.constraints.empty())
-        throw ModesError("models with constraints are not linearized yet (the equilibria would have to be found "
-                         "on the constraint manifold): not done");
     const symbol& t = model.t;
     if (eq.L.has(t) || std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(),
                                    [&](const ex& Q) { return Q.has(t); }))
@@ -433,6 +441,10 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
         result.latex.push_back(model.coordinates[i].latex);
     }
     for (const auto& [s, i] : momenta) result.momentum_symbols.push_back({s, "p_{" + model.coordinates[i].latex + "}"});
+    // Holonomic constraints: rest on their manifold, with multipliers (constrained_equilibria.hpp).
+    const ManifoldConstraints manifold = manifold_constraints(model, eq, r.q, result.reduced);
+    const std::size_t m = manifold.size();
+    result.constraints = manifold.names;
 
     Values values;
     for (const Parameter& p : model.parameters) {
@@ -445,29 +457,23 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
             values.params[c.q] = GiNaC::numeric(0);  // a cyclic coordinate does not appear; 0 if it did
 
     // L = ½ q̇ᵀ M q̇ + βᵀ q̇ + L₀ (L is at most quadratic in the velocities: derive_equations checked T).
-    exmap rest;
-    for (const symbol& v : r.qd) rest[v] = 0;
-    const ex L0 = r.L.subs(rest, GiNaC::subs_options::no_pattern);
-    result.V_eff = -L0;
-    std::vector<ex> beta(n), Q0(n), g(n);
-    std::vector<std::vector<ex>> M(n, std::vector<ex>(n)), K(n, std::vector<ex>(n)), D(n, std::vector<ex>(n));
-    for (std::size_t i = 0; i < n; ++i) {
-        const ex dL = r.L.diff(r.qd[i]);
-        beta[i] = dL.subs(rest, GiNaC::subs_options::no_pattern);
-        for (std::size_t j = 0; j < n; ++j) M[i][j] = dL.diff(r.qd[j]).subs(rest, GiNaC::subs_options::no_pattern);
-        Q0[i] = r.Q[i].subs(rest, GiNaC::subs_options::no_pattern);
-        g[i] = -L0.diff(r.q[i]) - Q0[i];
-    }
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j) {
-            K[i][j] = g[i].diff(r.q[j]);
-            D[i][j] = beta[i].diff(r.q[j]) - beta[j].diff(r.q[i]) -
-                      r.Q[i].diff(r.qd[j]).subs(rest, GiNaC::subs_options::no_pattern);
-        }
+    const RestLinearization lin = linearize_about_rest(r.L, r.Q, r.q, r.qd);
+    result.V_eff = lin.V_eff;
+    const std::vector<ex>& g = lin.gradient;
+    const std::vector<std::vector<ex>>&M = lin.M, &K = lin.K, &D = lin.D;
 
-    // Exact candidates per coordinate, from the factors of the gradient that depend on that coordinate alone.
+    // The rest conditions in (q, λ): G − Aᵀλ = 0 and g = 0 (just G = 0 without constraints), with their Jacobian,
+    // whose q-block is the stiffness K₀ − Σ λ_k ∂²g_k/∂q².
+    std::vector<ex> rest_eq;
+    std::vector<std::vector<ex>> rest_jac;
+    rest_conditions(g, K, manifold, rest_eq, rest_jac);
+    std::vector<symbol> unknowns = r.q;
+    unknowns.insert(unknowns.end(), manifold.lambda.begin(), manifold.lambda.end());
+
+    // Exact candidates per coordinate, from the factors of the gradient that depend on that coordinate alone
+    // (without constraints: with them the gradient is balanced by the multipliers, and the roots are numbers).
     std::vector<std::vector<ex>> exact_candidates(n);
-    for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t i = 0; i < n && m == 0; ++i) {
         std::vector<ex> fs;
         factors_of(factor_through_functions(g[i].normal().numer()), fs);
         for (const ex& f : fs) {
@@ -482,7 +488,9 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
             }
         }
     }
-    const std::vector<bool> angle = periodic(g, r.q, values.params);
+    std::vector<ex> position_terms = g;
+    position_terms.insert(position_terms.end(), manifold.g.begin(), manifold.g.end());
+    const std::vector<bool> angle = periodic(position_terms, r.q, values.params);
 
     // Starting points: the exact candidates' combinations, --at, the model's initial q, 0, and a scan.
     std::vector<std::vector<double>> starts;
@@ -542,7 +550,20 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
     // coordinate) are one family: the first found stands for it, the others are dropped.
     struct Found {
         std::vector<double> x;
-        Eigen::MatrixXd null;  ///< orthonormal basis of K₀'s null space there (n × k)
+        std::vector<double> lambda;  ///< the multipliers there (none without constraints)
+        Eigen::MatrixXd null;  ///< orthonormal basis of K₀'s null space there (n × k; on the manifold's tangent space)
+    };
+    // The stiffness at (q, λ) and the tangent space of the constraints at q (the identity without constraints).
+    auto numeric_matrix = [&](const std::vector<std::vector<ex>>& S, std::size_t rows, std::size_t cols,
+                              const std::vector<double>& at) {
+        Eigen::MatrixXd out(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
+        for (std::size_t i = 0; i < rows; ++i)
+            for (std::size_t j = 0; j < cols; ++j)
+                out(Eigen::Index(i), Eigen::Index(j)) = value_at(S[i][j], unknowns, at, values.params);
+        return out;
+    };
+    auto tangent_at = [&](const std::vector<double>& at) {
+        return tangent_basis(numeric_matrix(manifold.jacobian, m, n, at));
     };
     std::vector<Found> found;
     auto same = [&](const Found& f, const std::vector<double>& x) {
@@ -556,16 +577,22 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
         return d.norm() <= 1e-7 * size;
     };
     for (std::vector<double> x : starts) {
-        if (!newton(g, K, r.q, values.params, x) || !(precise_residual(g, r.q, x, values.params) < 1e-9)) continue;
+        x.resize(n + m, 0.0);  // the multipliers start at 0: the conditions are linear in them
+        if (!newton(rest_eq, rest_jac, unknowns, values.params, x) ||
+            !(precise_residual(rest_eq, unknowns, x, values.params) < 1e-9))
+            continue;
         for (std::size_t i = 0; i < n; ++i)
             if (angle[i]) x[i] = wrap(x[i]);
         for (double& v : x)
             if (std::abs(v) < 1e-13) v = 0;
+        const std::vector<double> lambda(x.begin() + Eigen::Index(n), x.end());
+        x.resize(n);
         if (std::any_of(found.begin(), found.end(), [&](const Found& f) { return same(f, x); })) continue;
-        Eigen::MatrixXd Kx(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-        for (std::size_t i = 0; i < n; ++i)
-            for (std::size_t j = 0; j < n; ++j) Kx(Eigen::Index(i), Eigen::Index(j)) = value_at(K[i][j], r.q, x, values.params);
-        Found f{x, Eigen::MatrixXd(static_cast<Eigen::Index>(n), 0)};
+        std::vector<double> at = x;
+        at.insert(at.end(), lambda.begin(), lambda.end());
+        const Eigen::MatrixXd N = tangent_at(at);
+        const Eigen::MatrixXd Kx = N.transpose() * numeric_matrix(rest_jac, n, n, at) * N;
+        Found f{x, lambda, Eigen::MatrixXd(static_cast<Eigen::Index>(n), 0)};
         if (Kx.allFinite()) {
             const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es((Kx + Kx.transpose()) / 2);
             const double big = es.eigenvalues().cwiseAbs().maxCoeff();
@@ -573,7 +600,7 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
             for (Eigen::Index k = 0; k < es.eigenvalues().size(); ++k)
                 if (std::abs(es.eigenvalues()(k)) <= 1e-9 * std::max(big, 1e-300)) zero.push_back(k);
             f.null.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(zero.size()));
-            for (std::size_t c = 0; c < zero.size(); ++c) f.null.col(Eigen::Index(c)) = es.eigenvectors().col(zero[c]);
+            for (std::size_t c = 0; c < zero.size(); ++c) f.null.col(Eigen::Index(c)) = N * es.eigenvectors().col(zero[c]);
         }
         found.push_back(std::move(f));
     }
@@ -581,8 +608,11 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
 
     for (const Found& family : found) {
         const std::vector<double>& x = family.x;
+        std::vector<double> at = x;  // (q, λ)
+        at.insert(at.end(), family.lambda.begin(), family.lambda.end());
         Equilibrium e;
         e.q = x;
+        e.multipliers = family.lambda;
         e.exact.resize(n);
         exmap exact_at;
         for (std::size_t i = 0; i < n; ++i) {
@@ -597,15 +627,15 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
             if (e.exact[i])
                 exact_at[r.q[i]] = *e.exact[i];
         }
-        // The linearization, as numbers.
+        // The linearization, as numbers (K₀ with the constraints' curvature: the q-block of the rest conditions).
         auto mat = [&](const std::vector<std::vector<ex>>& S) {
             std::vector<std::vector<double>> out(n, std::vector<double>(n));
             for (std::size_t i = 0; i < n; ++i)
-                for (std::size_t j = 0; j < n; ++j) out[i][j] = value_at(S[i][j], r.q, x, values.params);
+                for (std::size_t j = 0; j < n; ++j) out[i][j] = value_at(S[i][j], unknowns, at, values.params);
             return out;
         };
         e.M = mat(M);
-        e.K = mat(K);
+        e.K = mat(rest_jac);
         const auto Dn = mat(D);
         e.C.assign(n, std::vector<double>(n));
         e.G.assign(n, std::vector<double>(n));
@@ -633,7 +663,19 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
         Eigen::MatrixXd Bq(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(inputs.size()));
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t k = 0; k < inputs.size(); ++k)
-                Bq(Eigen::Index(i), Eigen::Index(k)) = -value_at(g[i].diff(inputs[k]), r.q, x, values.params);
+                Bq(Eigen::Index(i), Eigen::Index(k)) = -value_at(g[i].diff(inputs[k]), unknowns, at, values.params);
+        // On the constraints' tangent space, δq = N δs (N = I without constraints); the modes live there.
+        const Eigen::MatrixXd N = tangent_at(at);
+        e.tangent = rows_of(N);
+        Mm = N.transpose() * Mm * N;
+        Km = N.transpose() * Km * N;
+        Dm = N.transpose() * Dm * N;
+        Bq = N.transpose() * Bq;
+        const auto nr = static_cast<std::size_t>(N.cols());
+        if (nr == 0) {
+            result.notes.push_back("an equilibrium where the constraints leave no freedom (a rigid point) was left out");
+            continue;
+        }
         if (!Mm.allFinite() || !Km.allFinite() || !Dm.allFinite() || !Bq.allFinite()) {
             result.notes.push_back("an equilibrium where the linearization cannot be evaluated was left out");
             continue;
@@ -644,21 +686,19 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
                                    "there) was left out; reduce the cyclic coordinates with --momentum");
             continue;
         }
-        // First-order system x' = A x, x = [δq, δq̇].
-        Eigen::MatrixXd A = Eigen::MatrixXd::Zero(Eigen::Index(2 * n), Eigen::Index(2 * n));
-        A.topRightCorner(Eigen::Index(n), Eigen::Index(n)).setIdentity();
-        A.bottomLeftCorner(Eigen::Index(n), Eigen::Index(n)) = -llt.solve(Km);
-        A.bottomRightCorner(Eigen::Index(n), Eigen::Index(n)) = -llt.solve(Dm);
-        auto rows = [](const Eigen::MatrixXd& m) {
-            std::vector<std::vector<double>> out(std::size_t(m.rows()), std::vector<double>(std::size_t(m.cols())));
-            for (Eigen::Index i = 0; i < m.rows(); ++i)
-                for (Eigen::Index j = 0; j < m.cols(); ++j) out[std::size_t(i)][std::size_t(j)] = m(i, j);
-            return out;
-        };
-        Eigen::MatrixXd B = Eigen::MatrixXd::Zero(Eigen::Index(2 * n), Bq.cols());
-        B.bottomRows(Eigen::Index(n)) = llt.solve(Bq);
-        e.A = rows(A);
-        e.B = rows(B);
+        // First-order system s' = A s, s = [δs, δṡ] on the tangent space; reported in x = [δq, δq̇] as T A Tᵀ,
+        // T = diag(N, N) (zero on directions that leave the manifold; A itself without constraints).
+        Eigen::MatrixXd A = Eigen::MatrixXd::Zero(Eigen::Index(2 * nr), Eigen::Index(2 * nr));
+        A.topRightCorner(Eigen::Index(nr), Eigen::Index(nr)).setIdentity();
+        A.bottomLeftCorner(Eigen::Index(nr), Eigen::Index(nr)) = -llt.solve(Km);
+        A.bottomRightCorner(Eigen::Index(nr), Eigen::Index(nr)) = -llt.solve(Dm);
+        Eigen::MatrixXd B = Eigen::MatrixXd::Zero(Eigen::Index(2 * nr), Bq.cols());
+        B.bottomRows(Eigen::Index(nr)) = llt.solve(Bq);
+        Eigen::MatrixXd T = Eigen::MatrixXd::Zero(Eigen::Index(2 * n), Eigen::Index(2 * nr));
+        T.topLeftCorner(Eigen::Index(n), Eigen::Index(nr)) = N;
+        T.bottomRightCorner(Eigen::Index(n), Eigen::Index(nr)) = N;
+        e.A = rows_of(T * A * T.transpose());
+        e.B = rows_of(T * B);
         const Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
         double max_re = -std::numeric_limits<double>::infinity();
         double lambda_scale = 0;
@@ -688,7 +728,7 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
             if (std::abs(mode.omega2) <= zero_tol) mode.omega2 = 0;
             negative = negative || mode.omega2 < 0;
             zero = zero || mode.omega2 == 0;
-            Eigen::VectorXd v = ges.eigenvectors().col(k);
+            Eigen::VectorXd v = N * ges.eigenvectors().col(k);  // the shape in the model's coordinates
             Eigen::Index big = 0;
             v.cwiseAbs().maxCoeff(&big);
             v /= v(big);
@@ -714,7 +754,7 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
 
         // Exact ω²: the characteristic polynomial at the exact equilibrium, in the parameters, where it factors.
         // (Where some coordinate has no exact value, K₀ and M₀ may still be free of it: a quadratic V.)
-        if (!e.damped && !e.gyroscopic && n <= 4) {
+        if (!e.damped && !e.gyroscopic && n <= 4 && m == 0) {
             try {
                 GiNaC::matrix Ke{static_cast<unsigned>(n), static_cast<unsigned>(n)}, Me{static_cast<unsigned>(n), static_cast<unsigned>(n)};
                 for (std::size_t i = 0; i < n; ++i)

@@ -62,6 +62,11 @@ struct Equilibrium {
     std::vector<std::optional<GiNaC::ex>> exact;  ///< per coordinate, in the parameters (where found)
     std::vector<std::vector<double>> M, K, C, G;  ///< the linearization, numbers
     std::vector<std::vector<double>> A, B;  ///< first-order form δẋ = A δx + B δu, x = [q, q̇] (B: 2n × inputs)
+    std::vector<double> multipliers;       ///< λ_k there, per constraint (the force each constraint exerts at rest)
+    /// Orthonormal basis of the constraints' tangent space there (n × (n − m), columns): δq = N δs. The modes
+    /// and eigenvalues are those of the motion on it; K is K₀ − Σ λ_k ∂²g_k/∂q², and A acts on x = [δq, δq̇]
+    /// as T A_s Tᵀ with T = diag(N, N) (zero on directions that leave the manifold). The identity without constraints.
+    std::vector<std::vector<double>> tangent;
     std::vector<NormalMode> modes;         ///< K₀ a = ω² M₀ a (always; with C₀ or G₀ they are not the motion)
     std::vector<std::complex<double>> eigenvalues;  ///< λ of the full first-order system ẋ = A x
     Stability stability = Stability::Stable;
@@ -73,6 +78,7 @@ struct ModesResult {
     std::vector<std::string> coordinates;  ///< names of the coordinates that remain (Routh: cyclic ones gone)
     std::vector<std::string> latex;        ///< their LaTeX
     std::vector<std::string> reduced;      ///< the cyclic coordinates reduced away (Routh)
+    std::vector<std::string> constraints;  ///< the holonomic constraints the equilibria lie on
     GiNaC::ex V_eff;                       ///< V − T₀, the amended potential after a reduction
     /// The momenta of the reduced coordinates as symbols (p_<q>) in V_eff and the exact forms, with LaTeX.
     std::vector<std::pair<GiNaC::symbol, std::string>> momentum_symbols;
@@ -84,7 +90,9 @@ struct ModesResult {
  * Finds the equilibria of `model` (exact where the gradient's factors in one coordinate can be solved:
  * sin, cos, tan or linear in it; otherwise numbers from the guesses in `options.at`, the model's initial
  * q, and a scan of the coordinates, angles over a period), each reported once, and linearizes about each.
- * Throws ModesError for constraints (not supported), an L that depends on t, and unknown names.
+ * With holonomic, time-independent constraints the equilibria lie on their manifold, with multipliers, and
+ * the linearization is taken on its tangent space (constrained_equilibria.hpp). Throws ModesError for a
+ * nonholonomic or moving constraint, an L that depends on t, and unknown names.
  */
 ModesResult small_oscillations(const Model& model, const Equations& eq, const ModesOptions& options);
 

@@ -1,6 +1,8 @@
 /** @file atomic_file.cpp  AtomicFile, and the signal handler that removes unfinished temporaries. */
 #include "output/atomic_file.hpp"
 
+#include "eomgen/output.hpp"
+
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -91,6 +93,23 @@ void AtomicFile::commit() {
     if (ec) throw WriteError("cannot rename " + tmp_.string() + " to " + path_.string() + ": " + ec.message());
     committed_ = true;
     if (slot_ >= 0) in_use[slot_] = 0;
+}
+
+void guard_temporary(const char* path) {
+    install_handlers();
+    claim(path);
+}
+
+void release_temporary(const char* path) {
+    for (int i = 0; i < kSlots; ++i)
+        if (in_use[i] && std::strcmp(pending[i], path) == 0) {
+            in_use[i] = 0;
+            return;
+        }
+}
+
+void guard_runtime_temporaries() {
+    eomgen::temporary_file_hooks() = {guard_temporary, release_temporary};
 }
 
 void write_atomically(const std::filesystem::path& path, const std::string& text) {

@@ -40,6 +40,16 @@ class AtomicFile {
     bool committed_ = false;
 };
 
+/// Guards a temporary file that other code writes (the runtime's CsvWriter) as AtomicFile guards its own: until
+/// release_temporary(path) it is removed on SIGINT, SIGTERM and SIGHUP. At most 16 at a time with AtomicFile's;
+/// beyond that, or for a path of 4096 bytes or more, the file is written as before and only not removed on a signal.
+void guard_temporary(const char* path);
+void release_temporary(const char* path);
+
+/// Points the runtime's eomgen::temporary_file_hooks() (runtime/eomgen/output.hpp) at the two above: for the
+/// programs that write the runtime's CSV files (the eomgen command, eomgen-sim).
+void guard_runtime_temporaries();
+
 /// AtomicFile for one piece of text.
 void write_atomically(const std::filesystem::path& path, const std::string& text);
 

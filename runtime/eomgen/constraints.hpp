@@ -214,18 +214,19 @@ struct ConstrainedResult {
 };
 
 /**
- * Integrates a constrained Model with Dormand–Prince from sample time to sample time, projecting the
+ * Integrates a constrained Model with the adaptive stepper Method (Dopri5 by default, Dop853; see
+ * integrate_with) from sample time to sample time, projecting the
  * state onto the constraints after each segment (drift control on top of any Baumgarte terms). The
  * residuals reached before each projection are reported. x0 is checked first (check_consistent) unless
  * `project_initial` is set, in which case it is projected. `events` are located within each segment as by
  * integrate(); a terminal one ends the run at the event (its state projected, and kept as the last sample).
  */
-template <class Model>
+template <class Model, template <class> class Method = Dopri5>
 ConstrainedResult<typename Model::State> integrate_constrained(const typename Model::Params& p,
                                                                const typename Model::Config::Scalar& t0,
                                                                typename Model::State x0,
                                                                const std::vector<typename Model::Config::Scalar>& times,
-                                                               const Dopri5Options<typename Model::Config::Scalar>& opt,
+                                                               const typename Method<typename Model::State>::Options& opt,
                                                                bool project_initial = false,
                                                                const std::vector<Event<typename Model::State>>& events = {}) {
     using Scalar = typename Model::Config::Scalar;
@@ -243,7 +244,7 @@ ConstrainedResult<typename Model::State> integrate_constrained(const typename Mo
     State x = x0;
     for (const Scalar& next : times) {
         if (!(next > t)) continue;
-        const IntegrationResult<State> seg = integrate(f, t, x, next, opt, events);
+        const IntegrationResult<State> seg = integrate_with<Method>(f, t, x, next, opt, events);
         out.run.events.insert(out.run.events.end(), seg.events.begin(), seg.events.end());
         out.run.accepted_steps += seg.accepted_steps;
         out.run.rejected_steps += seg.rejected_steps;

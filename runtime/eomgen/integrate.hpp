@@ -7,7 +7,12 @@
  *   integrate(f, t0, x0, t_end, options = {}, events = {}, sample_times = {}, observer = {})
  *       -> IntegrationResult<State>; adaptive Dormand–Prince 5(4) (dopri5.hpp), options a
  *       Dopri5Options<Scalar> {rtol, atol, h0, hmin, hmax, max_steps, safety, min_factor, max_factor, beta}.
- *   integrate_rk4(f, t0, x0, t_end, dt, events = {}, sample_times = {}, observer = {})
+ *   integrate_dop853(f, t0, x0, t_end, options = {}, events = {}, sample_times = {}, observer = {})
+ *       -> IntegrationResult<State>; adaptive Dormand–Prince 8(5,3), Hairer's DOP853 (dop853.hpp), options a
+ *       Dop853Options<Scalar> (the fields of Dopri5Options, DOP853's defaults).
+ *   integrate_with<Method>(f, t0, x0, t_end, options = {}, ...)
+ *       -> the same with any adaptive stepper template Method (Dopri5, Dop853), options
+ * Method<State>::Options. integrate_rk4(f, t0, x0, t_end, dt, events = {}, sample_times = {}, observer = {})
  *       -> IntegrationResult<State>; classic RK4 on the fixed grid t0 + k·dt (rk4.hpp).
  *
  *   events:       std::vector<Event<State>>, Event{name, g(t, x) -> Scalar, direction, action} with
@@ -23,6 +28,7 @@
  * with an observer and no sample_times, the observer sees t0 and the end of every accepted step.
  */
 
+#include "eomgen/dop853.hpp"
 #include "eomgen/dopri5.hpp"
 #include "eomgen/errors.hpp"
 #include "eomgen/events.hpp"
@@ -37,6 +43,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -79,11 +86,21 @@ struct NonDeduced {
     using type = T;
 };
 
+/// Steppers whose dense output needs extra evaluations of f (Dop853) have prepare_dense(f); the others not.
+template <class Stepper, class System, class = void>
+struct HasPrepareDense : std::false_type {};
+template <class Stepper, class System>
+struct HasPrepareDense<Stepper, System,
+                       std::void_t<decltype(std::declval<Stepper&>().prepare_dense(std::declval<System&>()))>>
+    : std::true_type {};
+
 /**
- * The loop shared by both integrators, over any stepper with step(f), done(), t(), x(), t_prev(),
- * dense(t, x) and the counters. After each accepted step [ta, tb]: every event whose g changed sign in
- * its direction is located on the dense output by Brent's method to a few ulp of t; the earliest terminal
- * one (ties: the first declared) cuts the step at t_stop; hits and samples up to t_stop are reported.
+ * The loop shared by the integrators, over any stepper with step(f), done(), t(), x(), t_prev(),
+ * dense(t, x) and the counters, and optionally prepare_dense(f), called on the steps where an event or a
+ * sample needs the dense output inside the step. After each accepted step [ta, tb]: every event whose g
+ * changed sign in its direction is located on the dense output by Brent's method to a few ulp of t; the
+ * earliest terminal one (ties: the first declared) cuts the step at t_stop; hits and samples up to t_stop are
+ * reported.
  */
 template <class Stepper, class System, class State>
 IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State::Scalar& t0, const State& x0,
@@ -144,9 +161,17 @@ IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State
         stepper.step(f);
         const Scalar ta = stepper.t_prev(), tb = stepper.t();
 
-        crossings.clear();
+        // (dense() at tb itself is exact without it)
+        bool need_dense = next_sample < sample_times.size() && not_after(sample_times[next_sample], tb) &&
+                          sample_times[next_sample] != tb;
         for (std::size_t i = 0; i < events.size(); ++i) {
             g_now[i] = evaluate_g(events[i], tb, stepper.x());
+            need_dense = need_dense || crosses(g_prev[i], g_now[i], events[i].direction);
+        }
+        if constexpr (HasPrepareDense<Stepper, System>::value)
+            if (need_dense) stepper.prepare_dense(f);
+        crossings.clear();
+        for (std::size_t i = 0; i < events.size(); ++i) {
             if (!crosses(g_prev[i], g_now[i], events[i].direction)) continue;
             const auto g_dense = [&](const Scalar& s) {
                 stepper.dense(s, x_tmp);
@@ -202,6 +227,22 @@ IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State
 }  // namespace detail
 
 /**
+ * As integrate(), with the adaptive stepper Method<State> (Dopri5, Dop853: any class with the steppers'
+ * interface, constructed from (f, t0, x0, t_end, options)); what integrate_constrained and the simulation
+ * driver use to take the method as a template argument.
+ */
+template <template <class> class Method, class System, class State>
+IntegrationResult<State> integrate_with(
+    System&& f, const typename State::Scalar& t0, const State& x0, const typename State::Scalar& t_end,
+    const typename detail::NonDeduced<typename Method<State>::Options>::type& options = {},
+    const std::vector<Event<State>>& events = {},
+    const std::vector<typename State::Scalar>& sample_times = {},
+    const typename detail::NonDeduced<Observer<State>>::type& observer = {}) {
+    Method<State> stepper(f, t0, x0, t_end, options);
+    return detail::drive(stepper, f, t0, x0, t_end, events, sample_times, observer);
+}
+
+/**
  * Integrates x' = f(t, x) from (t0, x0) to t_end (t_end < t0 runs backwards) with adaptive Dormand–Prince
  * 5(4) (see Dopri5 for the error control, the dense output and the errors thrown), locating `events` and
  * sampling the dense output at `sample_times` (ordered, within [t0, t_end]; those after a terminal event
@@ -214,8 +255,20 @@ IntegrationResult<State> integrate(System&& f, const typename State::Scalar& t0,
                                    const std::vector<Event<State>>& events = {},
                                    const std::vector<typename State::Scalar>& sample_times = {},
                                    const typename detail::NonDeduced<Observer<State>>::type& observer = {}) {
-    Dopri5<State> stepper(f, t0, x0, t_end, options);
-    return detail::drive(stepper, f, t0, x0, t_end, events, sample_times, observer);
+    return integrate_with<Dopri5>(f, t0, x0, t_end, options, events, sample_times, observer);
+}
+
+/**
+ * As integrate(), with Hairer's DOP853 (8th order; see Dop853): the cheaper choice at tight tolerances.
+ * Its dense output costs three evaluations of f on each step where an event or a sample falls.
+ */
+template <class System, class State>
+IntegrationResult<State> integrate_dop853(
+    System&& f, const typename State::Scalar& t0, const State& x0, const typename State::Scalar& t_end,
+    const Dop853Options<typename State::Scalar>& options = {}, const std::vector<Event<State>>& events = {},
+    const std::vector<typename State::Scalar>& sample_times = {},
+    const typename detail::NonDeduced<Observer<State>>::type& observer = {}) {
+    return integrate_with<Dop853>(f, t0, x0, t_end, options, events, sample_times, observer);
 }
 
 /**

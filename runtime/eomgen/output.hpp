@@ -29,6 +29,23 @@ inline std::string csv_field(const std::string& text) {
     return quoted + "\"";
 }
 
+/**
+ * What a program does with the temporary files the runtime writes: `guard(path)` right after one is created,
+ * `release(path)` once it is renamed into place or removed. A library installs no signal handler of its own, so
+ * by default both do nothing; the eomgen command and eomgen-sim point them at their handler of SIGINT, SIGTERM
+ * and SIGHUP (generator/output/atomic_file.hpp), so that an interrupt while a CSV is written leaves no
+ * `<path>.tmp` behind. An app that wants the same sets them once, before writing.
+ */
+struct TemporaryFileHooks {
+    void (*guard)(const char* path) = nullptr;
+    void (*release)(const char* path) = nullptr;
+};
+
+inline TemporaryFileHooks& temporary_file_hooks() {
+    static TemporaryFileHooks hooks;
+    return hooks;
+}
+
 /// A line of CSV: the fields escaped by csv_field(), separated by commas, ended by a newline.
 inline std::string csv_row(const std::vector<std::string>& fields) {
     std::string line;
@@ -48,7 +65,8 @@ std::string csv_number(const Scalar& value) {
 /**
  * A text file that appears whole or not at all: written to `<path>.tmp`, which commit() renames over
  * `path` (atomic on POSIX within one directory); if the object goes without commit(), e.g. because the
- * simulation threw, the temporary file is removed and `path` is left as it was. Throws std::runtime_error
+ * simulation threw, the temporary file is removed and `path` is left as it was (and on an interrupt too,
+ * where the program set temporary_file_hooks()). Throws std::runtime_error
  * when the file cannot be opened, written or renamed.
  */
 class AtomicOutputFile {
@@ -56,6 +74,8 @@ class AtomicOutputFile {
     explicit AtomicOutputFile(const std::string& path) : path_(path), tmp_path_(path + ".tmp") {
         out_.open(tmp_path_, std::ios::out | std::ios::trunc);
         if (!out_) throw std::runtime_error("cannot open '" + tmp_path_ + "' for writing");
+        if (temporary_file_hooks().guard) temporary_file_hooks().guard(tmp_path_.c_str());
+        guarded_ = true;
     }
     AtomicOutputFile(const AtomicOutputFile&) = delete;
     AtomicOutputFile& operator=(const AtomicOutputFile&) = delete;
@@ -64,6 +84,7 @@ class AtomicOutputFile {
         out_.close();
         std::error_code ignored;
         std::filesystem::remove(tmp_path_, ignored);
+        release();
     }
 
     std::ostream& stream() { return out_; }
@@ -85,12 +106,18 @@ class AtomicOutputFile {
         if (ec)
             throw std::runtime_error("cannot rename '" + tmp_path_ + "' to '" + path_ + "': " + ec.message());
         committed_ = true;
+        release();
     }
 
   private:
+    void release() {
+        if (guarded_ && temporary_file_hooks().release) temporary_file_hooks().release(tmp_path_.c_str());
+        guarded_ = false;
+    }
+
     std::string path_, tmp_path_;
     std::ofstream out_;
-    bool committed_ = false;
+    bool committed_ = false, guarded_ = false;
 };
 
 /**

@@ -81,6 +81,37 @@ struct Options {
     bool project_initial = false;
 };
 
+/// An adaptive method of --method: the stepper template (integrate_with, integrate_constrained) and its
+/// options from --rtol, --atol and --max-steps (the method's own defaults for the rest).
+template <template <class> class Stepper>
+struct AdaptiveMethod {
+    template <class State>
+    using type = Stepper<State>;
+
+    template <class State>
+    static typename Stepper<State>::Options options(const Options& o) {
+        typename Stepper<State>::Options opt;
+        opt.rtol = o.rtol;
+        opt.atol = o.atol;
+        opt.max_steps = o.max_steps;
+        return opt;
+    }
+};
+
+/// Calls use(AdaptiveMethod<...>{}) for the adaptive method `name` and returns true, or returns false when
+/// `name` is none of them. A new adaptive method joins with one line here.
+template <class Use>
+bool with_adaptive_method(const std::string& name, Use&& use) {
+    if (name == "dopri5") return use(AdaptiveMethod<eomgen::Dopri5>{}), true;
+    if (name == "dop853") return use(AdaptiveMethod<eomgen::Dop853>{}), true;
+    return false;
+}
+
+/// Whether --method `name` is adaptive (takes --rtol, --atol; no --dt).
+inline bool is_adaptive_method(const std::string& name) {
+    return with_adaptive_method(name, [](auto) {});
+}
+
 /// A number as written on the command line: "0.5", "-pi/2", "2*pi", "pi/4", "1e-3".
 inline double parse_value(const std::string& text) {
     std::string s = text;
@@ -248,7 +279,8 @@ std::vector<eomgen::Event<typename M::State>> until_events(const Options& o) {
     using State = typename M::State;
     std::vector<eomgen::Event<State>> events;
     if (o.until.empty()) return events;
-    if (o.method == "symplectic") throw UsageError("--until needs --method dopri5 or rk4 (events use dense output)");
+    if (o.method == "symplectic")
+        throw UsageError("--until needs --method dopri5, dop853 or rk4 (events use dense output)");
     const auto [name, value] = parse_assignment(o.until, "--until");
     const int i = index_of(M::state_names, name);
     if (i < 0)
@@ -302,7 +334,7 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
     auto track = [&](double t, const State& x) { out.max_drift = std::max(out.max_drift, drift(h(t, x))); };
 
     std::vector<double> sample_times;
-    const bool constrained = constraint_count<M>() > 0 && o.method == "dopri5";
+    const bool constrained = constraint_count<M>() > 0 && is_adaptive_method(o.method);
     if (keep_samples || constrained)
         for (int k = 0; k <= o.samples; ++k) sample_times.push_back(o.t_end * k / std::max(o.samples, 1));
 
@@ -323,36 +355,34 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
 
     bool done = false;
     if constexpr (is_constrained<M>::value) {
-        if (constrained) {
-            eomgen::Dopri5Options<double> opt;
-            opt.rtol = o.rtol;
-            opt.atol = o.atol;
-            opt.max_steps = o.max_steps;
-            const auto r =
-                eomgen::integrate_constrained<M>(params, 0.0, x0, sample_times, opt, o.project_initial, events);
-            // Energy drift from the (possibly projected) start, not from the state given.
-            out.h0 = h(r.run.samples.front().t, r.run.samples.front().x);
-            for (const auto& s : r.run.samples) out.max_drift = std::max(out.max_drift, drift(h(s.t, s.x)));
-            if (keep_samples) out.samples = r.run.samples;
-            if (log) {
-                typename M::ConstraintVector lambda;
-                M::multipliers(r.run.t, r.run.x, params, lambda);
-                *log << "method:  dopri5 with projection onto the constraints after each of " << o.samples
-                     << " segments, rtol " << o.rtol << ", atol " << o.atol << "\n";
-                report_run(r.run);
-                *log << "constraint residuals before projection: position " << r.max_position_residual
-                     << ", velocity " << r.max_velocity_residual << "\n";
-                for (int k = 0; k < M::n_constraints; ++k)
-                    *log << "multiplier " << M::constraint_names[std::size_t(k)] << " = " << lambda(k)
-                         << " at the end\n";
-            }
-            finish(r.run);
-            done = true;
-        }
+        if (constrained)
+            done = with_adaptive_method(o.method, [&](auto method) {
+                using Method = decltype(method);
+                const auto r = eomgen::integrate_constrained<M, Method::template type>(
+                    params, 0.0, x0, sample_times, Method::template options<State>(o), o.project_initial, events);
+                // Energy drift from the (possibly projected) start, not from the state given.
+                out.h0 = h(r.run.samples.front().t, r.run.samples.front().x);
+                for (const auto& s : r.run.samples) out.max_drift = std::max(out.max_drift, drift(h(s.t, s.x)));
+                if (keep_samples) out.samples = r.run.samples;
+                if (log) {
+                    typename M::ConstraintVector lambda;
+                    M::multipliers(r.run.t, r.run.x, params, lambda);
+                    *log << "method:  " << o.method << " with projection onto the constraints after each of "
+                         << o.samples << " segments, rtol " << o.rtol << ", atol " << o.atol << "\n";
+                    report_run(r.run);
+                    *log << "constraint residuals before projection: position " << r.max_position_residual
+                         << ", velocity " << r.max_velocity_residual << "\n";
+                    for (int k = 0; k < M::n_constraints; ++k)
+                        *log << "multiplier " << M::constraint_names[std::size_t(k)] << " = " << lambda(k)
+                             << " at the end\n";
+                }
+                finish(r.run);
+            });
     }
     if (!done && o.method == "symplectic") {
         if (constraint_count<M>() > 0 || M::has_generalized_forces)
-            throw UsageError("--method symplectic integrates unconstrained models without forces; use dopri5");
+            throw UsageError(
+                "--method symplectic integrates unconstrained models without forces; use dopri5 or dop853");
         eomgen::VariationalIntegrator<M> vi(params, o.dt);
         vi.set_state(0.0, positions<M::nq>(x0), velocities<M::nq>(x0));
         const auto steps = static_cast<std::size_t>(std::llround(o.t_end / o.dt));
@@ -380,15 +410,14 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
         if (o.method == "rk4") {
             r = eomgen::integrate_rk4(f, 0.0, x0, o.t_end, o.dt, events, sample_times, observer);
             if (log) *log << "method:  rk4, dt " << o.dt << "\n";
-        } else if (o.method == "dopri5") {
-            eomgen::Dopri5Options<double> opt;
-            opt.rtol = o.rtol;
-            opt.atol = o.atol;
-            opt.max_steps = o.max_steps;
-            r = eomgen::integrate(f, 0.0, x0, o.t_end, opt, events, sample_times, observer);
-            if (log) *log << "method:  dopri5, rtol " << o.rtol << ", atol " << o.atol << "\n";
-        } else {
-            throw UsageError("--method " + o.method + ": expected dopri5, rk4 or symplectic");
+        } else if (!with_adaptive_method(o.method, [&](auto method) {
+                       using Method = decltype(method);
+                       r = eomgen::integrate_with<Method::template type>(f, 0.0, x0, o.t_end,
+                                                                         Method::template options<State>(o),
+                                                                         events, sample_times, observer);
+                       if (log) *log << "method:  " << o.method << ", rtol " << o.rtol << ", atol " << o.atol << "\n";
+                   })) {
+            throw UsageError("--method " + o.method + ": expected dopri5, dop853, rk4 or symplectic");
         }
         finish(r);
         track(r.t, r.x);

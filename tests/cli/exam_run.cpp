@@ -353,3 +353,59 @@ w_bob = { expr = "theta'", unit = "rad/s'); system('touch PWNED_UNIT'); print('"
     // --plot-xy without --plot: a mistake on the command line.
     CHECK(eomgen({"run", model.string(), "--plot-xy", "x_bob,y_bob", "--quiet"}).code == 2);
 }
+
+namespace {
+
+/// The points of the first polyline in an SVG with at least `min_points` vertices, after its first `M`
+/// (gnuplot draws a key sample "M x,y L x,y" first, then "M" and the curve).
+std::vector<std::pair<double, double>> first_curve(const std::string& svg, std::size_t min_points) {
+    for (std::size_t at = svg.find(" d='"); at != std::string::npos; at = svg.find(" d='", at + 1)) {
+        const std::size_t end = svg.find('\'', at + 4);
+        std::string d = svg.substr(at + 4, end - at - 4);
+        std::vector<std::vector<std::pair<double, double>>> pieces;
+        std::istringstream in(d);
+        for (std::string token; in >> token;) {
+            if (token[0] == 'M') pieces.emplace_back();
+            if (pieces.empty()) break;
+            double x = 0, y = 0;
+            char comma = 0;
+            std::istringstream xy(token.substr(1));
+            if (xy >> x >> comma >> y) pieces.back().emplace_back(x, y);
+        }
+        for (const auto& piece : pieces)
+            if (piece.size() >= min_points) return piece;
+    }
+    return {};
+}
+
+}  // namespace
+
+TEST_CASE("eomgen run --plot: the curve drawn is the CSV's data, point for point", "[run][plot]") {
+    const fs::path model = write_model("plot_data.toml", kSpringPendulum);
+    const fs::path csv = kWork / "plot_data.csv", svg = kWork / "plot_data.svg";
+    REQUIRE(eomgen({"run", "--quiet", "--t-end", "3", "--samples", "30", "--csv", csv.string(), "--plot", svg.string(),
+                    model.string()})
+                .code == 0);
+    const auto rows = read_csv(csv);
+    REQUIRE(rows.size() == 32);  // header and 31 samples
+    const auto curve = first_curve(read(svg), rows.size() - 1);
+    REQUIRE(curve.size() == rows.size() - 1);  // the first panel's first curve: r against t
+    // The drawing is an affine image of (t, r): fit it on the first and last points, then every other point
+    // must land where its CSV row puts it (SVG coordinates are printed to 0.01 px).
+    const int r_col = column(rows[0], "r");
+    auto data = [&](std::size_t k) {
+        return std::make_pair(std::stod(rows[k + 1][0]), std::stod(rows[k + 1][std::size_t(r_col)]));
+    };
+    std::size_t lo = 0, hi = 0;  // the smallest and largest r, for a well-conditioned fit in y
+    for (std::size_t k = 0; k < curve.size(); ++k) {
+        if (data(k).second < data(lo).second) lo = k;
+        if (data(k).second > data(hi).second) hi = k;
+    }
+    const std::size_t last = curve.size() - 1;
+    const double sx = (curve[last].first - curve[0].first) / (data(last).first - data(0).first);
+    const double sy = (curve[hi].second - curve[lo].second) / (data(hi).second - data(lo).second);
+    for (std::size_t k = 0; k < curve.size(); ++k) {
+        CHECK(std::abs(curve[0].first + sx * (data(k).first - data(0).first) - curve[k].first) < 0.02);
+        CHECK(std::abs(curve[lo].second + sy * (data(k).second - data(lo).second) - curve[k].second) < 0.02);
+    }
+}

@@ -1,5 +1,6 @@
 /** @file test_atomic_file.cpp  Output files appear whole or not at all: after errors, exceptions and
  * signals, the old file is intact and no temporary is left. */
+#include "eomgen/output.hpp"
 #include "output/atomic_file.hpp"
 
 #include <catch2/catch.hpp>
@@ -90,4 +91,54 @@ TEST_CASE("atomic file: SIGTERM or SIGINT half way removes the temporary and end
         CHECK(entries(d) == 1);  // the temporary is gone
         fs::remove_all(d);
     }
+}
+
+TEST_CASE("atomic file: the runtime's CSV writer, guarded through its hooks, leaves no temporary on SIGINT",
+          "[output]") {
+    for (const bool guarded : {true, false}) {
+        const fs::path d = scratch(std::string("csv") + (guarded ? "guarded" : "bare"));
+        const pid_t child = ::fork();
+        REQUIRE(child >= 0);
+        if (child == 0) {
+            std::signal(SIGINT, SIG_DFL);
+            if (guarded) eomgen::output::guard_runtime_temporaries();
+            eomgen::CsvWriter<double> csv((d / "run.csv").string(), {"x"});
+            csv.write_row(0.0, Eigen::Matrix<double, 1, 1>(1.0));
+            std::raise(SIGINT);
+            ::_exit(0);
+        }
+        int status = 0;
+        REQUIRE(::waitpid(child, &status, 0) == child);
+        CHECK(WIFSIGNALED(status));
+        // Guarded: nothing left; without the hooks (a library alone) the temporary stays: the test can fail.
+        CHECK(entries(d) == (guarded ? 0u : 1u));
+        fs::remove_all(d);
+    }
+}
+
+TEST_CASE("atomic file: a guarded CSV that is committed is released, and stays after a later signal",
+          "[output]") {
+    const fs::path d = scratch("csvcommit");
+    const pid_t child = ::fork();
+    REQUIRE(child >= 0);
+    if (child == 0) {
+        std::signal(SIGINT, SIG_DFL);
+        eomgen::output::guard_runtime_temporaries();
+        {
+            eomgen::CsvWriter<double> csv((d / "run.csv").string(), {"x"});
+            csv.write_row(0.0, Eigen::Matrix<double, 1, 1>(1.0));
+            csv.commit();
+        }
+        // A new temporary at the same path after the rename: the handler must not remove the committed file
+        // by its old name (it is released), nor leave the new temporary.
+        eomgen::CsvWriter<double> again((d / "run.csv").string(), {"x"});
+        std::raise(SIGINT);
+        ::_exit(0);
+    }
+    int status = 0;
+    REQUIRE(::waitpid(child, &status, 0) == child);
+    CHECK(WIFSIGNALED(status));
+    CHECK(fs::exists(d / "run.csv"));
+    CHECK(entries(d) == 1);
+    fs::remove_all(d);
 }

@@ -20,16 +20,18 @@ struct Closing {
     std::size_t rhs_evaluations;
 };
 
-/// Lets the door go from rest at ψ = 0 and stops at ψ = −π/2 by event location on the dense output.
-Closing simulate_closing(const Door::Params& p, double rtol = 1e-13) {
+/// Lets the door go from rest at ψ = 0 and stops at ψ = −π/2 by event location on the dense output of the
+/// adaptive stepper Method.
+template <template <class> class Method = eomgen::Dopri5>
+Closing simulate_closing(const Door::Params& p, double rtol = 1e-13, double atol = 1e-15) {
     Door::State x0 = Door::State::Zero();
     auto f = [&p](const double& t, const Door::State& x, Door::State& xdot) { Door::rhs(t, x, p, xdot); };
     eomgen::Event<Door::State> shut{"shut", [](const double&, const Door::State& x) { return x(0) + kPi / 2; },
                                     eomgen::EventDirection::Falling, eomgen::EventAction::Stop};
-    eomgen::Dopri5Options<double> opt;
+    typename Method<Door::State>::Options opt;
     opt.rtol = rtol;
-    opt.atol = 1e-15;
-    const auto r = eomgen::integrate(f, 0.0, x0, 100.0, opt, {shut});
+    opt.atol = atol;
+    const auto r = eomgen::integrate_with<Method>(f, 0.0, x0, 100.0, opt, {shut});
     REQUIRE(r.stop_reason == eomgen::StopReason::TerminalEvent);
     REQUIRE(r.stopped_by == "shut");
     return {r.t, r.x(1), r.rhs_evaluations};
@@ -54,6 +56,25 @@ TEST_CASE("door: closing time and final speed match the closed form to 1e-9", "[
             REQUIRE(-c.psi_dot == Approx(speed_exact).epsilon(1e-9));
             // The seed's 1.51 is 2.6220575542/√3 = 1.5138...: Δt = 1.5138 √(w/(g sin θ)).
             REQUIRE(c.t / std::sqrt(w / (p.g * std::sin(theta))) == Approx(1.5138).epsilon(1e-4));
+        }
+}
+
+TEST_CASE("door: DOP853 gets the closing time to 1e-13 of the closed form at rtol 1e-14", "[physics][door][dop853]") {
+    // The closed form in long double, so that its own rounding stays far below the 1e-13 checked.
+    const long double pi = 3.141592653589793238462643383279502884L;
+    const long double integral = std::sqrt(pi) / 2 * std::tgamma(0.25L) / std::tgamma(0.75L);
+    for (const double theta : {0.0234, 0.1, kPi / 2})
+        for (const double w : {0.9, 1.3}) {
+            Door::Params p;
+            p.theta = theta;
+            p.w = w;
+            p.g = 9.8;
+            const Closing c = simulate_closing<eomgen::Dop853>(p, 1e-14, 1e-16);
+            const long double dt_exact = integral * std::sqrt(w / (3 * p.g * std::sin((long double)theta)));
+            const double rel = double(std::abs(c.t - dt_exact) / dt_exact);
+            INFO("theta = " << theta << ", w = " << w << ": relative error " << rel << " with "
+                            << c.rhs_evaluations << " evaluations of f");
+            CHECK(rel <= 1e-13);
         }
 }
 

@@ -8,6 +8,7 @@
 #include "mechanics/lagrangian.hpp"
 #include "mechanics/small_oscillations.hpp"
 #include "model/model_file.hpp"
+#include "modes_support.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -19,22 +20,10 @@
 
 namespace {
 
-struct Derived {
-    eomgen::Model model;
-    eomgen::Equations eq;
-};
-
-Derived derive(const std::string& text) {
-    Derived d{eomgen::parse_model(text, "exam_modes.toml"), {}};
-    d.eq = eomgen::derive_equations(d.model);
-    return d;
-}
-
-Derived load(const std::string& relative) {
-    Derived d{eomgen::load_model(std::string(EOMGEN_SOURCE_DIR) + "/" + relative), {}};
-    d.eq = eomgen::derive_equations(d.model);
-    return d;
-}
+using modes_support::at;
+using modes_support::derive;
+using modes_support::Derived;
+using modes_support::load;
 
 GiNaC::symbol param(const eomgen::Model& m, const std::string& name) {
     for (const auto& p : m.parameters)
@@ -45,17 +34,6 @@ GiNaC::symbol param(const eomgen::Model& m, const std::string& name) {
 
 double eval(const GiNaC::ex& e, const GiNaC::exmap& at) {
     return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(at))).to_double();
-}
-
-/// The equilibrium at q (to 1e-9), or FAIL.
-const eomgen::Equilibrium& at(const eomgen::ModesResult& r, const std::vector<double>& q) {
-    for (const auto& e : r.equilibria) {
-        bool same = true;
-        for (std::size_t i = 0; i < q.size(); ++i) same = same && std::abs(e.q[i] - q[i]) < 1e-9;
-        if (same) return e;
-    }
-    FAIL("no equilibrium at the given q among " << r.equilibria.size());
-    return r.equilibria.front();
 }
 
 const std::string kDoublePendulum = R"toml(name = "double_pendulum"

@@ -1,0 +1,36 @@
+/**
+ * @file rest_linearization.hpp  The symbolic coefficients of the equations of motion linearized about rest.
+ *
+ * L is at most quadratic in the velocities (derive_equations checks T), so it splits as
+ * L = ½ q̇ᵀ M(q) q̇ + β(q)ᵀ q̇ + L₀(q), with V_eff = −L₀ = V − T₀. About a state of rest (q₀, q̇ = 0), with the
+ * generalized forces Q(q, q̇) (applied, and −∂R/∂q̇ of a Rayleigh function),
+ *
+ *     M(q₀) δq̈ + D(q₀) δq̇ + K(q₀) δq = −G(q₀),
+ *     G = ∂V_eff/∂q − Q|₀,   K = ∂G/∂q,   D_ij = ∂β_i/∂q_j − ∂β_j/∂q_i − ∂Q_i/∂q̇_j|₀,
+ *
+ * G = 0 at an equilibrium; D's symmetric part is damping, its skew part gyroscopic (Goldstein §6.1–6.2;
+ * Meirovitch, Methods of Analytical Dynamics, ch. 6). Used by `eomgen modes` (small_oscillations.cpp, on a
+ * Routh-reduced L too) and by the generated headers' stiffness(), damping() and gyroscopic().
+ */
+#pragma once
+
+#include <ginac/ginac.h>
+
+#include <vector>
+
+namespace eomgen {
+
+struct RestLinearization {
+    GiNaC::ex V_eff;                           ///< −L(q̇ = 0)
+    std::vector<GiNaC::ex> beta;               ///< ∂L/∂q̇ at q̇ = 0 (the part of L linear in q̇)
+    std::vector<GiNaC::ex> gradient;           ///< G = ∂V_eff/∂q − Q at q̇ = 0: zero at an equilibrium
+    std::vector<std::vector<GiNaC::ex>> M;     ///< ∂²L/∂q̇² (at q̇ = 0, on which it does not depend)
+    std::vector<std::vector<GiNaC::ex>> K;     ///< ∂G/∂q
+    std::vector<std::vector<GiNaC::ex>> D;     ///< damping (symmetric part) + gyroscopic (skew part)
+};
+
+/// The coefficients for L(q, q̇) and the forces Q(q, q̇) (one per coordinate), in the symbols q and qd.
+RestLinearization linearize_about_rest(const GiNaC::ex& L, const std::vector<GiNaC::ex>& Q,
+                                       const std::vector<GiNaC::symbol>& q, const std::vector<GiNaC::symbol>& qd);
+
+}  // namespace eomgen
