@@ -23,7 +23,8 @@ install(FILES "${CMAKE_CURRENT_BINARY_DIR}/eomgenConfig.cmake" "${CMAKE_CURRENT_
 install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY models/ DESTINATION ${CMAKE_INSTALL_DATADIR}/eomgen/models FILES_MATCHING PATTERN "*.toml")
-install(FILES examples/bead_on_hoop.toml examples/double_pendulum.toml examples/door_closing.cpp DESTINATION ${CMAKE_INSTALL_DATADIR}/eomgen/examples)
+install(FILES examples/bead_on_hoop.toml examples/double_pendulum.toml examples/door_closing.cpp
+              examples/door_sweep.cpp DESTINATION ${CMAKE_INSTALL_DATADIR}/eomgen/examples)
 
 # cpack -G DEB (from the build directory): eomgen_<version>_<arch>.deb, installing under /usr. The shared
 # libraries it needs (GiNaC, CLN, fmt, ...) come from dpkg-shlibdeps; Eigen and a C++ compiler because

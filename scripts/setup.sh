@@ -7,7 +7,9 @@ cd "$(dirname "$0")/.."
 
 packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2 libtomlplusplus-dev
           libcli11-dev libfmt-dev libbenchmark-dev libboost-dev gnuplot-nox
-          dpkg-dev file)  # the last two: cpack -G DEB (dpkg-shlibdeps, and file to find the binaries)
+          dpkg-dev file   # cpack -G DEB (dpkg-shlibdeps, and file to find the binaries)
+          libopenmpi-dev openmpi-bin   # optional for eomgen: ensembles across MPI ranks (mpirun), and its test
+          libhdf5-dev)                 # optional for eomgen: ensembles written as HDF5 (--out FILE.h5)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -205,6 +205,12 @@ double build(const CompileRequest& r, const std::string& key, const fs::path& di
 
 }  // namespace
 
+std::string text_hash(const std::string& text) {
+    Hasher h;
+    h.add(text);
+    return h.hex();
+}
+
 fs::path cache_directory() {
     fs::path base;
     if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg == '/')

@@ -47,6 +47,9 @@ struct CompileRequest {
     std::function<void(const std::string&)> progress;  ///< "compiling ..." messages, may be empty
 };
 
+/// 128 bits of FNV-1a of `text` in hex (the cache key's hash): what identifies a model file in a table's metadata.
+std::string text_hash(const std::string& text);
+
 /// The cache directory, created (0700) and checked; throws CacheError when unsafe.
 std::filesystem::path cache_directory();
 

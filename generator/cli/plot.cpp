@@ -135,18 +135,41 @@ void plot(const PlotRequest& r) {
     }
     gp << "unset multiplot\n";
 
+    run_gnuplot(gp.str(), r.output);
+}
+
+void run_gnuplot(const std::string& script_text, const std::string& output) {
     // The script goes to a private temporary file; gnuplot gets it as an argument (no shell).
     const TempDir dir(fs::temp_directory_path(), "eomgen-plot.");
     const fs::path script = dir.path() / "plot.gp", log = dir.path() / "gnuplot.log";
-    std::ofstream(script) << gp.str();
+    std::ofstream(script) << script_text;
     int status = 0;
     try {
         status = run_program({"gnuplot", script.string()}, log);
     } catch (const ProgramNotStarted& e) {
         throw std::runtime_error(std::string("cannot start gnuplot: ") + e.what() + " (install gnuplot-nox)");
     }
-    if (status != 0 || !fs::exists(r.output))
-        throw std::runtime_error("gnuplot failed to draw " + r.output + ": " + read_file(log));
+    if (status != 0 || !fs::exists(output))
+        throw std::runtime_error("gnuplot failed to draw " + output + ": " + read_file(log));
+}
+
+void plot_table(const TablePlotRequest& r) {
+    if (const std::string problem = plot_format_problem(r.output); !problem.empty())
+        throw std::invalid_argument(problem);
+    const std::vector<std::string> header = csv_header(r.csv);
+    const int x = column(header, r.x.name), y = column(header, r.y.name), status = column(header, r.status);
+    const std::string ext = fs::path(r.output).extension().string();
+    std::ostringstream gp;
+    gp << "set datafile separator ','\n";
+    gp << (ext == ".png" ? "set terminal pngcairo size 1000,600" : "set terminal svg size 1000,600") << " noenhanced\n";
+    gp << "set output " << gnuplot_string(r.output) << "\n";
+    gp << "set title " << gnuplot_string(r.title) << "\nset grid\nset key top right\n";
+    gp << "set xlabel " << gnuplot_string(labelled(r.x)) << "\nset ylabel " << gnuplot_string(labelled(r.y)) << "\n";
+    // Failed members have no y: their rows are left out (NaN is not drawn), and the key counts them.
+    gp << "plot " << gnuplot_string(r.csv) << " every ::1 using " << x << ":(strcol(" << status
+       << ") eq 'ok' ? column(" << y << ") : NaN) with " << (r.lines ? "linespoints" : "points")
+       << " pointtype 7 pointsize 0.6 title " << gnuplot_string(r.key) << "\n";
+    run_gnuplot(gp.str(), r.output);
 }
 
 std::string plot_format_problem(const std::string& output) {

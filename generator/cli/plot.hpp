@@ -28,6 +28,22 @@ struct PlotRequest {
 /// outputs, its residuals the `residual_<constraint>` columns.
 void plot(const PlotRequest& request);
 
+/// One column of a table against another, a point per row (an ensemble's result against a swept value).
+struct TablePlotRequest {
+    std::string csv;     ///< a table with a header row (eomgen::csv_row lines)
+    std::string output;  ///< FILE.png or FILE.svg
+    std::string title, key;
+    PlotColumn x, y;     ///< columns of the table
+    std::string status;  ///< the column that says "ok" for rows that have a y (others are left out)
+    bool lines = false;  ///< join the points (one swept variable, in order)
+};
+
+/// Writes the table's plot; throws as plot() does.
+void plot_table(const TablePlotRequest& request);
+
+/// Runs gnuplot on `script`, which draws to `output`; throws std::runtime_error with gnuplot's message.
+void run_gnuplot(const std::string& script, const std::string& output);
+
 /// Why `output` cannot be a plot's file name (it must end in .png or .svg), or "" when it can.
 std::string plot_format_problem(const std::string& output);
 

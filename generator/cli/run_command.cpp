@@ -2,6 +2,7 @@
 #include "cli/run_command.hpp"
 
 #include "cli/compiled_model.hpp"
+#include "cli/ensemble_command.hpp"
 #include "cli/plot.hpp"
 #include "cli/process.hpp"
 #include "eomgen/model_table.hpp"
@@ -79,6 +80,16 @@ RunCommand::RunCommand(CLI::App& app) {
     run_->add_flag("--no-cache", no_cache_, "Compile afresh and keep nothing in the cache");
     run_->add_flag("--quiet", quiet_, "No progress messages on stderr");
     run_->add_flag("--progress", progress_, "Progress messages on stderr even when it is not a terminal");
+    // Ensembles (ensemble_command.hpp): many members, one row each.
+    run_->add_option("--sweep", design_.sweeps,
+                     "Ensemble over NAME (a parameter, or a state's initial value): NAME=START:STOP:COUNT or "
+                     "NAME=v1,v2,...; repeatable: the grid of all combinations");
+    run_->add_option("--sample", design_.sample, "Monte Carlo ensemble of N members drawn from the --dist's");
+    run_->add_option("--dist", design_.dists, "With --sample: NAME=uniform(a,b) or NAME=normal(mu,sigma); repeatable");
+    run_->add_option("--seed", design_.seed, "With --sample: the seed of the draws (default 0)")
+        ->each([this](const std::string&) { design_.seed_given = true; });
+    run_->add_option("--threads", threads_, "Threads of an ensemble (default: every core)");
+    run_->add_option("--out", out_, "An ensemble's table (one CSV row per member); default: stdout");
     cache_ = app.add_subcommand("cache", "The cache of compiled models (" "$XDG_CACHE_HOME/eomgen)");
     clear_ = cache_->add_subcommand("clear", "Remove every compiled model from the cache");
     cache_->require_subcommand(1);
@@ -123,7 +134,21 @@ int RunCommand::run_model() {
     const std::string text = read_model_file(model_path_);
     const Model model = parse_model(text, model_path_);
     std::vector<std::pair<PlotColumn, PlotColumn>> xy;
-    for (const std::string& spec : plot_xy_) {
+    const bool ensemble = EnsembleDesign::requested(design_);
+    if (ensemble) {
+        // The design's mistakes before the compiler runs (its columns and plot are checked after).
+        EnsembleNames names;
+        for (const Parameter& p : model.parameters) names.params.push_back(p.name);
+        for (const Coordinate& c : model.coordinates) names.states.push_back(c.name);
+        for (const Coordinate& c : model.coordinates) names.states.push_back(c.name + "_dot");
+        try {
+            (void)EnsembleDesign(design_, names);
+        } catch (const eomgen::sim::UsageError& e) {
+            if (first_rank()) std::cerr << "eomgen run: " << e.what() << "\n";
+            return 2;
+        }
+    }
+    for (const std::string& spec : ensemble ? std::vector<std::string>{} : plot_xy_) {
         const std::string problem = plot_.empty() ? "needs --plot" : xy_problem(model, spec, xy);
         if (!problem.empty()) {
             std::cerr << "eomgen run: --plot-xy " << spec << ": " << problem << "\n";
@@ -140,6 +165,26 @@ int RunCommand::run_model() {
     const CompiledModel compiled = compile_model(request);
     progress(compiled.from_cache ? "loaded from the cache: " + compiled.path
                                  : "compiled in " + std::to_string(compiled.compile_seconds).substr(0, 4) + " s");
+
+    if (ensemble) {
+        if (!plot_phase_.empty()) {
+            std::cerr << "eomgen run: --plot-phase draws one run; an ensemble's --plot is a result against a varied value\n";
+            return 2;
+        }
+        progress("integrating the ensemble");
+        eomgen::TableModel::bind(*compiled.table);
+        EnsembleRequest e{&model, options_, design_, threads_, out_, model_path_, text_hash(text), plot_, plot_xy_,
+                          show_progress};
+        e.options.model = model.name;
+        return run_ensemble(e);
+    }
+    // Ensemble options without an ensemble are mistakes, not silently ignored.
+    for (const auto& [given, option] : {std::pair<bool, const char*>{design_.seed_given, "--seed"},
+                                        {threads_ != 0, "--threads"}, {!out_.empty(), "--out"}})
+        if (given) {
+            std::cerr << "eomgen run: " << option << " needs an ensemble (--sweep or --sample)\n";
+            return 2;
+        }
 
     // A plot needs the samples: into a private temporary CSV unless --csv names one.
     eomgen::sim::Options o = options_;

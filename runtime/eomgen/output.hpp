@@ -8,6 +8,8 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <ostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -44,36 +46,40 @@ inline TemporaryFileHooks& temporary_file_hooks() {
     return hooks;
 }
 
+/// A line of CSV: the fields escaped by csv_field(), separated by commas, ended by a newline.
+inline std::string csv_row(const std::vector<std::string>& fields) {
+    std::string line;
+    for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? "," : "") + csv_field(fields[i]);
+    return line + "\n";
+}
+
+/// A number as the CSV writers write it: max_digits10 significant digits, so that it reads back exactly.
+template <class Scalar = double>
+std::string csv_number(const Scalar& value) {
+    std::ostringstream os;
+    os.precision(std::numeric_limits<Scalar>::max_digits10);
+    os << value;
+    return os.str();
+}
+
 /**
- * Writes `t,<state names...>,<extra names...>` and then one row per call of write_row, every number at
- * std::numeric_limits<Scalar>::max_digits10 significant digits (so each value reads back exactly).
- *
- * Rows go to `<path>.tmp` and commit() renames that over `path` (atomic on POSIX within one directory),
- * so a reader never sees a half-written file; if the writer is destroyed without commit(), e.g. because
- * the simulation threw, the temporary file is removed and `path` is left as it was. Throws
- * std::runtime_error when the file cannot be opened, written or renamed.
+ * A text file that appears whole or not at all: written to `<path>.tmp`, which commit() renames over
+ * `path` (atomic on POSIX within one directory); if the object goes without commit(), e.g. because the
+ * simulation threw, the temporary file is removed and `path` is left as it was (and on an interrupt too,
+ * where the program set temporary_file_hooks()). Throws std::runtime_error
+ * when the file cannot be opened, written or renamed.
  */
-template <class Scalar>
-class CsvWriter {
+class AtomicOutputFile {
   public:
-    CsvWriter(const std::string& path, const std::vector<std::string>& state_names,
-              const std::vector<std::string>& extra_names = {})
-        : path_(path), tmp_path_(path + ".tmp"), columns_(state_names.size() + extra_names.size()) {
+    explicit AtomicOutputFile(const std::string& path) : path_(path), tmp_path_(path + ".tmp") {
         out_.open(tmp_path_, std::ios::out | std::ios::trunc);
         if (!out_) throw std::runtime_error("cannot open '" + tmp_path_ + "' for writing");
         if (temporary_file_hooks().guard) temporary_file_hooks().guard(tmp_path_.c_str());
         guarded_ = true;
-        out_.precision(std::numeric_limits<Scalar>::max_digits10);
-        out_ << "t";
-        for (const auto& name : state_names) out_ << ',' << csv_field(name);
-        for (const auto& name : extra_names) out_ << ',' << csv_field(name);
-        out_ << '\n';
-        n_state_ = state_names.size();
     }
-    CsvWriter(const CsvWriter&) = delete;
-    CsvWriter& operator=(const CsvWriter&) = delete;
-
-    ~CsvWriter() {
+    AtomicOutputFile(const AtomicOutputFile&) = delete;
+    AtomicOutputFile& operator=(const AtomicOutputFile&) = delete;
+    ~AtomicOutputFile() {
         if (committed_) return;
         out_.close();
         std::error_code ignored;
@@ -81,24 +87,12 @@ class CsvWriter {
         release();
     }
 
-    /// One row: t, the state x (size = number of state names) and the extras (any indexable, e.g. an
-    /// Eigen vector or std::array, size = number of extra names).
-    template <class Derived, class Extra>
-    void write_row(const Scalar& t, const Eigen::MatrixBase<Derived>& x, const Extra& extra) {
-        const std::size_t n_extra = static_cast<std::size_t>(extra.size());
-        if (static_cast<std::size_t>(x.size()) != n_state_ || n_state_ + n_extra != columns_)
-            throw std::invalid_argument("CsvWriter: row does not match the header of '" + path_ + "'");
-        out_ << t;
-        for (Eigen::Index i = 0; i < x.size(); ++i) out_ << ',' << Scalar(x(i));
-        for (std::size_t i = 0; i < n_extra; ++i) out_ << ',' << Scalar(extra[i]);
-        out_ << '\n';
-        if (!out_) throw std::runtime_error("error writing '" + tmp_path_ + "'");
-    }
+    std::ostream& stream() { return out_; }
+    const std::string& path() const { return path_; }
 
-    /// A row without extra columns.
-    template <class Derived>
-    void write_row(const Scalar& t, const Eigen::MatrixBase<Derived>& x) {
-        write_row(t, x, std::vector<Scalar>{});
+    /// Throws when a write to the stream has failed.
+    void check() {
+        if (!out_) throw std::runtime_error("error writing '" + tmp_path_ + "'");
     }
 
     /// Flushes, closes and renames the temporary file over `path`.
@@ -121,11 +115,57 @@ class CsvWriter {
         guarded_ = false;
     }
 
-    bool guarded_ = false;
     std::string path_, tmp_path_;
     std::ofstream out_;
-    std::size_t columns_, n_state_ = 0;
-    bool committed_ = false;
+    bool committed_ = false, guarded_ = false;
+};
+
+/**
+ * Writes `t,<state names...>,<extra names...>` and then one row per call of write_row, every number at
+ * std::numeric_limits<Scalar>::max_digits10 significant digits (so each value reads back exactly).
+ * Atomic as AtomicOutputFile: rows go to `<path>.tmp`, commit() renames it over `path`.
+ */
+template <class Scalar>
+class CsvWriter {
+  public:
+    CsvWriter(const std::string& path, const std::vector<std::string>& state_names,
+              const std::vector<std::string>& extra_names = {})
+        : file_(path), columns_(state_names.size() + extra_names.size()), n_state_(state_names.size()) {
+        std::ostream& out = file_.stream();
+        out.precision(std::numeric_limits<Scalar>::max_digits10);
+        out << "t";
+        for (const auto& name : state_names) out << ',' << csv_field(name);
+        for (const auto& name : extra_names) out << ',' << csv_field(name);
+        out << '\n';
+    }
+
+    /// One row: t, the state x (size = number of state names) and the extras (any indexable, e.g. an
+    /// Eigen vector or std::array, size = number of extra names).
+    template <class Derived, class Extra>
+    void write_row(const Scalar& t, const Eigen::MatrixBase<Derived>& x, const Extra& extra) {
+        const std::size_t n_extra = static_cast<std::size_t>(extra.size());
+        if (static_cast<std::size_t>(x.size()) != n_state_ || n_state_ + n_extra != columns_)
+            throw std::invalid_argument("CsvWriter: row does not match the header of '" + file_.path() + "'");
+        std::ostream& out = file_.stream();
+        out << t;
+        for (Eigen::Index i = 0; i < x.size(); ++i) out << ',' << Scalar(x(i));
+        for (std::size_t i = 0; i < n_extra; ++i) out << ',' << Scalar(extra[i]);
+        out << '\n';
+        file_.check();
+    }
+
+    /// A row without extra columns.
+    template <class Derived>
+    void write_row(const Scalar& t, const Eigen::MatrixBase<Derived>& x) {
+        write_row(t, x, std::vector<Scalar>{});
+    }
+
+    /// Flushes, closes and renames the temporary file over `path`.
+    void commit() { file_.commit(); }
+
+  private:
+    AtomicOutputFile file_;
+    std::size_t columns_, n_state_;
 };
 
 /**

@@ -220,6 +220,18 @@ void write_samples(const Options& o, const typename M::Params& params,
     std::cout << "csv:     " << o.csv << " (" << samples.size() << " rows)\n";
 }
 
+/// Why the file `path` that `option` names cannot be written (its directory is missing, it is a directory),
+/// or "" when nothing says it cannot.
+inline std::string output_path_problem(const std::string& option, const std::string& path) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(path).parent_path();
+    std::error_code ec;
+    if (!dir.empty() && !fs::is_directory(dir, ec))
+        return option + " " + path + ": the directory '" + dir.string() + "' does not exist";
+    if (fs::is_directory(path, ec)) return option + " " + path + ": is a directory";
+    return "";
+}
+
 /// The options' values that no model accepts, refused before anything runs (UsageError, OutputError).
 inline void check_options(const Options& o) {
     auto finite = [](double v) { return std::isfinite(v); };
@@ -238,29 +250,19 @@ inline void check_options(const Options& o) {
             throw UsageError(os.str());
         }
     }
-    if (!o.csv.empty()) {
-        namespace fs = std::filesystem;
-        const fs::path dir = fs::path(o.csv).parent_path();
-        std::error_code ec;
-        if (!dir.empty() && !fs::is_directory(dir, ec))
-            throw OutputError("--csv " + o.csv + ": the directory '" + dir.string() + "' does not exist");
-        if (fs::is_directory(o.csv, ec)) throw OutputError("--csv " + o.csv + ": is a directory");
-    }
+    if (!o.csv.empty())
+        if (const std::string problem = output_path_problem("--csv", o.csv); !problem.empty()) throw OutputError(problem);
 }
 
+/// The parameters after `--set` and the initial state after `--init` (UsageError for an unknown name or value).
 template <class M>
-int run(const Options& o) {
-    using State = typename M::State;
-    using Config = typename M::Config;
-    check_options(o);
-    typename M::Params params;
+void apply_settings(const Options& o, typename M::Params& params, typename M::State& x0) {
     for (const std::string& s : o.set) {
         const auto [name, v] = parse_assignment(s, "--set");
         if (!M::set_param(params, name, v))
             throw UsageError("--set " + s + ": " + M::name + " has no parameter '" + name + "'" +
                              did_you_mean(name, M::param_names) + " (it has " + list(M::param_names) + ")");
     }
-    State x0 = M::default_state();
     for (const std::string& s : o.init) {
         const auto [name, v] = parse_assignment(s, "--init");
         const int i = index_of(M::state_names, name);
@@ -269,82 +271,112 @@ int run(const Options& o) {
                              " (states: " + list(M::state_names) + ")");
         x0(i) = v;
     }
+}
+
+/// `--until NAME=VALUE` as a terminal event where state NAME crosses VALUE (none when o.until is empty).
+template <class M>
+std::vector<eomgen::Event<typename M::State>> until_events(const Options& o) {
+    using State = typename M::State;
+    std::vector<eomgen::Event<State>> events;
+    if (o.until.empty()) return events;
+    if (o.method == "symplectic")
+        throw UsageError("--until needs --method dopri5, dop853 or rk4 (events use dense output)");
+    const auto [name, value] = parse_assignment(o.until, "--until");
+    const int i = index_of(M::state_names, name);
+    if (i < 0)
+        throw UsageError("--until " + o.until + ": no state '" + name + "'" + did_you_mean(name, M::state_names) +
+                         " (states: " + list(M::state_names) + ")");
+    const double target = value;
+    events.push_back({o.until, [i, target](const double&, const State& x) { return x(i) - target; },
+                      eomgen::EventDirection::Both, eomgen::EventAction::Stop});
+    return events;
+}
+
+/// What one integration gave: where and how it ended, the samples when asked for, the energy's drift.
+template <class M>
+struct Trajectory {
+    using State = typename M::State;
+    double t = 0;            ///< where it ended: t_end, or the terminal event's time
+    State x;                 ///< the state there
+    std::string stopped_by;  ///< the terminal event's name, "" when t_end was reached
+    double h0 = 0;           ///< the energy at the start (after a projection onto the constraints)
+    double max_drift = 0;    ///< the largest change of h from h0 at the samples (and steps), relative unless h0 = 0
+    std::vector<eomgen::Sample<State>> samples;  ///< at o.samples + 1 times when keep_samples
+};
+
+/**
+ * Integrates M from (0, x0) to o.t_end with o's method, tolerances and steps, stopping at a terminal event
+ * of `events` (until_events()). With keep_samples the state is sampled at o.samples + 1 times on [0, t_end]
+ * and the energy's drift measured there; without, only the end is computed (a constrained model is still
+ * projected at those times, which is its drift control). What the method did is written to `log` when not
+ * null (what eomgen-sim prints). Throws UsageError for a method the model cannot take and the runtime's
+ * SimulationError when the integration fails.
+ */
+template <class M>
+Trajectory<M> simulate(const Options& o, const typename M::Params& params, const typename M::State& x0,
+                       const std::vector<eomgen::Event<typename M::State>>& events, bool keep_samples,
+                       std::ostream* log) {
+    using State = typename M::State;
+    using Config = typename M::Config;
     auto h = [&params](double t, const State& x) {
         const Config q = positions<M::nq>(x), qd = velocities<M::nq>(x);
         return M::energy(t, q, qd, params);
     };
     auto f = [&params](const double& t, const State& x, State& xdot) { M::rhs(t, x, params, xdot); };
 
-    std::cout.precision(15);
-    std::cout << "model:   " << M::name << " (" << M::title << (std::string(M::source).empty() ? "" : "; ")
-              << M::source << ")\n";
-    std::cout << "params: ";
-    const auto values = M::param_values(params);
-    for (std::size_t i = 0; i < values.size(); ++i) std::cout << " " << M::param_names[i] << "=" << values[i];
-    std::cout << "\n";
-
-    double h0 = h(0, x0);
-    double max_drift = 0;
-    std::vector<eomgen::Sample<State>> samples;
+    Trajectory<M> out;
+    out.x = x0;
+    out.h0 = h(0, x0);
     // Relative to h(0), or absolute where h(0) is 0 (or nearly: a relative error would be meaningless).
-    auto drift = [&h0](double value) {
-        return std::abs(value - h0) / (std::abs(h0) < 1e-12 ? 1.0 : std::abs(h0));
+    auto drift = [&out](double value) {
+        return std::abs(value - out.h0) / (std::abs(out.h0) < 1e-12 ? 1.0 : std::abs(out.h0));
     };
-    auto track = [&](double t, const State& x) { max_drift = std::max(max_drift, drift(h(t, x))); };
+    auto track = [&](double t, const State& x) { out.max_drift = std::max(out.max_drift, drift(h(t, x))); };
 
     std::vector<double> sample_times;
-    for (int k = 0; k <= o.samples; ++k) sample_times.push_back(o.t_end * k / std::max(o.samples, 1));
+    const bool constrained = constraint_count<M>() > 0 && is_adaptive_method(o.method);
+    if (keep_samples || constrained)
+        for (int k = 0; k <= o.samples; ++k) sample_times.push_back(o.t_end * k / std::max(o.samples, 1));
 
-    double t_final = 0;
-    State x_final = x0;
-    std::string how;
-    // --until NAME=VALUE: a terminal event where state NAME crosses VALUE (dense output: dopri5, dop853, rk4).
-    std::vector<eomgen::Event<State>> events;
-    if (!o.until.empty()) {
-        if (o.method == "symplectic")
-            throw UsageError("--until needs --method dopri5, dop853 or rk4 (events use dense output)");
-        const auto [name, value] = parse_assignment(o.until, "--until");
-        const int i = index_of(M::state_names, name);
-        if (i < 0) throw UsageError("--until " + o.until + ": no state '" + name + "'" + did_you_mean(name, M::state_names) + " (states: " +
-                                    list(M::state_names) + ")");
-        const double target = value;
-        events.push_back({o.until, [i, target](const double&, const State& x) { return x(i) - target; },
-                          eomgen::EventDirection::Both, eomgen::EventAction::Stop});
-    }
-    // What every method prints about how the run ended.
-    auto report_run = [](const auto& r) {
-        std::cout << "steps:   " << r.accepted_steps << " accepted, " << r.rejected_steps << " rejected, "
-                  << r.rhs_evaluations << " right-hand sides\n";
-        for (const auto& e : r.events) std::cout << "event:   " << e.name << " at t = " << e.t << "\n";
-        std::cout << "stopped: "
-                  << (r.stop_reason == eomgen::StopReason::TerminalEvent ? "at event " + r.stopped_by : "at t_end")
-                  << "\n";
+    // What every method reports about how the run ended.
+    auto report_run = [log](const auto& r) {
+        if (!log) return;
+        *log << "steps:   " << r.accepted_steps << " accepted, " << r.rejected_steps << " rejected, "
+             << r.rhs_evaluations << " right-hand sides\n";
+        for (const auto& e : r.events) *log << "event:   " << e.name << " at t = " << e.t << "\n";
+        *log << "stopped: "
+             << (r.stop_reason == eomgen::StopReason::TerminalEvent ? "at event " + r.stopped_by : "at t_end") << "\n";
+    };
+    auto finish = [&out](const auto& r) {
+        out.t = r.t;
+        out.x = r.x;
+        if (r.stop_reason == eomgen::StopReason::TerminalEvent) out.stopped_by = r.stopped_by;
     };
 
     bool done = false;
     if constexpr (is_constrained<M>::value) {
-        if (constraint_count<M>() > 0)
+        if (constrained)
             done = with_adaptive_method(o.method, [&](auto method) {
                 using Method = decltype(method);
                 const auto r = eomgen::integrate_constrained<M, Method::template type>(
-                    params, 0.0, x0, sample_times, Method::template options<State>(o), o.project_initial,
-                    events);
+                    params, 0.0, x0, sample_times, Method::template options<State>(o), o.project_initial, events);
                 // Energy drift from the (possibly projected) start, not from the state given.
-                h0 = h(r.run.samples.front().t, r.run.samples.front().x);
-                for (const auto& s : r.run.samples) max_drift = std::max(max_drift, drift(h(s.t, s.x)));
-                samples = r.run.samples;
-                typename M::ConstraintVector lambda;
-                M::multipliers(r.run.t, r.run.x, params, lambda);
-                std::cout << "method:  " << o.method << " with projection onto the constraints after each of "
-                          << o.samples << " segments, rtol " << o.rtol << ", atol " << o.atol << "\n";
-                report_run(r.run);
-                std::cout << "constraint residuals before projection: position " << r.max_position_residual
-                          << ", velocity " << r.max_velocity_residual << "\n";
-                for (int k = 0; k < M::n_constraints; ++k)
-                    std::cout << "multiplier " << M::constraint_names[std::size_t(k)] << " = " << lambda(k)
-                              << " at the end\n";
-                t_final = r.run.t;
-                x_final = r.run.x;
+                out.h0 = h(r.run.samples.front().t, r.run.samples.front().x);
+                for (const auto& s : r.run.samples) out.max_drift = std::max(out.max_drift, drift(h(s.t, s.x)));
+                if (keep_samples) out.samples = r.run.samples;
+                if (log) {
+                    typename M::ConstraintVector lambda;
+                    M::multipliers(r.run.t, r.run.x, params, lambda);
+                    *log << "method:  " << o.method << " with projection onto the constraints after each of "
+                         << o.samples << " segments, rtol " << o.rtol << ", atol " << o.atol << "\n";
+                    report_run(r.run);
+                    *log << "constraint residuals before projection: position " << r.max_position_residual
+                         << ", velocity " << r.max_velocity_residual << "\n";
+                    for (int k = 0; k < M::n_constraints; ++k)
+                        *log << "multiplier " << M::constraint_names[std::size_t(k)] << " = " << lambda(k)
+                             << " at the end\n";
+                }
+                finish(r.run);
             });
     }
     if (!done && o.method == "symplectic") {
@@ -355,53 +387,76 @@ int run(const Options& o) {
         vi.set_state(0.0, positions<M::nq>(x0), velocities<M::nq>(x0));
         const auto steps = static_cast<std::size_t>(std::llround(o.t_end / o.dt));
         const std::size_t every = std::max<std::size_t>(1, steps / std::size_t(std::max(o.samples, 1)));
-        samples.push_back({0.0, x0});
+        if (keep_samples) out.samples.push_back({0.0, x0});
         for (std::size_t k = 1; k <= steps; ++k) {
             vi.step();
             State x = x0;
             positions<M::nq>(x) = vi.q();  // not `x << q, qd`: g++ 12 warns falsely for 1×1 blocks
             velocities<M::nq>(x) = vi.velocity();
             track(vi.t(), x);
-            if (k % every == 0 || k == steps) samples.push_back({vi.t(), x});
-            x_final = x;
+            if (keep_samples && (k % every == 0 || k == steps)) out.samples.push_back({vi.t(), x});
+            out.x = x;
         }
-        t_final = vi.t();
-        how = "variational midpoint, dt " + std::to_string(o.dt) + ", " + std::to_string(steps) + " steps";
-        std::cout << "method:  " << how << "\n";
+        out.t = vi.t();
+        if (log) *log << "method:  variational midpoint, dt " << std::to_string(o.dt) << ", " << steps << " steps\n";
     } else if (!done) {
-        eomgen::Observer<State> observer = [&](const double& t, const State& x) {
-            track(t, x);
-            samples.push_back({t, x});
-        };
+        eomgen::Observer<State> observer;
+        if (keep_samples)
+            observer = [&](const double& t, const State& x) {
+                track(t, x);
+                out.samples.push_back({t, x});
+            };
         eomgen::IntegrationResult<State> r;
         if (o.method == "rk4") {
             r = eomgen::integrate_rk4(f, 0.0, x0, o.t_end, o.dt, events, sample_times, observer);
-            std::cout << "method:  rk4, dt " << o.dt << "\n";
+            if (log) *log << "method:  rk4, dt " << o.dt << "\n";
         } else if (!with_adaptive_method(o.method, [&](auto method) {
                        using Method = decltype(method);
                        r = eomgen::integrate_with<Method::template type>(f, 0.0, x0, o.t_end,
                                                                          Method::template options<State>(o),
                                                                          events, sample_times, observer);
-                       std::cout << "method:  " << o.method << ", rtol " << o.rtol << ", atol " << o.atol
-                                 << "\n";
+                       if (log) *log << "method:  " << o.method << ", rtol " << o.rtol << ", atol " << o.atol << "\n";
                    })) {
             throw UsageError("--method " + o.method + ": expected dopri5, dop853, rk4 or symplectic");
         }
-        t_final = r.t;
-        x_final = r.x;
+        finish(r);
         track(r.t, r.x);
         report_run(r);
     }
+    return out;
+}
+
+/// One run as eomgen-sim and `eomgen run` make it: the settings, the integration, its report on stdout
+/// and the CSV of its samples.
+template <class M>
+int run(const Options& o) {
+    using State = typename M::State;
+    check_options(o);
+    typename M::Params params;
+    State x0 = M::default_state();
+    apply_settings<M>(o, params, x0);
+    const auto events = until_events<M>(o);
+
     std::cout.precision(15);
-    std::cout << "t:       " << t_final << "\n";
-    for (Eigen::Index i = 0; i < x_final.size(); ++i)
-        std::cout << "  " << M::state_names[std::size_t(i)] << " = " << x_final(i) << "\n";
-    std::cout << "energy h: " << h0 << " at t = 0, " << h(t_final, x_final) << " at the end; "
-              << (std::abs(h0) < 1e-12 ? "max |dh| = " : "max |dh|/|h0| = ") << max_drift
-              << (std::abs(h0) < 1e-12 ? "  (absolute: h0 is 0)" : "")
+    std::cout << "model:   " << M::name << " (" << M::title << (std::string(M::source).empty() ? "" : "; ")
+              << M::source << ")\n";
+    std::cout << "params: ";
+    const auto values = M::param_values(params);
+    for (std::size_t i = 0; i < values.size(); ++i) std::cout << " " << M::param_names[i] << "=" << values[i];
+    std::cout << "\n";
+
+    const Trajectory<M> r = simulate<M>(o, params, x0, events, true, &std::cout);
+    const double h_end = M::energy(r.t, positions<M::nq>(r.x), velocities<M::nq>(r.x), params);
+    std::cout.precision(15);
+    std::cout << "t:       " << r.t << "\n";
+    for (Eigen::Index i = 0; i < r.x.size(); ++i)
+        std::cout << "  " << M::state_names[std::size_t(i)] << " = " << r.x(i) << "\n";
+    std::cout << "energy h: " << r.h0 << " at t = 0, " << h_end << " at the end; "
+              << (std::abs(r.h0) < 1e-12 ? "max |dh| = " : "max |dh|/|h0| = ") << r.max_drift
+              << (std::abs(r.h0) < 1e-12 ? "  (absolute: h0 is 0)" : "")
               << (M::explicit_time ? "  (L depends on t: h need not be conserved)" : "") << "\n";
     try {
-        write_samples<M>(o, params, samples);
+        write_samples<M>(o, params, r.samples);
     } catch (const std::runtime_error& e) {
         throw OutputError(std::string("cannot write the CSV: ") + e.what());
     }
