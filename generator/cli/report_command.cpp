@@ -213,7 +213,7 @@ std::string markdown(const Model& model, const Equations& eq, const std::vector<
     } else {
         md << "From the model's initial state" << (o.set.empty() && o.init.empty() ? "" : " with the options below")
            << " to t = " << o.t_end << ", method " << markdown_text(o.method)
-           << (o.method == "dopri5" ? ", rtol " + number(o.rtol) + ", atol " + number(o.atol) : "") << ".";
+           << (o.method == "dopri5" || o.method == "radau5" ? ", rtol " + number(o.rtol) + ", atol " + number(o.atol) : "") << ".";
         if (sim.code != 0) md << " **The simulation failed**:";
         md << "\n\n";
         for (const std::string& line : lines_of(sim.summary + sim.errors)) md << "    " << line << "\n";

@@ -7,8 +7,10 @@
 
 #include "eomgen/constraints.hpp"
 #include "eomgen/integrate.hpp"
+#include "eomgen/model_jacobian.hpp"
 #include "eomgen/model_traits.hpp"
 #include "eomgen/output.hpp"
+#include "eomgen/radau5.hpp"
 #include "eomgen/symplectic.hpp"
 
 #include <algorithm>
@@ -222,6 +224,9 @@ int run(const Options& o) {
     using State = typename M::State;
     using Config = typename M::Config;
     check_options(o);
+    if (o.method == "radau5" && constraint_count<M>() > 0)
+        throw UsageError("--method radau5 integrates unconstrained models; use dopri5 for " + std::string(M::name) +
+                         "'s constraints");
     typename M::Params params;
     for (const std::string& s : o.set) {
         const auto [name, v] = parse_assignment(s, "--set");
@@ -270,7 +275,8 @@ int run(const Options& o) {
     // --until NAME=VALUE: a terminal event where state NAME crosses VALUE (dense output: dopri5, rk4).
     std::vector<eomgen::Event<State>> events;
     if (!o.until.empty()) {
-        if (o.method == "symplectic") throw UsageError("--until needs --method dopri5 or rk4 (events use dense output)");
+        if (o.method == "symplectic")
+            throw UsageError("--until needs --method dopri5, radau5 or rk4 (events use dense output)");
         const auto [name, value] = parse_assignment(o.until, "--until");
         const int i = index_of(M::state_names, name);
         if (i < 0) throw UsageError("--until " + o.until + ": no state '" + name + "'" + did_you_mean(name, M::state_names) + " (states: " +
@@ -352,8 +358,20 @@ int run(const Options& o) {
             opt.max_steps = o.max_steps;
             r = eomgen::integrate(f, 0.0, x0, o.t_end, opt, events, sample_times, observer);
             std::cout << "method:  dopri5, rtol " << o.rtol << ", atol " << o.atol << "\n";
+        } else if (o.method == "radau5") {
+            eomgen::Radau5Options<double> opt;
+            opt.rtol = o.rtol;
+            opt.atol = o.atol;
+            opt.max_steps = o.max_steps;
+            const auto jac = [&params](const double& t, const State& x, auto& J) {
+                eomgen::model_jacobian<M>(t, x, params, J);
+            };
+            const auto rr = eomgen::integrate_radau5(f, jac, 0.0, x0, o.t_end, opt, events, sample_times, observer);
+            r = rr;
+            std::cout << "method:  radau5 (implicit, exact Jacobian), rtol " << o.rtol << ", atol " << o.atol << "; "
+                      << rr.jacobian_evaluations << " Jacobians, " << rr.lu_decompositions << " LU decompositions\n";
         } else {
-            throw UsageError("--method " + o.method + ": expected dopri5, rk4 or symplectic");
+            throw UsageError("--method " + o.method + ": expected dopri5, radau5, rk4 or symplectic");
         }
         t_final = r.t;
         x_final = r.x;
