@@ -45,6 +45,7 @@ struct CompileRequest {
     std::function<std::string()> header;  ///< derives and emits the header: called only when compiling
     bool use_cache = true;
     std::function<void(const std::string&)> progress;  ///< "compiling ..." messages, may be empty
+    bool jacobian = false;  ///< compile the table's Jacobian too (--method radau5): a separate cache entry
 };
 
 /// The cache directory, created (0700) and checked; throws CacheError when unsafe.

@@ -425,6 +425,7 @@ int ReportCommand::run() {
             CompileRequest request{text, model.name,
                                    [&] { return codegen::emit_model_header(model, eq, fs::path(model_path_).filename().string()); },
                                    !no_cache_, progress};
+            request.jacobian = options_.method == "radau5";
             const CompiledModel compiled = compile_model(request);
             eomgen::TableModel::bind(*compiled.table);
         } catch (const CompileError& e) {

@@ -74,7 +74,8 @@ struct ModelTable {
     int (*constraints)(double t, const double* q, const double* qd, const void* p, double* A, double* gamma);
     int (*constraint_residuals)(double t, const double* q, const double* qd, const void* p, double* g, double* c);
     int (*multipliers)(double t, const double* x, const void* p, double* lambda);
-    /// J = ∂ẋ/∂x (2 nq × 2 nq, column-major), by forward differentiation in the shared object (model_jacobian.hpp).
+    /// J = ∂ẋ/∂x (2 nq × 2 nq, column-major), by forward differentiation in the shared object (model_jacobian.hpp);
+    /// null unless the table was made by model_table<M, true>.
     int (*jacobian)(double t, const double* x, const void* p, double* J);
     /// The message of the last error on this thread, and its time in *t.
     const char* (*error_message)(double* t);
@@ -238,8 +239,9 @@ struct Wrappers {
 
 }  // namespace table_detail
 
-/// The table of generated model M (a Model<double> of a generated header).
-template <class M>
+/// The table of generated model M (a Model<double> of a generated header). With `WithJacobian` the table's
+/// `jacobian` is filled (forward differentiation: it doubles the shared object's compile time), else null.
+template <class M, bool WithJacobian = false>
 const ModelTable& model_table() {
     using W = table_detail::Wrappers<M>;
     constexpr bool constrained = is_constrained<M>::value;
@@ -280,7 +282,7 @@ const ModelTable& model_table() {
         t.mass_matrix = &W::mass_matrix;
         t.momenta = &W::momenta;
         t.lagrangian_gradient = &W::lagrangian_gradient;
-        t.jacobian = &W::jacobian;
+        if constexpr (WithJacobian) t.jacobian = &W::jacobian;
         t.error_message = &W::error_message;
         return t;
     }();
@@ -424,6 +426,8 @@ class TableModel {
 
     /// J = ∂ẋ/∂x, computed in the shared object (model_jacobian.hpp asks for it by this name).
     static void jacobian(double t, const State& x, const Params& p, Eigen::MatrixXd& J) {
+        if (!table().jacobian)
+            throw std::logic_error("the compiled model has no Jacobian (model_table<M, true> compiles one)");
         J.resize(x.size(), x.size());
         check(table().jacobian(t, x.data(), p.data(), J.data()));
     }
