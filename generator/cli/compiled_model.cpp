@@ -109,6 +109,7 @@ std::string cache_key(const CompileRequest& r, const std::vector<std::string>& c
     h.add(describe_file(fs::read_symlink("/proc/self/exe", ec).string()));  // a rebuilt generator
     h.add(r.model_text);
     h.add(r.model_name);
+    h.add(r.jacobian ? "with jacobian" : "");
     std::vector<fs::path> runtime;
     for (const auto& e : fs::directory_iterator(fs::path(runtime_include_dir()) / "eomgen"))
         runtime.push_back(e.path());
@@ -124,12 +125,13 @@ std::string cache_key(const CompileRequest& r, const std::vector<std::string>& c
     return h.hex();
 }
 
-std::string entry_source(const std::string& model_name, const std::string& key) {
+std::string entry_source(const std::string& model_name, const std::string& key, bool jacobian) {
     return "// eomgen run: the generated model's functions as a table (eomgen/model_table.hpp); the driver is eomgen's.\n"
            "#include \"model.hpp\"\n#include \"eomgen/model_table.hpp\"\n\n"
            "extern \"C\" __attribute__((visibility(\"default\"))) const char eomgen_entry_key[] = \"" + key + "\";\n"
            "extern \"C\" __attribute__((visibility(\"default\"))) const eomgen::ModelTable* eomgen_model_table() {\n"
-           "    return &eomgen::model_table<eomgen::models::" + model_name + "::Model<double>>();\n}\n";
+           "    return &eomgen::model_table<eomgen::models::" + model_name + "::Model<double>" +
+           (jacobian ? ", true" : "") + ">();\n}\n";
 }
 
 void write_file(const fs::path& p, const std::string& text) {
@@ -172,7 +174,7 @@ CompiledModel load(const fs::path& so, const std::string& key) {
 /// `logs`/<key>.log (the directory itself goes with its owner) and CompileError names it.
 double build(const CompileRequest& r, const std::string& key, const fs::path& dir, const fs::path& logs) {
     write_file(dir / "model.hpp", r.header());
-    write_file(dir / "model.cpp", entry_source(r.model_name, key));
+    write_file(dir / "model.cpp", entry_source(r.model_name, key, r.jacobian));
     std::vector<std::string> argv = compiler_command();
     argv.insert(argv.end(), kFlags.begin(), kFlags.end());
     for (const std::string& inc : {runtime_include_dir(), std::string(EOMGEN_EIGEN_INCLUDE_DIR)})

@@ -45,6 +45,7 @@ struct CompileRequest {
     std::function<std::string()> header;  ///< derives and emits the header: called only when compiling
     bool use_cache = true;
     std::function<void(const std::string&)> progress;  ///< "compiling ..." messages, may be empty
+    bool jacobian = false;  ///< compile the table's Jacobian too (--method radau5): a separate cache entry
 };
 
 /// 128 bits of FNV-1a of `text` in hex (the cache key's hash): what identifies a model file in a table's metadata.

@@ -213,7 +213,7 @@ std::string markdown(const Model& model, const Equations& eq, const std::vector<
     } else {
         md << "From the model's initial state" << (o.set.empty() && o.init.empty() ? "" : " with the options below")
            << " to t = " << o.t_end << ", method " << markdown_text(o.method)
-           << (eomgen::sim::is_adaptive_method(o.method) ? ", rtol " + number(o.rtol) + ", atol " + number(o.atol) : "") << ".";
+           << (eomgen::sim::takes_tolerances(o.method) ? ", rtol " + number(o.rtol) + ", atol " + number(o.atol) : "") << ".";
         if (sim.code != 0) md << " **The simulation failed**:";
         md << "\n\n";
         for (const std::string& line : lines_of(sim.summary + sim.errors)) md << "    " << line << "\n";
@@ -425,6 +425,7 @@ int ReportCommand::run() {
             CompileRequest request{text, model.name,
                                    [&] { return codegen::emit_model_header(model, eq, fs::path(model_path_).filename().string()); },
                                    !no_cache_, progress};
+            request.jacobian = options_.method == "radau5";
             const CompiledModel compiled = compile_model(request);
             eomgen::TableModel::bind(*compiled.table);
         } catch (const CompileError& e) {

@@ -162,6 +162,7 @@ int RunCommand::run_model() {
         return codegen::emit_model_header(model, eq, fs::path(model_path_).filename().string());
     };
     CompileRequest request{text, model.name, header, !no_cache_, progress};
+    request.jacobian = options_.method == "radau5";
     const CompiledModel compiled = compile_model(request);
     progress(compiled.from_cache ? "loaded from the cache: " + compiled.path
                                  : "compiled in " + std::to_string(compiled.compile_seconds).substr(0, 4) + " s");

@@ -18,6 +18,7 @@
 #pragma once
 
 #include "eomgen/errors.hpp"
+#include "eomgen/model_jacobian.hpp"
 #include "eomgen/model_traits.hpp"
 
 #include <Eigen/Core>
@@ -33,7 +34,7 @@
 namespace eomgen {
 
 /// Raised when ModelTable's layout changes: a table of another layout is refused.
-constexpr std::uint32_t kModelTableAbi = 1;
+constexpr std::uint32_t kModelTableAbi = 2;
 
 /// What a table function reports: success, or which of the runtime's errors it caught.
 enum TableStatus : int {
@@ -73,6 +74,9 @@ struct ModelTable {
     int (*constraints)(double t, const double* q, const double* qd, const void* p, double* A, double* gamma);
     int (*constraint_residuals)(double t, const double* q, const double* qd, const void* p, double* g, double* c);
     int (*multipliers)(double t, const double* x, const void* p, double* lambda);
+    /// J = ∂ẋ/∂x (2 nq × 2 nq, column-major), by forward differentiation in the shared object (model_jacobian.hpp);
+    /// null unless the table was made by model_table<M, true>.
+    int (*jacobian)(double t, const double* x, const void* p, double* J);
     /// The message of the last error on this thread, and its time in *t.
     const char* (*error_message)(double* t);
 };
@@ -220,6 +224,13 @@ struct Wrappers {
             }
         });
     }
+    static int jacobian(double t, const double* x, const void* p, double* J) {
+        return guarded([&] {
+            Eigen::Matrix<double, M::nx, M::nx> j;
+            model_jacobian<M>(t, read<State>(x), params(p), j);
+            write(j, J);
+        });
+    }
     static const char* error_message(double* t) {
         if (t) *t = last_error().t;
         return last_error().message.c_str();
@@ -228,8 +239,9 @@ struct Wrappers {
 
 }  // namespace table_detail
 
-/// The table of generated model M (a Model<double> of a generated header).
-template <class M>
+/// The table of generated model M (a Model<double> of a generated header). With `WithJacobian` the table's
+/// `jacobian` is filled (forward differentiation: it doubles the shared object's compile time), else null.
+template <class M, bool WithJacobian = false>
 const ModelTable& model_table() {
     using W = table_detail::Wrappers<M>;
     constexpr bool constrained = is_constrained<M>::value;
@@ -270,6 +282,7 @@ const ModelTable& model_table() {
         t.mass_matrix = &W::mass_matrix;
         t.momenta = &W::momenta;
         t.lagrangian_gradient = &W::lagrangian_gradient;
+        if constexpr (WithJacobian) t.jacobian = &W::jacobian;
         t.error_message = &W::error_message;
         return t;
     }();
@@ -409,6 +422,14 @@ class TableModel {
     static void multipliers(double t, const State& x, const Params& p, ConstraintVector& lambda) {
         lambda.resize(n_constraints);
         if (n_constraints > 0) check(table().multipliers(t, x.data(), p.data(), lambda.data()));
+    }
+
+    /// J = ∂ẋ/∂x, computed in the shared object (model_jacobian.hpp asks for it by this name).
+    static void jacobian(double t, const State& x, const Params& p, Eigen::MatrixXd& J) {
+        if (!table().jacobian)
+            throw std::logic_error("the compiled model has no Jacobian (model_table<M, true> compiles one)");
+        J.resize(x.size(), x.size());
+        check(table().jacobian(t, x.data(), p.data(), J.data()));
     }
 
   private:

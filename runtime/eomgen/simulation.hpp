@@ -7,8 +7,10 @@
 
 #include "eomgen/constraints.hpp"
 #include "eomgen/integrate.hpp"
+#include "eomgen/model_jacobian.hpp"
 #include "eomgen/model_traits.hpp"
 #include "eomgen/output.hpp"
+#include "eomgen/radau5.hpp"
 #include "eomgen/symplectic.hpp"
 
 #include <algorithm>
@@ -107,9 +109,15 @@ bool with_adaptive_method(const std::string& name, Use&& use) {
     return false;
 }
 
-/// Whether --method `name` is adaptive (takes --rtol, --atol; no --dt).
+/// Whether --method `name` is an explicit adaptive method (with_adaptive_method: constrained models too).
 inline bool is_adaptive_method(const std::string& name) {
     return with_adaptive_method(name, [](auto) {});
+}
+
+/// Whether --method `name` chooses its own steps by --rtol and --atol (no --dt): the explicit adaptive
+/// methods and radau5 (implicit, unconstrained models only).
+inline bool takes_tolerances(const std::string& name) {
+    return is_adaptive_method(name) || name == "radau5";
 }
 
 /// A number as written on the command line: "0.5", "-pi/2", "2*pi", "pi/4", "1e-3".
@@ -280,7 +288,7 @@ std::vector<eomgen::Event<typename M::State>> until_events(const Options& o) {
     std::vector<eomgen::Event<State>> events;
     if (o.until.empty()) return events;
     if (o.method == "symplectic")
-        throw UsageError("--until needs --method dopri5, dop853 or rk4 (events use dense output)");
+        throw UsageError("--until needs --method dopri5, dop853, radau5 or rk4 (events use dense output)");
     const auto [name, value] = parse_assignment(o.until, "--until");
     const int i = index_of(M::state_names, name);
     if (i < 0)
@@ -318,6 +326,9 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
                        std::ostream* log) {
     using State = typename M::State;
     using Config = typename M::Config;
+    if (o.method == "radau5" && constraint_count<M>() > 0)
+        throw UsageError("--method radau5 integrates unconstrained models; use dopri5 or dop853 for " +
+                         std::string(M::name) + "'s constraints");
     auto h = [&params](double t, const State& x) {
         const Config q = positions<M::nq>(x), qd = velocities<M::nq>(x);
         return M::energy(t, q, qd, params);
@@ -410,6 +421,19 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
         if (o.method == "rk4") {
             r = eomgen::integrate_rk4(f, 0.0, x0, o.t_end, o.dt, events, sample_times, observer);
             if (log) *log << "method:  rk4, dt " << o.dt << "\n";
+        } else if (o.method == "radau5") {
+            eomgen::Radau5Options<double> opt;
+            opt.rtol = o.rtol;
+            opt.atol = o.atol;
+            opt.max_steps = o.max_steps;
+            const auto jac = [&params](const double& t, const State& x, auto& J) {
+                eomgen::model_jacobian<M>(t, x, params, J);
+            };
+            const auto rr = eomgen::integrate_radau5(f, jac, 0.0, x0, o.t_end, opt, events, sample_times, observer);
+            r = rr;
+            if (log)
+                *log << "method:  radau5 (implicit, exact Jacobian), rtol " << o.rtol << ", atol " << o.atol << "; "
+                     << rr.jacobian_evaluations << " Jacobians, " << rr.lu_decompositions << " LU decompositions\n";
         } else if (!with_adaptive_method(o.method, [&](auto method) {
                        using Method = decltype(method);
                        r = eomgen::integrate_with<Method::template type>(f, 0.0, x0, o.t_end,
@@ -417,7 +441,7 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
                                                                          events, sample_times, observer);
                        if (log) *log << "method:  " << o.method << ", rtol " << o.rtol << ", atol " << o.atol << "\n";
                    })) {
-            throw UsageError("--method " + o.method + ": expected dopri5, dop853, rk4 or symplectic");
+            throw UsageError("--method " + o.method + ": expected dopri5, dop853, radau5, rk4 or symplectic");
         }
         finish(r);
         track(r.t, r.x);

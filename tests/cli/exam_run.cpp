@@ -409,3 +409,27 @@ TEST_CASE("eomgen run --plot: the curve drawn is the CSV's data, point for point
         CHECK(std::abs(curve[lo].second + sy * (data(k).second - data(lo).second) - curve[k].second) < 0.02);
     }
 }
+
+TEST_CASE("eomgen run --method radau5: the stiff example's event where dopri5 finds it, in far fewer right-hand sides",
+          "[run][radau5]") {
+    const std::string model = std::string(EOMGEN_SOURCE_DIR) + "/examples/stiff_spring_pendulum.toml";
+    const auto event_and_rhs = [&](const std::string& method) {
+        const Result r = eomgen({"run", model, "--method", method, "--until", "theta=0", "--rtol", "1e-8", "--atol",
+                                 "1e-10", "--t-end", "10", "--quiet"});
+        INFO(r.output);
+        REQUIRE(r.code == 0);
+        REQUIRE(r.output.find("stopped: at event theta=0") != std::string::npos);
+        const auto at = r.output.find("event:   theta=0 at t = ");
+        REQUIRE(at != std::string::npos);
+        const auto steps = r.output.find(" right-hand sides");
+        const auto comma = r.output.rfind(", ", steps);
+        REQUIRE(steps != std::string::npos);
+        if (method == "radau5") CHECK(r.output.find("Jacobians") != std::string::npos);
+        return std::pair<double, double>(std::stod(r.output.substr(at + 24)),
+                                         std::stod(r.output.substr(comma + 2, steps - comma - 2)));
+    };
+    const auto [t_radau, rhs_radau] = event_and_rhs("radau5");
+    const auto [t_dopri, rhs_dopri] = event_and_rhs("dopri5");
+    CHECK(std::abs(t_radau - t_dopri) < 1e-6);
+    CHECK(rhs_dopri > 20 * rhs_radau);
+}

@@ -1,0 +1,91 @@
+/** @file time_stiff.cpp  Radau IIA (radau5) against Dormand–Prince (dopri5) on the stiff example model. */
+// Usage: time_stiff [--quick]. One JSON object per line:
+//   {"problem", "method", "rtol", "error", "steps", "rhs_evals", "jacobians", "lu", "seconds"}
+// Problem: examples/stiff_spring_pendulum.toml (k = 1e5, c = 1e4: radial rates 10/s and 1e4/s, swing 3.1 rad/s)
+// from its default state to t = 10; error = max |x - x_ref| against dopri5 at rtol 1e-12, atol 1e-14. Both
+// methods at atol = rtol/100; radau5's Jacobian is model_jacobian (forward differentiation through rhs), each
+// one costing about one rhs of AutoDiff scalars with n_x = 4 derivative lanes. seconds: the fastest of repeated
+// runs (at least 3 and ~30 ms; --quick: one), so ratios within one run compare like with like.
+#include "eomgen/integrate.hpp"
+#include "eomgen/model_jacobian.hpp"
+#include "eomgen/models/stiff_spring_pendulum.hpp"
+#include "eomgen/radau5.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+
+namespace {
+
+using M = eomgen::models::stiff_spring_pendulum::Model<double>;
+using State = M::State;
+constexpr double kEnd = 10.0;
+
+struct Run {
+    State x;
+    std::size_t steps = 0, rhs = 0, jacobians = 0, lu = 0;
+};
+
+template <class F>
+Run timed(F&& once, bool quick, double& seconds) {
+    Run r;
+    seconds = 1e300;
+    double total = 0;
+    for (int k = 0; k < (quick ? 1 : 1000) && (k < 3 || total < 0.03); ++k) {
+        const auto start = std::chrono::steady_clock::now();
+        r = once();
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        seconds = std::min(seconds, s);
+        total += s;
+        if (quick) break;
+    }
+    return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+    const M::Params p{};
+    const State x0 = M::default_state();
+    const auto f = [&p](const double& t, const State& x, State& xdot) { M::rhs(t, x, p, xdot); };
+    const auto jac = [&p](const double& t, const State& x, Eigen::Matrix<double, M::nx, M::nx>& J) {
+        eomgen::model_jacobian<M>(t, x, p, J);
+    };
+    eomgen::Dopri5Options<double> tight;
+    tight.rtol = 1e-12;
+    tight.atol = 1e-14;
+    tight.max_steps = 10000000;
+    const State ref = eomgen::integrate(f, 0.0, x0, kEnd, tight).x;
+    for (const double rtol : {1e-6, 1e-8}) {
+        double seconds = 0;
+        eomgen::Radau5Options<double> ro;
+        ro.rtol = rtol;
+        ro.atol = rtol * 1e-2;
+        const Run r = timed(
+            [&] {
+                const auto res = eomgen::integrate_radau5(f, jac, 0.0, x0, kEnd, ro);
+                return Run{res.x, res.accepted_steps, res.rhs_evaluations, res.jacobian_evaluations,
+                           res.lu_decompositions};
+            },
+            quick, seconds);
+        std::printf("{\"problem\": \"stiff_spring_pendulum\", \"method\": \"radau5\", \"rtol\": %g, \"error\": %.3g, "
+                    "\"steps\": %zu, \"rhs_evals\": %zu, \"jacobians\": %zu, \"lu\": %zu, \"seconds\": %.4g}\n",
+                    rtol, (r.x - ref).cwiseAbs().maxCoeff(), r.steps, r.rhs, r.jacobians, r.lu, seconds);
+        eomgen::Dopri5Options<double> dopt;
+        dopt.rtol = rtol;
+        dopt.atol = rtol * 1e-2;
+        dopt.max_steps = 10000000;
+        const Run d = timed(
+            [&] {
+                const auto res = eomgen::integrate(f, 0.0, x0, kEnd, dopt);
+                return Run{res.x, res.accepted_steps, res.rhs_evaluations, 0, 0};
+            },
+            quick, seconds);
+        std::printf("{\"problem\": \"stiff_spring_pendulum\", \"method\": \"dopri5\", \"rtol\": %g, \"error\": %.3g, "
+                    "\"steps\": %zu, \"rhs_evals\": %zu, \"jacobians\": 0, \"lu\": 0, \"seconds\": %.4g}\n",
+                    rtol, (d.x - ref).cwiseAbs().maxCoeff(), d.steps, d.rhs, seconds);
+    }
+    return 0;
+}
