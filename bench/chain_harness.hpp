@@ -1,11 +1,15 @@
 /** @file chain_harness.hpp  The n-link chain benchmark (bench/time_chain): eomgen's generated rhs against MuJoCo's
- * mj_forward on the same chain and against the O(n) recursion, each checked against eomgen before it is timed. */
+ * mj_forward on the same chain and against the O(n) recursion, each checked against eomgen before it is timed; and
+ * against itself with the solve it had before issue 15 (Eigen's LLT). */
 #pragma once
 
 #include "chain_recursion.hpp"
 #include "rhs_harness.hpp"
 
+#include "eomgen/errors.hpp"
+
 #include <benchmark/benchmark.h>
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include <algorithm>
@@ -49,6 +53,40 @@ struct ChainParams {
 
 inline double relative_difference(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
     return (a - b).cwiseAbs().maxCoeff() / std::max(1.0, a.cwiseAbs().maxCoeff());
+}
+
+/**
+ * eomgen's rhs with the solve it had before issue 15's lean one, to measure that speed-up within one run: the same
+ * dynamics(), then allFinite over M and f, Eigen's LLT (whose compute also takes M's L1 norm) and the pivot test.
+ */
+template <class Model>
+void rhs_previous_solve(const typename Model::State& x, const typename Model::Params& p, typename Model::State& xdot) {
+    constexpr int n = Model::nq;
+    const typename Model::Config q = x.template head<n>(), qd = x.template tail<n>();
+    typename Model::MassMatrix M;
+    typename Model::Config f;
+    Model::dynamics(0.0, q, qd, p, M, f);
+    if (!M.allFinite() || !f.allFinite()) throw NonFiniteState("mass matrix or forcing is not finite", 0.0);
+    const Eigen::LLT<typename Model::MassMatrix> llt(M);
+    const auto pivots = llt.matrixLLT().diagonal().cwiseAbs2();
+    if (llt.info() != Eigen::Success ||
+        !(pivots.minCoeff() > double(n) * Eigen::NumTraits<double>::epsilon() * pivots.maxCoeff()))
+        throw SingularMassMatrix("mass matrix is singular or not positive definite", 0.0);
+    xdot.template head<n>() = qd;
+    xdot.template tail<n>() = llt.solve(f);
+}
+
+template <class Model>
+void bm_chain_previous(benchmark::State& st) {
+    const auto xs = sample_states<Model>();
+    const typename Model::Params p;
+    typename Model::State xdot;
+    std::size_t i = 0;
+    for (auto _ : st) {
+        rhs_previous_solve<Model>(xs[i++ & 63], p, xdot);
+        benchmark::DoNotOptimize(xdot.data());
+        benchmark::ClobberMemory();
+    }
 }
 
 template <class Model>
@@ -175,7 +213,7 @@ void register_chain() {
     constexpr int n = Model::nq;
     const typename Model::Params p;
     const ChainParams<Model> cp;
-    double worst_recursion = 0, worst_mujoco = 0;
+    double worst_recursion = 0, worst_mujoco = 0, worst_previous = 0;
 #if EOMGEN_BENCH_HAVE_MUJOCO
     mjModel* model = load_chain(n, chain_mjcf(n, cp.m, cp.l, cp.g));
     mjData* data = mj_makeData(model);
@@ -186,6 +224,8 @@ void register_chain() {
         chain_rhs_recursive<n>(x.data(), cp.m.data(), cp.l.data(), cp.g, b.data());
         const Eigen::VectorXd qdd = a.template tail<n>();
         worst_recursion = std::max(worst_recursion, relative_difference(qdd, b.template tail<n>()));
+        rhs_previous_solve<Model>(x, p, b);
+        worst_previous = std::max(worst_previous, relative_difference(qdd, b.template tail<n>()));
 #if EOMGEN_BENCH_HAVE_MUJOCO
         worst_mujoco = std::max(worst_mujoco, relative_difference(qdd, mujoco_qdd(model, data, x.data(), n)));
 #endif
@@ -197,8 +237,15 @@ void register_chain() {
                      kRecursionTolerance);
         std::exit(1);
     }
+    std::fprintf(stderr, "n = %d: eomgen's rhs and its previous solve agree to %.1e (relative, max over 64 states)\n",
+                 n, worst_previous);
+    if (!(worst_previous < kRecursionTolerance)) {
+        std::fprintf(stderr, "n = %d: eomgen's rhs and its previous solve disagree\n", n);
+        std::exit(1);
+    }
     const std::string suffix = "/" + std::to_string(n);
     benchmark::RegisterBenchmark(("chain/eomgen" + suffix).c_str(), bm_eomgen_rhs<Model>);
+    benchmark::RegisterBenchmark(("chain/previous" + suffix).c_str(), bm_chain_previous<Model>);
     benchmark::RegisterBenchmark(("chain/recursion" + suffix).c_str(), bm_chain_recursion<Model>);
 #if EOMGEN_BENCH_HAVE_MUJOCO
     mj_deleteData(data);

@@ -185,13 +185,20 @@ def render(res, command, date):
       (f", the recursion to {worst_rec:.0e}" if worst_rec is not None else "") + " (largest relative difference of "
       "q̈ over the states, every n).")
     a("")
+    have_prev = any(k.startswith("previous/") for k in med)
+    if have_prev:
+        a("The last two columns: the same `rhs` with the solve it had before issue 15's lean one (`dynamics`, then "
+          "`allFinite` over M and f, Eigen's `LLT` and the pivot test; `rhs_previous_solve` in "
+          "bench/chain_harness.hpp, checked against `rhs` like the peers), and how much faster `rhs` is now. Up to "
+          "n = 12 `rhs` runs the header's unrolled L D Lᵀ, above it the runtime's loop.")
+        a("")
     a("| n | eomgen `rhs` [ns] | MuJoCo `mj_forward` [ns] | O(n) recursion [ns] | rhs / mj_forward | "
-      "rhs / recursion |")
-    a("|---|---|---|---|---|---|")
+      "rhs / recursion |" + (" rhs with the previous solve [ns] | previous / rhs |" if have_prev else ""))
+    a("|---|---|---|---|---|---|" + ("---|---|" if have_prev else ""))
     for n in sizes:
-        e, m, r = med[f"eomgen/{n}"], med.get(f"mujoco/{n}"), med[f"recursion/{n}"]
+        e, m, r, p = med[f"eomgen/{n}"], med.get(f"mujoco/{n}"), med[f"recursion/{n}"], med.get(f"previous/{n}")
         a(f"| {n} | {e:.0f} | {f'{m:.0f}' if m else '–'} | {r:.0f} | {f'**{e / m:.2f}**' if m else '–'} | "
-          f"**{e / r:.2f}** |")
+          f"**{e / r:.2f}** |" + (f" {p:.0f} | **{p / e:.2f}×** |" if p else ""))
     a("")
 
     # Orders

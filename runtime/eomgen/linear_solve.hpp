@@ -3,6 +3,7 @@
 
 #include "eomgen/errors.hpp"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
 #include <cmath>
@@ -55,12 +56,26 @@ template <class MatM, class VecF, class Scalar, class VecX>
  * (pivots_regular) and NonFiniteState when M or f is not finite or q̈ is not (throw_solve_failure); the finite test
  * is on the result only. `t` and `x` (the full state) only go into the error message. Generated headers emit the
  * same factorization unrolled for small n (generator/codegen/mass_solve_emitter.cpp) and call this above.
+ * Above kLoopSolveMaxN the factorization is Eigen's LLT (d_i = L_ii²), whose vectorized kernels win there
+ * (bench/run.sh --peers-only, section 8: at n = 30 the loop made rhs 1.15× slower than LLT, at n = 20 1.4× faster).
  */
+constexpr Eigen::Index kLoopSolveMaxN = 20;
+
 template <class MatM, class VecF, class VecQdd, class Scalar, class VecX>
 void solve_mass_matrix(const MatM& M, const VecF& f, VecQdd& qdd, const Scalar& t, const VecX& x) {
     using S = typename MatM::Scalar;
     constexpr int N = MatM::RowsAtCompileTime;
-    const Eigen::Index n = M.rows();
+    const Eigen::Index n = N == Eigen::Dynamic ? M.rows() : N;  // a constant where M's size is: loops the compiler
+                                                                 // can unroll and schedule (Eigen's dot products
+                                                                 // on segments measured slower up to n = 30)
+    if (n > kLoopSolveMaxN) {
+        const Eigen::LLT<typename MatM::PlainObject> llt(M);
+        if (llt.info() != Eigen::Success || !pivots_regular(llt.matrixLLT().diagonal().cwiseAbs2().eval()))
+            throw_solve_failure(M, f, true, t, x);
+        qdd = llt.solve(f);
+        if (!qdd.allFinite()) throw_solve_failure(M, f, false, t, x);
+        return;
+    }
     Eigen::Matrix<S, N, N, Eigen::RowMajor> L;  // row i: L_ik for k < i (u_ik while row i is built)
     Eigen::Matrix<S, N, 1> d, inv_d;
     L.resize(n, n);

@@ -101,3 +101,16 @@ TEST_CASE("solve_mass_matrix: a non-finite M, f or result throws NonFiniteState"
         CHECK(std::string(e.what()).find("accelerations are not finite") == 0);
     }
 }
+
+TEST_CASE("solve_mass_matrix above kLoopSolveMaxN (Eigen's LLT): the same errors", "[runtime][errors]") {
+    constexpr int n = int(eomgen::kLoopSolveMaxN) + 5;
+    Eigen::Matrix<double, n, n> M = Eigen::Matrix<double, n, n>::Identity();
+    Eigen::Matrix<double, n, 1> f = Eigen::Matrix<double, n, 1>::Ones(), qdd;
+    M(n - 1, n - 1) = 0;
+    CHECK_THROWS_AS(eomgen::solve_mass_matrix(M, f, qdd, 0.0, f), eomgen::SingularMassMatrix);
+    M(n - 1, n - 1) = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_AS(eomgen::solve_mass_matrix(M, f, qdd, 0.0, f), eomgen::NonFiniteState);
+    M(n - 1, n - 1) = 1;
+    f(0) = std::numeric_limits<double>::infinity();
+    CHECK_THROWS_AS(eomgen::solve_mass_matrix(M, f, qdd, 0.0, f), eomgen::NonFiniteState);
+}
