@@ -518,8 +518,9 @@ def report(command, mach, gen, rods, sym, ops, rhs, agree, comp, by, ref_check, 
     found = re.findall(r"n = (\d+): eomgen and SymPy right-hand sides agree to ([0-9.e+-]+)", agree or "")
     agree = ("they agree to " + ", ".join(f"{float(v):.0e} at n = {n}" for n, v in found) +
              " (largest relative difference over the 64 states)") if found else "no SymPy code compiled in"
-    a("`bench/time_rhs` (Google Benchmark), one harness for both: fill M and f, then the same "
-      "`eomgen::solve_mass_matrix` (Eigen LLT on fixed-size matrices, with its singularity check), q̈ into x'; "
+    a("`bench/time_rhs` (Google Benchmark), one harness for both: fill M and f, then the same solve, the one "
+      "the generated `rhs` uses (the header's unrolled L D Lᵀ up to n = 12, `eomgen::solve_mass_matrix` above; "
+      "with its singularity check), q̈ into x'; "
       "SymPy's cse'd C is pasted into an inline function in the same translation unit, same compiler and flags "
       "(-O2 -DNDEBUG); 64 random states are cycled; median of 10 interleaved repetitions. Before timing, the two right-hand sides are compared at those "
       f"states: {agree}.")
