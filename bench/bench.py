@@ -1,13 +1,16 @@
 #!/usr/bin/env python3
 """The benchmark run behind bench/run.sh: eomgen against SymPy and Boost.Odeint, in one run.
 
-Usage: bench.py --build-dir DIR [--smoke] [--no-build] [--sympy-cap SECONDS] [--out-md FILE] [--out-png FILE]
+Usage: bench.py --build-dir DIR [--smoke] [--no-build] [--peers-only] [--sympy-cap SECONDS] [--out-md FILE]
+                [--out-png FILE]
        bench.py --build-dir DIR --only integrators [--smoke]   (section 5b on stdout, in a minute; docs/ untouched)
 
 Items (issue 6): 1 generation time (eomgen CLI vs SymPy LagrangesMethod + cse + ccode; eomgen alone to n = 30),
 2 operation counts (one counter, bench/op_count.py, for both), 3 right-hand-side time (bench/time_rhs),
 4 compile time of each generated header at -O2, 5 work-precision against odeint (bench/time_integrators),
-5b DOP853 against Dormand–Prince 5(4) (issue 15; the same program), 6 peak memory of generation at n = 30. Writes the measured part of docs/benchmarks.md (between the
+5b DOP853 against Dormand–Prince 5(4) (issue 15; the same program), 6 peak memory of generation at n = 30; 8 (issue 15,
+bench/peers.py) MuJoCo's mj_forward and an O(n) recursion on the n-link chain, and CVODE, ARKODE and odeint in
+work-precision (--peers-only: only this part). Writes the measured part of docs/benchmarks.md (between the
 MEASURED markers; the rest of the file is kept) and docs/benchmarks.png. --smoke: tiny sizes, output to
 DIR/bench_smoke/, nothing asserted about times. Needs python3 only; SymPy is optional (its parts are
 skipped with a message when it is missing).
@@ -28,9 +31,12 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import op_count  # noqa: E402
+import peers  # noqa: E402
 
 BEGIN = "<!-- BEGIN MEASURED (bench/run.sh rewrites this part) -->"
 END = "<!-- END MEASURED -->"
+BEGIN_PEERS = "<!-- BEGIN MEASURED PEERS (bench/run.sh, or bench/run.sh --peers-only, rewrites this part) -->"
+END_PEERS = "<!-- END MEASURED PEERS -->"
 
 
 def log(msg):
@@ -73,7 +79,7 @@ def machine(cfg):
     mem = sh("awk '/MemTotal/ {printf \"%.1f GiB\", $2/1048576}' /proc/meminfo")
     osname = sh(". /etc/os-release && echo $PRETTY_NAME")
     return {
-        "date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+        "date": utc_now(),
         "cpu": cpu, "cores": os.cpu_count(), "memory": mem, "os": osname, "kernel": platform.release(),
         "compiler": sh(f"{cfg['cxx']} --version | head -1"),
         "ginac": sh("pkg-config --modversion ginac"), "eigen": sh("pkg-config --modversion eigen3"),
@@ -561,8 +567,9 @@ def report(command, mach, gen, rods, sym, ops, rhs, agree, comp, by, ref_check, 
     found = re.findall(r"n = (\d+): eomgen and SymPy right-hand sides agree to ([0-9.e+-]+)", agree or "")
     agree = ("they agree to " + ", ".join(f"{float(v):.0e} at n = {n}" for n, v in found) +
              " (largest relative difference over the 64 states)") if found else "no SymPy code compiled in"
-    a("`bench/time_rhs` (Google Benchmark), one harness for both: fill M and f, then the same "
-      "`eomgen::solve_mass_matrix` (Eigen LLT on fixed-size matrices, with its singularity check), q̈ into x'; "
+    a("`bench/time_rhs` (Google Benchmark), one harness for both: fill M and f, then the same solve, the one "
+      "the generated `rhs` uses (the header's unrolled L D Lᵀ up to n = 12, `eomgen::solve_mass_matrix` above; "
+      "with its singularity check), q̈ into x'; "
       "SymPy's cse'd C is pasted into an inline function in the same translation unit, same compiler and flags "
       "(-O2 -DNDEBUG); 64 random states are cycled; median of 10 interleaved repetitions. Before timing, the two right-hand sides are compared at those "
       f"states: {agree}.")
@@ -677,6 +684,8 @@ def main():
     ap.add_argument("--smoke", action="store_true")
     ap.add_argument("--no-build", action="store_true")
     ap.add_argument("--sympy-cap", type=float, default=900.0)
+    ap.add_argument("--peers-only", action="store_true",
+                    help="measure only section 8 (MuJoCo, SUNDIALS) and rewrite only its part of the page")
     ap.add_argument("--out-md")
     ap.add_argument("--out-png")
     ap.add_argument("--render-only", metavar="RESULTS_JSON",
@@ -700,17 +709,31 @@ def main():
             results = json.load(fh)
         work = os.path.dirname(os.path.abspath(args.render_only))
         out_md = args.out_md or os.path.join(ROOT, "docs", "benchmarks.md")
-        render(results, work, out_md, args.out_png or os.path.join(os.path.dirname(out_md), "benchmarks.png"))
+        if "generation" in results:
+            render(results, work, out_md, args.out_png or os.path.join(os.path.dirname(out_md), "benchmarks.png"))
+        else:
+            render_peers(results, out_md)
         return
     with open(os.path.join(args.build_dir, "bench", "bench_config.json")) as fh:
         cfg = json.load(fh)
-    work = os.path.join(args.build_dir, "bench_smoke" if args.smoke else "bench_work")
+    work = os.path.join(args.build_dir, "bench_smoke" if args.smoke else
+                        "bench_peers" if args.peers_only else "bench_work")
     if os.path.isdir(work):
         shutil.rmtree(work)
     os.makedirs(work)
     out_md = args.out_md or (os.path.join(work, "benchmarks.md") if args.smoke else os.path.join(ROOT, "docs",
                                                                                                   "benchmarks.md"))
     out_png = args.out_png or os.path.join(os.path.dirname(out_md), "benchmarks.png")
+
+    command = "bash bench/run.sh" + (" --smoke" if args.smoke else "") + (" --no-build" if args.no_build else "") + \
+        (" --peers-only" if args.peers_only else "") + \
+        (f" --sympy-cap {args.sympy_cap:g}" if args.sympy_cap != 900 else "")
+    if args.peers_only:
+        results = {"command": command, "date": utc_now(), "peers": peers.measure(cfg, args.build_dir, args.smoke, log)}
+        with open(os.path.join(work, "results_peers.json"), "w") as fh:
+            json.dump(results, fh, indent=1)
+        render_peers(results, out_md)
+        return
 
     if args.smoke:
         gen_sizes, sym_sizes, rhs_sizes, comp_sizes, rod_sizes, mem_n = [2, 3], [2], [2], [2], [2], 3
@@ -760,15 +783,14 @@ def main():
     log("7. eomgen run")
     runs = run_times(cfg, work, args.smoke)
     mach["load_end"] = os.getloadavg()
-
-    command = "bash bench/run.sh" + (" --smoke" if args.smoke else "") + (" --no-build" if args.no_build else "") + \
-        (f" --sympy-cap {args.sympy_cap:g}" if args.sympy_cap != 900 else "")
+    peer_results = peers.measure(cfg, args.build_dir, args.smoke, log)
     results = {"command": command, "machine": mach, "sympy_ok": sympy_ok, "agree": agree, "ref_check": ref_check,
                "generation": {str(k): v for k, v in gen.items()}, "rods": {str(k): v for k, v in rods.items()},
                "sympy": {str(k): v for k, v in sym.items()}, "ops": {str(k): v for k, v in ops.items()},
                "rhs": {"/".join(map(str, k)): v for k, v in rhs.items()},
                "compile": {str(k): v for k, v in comp.items()},
-               "integrators": {"/".join(k): v for k, v in by.items()}, "memory": mem, "run": runs}
+               "integrators": {"/".join(k): v for k, v in by.items()}, "memory": mem, "run": runs,
+               "date": mach["date"], "peers": peer_results}
     with open(os.path.join(work, "results.json"), "w") as fh:
         json.dump(results, fh, indent=1)
     render(results, work, out_md, out_png)
@@ -789,16 +811,40 @@ def render(results, work, out_md, out_png):
     text = report(results.get("command", "bash bench/run.sh"), results["machine"], gen, rods, sym, ops, rhs, results["agree"], comp, by, results["ref_check"],
                   results["memory"], results["sympy_ok"], results.get("run"),
                   os.path.relpath(out_png, os.path.dirname(out_md)) if have_png else "(no plot: gnuplot missing)")
-    old = open(out_md).read() if os.path.exists(out_md) else NOTES_TEMPLATE.format(begin=BEGIN, end=END)
-    if BEGIN not in old or END not in old:
-        old = old.rstrip("\n") + "\n\n" + BEGIN + "\n" + END + "\n"
-    head, rest = old.split(BEGIN, 1)
-    tail = rest.split(END, 1)[1]
-    with open(out_md + ".tmp", "w") as fh:
-        fh.write(head + BEGIN + "\n" + text + END + tail)
-    os.replace(out_md + ".tmp", out_md)
+    splice(out_md, BEGIN, END, text)
     log(f"wrote {out_md}" + (f" and {out_png}" if have_png else ""))
+    if "peers" in results:
+        render_peers(results, out_md)
 
+
+def render_peers(results, out_md):
+    """Writes section 8 (MuJoCo and SUNDIALS) between its own markers, after the main measured part."""
+    splice(out_md, BEGIN_PEERS, END_PEERS,
+           peers.render(results["peers"], results.get("command", "bash bench/run.sh"), results.get("date", "?")))
+    log(f"wrote section 8 of {out_md}")
+
+
+def splice(out_md, begin, end, text):
+    """Replaces what lies between the markers begin and end in out_md (adding them, after the main measured part
+    or at the end, where they are missing), keeping the rest of the file; atomically."""
+    os.makedirs(os.path.dirname(os.path.abspath(out_md)), exist_ok=True)
+    old = open(out_md).read() if os.path.exists(out_md) else NOTES_TEMPLATE.format(begin=BEGIN, end=END)
+    if begin not in old or end not in old:
+        block = begin + "\n" + end + "\n"
+        if begin != BEGIN and END in old:
+            head, tail = old.split(END, 1)
+            old = head + END + "\n\n" + block + tail.lstrip("\n")
+        else:
+            old = old.rstrip("\n") + "\n\n" + block
+    head, rest = old.split(begin, 1)
+    tail = rest.split(end, 1)[1]
+    with open(out_md + ".tmp", "w") as fh:
+        fh.write(head + begin + "\n" + text + end + tail)
+    os.replace(out_md + ".tmp", out_md)
+
+
+def utc_now():
+    return datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC")
 
 if __name__ == "__main__":
     main()

@@ -1,5 +1,5 @@
-/** @file rhs_harness.hpp  One harness for both right-hand sides: fill M and f, then the same Eigen Cholesky
- * solve. */
+/** @file rhs_harness.hpp  One harness for both right-hand sides: fill M and f, then the same solve (the one the
+ * generated rhs uses). */
 #pragma once
 
 #include "eomgen/linear_solve.hpp"
@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <random>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace eomgen::bench {
@@ -36,8 +37,13 @@ std::vector<typename Model::State> sample_states() {
     return xs;
 }
 
-/// The same steps as the generated Model::rhs (head/tail, dynamics, solve_mass_matrix, write), with SymPy's M
-/// and f.
+/// Whether a generated model carries its own unrolled solve (solve_for_accelerations, n <= 12).
+template <class Model, class = void>
+struct HasUnrolledSolve : std::false_type {};
+template <class Model>
+struct HasUnrolledSolve<Model, std::void_t<decltype(&Model::solve_for_accelerations)>> : std::true_type {};
+
+/// The same steps as the generated Model::rhs (head/tail, dynamics, the same solve, write), with SymPy's M and f.
 template <class Model, SympyDynamics Dyn>
 void sympy_rhs(const typename Model::State& x, const double* p, typename Model::State& xdot) {
     constexpr int nq = Model::nq;
@@ -47,7 +53,10 @@ void sympy_rhs(const typename Model::State& x, const double* p, typename Model::
     typename Model::Config f;
     Dyn(q.data(), qd.data(), p, M.data(), f.data());
     typename Model::Config qdd;
-    eomgen::solve_mass_matrix(M, f, qdd, 0.0, x);
+    if constexpr (HasUnrolledSolve<Model>::value)
+        Model::solve_for_accelerations(0.0, x, M, f, qdd);
+    else
+        eomgen::solve_mass_matrix(M, f, qdd, 0.0, x);
     xdot.template head<nq>() = qd;
     xdot.template tail<nq>() = qdd;
 }

@@ -1,15 +1,19 @@
 #!/usr/bin/env bash
-# The benchmarks of issue 6 in one run: eomgen against SymPy (generation, operation counts, right-hand side,
-# compile time) and against Boost.Odeint (work-precision), and generation's peak memory; writes
-# docs/benchmarks.md (the measured part) and docs/benchmarks.png. About 15 minutes on 2 cores, most of it SymPy.
+# The benchmarks of issues 6 and 15 in one run: eomgen against SymPy (generation, operation counts, right-hand side,
+# compile time) and against Boost.Odeint (work-precision), generation's peak memory, `eomgen run`, and (section 8)
+# against MuJoCo's mj_forward, an O(n) recursion, CVODE and ARKODE; writes docs/benchmarks.md (the measured parts)
+# and docs/benchmarks.png. About 30 minutes on 2 cores, most of it SymPy; --peers-only about 5.
 #
-# Usage: bash bench/run.sh [--smoke] [--no-build] [--build-dir DIR] [--sympy-cap SECONDS]
+# Usage: bash bench/run.sh [--smoke] [--no-build] [--peers-only] [--build-dir DIR] [--sympy-cap SECONDS]
 #   --smoke        tiny sizes, seconds; results in DIR/bench_smoke/ (docs/ untouched); what CI runs
+#   --peers-only   only section 8 (MuJoCo, SUNDIALS), rewriting only its part of docs/benchmarks.md
 #   --no-build     skip scripts/setup.sh and use what DIR holds (configured with -DEOMGEN_BUILD_BENCH=ON); the
 #                  full run still rebuilds time_rhs, which compiles in the SymPy code of the run
 #   --build-dir    build directory (default build-bench/)
 #   --sympy-cap    seconds SymPy may take per size before it is stopped and reported as capped (default 900)
-# Without --no-build it first runs scripts/setup.sh (installs missing Debian packages, configures, builds).
+# Without --no-build it first runs bench/setup_peers.sh (installs libmujoco-dev and libsundials-dev where missing;
+# the run goes on without a peer that could not be installed) and scripts/setup.sh (installs missing Debian
+# packages, configures, builds). With --no-build nothing is installed: the peers found at configure time are used.
 # SymPy 1.14 is used if python3 can import it; without it the SymPy parts are skipped with a message.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -22,9 +26,10 @@ while (($#)); do
   case "$1" in
     --smoke) smoke=(--smoke) ;;
     --no-build) no_build=1 ;;
+    --peers-only) extra+=(--peers-only) ;;
     --build-dir) build="$2"; shift ;;
     --sympy-cap) extra+=(--sympy-cap "$2"); shift ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,19p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift
@@ -33,6 +38,7 @@ done
 if ((no_build)); then
   extra+=(--no-build)
 else
+  bash bench/setup_peers.sh
   EOMGEN_BUILD_DIR="$build" bash scripts/setup.sh -DEOMGEN_BUILD_BENCH=ON -DEOMGEN_BUILD_TESTS=OFF
 fi
 if [ ! -f "$build/bench/bench_config.json" ]; then

@@ -14,6 +14,8 @@
 //   odeint_dense (make_dense_output(atol, rtol, runge_kutta_dopri5); the door's crossing located on
 //   calc_state by the same Brent root finder), odeint_controlled (pendulum only: make_controlled +
 //   integrate_adaptive). atol = rtol throughout; RHS evaluations are counted by a wrapper around f.
+#include "ode_problems.hpp"
+
 #include "eomgen/integrate.hpp"
 #include "eomgen/models/door.hpp"
 #include "eomgen/models/pendulum_5_20.hpp"
@@ -45,22 +47,7 @@ struct Run {
     std::size_t rhs_evals = 0, steps = 0;
 };
 
-/// Runs `once` repeatedly for at least ~30 ms (and at least 3 times), returning the last run and the fastest
-/// time.
-template <class F>
-Run timed(F&& once, double& seconds) {
-    Run r;
-    seconds = 1e300;
-    double total = 0;
-    for (int rep = 0; rep < 3 || (total < 0.03 && rep < 10000); ++rep) {
-        const auto t0 = std::chrono::steady_clock::now();
-        r = once();
-        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        seconds = std::min(seconds, s);
-        total += s;
-    }
-    return r;
-}
+using eomgen::bench::timed;
 
 template <template <class> class Method>
 Run door_eomgen(double rtol) {
@@ -100,15 +87,7 @@ Run door_odeint(double rtol) {
         const auto [ta, tb] = st.do_step(sys);
         ++r.steps;
         if (g(st.current_state()) >= 0) continue;
-        S x;
-        st.calc_state(ta, x);
-        const double ga = g(x);
-        const auto g_dense = [&](double s) {
-            st.calc_state(s, x);
-            return g(x);
-        };
-        const double tol = 2 * std::numeric_limits<double>::epsilon() * std::max(std::abs(ta), std::abs(tb));
-        r.value = eomgen::find_root_brent(g_dense, ta, ga, tb, g(st.current_state()), tol);
+        r.value = eomgen::bench::locate_crossing(st, ta, tb, g);
         return r;
     }
 }
@@ -167,19 +146,15 @@ Run pendulum_odeint(double rtol) {
 Pendulum::State pendulum_reference() {
     using S = std::array<long double, 4>;
     const PendulumL::Params p;
-    auto sys = [&](const S& x, S& dxdt, long double t) {
-        PendulumL::State xe;
-        for (int i = 0; i < 4; ++i) xe(i) = x[std::size_t(i)];
-        PendulumL::State xd;
-        PendulumL::rhs(t, xe, p, xd);
-        for (int i = 0; i < 4; ++i) dxdt[std::size_t(i)] = xd(i);
-    };
     const Pendulum::State x0 = pendulum_start();
-    S x{x0(0), x0(1), x0(2), x0(3)};
-    odeint::integrate_adaptive(
-        odeint::make_controlled(1e-19L, 1e-19L,
-                                odeint::runge_kutta_fehlberg78<S, long double, S, long double>()),
-        sys, x, 0.0L, (long double)kPendulumEnd, 1e-4L);
+    const S x = eomgen::bench::reference_end_state(
+        [&](long double t, const S& xs, S& dxdt) {
+            PendulumL::State xe, xd;
+            for (int i = 0; i < 4; ++i) xe(i) = xs[std::size_t(i)];
+            PendulumL::rhs(t, xe, p, xd);
+            for (int i = 0; i < 4; ++i) dxdt[std::size_t(i)] = xd(i);
+        },
+        S{x0(0), x0(1), x0(2), x0(3)}, (long double)kPendulumEnd, 1e-19L);
     auto f = [&](const long double& t, const PendulumL::State& xe, PendulumL::State& xd) {
         PendulumL::rhs(t, xe, p, xd);
     };

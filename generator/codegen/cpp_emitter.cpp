@@ -1,6 +1,7 @@
 /** @file cpp_emitter.cpp  Common-subexpression elimination over the DAG and the header around it. */
 #include "codegen/cpp_emitter.hpp"
 
+#include "codegen/mass_solve_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/rest_linearization.hpp"
 #include "text/escape.hpp"
@@ -581,12 +582,21 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     for (const FunctionSpec& f : functions) os << emit_function(f, table) << "\n";
 
     if (nc == 0) {
-        os << "    /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.\n";
+        const bool unrolled = n <= kUnrolledSolveMaxN;
+        if (unrolled) {
+            std::vector<std::vector<bool>> zero(n, std::vector<bool>(n, false));
+            for (std::size_t i = 0; i < n; ++i)
+                for (std::size_t j = 0; j < n; ++j)
+                    zero[i][j] = eq.M(static_cast<unsigned>(i), static_cast<unsigned>(j)).is_zero();
+            os << emit_mass_solve(zero) << "\n";
+        }
+        os << "    /// x' = [q', q''] with M q'' = f solved by L D L^T; a singular M throws eomgen::SingularMassMatrix.\n";
         os << "    static void rhs(const Scalar& t, const State& x_, const Params& p_, State& xdot_) {\n";
         os << "        const Config q_ = x_.template head<nq>();\n";
         os << "        const Config qd_ = x_.template tail<nq>();\n";
         os << "        MassMatrix M_;\n        Config f_;\n        dynamics(t, q_, qd_, p_, M_, f_);\n";
-        os << "        Config qdd_;\n        eomgen::solve_mass_matrix(M_, f_, qdd_, t, x_);\n";
+        os << (unrolled ? "        Config qdd_;\n        solve_for_accelerations(t, x_, M_, f_, qdd_);\n"
+                        : "        Config qdd_;\n        eomgen::solve_mass_matrix(M_, f_, qdd_, t, x_);\n");
         os << "        xdot_.template head<nq>() = qd_;\n        xdot_.template tail<nq>() = qdd_;\n    }\n";
     } else {
         os << "    /// q'' and the multipliers lambda of M q'' = f + A^T lambda, A q'' = gamma - 2 alpha c - beta^2 g,\n"

@@ -8,34 +8,106 @@
 
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace eomgen {
 
 /**
- * Solves M qdd = f for symmetric positive definite M (size n×n, fixed or dynamic) by Cholesky (LLT).
- * Throws SingularMassMatrix when the factorisation fails or M is singular to working precision, and
- * NonFiniteState when M or f is not finite. `t` and `x` (the full state) only go into the error message.
- *
- * Singular to working precision: the smallest Cholesky pivot L_ii² is below n·eps times the largest. The
- * pivots are Schur complements of M's leading blocks, so λ_min(M) ≤ L_ii² ≤ λ_max(M) (interlacing): the
- * pivot ratio is never below 1/cond₂(M), and a collapsing pivot is how a singular M shows in its factor. It
- * costs n comparisons, where LLT::rcond() costs several triangular solves — most of the solve for small n.
+ * The singularity test of every mass-matrix solve, on the pivots d_i of M = L D Lᵀ (d_i = L_ii² of the Cholesky
+ * factor): regular when the smallest is above n·eps times the largest (which also requires them all positive;
+ * a NaN pivot fails). The pivots are Schur complements of M's leading blocks, so λ_min(M) ≤ d_i ≤ λ_max(M)
+ * (interlacing): the ratio is never below 1/cond₂(M), and a collapsing pivot is how a singular M shows in its
+ * factor. It costs n comparisons, where LLT::rcond() costs several triangular solves. For an automatic-
+ * differentiation Scalar the comparisons are on the value parts.
  */
-template <class MatM, class VecF, class VecQdd, class Scalar, class VecX>
-void solve_mass_matrix(const MatM& M, const VecF& f, VecQdd& qdd, const Scalar& t, const VecX& x) {
-    using S = typename MatM::Scalar;
+template <class Pivots>
+bool pivots_regular(const Pivots& d) {
+    using S = std::decay_t<decltype(d[0])>;
+    const int n = int(d.size());
+    S lo = d[0], hi = d[0];
+    for (int i = 1; i < n; ++i) {
+        if (d[i] < lo) lo = d[i];
+        if (d[i] > hi) hi = d[i];
+    }
+    return lo > S(n) * S(Eigen::NumTraits<S>::epsilon()) * hi;
+}
+
+/**
+ * What a failed solve of M q̈ = f throws, found only once it has failed (no pass over M or f on the way):
+ * NonFiniteState when M or f is not finite (a NaN pivot or result usually comes from there), else
+ * SingularMassMatrix when the pivots were not regular, else NonFiniteState (q̈ overflowed). `t` and `x` (the full
+ * state) only go into the message.
+ */
+template <class MatM, class VecF, class Scalar, class VecX>
+[[noreturn]] void throw_solve_failure(const MatM& M, const VecF& f, bool singular, const Scalar& t, const VecX& x) {
     if (!M.allFinite() || !f.allFinite())
         throw NonFiniteState(describe_state("mass matrix or forcing is not finite", t, x), value_of(t));
-    Eigen::LLT<typename MatM::PlainObject> llt(M);
-    bool singular = llt.info() != Eigen::Success;
-    if (!singular) {
-        const auto pivots = llt.matrixLLT().diagonal().cwiseAbs2();
-        singular = !(pivots.minCoeff() > S(M.rows()) * S(Eigen::NumTraits<S>::epsilon()) * pivots.maxCoeff());
-    }
     if (singular)
         throw SingularMassMatrix(describe_state("mass matrix is singular or not positive definite", t, x),
                                  value_of(t));
-    qdd = llt.solve(f);
+    throw NonFiniteState(describe_state("accelerations are not finite", t, x), value_of(t));
+}
+
+/**
+ * Solves M qdd = f for symmetric positive definite M (n×n, fixed or dynamic size; only its lower triangle is read)
+ * by M = L D Lᵀ, row by row (Golub & Van Loan, "Matrix Computations", §4.1): with u_ik = L_ik d_k,
+ *   L_ij = (M_ij − Σ_{k<j} u_ik L_jk) / d_j,   d_i = M_ii − Σ_{k<i} u_ik L_ik,
+ * then L y = f, z = D⁻¹ y, Lᵀ qdd = z. Throws SingularMassMatrix when the pivots d_i are not regular
+ * (pivots_regular) and NonFiniteState when M or f is not finite or q̈ is not (throw_solve_failure); the finite test
+ * is on the result only. `t` and `x` (the full state) only go into the error message. Generated headers emit the
+ * same factorization unrolled for small n (generator/codegen/mass_solve_emitter.cpp) and call this above.
+ * Above kLoopSolveMaxN the factorization is Eigen's LLT (d_i = L_ii²), whose vectorized kernels win there
+ * (bench/run.sh --peers-only, section 8: at n = 30 the loop made rhs 1.15× slower than LLT, at n = 20 1.4× faster).
+ */
+constexpr Eigen::Index kLoopSolveMaxN = 20;
+
+template <class MatM, class VecF, class VecQdd, class Scalar, class VecX>
+void solve_mass_matrix(const MatM& M, const VecF& f, VecQdd& qdd, const Scalar& t, const VecX& x) {
+    using S = typename MatM::Scalar;
+    constexpr int N = MatM::RowsAtCompileTime;
+    const Eigen::Index n = N == Eigen::Dynamic ? M.rows() : N;  // a constant where M's size is: loops the compiler
+                                                                 // can unroll and schedule (Eigen's dot products
+                                                                 // on segments measured slower up to n = 30)
+    if (n > kLoopSolveMaxN) {
+        const Eigen::LLT<typename MatM::PlainObject> llt(M);
+        if (llt.info() != Eigen::Success || !pivots_regular(llt.matrixLLT().diagonal().cwiseAbs2().eval()))
+            throw_solve_failure(M, f, true, t, x);
+        qdd = llt.solve(f);
+        if (!qdd.allFinite()) throw_solve_failure(M, f, false, t, x);
+        return;
+    }
+    Eigen::Matrix<S, N, N, Eigen::RowMajor> L;  // row i: L_ik for k < i (u_ik while row i is built)
+    Eigen::Matrix<S, N, 1> d, inv_d;
+    L.resize(n, n);
+    d.resize(n);
+    inv_d.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        S di = M(i, i);
+        for (Eigen::Index j = 0; j < i; ++j) {
+            S u = M(i, j);
+            for (Eigen::Index k = 0; k < j; ++k) u -= L(i, k) * L(j, k);
+            L(i, j) = u;  // u_ij = L_ij d_j, kept until the row is done: the sums above need it
+        }
+        for (Eigen::Index j = 0; j < i; ++j) {
+            const S l = L(i, j) * inv_d(j);
+            di -= L(i, j) * l;
+            L(i, j) = l;
+        }
+        d(i) = di;
+        inv_d(i) = S(1) / di;
+    }
+    if (!pivots_regular(d)) throw_solve_failure(M, f, true, t, x);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        S y = f(i);
+        for (Eigen::Index k = 0; k < i; ++k) y -= L(i, k) * qdd(k);
+        qdd(i) = y;
+    }
+    for (Eigen::Index i = n; i-- > 0;) {
+        S z = qdd(i) * inv_d(i);
+        for (Eigen::Index k = i + 1; k < n; ++k) z -= L(k, i) * qdd(k);
+        qdd(i) = z;
+    }
+    if (!qdd.allFinite()) throw_solve_failure(M, f, false, t, x);
 }
 
 }  // namespace eomgen
