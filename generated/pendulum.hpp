@@ -205,7 +205,21 @@ struct Model {
         G_(0, 0) = Scalar(0);
     }
 
-    /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.
+    /// q'' from M q'' = f by M = L D L^T, unrolled (L unit lower triangular; its entries that are zero for every q
+    /// left out). The pivots D are tested as eomgen::solve_mass_matrix tests them: a singular M throws
+    /// eomgen::SingularMassMatrix, a non-finite M, f or q'' eomgen::NonFiniteState, never a NaN.
+    static void solve_for_accelerations(const Scalar& t, const State& x_, const MassMatrix& M_, const Config& f_,
+                                        Config& qdd_) {
+        const Scalar d0_ = M_(0, 0);
+        const Scalar inv_d0_ = Scalar(1) / d0_;
+        if (!eomgen::pivots_regular(std::array<Scalar, 1>{d0_}))
+            eomgen::throw_solve_failure(M_, f_, true, t, x_);
+        const Scalar y0_ = f_(0);
+        qdd_(0) = y0_ * inv_d0_;
+        if (!qdd_.allFinite()) eomgen::throw_solve_failure(M_, f_, false, t, x_);
+    }
+
+    /// x' = [q', q''] with M q'' = f solved by L D L^T; a singular M throws eomgen::SingularMassMatrix.
     static void rhs(const Scalar& t, const State& x_, const Params& p_, State& xdot_) {
         const Config q_ = x_.template head<nq>();
         const Config qd_ = x_.template tail<nq>();
@@ -213,7 +227,7 @@ struct Model {
         Config f_;
         dynamics(t, q_, qd_, p_, M_, f_);
         Config qdd_;
-        eomgen::solve_mass_matrix(M_, f_, qdd_, t, x_);
+        solve_for_accelerations(t, x_, M_, f_, qdd_);
         xdot_.template head<nq>() = qd_;
         xdot_.template tail<nq>() = qdd_;
     }

@@ -273,7 +273,27 @@ struct Model {
         G_(1, 1) = Scalar(0);
     }
 
-    /// x' = [q', q''] with M q'' = f solved by Cholesky; a singular M throws eomgen::SingularMassMatrix.
+    /// q'' from M q'' = f by M = L D L^T, unrolled (L unit lower triangular; its entries that are zero for every q
+    /// left out). The pivots D are tested as eomgen::solve_mass_matrix tests them: a singular M throws
+    /// eomgen::SingularMassMatrix, a non-finite M, f or q'' eomgen::NonFiniteState, never a NaN.
+    static void solve_for_accelerations(const Scalar& t, const State& x_, const MassMatrix& M_, const Config& f_,
+                                        Config& qdd_) {
+        const Scalar d0_ = M_(0, 0);
+        const Scalar inv_d0_ = Scalar(1) / d0_;
+        const Scalar u1_0_ = M_(1, 0);
+        const Scalar l1_0_ = u1_0_ * inv_d0_;
+        const Scalar d1_ = M_(1, 1) - u1_0_ * l1_0_;
+        const Scalar inv_d1_ = Scalar(1) / d1_;
+        if (!eomgen::pivots_regular(std::array<Scalar, 2>{d0_, d1_}))
+            eomgen::throw_solve_failure(M_, f_, true, t, x_);
+        const Scalar y0_ = f_(0);
+        const Scalar y1_ = f_(1) - l1_0_ * y0_;
+        qdd_(1) = y1_ * inv_d1_;
+        qdd_(0) = y0_ * inv_d0_ - l1_0_ * qdd_(1);
+        if (!qdd_.allFinite()) eomgen::throw_solve_failure(M_, f_, false, t, x_);
+    }
+
+    /// x' = [q', q''] with M q'' = f solved by L D L^T; a singular M throws eomgen::SingularMassMatrix.
     static void rhs(const Scalar& t, const State& x_, const Params& p_, State& xdot_) {
         const Config q_ = x_.template head<nq>();
         const Config qd_ = x_.template tail<nq>();
@@ -281,7 +301,7 @@ struct Model {
         Config f_;
         dynamics(t, q_, qd_, p_, M_, f_);
         Config qdd_;
-        eomgen::solve_mass_matrix(M_, f_, qdd_, t, x_);
+        solve_for_accelerations(t, x_, M_, f_, qdd_);
         xdot_.template head<nq>() = qd_;
         xdot_.template tail<nq>() = qdd_;
     }
