@@ -190,6 +190,8 @@ int RunCommand::run_model() {
     // A plot needs the samples: into a private temporary CSV unless --csv names one.
     eomgen::sim::Options o = options_;
     o.model = model.name;
+    if (show_progress)
+        o.progress = ::isatty(STDERR_FILENO) ? eomgen::ProgressStyle::Terminal : eomgen::ProgressStyle::Lines;
     std::optional<TempDir> samples_dir;
     if (!plot_.empty() && o.csv.empty()) {
         samples_dir.emplace(fs::temp_directory_path(), "eomgen-run.");

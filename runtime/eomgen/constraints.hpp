@@ -217,7 +217,7 @@ struct ConstrainedResult {
  * Integrates a constrained Model with the adaptive stepper Method (Dopri5 by default, Dop853; see
  * integrate_with) from sample time to sample time, projecting the
  * state onto the constraints after each segment (drift control on top of any Baumgarte terms). The
- * residuals reached before each projection are reported. x0 is checked first (check_consistent) unless
+ * residuals reached before each projection are reported; `observer` sees each projected sample. x0 is checked first (check_consistent) unless
  * `project_initial` is set, in which case it is projected. `events` are located within each segment as by
  * integrate(); a terminal one ends the run at the event (its state projected, and kept as the last sample).
  */
@@ -228,7 +228,8 @@ ConstrainedResult<typename Model::State> integrate_constrained(const typename Mo
                                                                const std::vector<typename Model::Config::Scalar>& times,
                                                                const typename Method<typename Model::State>::Options& opt,
                                                                bool project_initial = false,
-                                                               const std::vector<Event<typename Model::State>>& events = {}) {
+                                                               const std::vector<Event<typename Model::State>>& events = {},
+                                                               const Observer<typename Model::State>& observer = {}) {
     using Scalar = typename Model::Config::Scalar;
     using State = typename Model::State;
     if (project_initial)
@@ -256,6 +257,7 @@ ConstrainedResult<typename Model::State> integrate_constrained(const typename Mo
         out.max_velocity_residual = std::max(out.max_velocity_residual, r.velocity);
         project_onto_constraints<Model>(t, x, p);
         out.run.samples.push_back({t, x});
+        if (observer) observer(t, x);
         if (seg.stop_reason == StopReason::TerminalEvent) {
             out.run.stop_reason = seg.stop_reason;
             out.run.stopped_by = seg.stopped_by;

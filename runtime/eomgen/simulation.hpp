@@ -10,6 +10,7 @@
 #include "eomgen/model_jacobian.hpp"
 #include "eomgen/model_traits.hpp"
 #include "eomgen/output.hpp"
+#include "eomgen/progress.hpp"
 #include "eomgen/radau5.hpp"
 #include "eomgen/symplectic.hpp"
 
@@ -81,6 +82,8 @@ struct Options {
     int samples = 200;
     std::size_t max_steps = 10000000;
     bool project_initial = false;
+    /// How far a long integration has come, on stderr (progress.hpp): set by `eomgen run`, not an option here.
+    eomgen::ProgressStyle progress = eomgen::ProgressStyle::None;
 };
 
 /// An adaptive method of --method: the stepper template (integrate_with, integrate_constrained) and its
@@ -262,6 +265,14 @@ inline void check_options(const Options& o) {
         if (const std::string problem = output_path_problem("--csv", o.csv); !problem.empty()) throw OutputError(problem);
 }
 
+/// UsageError when model M cannot take --method (radau5 and constraints), before anything is printed.
+template <class M>
+void check_method_for(const Options& o) {
+    if (o.method == "radau5" && constraint_count<M>() > 0)
+        throw UsageError("--method radau5 integrates unconstrained models; use dopri5 or dop853 for " +
+                         std::string(M::name) + "'s constraints");
+}
+
 /// The parameters after `--set` and the initial state after `--init` (UsageError for an unknown name or value).
 template <class M>
 void apply_settings(const Options& o, typename M::Params& params, typename M::State& x0) {
@@ -326,14 +337,17 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
                        std::ostream* log) {
     using State = typename M::State;
     using Config = typename M::Config;
-    if (o.method == "radau5" && constraint_count<M>() > 0)
-        throw UsageError("--method radau5 integrates unconstrained models; use dopri5 or dop853 for " +
-                         std::string(M::name) + "'s constraints");
+    check_method_for<M>(o);
     auto h = [&params](double t, const State& x) {
         const Config q = positions<M::nq>(x), qd = velocities<M::nq>(x);
         return M::energy(t, q, qd, params);
     };
-    auto f = [&params](const double& t, const State& x, State& xdot) { M::rhs(t, x, params, xdot); };
+    eomgen::ProgressMeter meter(&std::cerr, o.progress, o.t_end);
+    unsigned long rhs_calls = 0;
+    auto f = [&params, &meter, &rhs_calls](const double& t, const State& x, State& xdot) {
+        M::rhs(t, x, params, xdot);
+        if (meter.active() && (++rhs_calls & 63u) == 0) meter.at(t);
+    };
 
     Trajectory<M> out;
     out.x = x0;
@@ -370,7 +384,9 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
             done = with_adaptive_method(o.method, [&](auto method) {
                 using Method = decltype(method);
                 const auto r = eomgen::integrate_constrained<M, Method::template type>(
-                    params, 0.0, x0, sample_times, Method::template options<State>(o), o.project_initial, events);
+                    params, 0.0, x0, sample_times, Method::template options<State>(o), o.project_initial, events,
+                    [&meter](const double& t, const State&) { meter.at(t); });
+                meter.finish();
                 // Energy drift from the (possibly projected) start, not from the state given.
                 out.h0 = h(r.run.samples.front().t, r.run.samples.front().x);
                 for (const auto& s : r.run.samples) out.max_drift = std::max(out.max_drift, drift(h(s.t, s.x)));
@@ -406,9 +422,11 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
             velocities<M::nq>(x) = vi.velocity();
             track(vi.t(), x);
             if (keep_samples && (k % every == 0 || k == steps)) out.samples.push_back({vi.t(), x});
+            if (meter.active() && k % 64 == 0) meter.at(vi.t());
             out.x = x;
         }
         out.t = vi.t();
+        meter.finish();
         if (log) *log << "method:  variational midpoint, dt " << std::to_string(o.dt) << ", " << steps << " steps\n";
     } else if (!done) {
         eomgen::Observer<State> observer;
@@ -445,6 +463,7 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
         }
         finish(r);
         track(r.t, r.x);
+        meter.finish();
         report_run(r);
     }
     return out;
@@ -456,6 +475,7 @@ template <class M>
 int run(const Options& o) {
     using State = typename M::State;
     check_options(o);
+    check_method_for<M>(o);
     typename M::Params params;
     State x0 = M::default_state();
     apply_settings<M>(o, params, x0);
