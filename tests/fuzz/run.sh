@@ -3,7 +3,7 @@
 # libclang-rt-14-dev). Builds eomgen's libraries and the harnesses of tests/fuzz/ with clang into
 # build-fuzz/, then runs each harness for SECONDS (default 600) from its corpus (the checked-in one, the
 # project's models and derivation fixtures, and what earlier runs found) with its dictionary. An input
-# slower than 1 s (2 s for check) is a finding, as is a crash or a sanitizer report; findings are written
+# slower than 1 s (2 s for check, 5 s for model_file: see below) is a finding, as is a crash or a sanitizer report; findings are written
 # to build-fuzz/findings/<harness>/. Prints one summary line per harness: executions, coverage, findings.
 # Usage: tests/fuzz/run.sh [SECONDS] [HARNESS...]      Figures: docs/reliability.md.
 set -euo pipefail
@@ -43,8 +43,12 @@ for h in "${harnesses[@]}"; do
     model_file | text_fields) dict=(-dict=tests/fuzz/dict/model_file.dict) ;;
     latex | check) dict=(-dict=tests/fuzz/dict/latex.dict) ;;
   esac
+  # 1 s (2 s for check) as issue 12 asks, except model_file: deriving a valid model of the project is itself
+  # slower than that under the sanitizers (models/triangle_plate_5_15.toml: 3.0 s under ASan + UBSan at -O1,
+  # 0.40 s in the release build; docs/reliability.md), so a 1 s limit stops the run on its own seed corpus.
   timeout=1
   [[ "$h" == check ]] && timeout=2
+  [[ "$h" == model_file ]] && timeout=5
   log="build-fuzz/findings/$h.log"
   set +e
   LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp" \
