@@ -16,6 +16,7 @@
 #pragma once
 
 #include "eomgen/linear_solve.hpp"
+#include "eomgen/device.hpp"
 #include "eomgen/linearize.hpp"
 
 #include <Eigen/Core>
@@ -88,7 +89,7 @@ struct Model {
     }
 
     /// Mass matrix M = d2L/dq'dq' (symmetric; computed by dynamics() at q' = 0, on which M does not depend).
-    static void mass_matrix(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& M_) {
+    EOMGEN_HD static void mass_matrix(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& M_) {
         Config qd_;
         qd_.setZero();
         Config f_;
@@ -96,13 +97,13 @@ struct Model {
     }
 
     /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f (computed by dynamics()).
-    static void forcing(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& f_) {
+    EOMGEN_HD static void forcing(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& f_) {
         MassMatrix M_;
         dynamics(t, q_, qd_, p_, M_, f_);
     }
 
     /// M and f together, sharing their subexpressions.
-    static void dynamics(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, MassMatrix& M_, Config& f_) {
+    EOMGEN_HD static void dynamics(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, MassMatrix& M_, Config& f_) {
         static_cast<void>(t);
         static_cast<void>(qd_);
         using std::cos;
@@ -119,7 +120,7 @@ struct Model {
     }
 
     /// Kinetic energy T.
-    static Scalar kinetic_energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
+    EOMGEN_HD static Scalar kinetic_energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
         static_cast<void>(t);
         static_cast<void>(q_);
         const Scalar m = p_.m;
@@ -129,7 +130,7 @@ struct Model {
     }
 
     /// Potential energy V.
-    static Scalar potential_energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
+    EOMGEN_HD static Scalar potential_energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
         static_cast<void>(t);
         static_cast<void>(qd_);
         using std::cos;
@@ -147,17 +148,17 @@ struct Model {
     }
 
     /// Lagrangian L = T - V.
-    static Scalar lagrangian(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
+    EOMGEN_HD static Scalar lagrangian(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
         return kinetic_energy(t, q_, qd_, p_) - potential_energy(t, q_, qd_, p_);
     }
 
     /// Energy function h = sum q' dL/dq' - L, here T + V (T quadratic in q', V free of q').
-    static Scalar energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
+    EOMGEN_HD static Scalar energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
     /// Generalized momenta p = dL/dq'.
-    static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
+    EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         static_cast<void>(q_);
         const Scalar m = p_.m;
@@ -167,7 +168,7 @@ struct Model {
     }
 
     /// dL/dq.
-    static void lagrangian_gradient(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
+    EOMGEN_HD static void lagrangian_gradient(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         static_cast<void>(qd_);
         using std::cos;
@@ -183,12 +184,12 @@ struct Model {
     }
 
     /// Conserved quantities, in the order of conserved_names.
-    static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
+    EOMGEN_HD static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
         out_(0) = energy(t, q_, qd_, p_);
     }
 
     /// Declared outputs ([outputs] of the model file), in the order of output_names.
-    static void outputs(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Outputs& out_) {
+    EOMGEN_HD static void outputs(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Outputs& out_) {
         static_cast<void>(t);
         using std::cos;
         using std::sin;
@@ -205,7 +206,7 @@ struct Model {
     }
 
     /// Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq = 0 about an equilibrium.
-    static void stiffness(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& K_) {
+    EOMGEN_HD static void stiffness(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& K_) {
         static_cast<void>(t);
         using std::sin;
         const Scalar m = p_.m;
@@ -219,7 +220,7 @@ struct Model {
     }
 
     /// Damping about rest, C: the symmetric part of D = dbeta_i/dq_j - dbeta_j/dq_i - dQ_i/dq'_j at q' = 0 (beta = dL/dq' at q' = 0).
-    static void damping(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& C_) {
+    EOMGEN_HD static void damping(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& C_) {
         static_cast<void>(t);
         static_cast<void>(q_);
         static_cast<void>(p_);
@@ -227,7 +228,7 @@ struct Model {
     }
 
     /// Gyroscopic matrix about rest, G: the skew part of D (does no work).
-    static void gyroscopic(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& G_) {
+    EOMGEN_HD static void gyroscopic(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& G_) {
         static_cast<void>(t);
         static_cast<void>(q_);
         static_cast<void>(p_);

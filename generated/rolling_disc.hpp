@@ -18,6 +18,7 @@
 #pragma once
 
 #include "eomgen/constraints.hpp"
+#include "eomgen/device.hpp"
 #include "eomgen/linearize.hpp"
 
 #include <Eigen/Core>
@@ -94,7 +95,7 @@ struct Model {
     }
 
     /// Mass matrix M = d2L/dq'dq' (symmetric; computed by dynamics() at q' = 0, on which M does not depend).
-    static void mass_matrix(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& M_) {
+    EOMGEN_HD static void mass_matrix(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& M_) {
         Config qd_;
         qd_.setZero();
         Config f_;
@@ -102,13 +103,13 @@ struct Model {
     }
 
     /// Forcing f = dL/dq - (d2L/dq'dq) q' - d2L/dq'dt, the right-hand side of M q'' = f (computed by dynamics()).
-    static void forcing(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& f_) {
+    EOMGEN_HD static void forcing(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& f_) {
         MassMatrix M_;
         dynamics(t, q_, qd_, p_, M_, f_);
     }
 
     /// M and f together, sharing their subexpressions.
-    static void dynamics(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, MassMatrix& M_, Config& f_) {
+    EOMGEN_HD static void dynamics(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, MassMatrix& M_, Config& f_) {
         static_cast<void>(t);
         using std::cos;
         using std::sin;
@@ -165,7 +166,7 @@ struct Model {
     }
 
     /// Kinetic energy T.
-    static Scalar kinetic_energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
+    EOMGEN_HD static Scalar kinetic_energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
         static_cast<void>(t);
         using std::cos;
         using std::sin;
@@ -190,7 +191,7 @@ struct Model {
     }
 
     /// Potential energy V.
-    static Scalar potential_energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
+    EOMGEN_HD static Scalar potential_energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
         static_cast<void>(t);
         static_cast<void>(qd_);
         using std::cos;
@@ -203,17 +204,17 @@ struct Model {
     }
 
     /// Lagrangian L = T - V.
-    static Scalar lagrangian(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
+    EOMGEN_HD static Scalar lagrangian(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
         return kinetic_energy(t, q_, qd_, p_) - potential_energy(t, q_, qd_, p_);
     }
 
     /// Energy function h = sum q' dL/dq' - L, here T + V (T quadratic in q', V free of q').
-    static Scalar energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
+    EOMGEN_HD static Scalar energy(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
     /// Generalized momenta p = dL/dq'.
-    static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
+    EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         using std::cos;
         using std::sin;
@@ -239,7 +240,7 @@ struct Model {
     }
 
     /// dL/dq.
-    static void lagrangian_gradient(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
+    EOMGEN_HD static void lagrangian_gradient(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         using std::cos;
         using std::sin;
@@ -266,12 +267,12 @@ struct Model {
     }
 
     /// Conserved quantities, in the order of conserved_names.
-    static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
+    EOMGEN_HD static void conserved(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Conserved& out_) {
         out_(0) = energy(t, q_, qd_, p_);
     }
 
     /// Declared outputs ([outputs] of the model file), in the order of output_names.
-    static void outputs(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Outputs& out_) {
+    EOMGEN_HD static void outputs(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Outputs& out_) {
         static_cast<void>(t);
         static_cast<void>(q_);
         static_cast<void>(qd_);
@@ -280,7 +281,7 @@ struct Model {
     }
 
     /// Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq = 0 about an equilibrium.
-    static void stiffness(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& K_) {
+    EOMGEN_HD static void stiffness(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& K_) {
         static_cast<void>(t);
         using std::cos;
         const Scalar m = p_.m;
@@ -316,7 +317,7 @@ struct Model {
     }
 
     /// Damping about rest, C: the symmetric part of D = dbeta_i/dq_j - dbeta_j/dq_i - dQ_i/dq'_j at q' = 0 (beta = dL/dq' at q' = 0).
-    static void damping(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& C_) {
+    EOMGEN_HD static void damping(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& C_) {
         static_cast<void>(t);
         static_cast<void>(q_);
         static_cast<void>(p_);
@@ -348,7 +349,7 @@ struct Model {
     }
 
     /// Gyroscopic matrix about rest, G: the skew part of D (does no work).
-    static void gyroscopic(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& G_) {
+    EOMGEN_HD static void gyroscopic(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& G_) {
         static_cast<void>(t);
         static_cast<void>(q_);
         static_cast<void>(p_);
@@ -380,7 +381,7 @@ struct Model {
     }
 
     /// Constraint Jacobian A (c = A q' + b) and acceleration level A q'' = gamma.
-    static void constraints(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, ConstraintJacobian& A_, ConstraintVector& gamma_) {
+    EOMGEN_HD static void constraints(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, ConstraintJacobian& A_, ConstraintVector& gamma_) {
         static_cast<void>(t);
         using std::cos;
         using std::sin;
@@ -407,7 +408,7 @@ struct Model {
     }
 
     /// Residuals: g(q,t) of holonomic constraints (0 for nonholonomic ones) and c = A q' + b.
-    static void constraint_residuals(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, ConstraintVector& position_, ConstraintVector& velocity_) {
+    EOMGEN_HD static void constraint_residuals(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, ConstraintVector& position_, ConstraintVector& velocity_) {
         static_cast<void>(t);
         using std::cos;
         using std::sin;
@@ -425,7 +426,7 @@ struct Model {
     }
 
     /// M, f, A, gamma and the residuals together, sharing their subexpressions.
-    static void constrained_dynamics(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, MassMatrix& M_, Config& f_, ConstraintJacobian& A_, ConstraintVector& gamma_, ConstraintVector& position_, ConstraintVector& velocity_) {
+    EOMGEN_HD static void constrained_dynamics(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, MassMatrix& M_, Config& f_, ConstraintJacobian& A_, ConstraintVector& gamma_, ConstraintVector& position_, ConstraintVector& velocity_) {
         static_cast<void>(t);
         using std::cos;
         using std::sin;

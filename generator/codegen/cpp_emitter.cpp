@@ -262,7 +262,7 @@ struct FunctionSpec {
 std::string emit_function(const FunctionSpec& f, const SymbolTable& table) {
     std::ostringstream os;
     os << "    /// " << f.doc << "\n";
-    os << "    static " << f.return_type << " " << f.name << "(";
+    os << "    EOMGEN_HD static " << f.return_type << " " << f.name << "(";  // device.hpp: host and CUDA device
     std::vector<std::string> params;
     for (const auto& [type, name] : f.inputs) params.push_back("const " + type + "& " + name);
     for (const auto& [type, name] : f.outputs) params.push_back(type + "& " + name);
@@ -371,7 +371,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
                                      (o.unit.empty() ? "" : "  [" + o.unit + "]"));
     os << "\n#pragma once\n\n";
     os << (eq.constraints.empty() ? "#include \"eomgen/linear_solve.hpp\"\n" : "#include \"eomgen/constraints.hpp\"\n");
-    os << "#include \"eomgen/linearize.hpp\"\n\n";
+    os << "#include \"eomgen/device.hpp\"\n#include \"eomgen/linearize.hpp\"\n\n";
     os << "#include <Eigen/Core>\n\n#include <array>\n#include <cmath>\n#include <string_view>\n#include <type_traits>\n\n";
     os << "namespace eomgen::models::" << model.name << " {\n\n";
     os << "/// x = [q, q'] with q = " << string_array(coords) << "; M(q,t) q'' = f(q,q',t) solved in rhs().\n";
