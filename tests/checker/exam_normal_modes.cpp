@@ -1,0 +1,131 @@
+/** @file exam_normal_modes.cpp  A text's secular equation and normal frequencies against the model's
+ * det(K₀ − ω² M₀) = 0 (normal_modes_check.hpp): the double pendulum for equal and for general masses and
+ * lengths, the bead on a spinning hoop off its bottom, and the models whose modes cannot be compared. */
+#include "checked_text.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <string>
+
+namespace {
+
+using eomgen::checker::CheckReport;
+using eomgen::checker::EquationCheck;
+using eomgen::checker::Verdict;
+using eomgen::test::describe;
+
+/// Every planted line disagrees, naming its mistake, and every other line agrees with the model's modes.
+/// Returns the number of agreements.
+int check_fixture(const std::string& model, const std::string& name) {
+    const std::string text = eomgen::test::fixture(name);
+    const CheckReport r = eomgen::test::check_text(model, text);
+    const auto planted = eomgen::test::planted_mistakes(text);
+    REQUIRE(planted.size() == 3);
+    int found = 0, agree = 0;
+    for (const EquationCheck& e : r.equations) {
+        INFO(name << ":" << describe(e));
+        CHECK(e.compared_with.rfind("the secular equation $\\det(K_0 - \\omega^2 M_0) = 0$ at the equilibrium "
+                                    "$\\theta_1 = 0$, $\\theta_2 = 0$", 0) == 0);
+        if (planted.count(e.where.line)) {
+            CHECK(e.verdict == Verdict::Disagrees);
+            std::string all;
+            for (const std::string& w : e.wrong_terms) all += w + "\n";
+            CHECK(all.find(planted.at(e.where.line)) != std::string::npos);
+            // A single equation's correction is checked by the checker itself before it is printed.
+            if (e.equation.find("\\pm") == std::string::npos) {
+                CHECK_FALSE(e.corrected.empty());
+                CHECK(e.notes.empty());
+            }
+            ++found;
+            continue;
+        }
+        CHECK(e.verdict == Verdict::Agrees);
+        ++agree;
+    }
+    CHECK(found == 3);
+    return agree;
+}
+
+}  // namespace
+
+TEST_CASE("normal modes: the double pendulum with equal masses and lengths", "[checker][modes]") {
+    CHECK(check_fixture("tests/checker/models/double_pendulum_equal.toml", "normal_modes_equal.md") == 6);
+    // The verdicts, pinned.
+    const CheckReport r = eomgen::test::check_text(
+        "tests/checker/models/double_pendulum_equal.toml",
+        "# Modes\n\n$$\\omega^2 = \\frac{g}{l}\\left(2 \\mp \\sqrt{2}\\right)$$\n\n"
+        "$$l^2 \\omega^4 - 4 g l \\omega^2 + 2 g^2 = 0$$\n\n$\\omega_2^2 = \\frac{2 g}{l}$\n");
+    REQUIRE(r.equations.size() == 3);
+    for (const EquationCheck& e : r.equations)
+        CHECK(e.compared_with == "the secular equation $\\det(K_0 - \\omega^2 M_0) = 0$ at the equilibrium "
+                                 "$\\theta_1 = 0$, $\\theta_2 = 0$");
+    CHECK(r.equations[0].reason ==
+          "both signs give normal frequencies of the model (modes 1 and 2 of 2, $\\omega^{2} = 5.746564953$ and "
+          "$\\omega^{2} = 33.49343505$ at the model's parameter values), exactly");
+    CHECK(r.equations[1].reason ==
+          "the secular equation (the same polynomial in $\\omega^{2}$ up to a factor), exactly");
+    const EquationCheck& wrong = r.equations[2];
+    CHECK(wrong.verdict == Verdict::Disagrees);
+    CHECK(wrong.reason == "its roots are not the model's normal frequencies there, $\\omega_{2}^{2} = 2 \\frac{g}{l} - "
+                          "\\frac{g \\sqrt{2}}{l}$ or $\\omega_{2}^{2} = 2 \\frac{g}{l} + \\frac{g \\sqrt{2}}{l}$");
+    REQUIRE(wrong.wrong_terms.size() == 1);
+    CHECK(wrong.wrong_terms[0] == "$\\omega_{2}^{2}$ is not a normal frequency of the model: at the model's parameter "
+                                  "values it is 19.62, the nearest mode (2 of 2) has $\\omega^{2} = 33.49343505$");
+    CHECK(wrong.difference == "-\\frac{g \\sqrt{2}}{l}");
+    CHECK(wrong.corrected == "\\omega_{2}^{2} = 2 \\frac{g}{l} + \\frac{g \\sqrt{2}}{l}");
+}
+
+TEST_CASE("normal modes: the double pendulum for any masses and lengths", "[checker][modes]") {
+    CHECK(check_fixture("examples/double_pendulum.toml", "normal_modes_general.md") == 4);
+}
+
+TEST_CASE("normal modes: numbers, --map, and ω that is not a frequency", "[checker][modes]") {
+    eomgen::checker::CheckOptions o;
+    o.map.push_back({"\\nu", "\\omega", "test"});
+    const CheckReport r = eomgen::test::check_text(
+        "tests/checker/models/double_pendulum_equal.toml",
+        "# D\n\n$\\omega^2 = 5.7466$, $\\omega = 2.3972$, $\\omega^2 = 5.76$, $\\nu^2 = \\frac{g}{l}(2-\\sqrt{2})$, "
+        "$\\omega = \\dot\\theta_1$\n",
+        o);
+    REQUIRE(r.equations.size() == 5);
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    // ω² = 5.7466 within its rounding (the model's g = 9.81: ω² = 5.746564953).
+    CHECK(r.equations[0].verdict == Verdict::Agrees);
+    CHECK(r.equations[0].reason.find("in numbers, at the model's parameter values within the text's rounding") !=
+          std::string::npos);
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    CHECK(r.equations[2].verdict == Verdict::Disagrees);  // 5.76 is off by 0.2 %, beyond its rounding
+    CHECK(r.equations[3].verdict == Verdict::Agrees);     // ν is ω by the map
+    // ω = θ̇₁ is an angular velocity, not a frequency: compared as usual (ω unknown).
+    CHECK(r.equations[4].verdict == Verdict::NotComparable);
+    CHECK(r.equations[4].compared_with.find("secular") == std::string::npos);
+}
+
+TEST_CASE("normal modes: the bead on a spinning hoop, off its bottom", "[checker][modes]") {
+    // ω is the hoop's spin rate (a parameter); the frequency is ω₀. At ω² > g/R the bottom is unstable and the
+    // bead rests at cos α₀ = g/(Rω²), where ω₀² = ω² sin²α₀ = ω² − g²/(R²ω²).
+    const CheckReport r = eomgen::test::check_text(
+        "examples/bead_on_hoop.toml",
+        "# Bead\n\n$$\\omega_0^2 = \\omega^2 - \\frac{g^2}{R^2 \\omega^2}$$\n\n$$\\omega_0^2 = \\frac{g}{R} - \\omega^2$$\n");
+    REQUIRE(r.equations.size() == 2);
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    CHECK(r.equations[0].verdict == Verdict::Agrees);
+    CHECK(r.equations[0].compared_with.find("\\arccos\\left(\\frac{g}{R \\omega^{2}}\\right)$") != std::string::npos);
+    CHECK(r.equations[0].reason.rfind("the normal frequency of the model (mode 1 of 1", 0) == 0);
+    // The bottom's frequency, where the bottom is unstable.
+    CHECK(r.equations[1].verdict == Verdict::Disagrees);
+    CHECK(r.equations[1].reason.find("(nor at its other stable equilibrium)") != std::string::npos);
+}
+
+TEST_CASE("normal modes: models whose modes are not compared", "[checker][modes]") {
+    const CheckReport damped = eomgen::test::check_text("models/damped_pendulum.toml", "# D\n\n$\\omega^2 = \\frac{g}{l}$\n");
+    REQUIRE(damped.equations.size() == 1);
+    CHECK(damped.equations[0].verdict == Verdict::NotComparable);
+    CHECK(damped.equations[0].reason.find("damping or gyroscopic terms act") != std::string::npos);
+    const CheckReport disc = eomgen::test::check_text("models/rolling_disc.toml", "# D\n\n$\\omega^2 = \\frac{g}{R}$\n");
+    REQUIRE(disc.equations.size() == 1);
+    CHECK(disc.equations[0].verdict == Verdict::NotComparable);
+    CHECK(disc.equations[0].reason.rfind("the model's normal modes cannot be computed: constraint 'roll_x' is "
+                                         "nonholonomic", 0) == 0);
+}
