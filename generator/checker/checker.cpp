@@ -334,7 +334,6 @@ class Checker : public Comparisons {
             if (e.has(c.qd)) return true;
         return false;
     }
-    bool has_root(const GiNaC::ex& e) const;
     bool depends_on_state(const GiNaC::ex& e) const {
         for (const Coordinate& c : model_.coordinates)
             if (e.has(c.q) || e.has(c.qd)) return true;
@@ -775,15 +774,6 @@ Tri Checker::equal(const GiNaC::ex& a, const GiNaC::ex& b, double tol) {
         ++good;
     }
     return good >= 2 ? Tri::Yes : Tri::Unknown;
-}
-
-bool Checker::has_root(const GiNaC::ex& e) const {
-    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
-        !GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer())
-        return true;
-    for (std::size_t i = 0; i < e.nops(); ++i)
-        if (has_root(e.op(i))) return true;
-    return false;
 }
 
 Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor,

@@ -32,15 +32,17 @@ namespace eomgen::checker {
  * hold; a side `\begin{vmatrix} … \end{vmatrix}` is its determinant. Equality is decided by normal() (exact),
  * else at random parameter values to 1e-10 relative (the verdict says which); a text that writes numbers
  * only is compared at the model's parameter values. Where modes cannot be computed (a nonholonomic constraint,
- * no equilibrium found, damping or gyroscopic terms) the equation is not comparable, with the reason.
+ * no equilibrium found, damping or gyroscopic terms) the link is compared as usual (ω an unknown symbol: not
+ * comparable), with a note giving the reason.
  */
 class NormalModesCheck {
   public:
     NormalModesCheck(const Model& model, const Equations& eq) : model_(model), eq_(eq) {}
 
     /**
-     * Judges the link left = right into r (its `where`, `section` and `equation` already set). False, with r
-     * untouched, when the link is not an equation in a frequency: the caller compares it as usual.
+     * Judges the link left = right into r (its `where`, `section` and `equation` already set). False when the
+     * link is not an equation in a frequency (r untouched), or when the model's modes cannot be compared (a note
+     * in r says why): the caller compares it as usual.
      */
     bool check(const Side& left, const Side& right, LatexContext& ctx, Comparisons& cmp, EquationCheck& r);
 
