@@ -288,7 +288,7 @@ class Checker : public Comparisons {
           numbers_(model, ctx_),
           printer_table_(codegen::symbol_table(model)),
           hamilton_(model, eq),
-          modes_(model, eq) {}
+          modes_(model, eq, d) {}
 
     CheckReport run();
 

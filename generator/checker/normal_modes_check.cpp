@@ -357,38 +357,94 @@ NormalModesCheck::Judgement NormalModesCheck::judge(const Rest& rest, const ex& 
     return j;
 }
 
+bool NormalModesCheck::frequencies_in(const std::vector<ex>& values, const LatexContext& ctx,
+                                      std::map<std::string, GiNaC::symbol>& out) const {
+    std::vector<ex> stack = values;
+    while (!stack.empty()) {
+        const ex x = stack.back();
+        stack.pop_back();
+        for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
+        if (!GiNaC::is_a<GiNaC::symbol>(x)) continue;
+        if (std::any_of(model_.parameters.begin(), model_.parameters.end(),
+                        [&](const Parameter& p) { return x.is_equal(p.symbol); }))
+            continue;
+        const FreeName* f = ctx.free_name_of(x);
+        if (!f || f->kind != NameKind::Unknown || !is_frequency_name(f->name)) return false;
+        out.emplace(f->name, f->symbol);
+    }
+    return true;
+}
+
+void NormalModesCheck::find_abbreviations(const LatexContext& ctx) {
+    scanned_ = true;
+    LatexContext copy = ctx;  // the rows were parsed already: their names are known, nothing new is added
+    std::map<std::string, Abbreviation> defined;
+    std::map<std::string, int> shared;  // frequency → the last line where it appears with another frequency
+    for (const MathRow& row : d_.rows)
+        for (const Chain& c : parse_math(row.text, copy))
+            for (std::size_t j = 1; j < c.sides.size(); ++j) {
+                if (c.relations[j - 1] != Relation::Equal) continue;
+                const std::vector<ex> A = readings(c.sides[j - 1], copy), B = readings(c.sides[j], copy);
+                std::vector<ex> all = A;
+                all.insert(all.end(), B.begin(), B.end());
+                std::map<std::string, GiNaC::symbol> f;
+                if (A.empty() || B.empty() || !frequencies_in(all, copy, f)) continue;
+                const int line = d_.position(row.offset + c.relation_offsets[j - 1]).line;
+                if (f.size() >= 2)
+                    for (const auto& [name, symbol] : f) shared[name] = std::max(shared[name], line);
+                if (f.size() != 1 || defined.count(f.begin()->first)) continue;
+                if (A.size() != 1 || B.size() != 1) continue;
+                if (const auto p = polynomial(A[0], B[0], f.begin()->second)) {
+                    const std::vector<ex> k = coefficients(*p, w_);
+                    if (k.size() == 2) defined[f.begin()->first] = {-k[0] / k[1], line, 0};
+                }
+            }
+    for (const auto& [name, a] : defined)
+        if (shared.count(name) && shared.at(name) > a.line) abbreviations_[name] = {a.omega2, a.line, shared.at(name)};
+}
+
 bool NormalModesCheck::check(const Side& left, const Side& right, LatexContext& ctx, Comparisons& cmp,
                              EquationCheck& r) {
-    const std::vector<ex> L = readings(left, ctx), R = readings(right, ctx);
+    std::vector<ex> L = readings(left, ctx), R = readings(right, ctx);
     if (L.empty() || R.empty() || (L.size() != R.size() && L.size() != 1 && R.size() != 1)) return false;
-    // Every name a parameter of the model or a frequency; each reading with one frequency.
+    if (!scanned_) find_abbreviations(ctx);
+    // Every name a parameter of the model or a frequency; each reading with one frequency, once the text's
+    // abbreviations are replaced by their values.
     const std::size_t n = std::max(L.size(), R.size());
-    auto left_of = [&](std::size_t k) { return L[std::min(k, L.size() - 1)]; };
-    auto right_of = [&](std::size_t k) { return R[std::min(k, R.size() - 1)]; };
+    L.resize(n, L.back());
+    R.resize(n, R.back());
     std::vector<GiNaC::symbol> omega(n);
     std::vector<std::string> omega_name(n);
+    std::vector<std::string> used;
     for (std::size_t k = 0; k < n; ++k) {
-        std::vector<ex> stack{left_of(k), right_of(k)};
-        std::set<std::string> found;
-        while (!stack.empty()) {
-            const ex x = stack.back();
-            stack.pop_back();
-            for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
-            if (!GiNaC::is_a<GiNaC::symbol>(x)) continue;
-            if (std::any_of(model_.parameters.begin(), model_.parameters.end(),
-                            [&](const Parameter& p) { return x.is_equal(p.symbol); }))
-                continue;
-            const FreeName* f = ctx.free_name_of(x);
-            if (!f || f->kind != NameKind::Unknown || !is_frequency_name(f->name)) return false;
-            found.insert(f->name);
-            omega[k] = f->symbol;
-            omega_name[k] = f->name;
+        std::map<std::string, GiNaC::symbol> found;
+        if (!frequencies_in({L[k], R[k]}, ctx, found) || found.empty()) return false;
+        if (found.size() == 1 && abbreviations_.count(found.begin()->first)) {
+            const auto& [name, a] = *abbreviations_.find(found.begin()->first);
+            r.notes.push_back("read as an abbreviation, not as a normal frequency: the text uses " + m(name) +
+                              " in the frequency at line " + std::to_string(a.used_at));
+            return false;
         }
-        if (found.size() != 1) return false;
+        GiNaC::exmap values;
+        for (const auto& [name, symbol] : found)
+            if (const auto a = abbreviations_.find(name); a != abbreviations_.end() && found.size() > 1) {
+                values[symbol] = GiNaC::sqrt(a->second.omega2);
+                const std::string note = "uses " + m(name + "^{2} = " + cmp.latex(a->second.omega2)) +
+                                         " as the text defines it at line " + std::to_string(a->second.line);
+                if (std::find(used.begin(), used.end(), note) == used.end()) used.push_back(note);
+            }
+        if (found.size() - values.size() != 1) return false;
+        for (const auto& [name, symbol] : found)
+            if (!values.count(symbol)) {
+                omega[k] = symbol;
+                omega_name[k] = name;
+            }
+        L[k] = L[k].subs(values);
+        R[k] = R[k].subs(values);
     }
     std::vector<ex> P(n);
     for (std::size_t k = 0; k < n; ++k) {
-        const auto p = polynomial(left_of(k), right_of(k), omega[k]);
+        const auto p = polynomial(L[k], R[k], omega[k]);
         if (!p) return false;  // ω, but not an equation in ω² (an angular velocity): compared as usual
         P[k] = *p;
     }
@@ -400,6 +456,7 @@ bool NormalModesCheck::check(const Side& left, const Side& right, LatexContext& 
         return false;
     }
     r.compared_with = "the secular equation " + m("\\det(K_0 - \\omega^2 M_0) = 0");
+    r.notes.insert(r.notes.end(), used.begin(), used.end());
     const double tol = std::max(1e-10, left.rounding + right.rounding);
 
     // Every reading must agree with one and the same equilibrium.

@@ -4,11 +4,13 @@
 
 #include "checker/checker.hpp"
 #include "checker/comparisons.hpp"
+#include "checker/derivation.hpp"
 #include "checker/latex_parser.hpp"
 #include "model/model.hpp"
 
 #include <ginac/ginac.h>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,13 +33,15 @@ namespace eomgen::checker {
  * `\pm` and `\mp` (which the parser does not read) give two equations, upper and lower signs, and both must
  * hold; a side `\begin{vmatrix} … \end{vmatrix}` is its determinant. Equality is decided by normal() (exact),
  * else at random parameter values to 1e-10 relative (the verdict says which); a text that writes numbers
- * only is compared at the model's parameter values. Where modes cannot be computed (a nonholonomic constraint,
+ * only is compared at the model's parameter values. A frequency the text defines (`\omega_0^2 = g/l`) and
+ * later uses with another (`\omega^2 = \omega_0^2 (2 \mp \sqrt2)`) is an abbreviation: its definition is not
+ * compared, and its value is substituted where it is used. Where modes cannot be computed (a nonholonomic constraint,
  * no equilibrium found, damping or gyroscopic terms) the link is compared as usual (ω an unknown symbol: not
  * comparable), with a note giving the reason.
  */
 class NormalModesCheck {
   public:
-    NormalModesCheck(const Model& model, const Equations& eq) : model_(model), eq_(eq) {}
+    NormalModesCheck(const Model& model, const Equations& eq, const Derivation& d) : model_(model), eq_(eq), d_(d) {}
 
     /**
      * Judges the link left = right into r (its `where`, `section` and `equation` already set). False when the
@@ -64,6 +68,12 @@ class NormalModesCheck {
     };
     Judgement judge(const Rest& rest, const GiNaC::ex& P, const std::string& omega, double tol, Comparisons& cmp) const;
     void compute(Comparisons& cmp);
+    /// The frequencies the text defines and then uses with another frequency (abbreviations), from all its rows.
+    void find_abbreviations(const LatexContext& ctx);
+    /// The frequencies in `values` (name → symbol); false when they hold a name that is neither a frequency nor
+    /// a parameter of the model.
+    bool frequencies_in(const std::vector<GiNaC::ex>& values, const LatexContext& ctx,
+                        std::map<std::string, GiNaC::symbol>& out) const;
     /// The text's polynomial P(w) of one reading a = b, or std::nullopt when it is not an equation in ω².
     std::optional<GiNaC::ex> polynomial(const GiNaC::ex& a, const GiNaC::ex& b, const GiNaC::symbol& omega) const;
     /// The model's frequencies at `rest`, for a verdict: "$\omega^2 = …$ or $\omega^2 = …$".
@@ -71,6 +81,15 @@ class NormalModesCheck {
 
     const Model& model_;
     const Equations& eq_;
+    const Derivation& d_;
+    /// An abbreviation: its value of ω² and the line of its definition.
+    struct Abbreviation {
+        GiNaC::ex omega2;
+        int line = 0;     ///< where the text defines it
+        int used_at = 0;  ///< the last line that uses it with another frequency
+    };
+    std::map<std::string, Abbreviation> abbreviations_;
+    bool scanned_ = false;
     bool computed_ = false;
     std::string why_not_;  ///< why the model's modes cannot be compared (empty: they can)
     std::vector<Rest> rests_;

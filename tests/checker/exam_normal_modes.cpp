@@ -105,6 +105,24 @@ TEST_CASE("normal modes: numbers, --map, and ω that is not a frequency", "[chec
     CHECK(r.equations[5].compared_with.find("secular") == std::string::npos);
 }
 
+TEST_CASE("normal modes: an abbreviation the text defines, \\omega_0^2 = g/l", "[checker][modes]") {
+    const CheckReport r = eomgen::test::check_text(
+        "tests/checker/models/double_pendulum_equal.toml",
+        "# A\n\n$\\omega_0^2 = \\frac{g}{l}$\n\n$$\\omega^2 = \\omega_0^2(2 \\mp \\sqrt{2})$$\n\n"
+        "$$\\omega_2^2 = \\omega_0^2 (2 + \\sqrt{3})$$\n");
+    REQUIRE(r.equations.size() == 3);
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    // The definition is not a claim about the modes: ω₀ stays unknown, with a note.
+    CHECK(r.equations[0].verdict == Verdict::NotComparable);
+    REQUIRE(r.equations[0].notes.size() == 1);
+    CHECK(r.equations[0].notes[0] ==
+          "read as an abbreviation, not as a normal frequency: the text uses $\\omega_{0}$ in the frequency at line 7");
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    REQUIRE(r.equations[1].notes.size() == 1);
+    CHECK(r.equations[1].notes[0] == "uses $\\omega_{0}^{2} = \\frac{g}{l}$ as the text defines it at line 3");
+    CHECK(r.equations[2].verdict == Verdict::Disagrees);
+}
+
 TEST_CASE("normal modes: the bead on a spinning hoop, off its bottom", "[checker][modes]") {
     // ω is the hoop's spin rate (a parameter); the frequency is ω₀. At ω² > g/R the bottom is unstable and the
     // bead rests at cos α₀ = g/(Rω²), where ω₀² = ω² sin²α₀ = ω² − g²/(R²ω²).
