@@ -1,6 +1,7 @@
 /** @file normal_modes_check.cpp  Normal frequencies and secular equations against det(K₀ − ω² M₀). */
 #include "checker/normal_modes_check.hpp"
 
+#include "checker/budget.hpp"
 #include "mechanics/small_oscillations.hpp"
 
 #include <algorithm>
@@ -342,9 +343,10 @@ NormalModesCheck::Judgement NormalModesCheck::judge(const Rest& rest, const ex& 
     int roots = 0;
     for (const double w2 : rest.omega2) {
         ex value = 0, scale = 0;
-        for (std::size_t i = 0; i < at.size(); ++i) {
-            value += at[i] * GiNaC::pow(GiNaC::numeric(w2), int(i));
-            scale += GiNaC::abs(at[i]) * GiNaC::numeric(std::pow(std::abs(w2), double(i)));
+        GiNaC::numeric power = 1;  // w2^i (GiNaC refuses 0^0)
+        for (std::size_t i = 0; i < at.size(); ++i, power *= GiNaC::numeric(w2)) {
+            value += at[i] * power;
+            scale += GiNaC::abs(at[i]) * GiNaC::abs(power);
         }
         const ex v = GiNaC::evalf(GiNaC::abs(value)), s = GiNaC::evalf(scale);
         if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::is_a<GiNaC::numeric>(s) &&
@@ -444,6 +446,8 @@ bool NormalModesCheck::check(const Side& left, const Side& right, LatexContext& 
     }
     std::vector<ex> P(n);
     for (std::size_t k = 0; k < n; ++k) {
+        // Too large to normalize within the budget: the caller says so.
+        if (expanded_terms(L[k] - R[k]) > kMaxExpandedTerms) return false;
         const auto p = polynomial(L[k], R[k], omega[k]);
         if (!p) return false;  // ω, but not an equation in ω² (an angular velocity): compared as usual
         P[k] = *p;

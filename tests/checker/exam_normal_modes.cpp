@@ -123,6 +123,28 @@ TEST_CASE("normal modes: an abbreviation the text defines, \\omega_0^2 = g/l", "
     CHECK(r.equations[2].verdict == Verdict::Disagrees);
 }
 
+TEST_CASE("normal modes: the linear triatomic molecule, with its zero mode (Goldstein 6.4)", "[checker][modes]") {
+    const CheckReport r = eomgen::test::check_text(
+        "tests/checker/models/triatomic.toml",
+        "# Triatomic\n\n$$\\omega^2 (k - m\\omega^2)(k(M + 2m) - M m \\omega^2) = 0$$\n\n"
+        "$\\omega_1 = 0$, $\\omega_2 = \\sqrt{\\frac{k}{m}}$, "
+        "$\\omega_3 = \\sqrt{\\frac{k}{m}\\left(1 + \\frac{2m}{M}\\right)}$, "
+        "$\\omega_3 = \\sqrt{\\frac{k}{m}\\left(1 + \\frac{m}{M}\\right)}$, "
+        "$\\omega^2 (k - m\\omega^2) = 0$\n");
+    REQUIRE(r.equations.size() == 6);
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    CHECK(r.equations[0].verdict == Verdict::Agrees);  // the secular equation, of degree 3
+    CHECK(r.equations[1].verdict == Verdict::Agrees);  // the translation
+    CHECK(r.equations[1].reason.rfind("a normal frequency of the model (mode 1 of 3", 0) == 0);
+    CHECK(r.equations[2].verdict == Verdict::Agrees);
+    CHECK(r.equations[3].verdict == Verdict::Agrees);
+    CHECK(r.equations[4].verdict == Verdict::Disagrees);  // 1 + m/M for 1 + 2m/M
+    CHECK(r.equations[4].corrected == "\\omega_{3}^{2} = \\frac{k}{m} + 2 \\frac{k}{M}");
+    // Two of the three roots: a factor of the characteristic polynomial.
+    CHECK(r.equations[5].verdict == Verdict::Agrees);
+    CHECK(r.equations[5].reason.rfind("a factor of the characteristic polynomial", 0) == 0);
+}
+
 TEST_CASE("normal modes: the bead on a spinning hoop, off its bottom", "[checker][modes]") {
     // ω is the hoop's spin rate (a parameter); the frequency is ω₀. At ω² > g/R the bottom is unstable and the
     // bead rests at cos α₀ = g/(Rω²), where ω₀² = ω² sin²α₀ = ω² − g²/(R²ω²).
