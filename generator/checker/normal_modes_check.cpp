@@ -514,9 +514,11 @@ bool NormalModesCheck::check(const Side& left, const Side& right, LatexContext& 
                         m("\\omega^{2} = " + number(rest.omega2[std::size_t(j.mode)]));
             r.wrong_terms.push_back(line);
             const auto& exact = rest.omega2_exact[std::size_t(std::max(j.mode, 0))];
-            if (n == 1 && j.mode >= 0 && exact) {
+            // text − the nearest mode (of the first sign that is wrong); a correction for a single equation only
+            // (the checker does not read \pm back).
+            if (r.difference.empty() && j.mode >= 0 && exact) {
                 r.difference = cmp.latex(tidy(root - *exact, values_));
-                r.corrected = cmp.latex(w2) + " = " + cmp.latex(tidy(*exact, values_));
+                if (n == 1) r.corrected = cmp.latex(w2) + " = " + cmp.latex(tidy(*exact, values_));
             }
         } else if (rest.poly && degree == int(coefficients(*rest.poly, w_).size()) - 1) {
             // The model's polynomial scaled to the text's leading coefficient.

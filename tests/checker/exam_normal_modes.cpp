@@ -76,6 +76,21 @@ TEST_CASE("normal modes: the double pendulum with equal masses and lengths", "[c
     CHECK(wrong.corrected == "\\omega_{2}^{2} = 2 \\frac{g}{l} + \\frac{g \\sqrt{2}}{l}");
 }
 
+TEST_CASE("normal modes: where normal() cannot decide, random parameter values do, and the verdict says so",
+          "[checker][modes]") {
+    // √(g/l) √(g l) = g for positive g, l, which normal() does not know.
+    const CheckReport r = eomgen::test::check_text(
+        "tests/checker/models/double_pendulum_equal.toml",
+        "# N\n\n$$\\omega^2 = (2 - \\sqrt{2}) \\frac{\\sqrt{g/l} \\sqrt{g l}}{l}$$\n\n"
+        "$$\\omega^2 = (2 - \\sqrt{3}) \\frac{\\sqrt{g/l} \\sqrt{g l}}{l}$$\n");
+    REQUIRE(r.equations.size() == 2);
+    CHECK(r.equations[0].verdict == Verdict::Agrees);
+    CHECK(r.equations[0].reason == "a normal frequency of the model (mode 1 of 2, $\\omega^{2} = 5.746564953$ at the "
+                                   "model's parameter values), numerically, at random parameter values to a relative "
+                                   "1e-10");
+    CHECK(r.equations[1].verdict == Verdict::Disagrees);
+}
+
 TEST_CASE("normal modes: the double pendulum for any masses and lengths", "[checker][modes]") {
     CHECK(check_fixture("examples/double_pendulum.toml", "normal_modes_general.md") == 4);
 }
