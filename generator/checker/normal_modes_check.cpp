@@ -337,7 +337,13 @@ NormalModesCheck::Judgement NormalModesCheck::judge(const Rest& rest, const ex& 
         j.agrees = ok;
         return j;
     }
-    // Numbers (the text's, or the model's where it has no exact linearization): the roots at the model's values.
+    // The text in the parameters against an equilibrium known in numbers only: values that happen to coincide
+    // at the model's parameters (l = 1) would pass, so it is not compared.
+    if (has_parameters(P, model_)) {
+        j.comparable = false;
+        return j;
+    }
+    // The text's numbers: the roots at the model's parameter values.
     std::vector<ex> at;
     for (const ex& c : text) at.push_back(c.subs(values_));
     int roots = 0;
@@ -459,7 +465,7 @@ bool NormalModesCheck::check(const Side& left, const Side& right, LatexContext& 
         r.notes.push_back("read as a normal frequency, " + m(omega_name[0]) + " is not compared: " + why_not_);
         return false;
     }
-    r.compared_with = "the secular equation " + m("\\det(K_0 - \\omega^2 M_0) = 0");
+    const std::string secular = "the secular equation " + m("\\det(K_0 - \\omega^2 M_0) = 0");
     r.notes.insert(r.notes.end(), used.begin(), used.end());
     const double tol = std::max(1e-10, left.rounding + right.rounding);
 
@@ -469,7 +475,7 @@ bool NormalModesCheck::check(const Side& left, const Side& right, LatexContext& 
         for (std::size_t k = 0; k < n; ++k) js.push_back(judge(rest, P[k], omega_name[k], tol, cmp));
         if (!std::all_of(js.begin(), js.end(), [](const Judgement& j) { return j.agrees; })) continue;
         r.verdict = Verdict::Agrees;
-        r.compared_with += " at the equilibrium " + rest.at;
+        r.compared_with = secular + " at the equilibrium " + rest.at;
         std::string modes, values;
         for (std::size_t k = 0; k < n && js[k].mode >= 0; ++k) {
             modes += (k ? " and " : "") + std::to_string(js[k].mode + 1);
@@ -486,10 +492,21 @@ bool NormalModesCheck::check(const Side& left, const Side& right, LatexContext& 
         r.reason = (n > 1 ? "both signs give " + what : what) + ", " + how;
         return true;
     }
-    // Disagrees: compared with the first equilibrium the model lists.
-    const Rest& rest = rests_.front();
+    // Disagrees: compared with the first equilibrium the model lists (where the comparison could be made).
+    const auto first = std::find_if(rests_.begin(), rests_.end(), [&](const Rest& rest) {
+        for (std::size_t k = 0; k < n; ++k)
+            if (!judge(rest, P[k], omega_name[k], tol, cmp).comparable) return false;
+        return true;
+    });
+    if (first == rests_.end()) {
+        r.notes.push_back("read as a normal frequency, " + m(omega_name[0]) + " is not compared: the model's stable "
+                          "equilibria are known in numbers only (no closed form), and a frequency in the parameters "
+                          "is compared with closed forms only (numbers are compared with numbers)");
+        return false;
+    }
+    const Rest& rest = *first;
     r.verdict = Verdict::Disagrees;
-    r.compared_with += " at the equilibrium " + rest.at;
+    r.compared_with = secular + " at the equilibrium " + rest.at;
     r.reason = "its roots are not the model's normal frequencies there, " + frequencies(rest, omega_name[0], cmp);
     if (rests_.size() == 2) r.reason += " (nor at its other stable equilibrium)";
     if (rests_.size() > 2) r.reason += " (nor at its other " + std::to_string(rests_.size() - 1) + " stable equilibria)";
@@ -519,6 +536,11 @@ bool NormalModesCheck::check(const Side& left, const Side& right, LatexContext& 
             if (r.difference.empty() && j.mode >= 0 && exact) {
                 r.difference = cmp.latex(tidy(root - *exact, values_));
                 if (n == 1) r.corrected = cmp.latex(w2) + " = " + cmp.latex(tidy(*exact, values_));
+            } else if (r.difference.empty() && j.mode >= 0 && GiNaC::is_a<GiNaC::numeric>(value)) {
+                // In numbers: the text's and the nearest mode's ω² at the model's parameter values.
+                const double mode = rest.omega2[std::size_t(j.mode)];
+                r.difference = number(GiNaC::ex_to<GiNaC::numeric>(value).real().to_double() - mode);
+                if (n == 1) r.corrected = cmp.latex(w2) + " = " + number(mode);
             }
         } else if (rest.poly && degree == int(coefficients(*rest.poly, w_).size()) - 1) {
             // The model's polynomial scaled to the text's leading coefficient.

@@ -61,6 +61,7 @@ class NormalModesCheck {
     /// How one reading P(w) = 0 compares with one equilibrium.
     struct Judgement {
         bool agrees = false;
+        bool comparable = true;  ///< false: a frequency in the parameters against an equilibrium known in numbers only
         std::string how;    ///< "exactly", "numerically, …", "at the model's parameter values"
         std::string what;   ///< agrees: what it is ("the secular equation", "a normal frequency of the model")
         std::string wrong;  ///< disagrees: a degree the model cannot have ("" otherwise)

@@ -176,6 +176,23 @@ TEST_CASE("normal modes: the bead on a spinning hoop, off its bottom", "[checker
     CHECK(r.equations[1].reason.find("(nor at its other stable equilibrium)") != std::string::npos);
 }
 
+TEST_CASE("normal modes: an equilibrium known in numbers only", "[checker][modes]") {
+    // k x + a sin x = 0 has no closed form: x = 0 is found in numbers, ω² = (k + a)/m = 4 there.
+    const CheckReport r = eomgen::test::check_text(
+        "tests/checker/models/pendulum_spring.toml",
+        "# S\n\n$\\omega^2 = \\frac{k + a}{m}$, $\\omega^2 = 4$, $\\omega^2 = 4.5$\n");
+    REQUIRE(r.equations.size() == 3);
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    // In the parameters: not compared with numbers (values of 1 would let wrong powers pass).
+    CHECK(r.equations[0].verdict == Verdict::NotComparable);
+    REQUIRE(r.equations[0].notes.size() == 1);
+    CHECK(r.equations[0].notes[0].find("known in numbers only") != std::string::npos);
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    CHECK(r.equations[1].reason.find("in numbers, at the model's parameter values") != std::string::npos);
+    CHECK(r.equations[2].verdict == Verdict::Disagrees);
+    CHECK(r.equations[2].corrected == "\\omega^{2} = 4");
+}
+
 TEST_CASE("normal modes: models whose modes are not compared", "[checker][modes]") {
     // ω stays an unknown symbol (it may be an angular velocity), with why it is not compared as a frequency.
     auto only = [](const std::string& model, const std::string& text) {
