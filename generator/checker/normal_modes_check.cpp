@@ -242,8 +242,6 @@ void NormalModesCheck::compute(Comparisons& cmp) {
             } catch (const std::exception&) {
             }
         }
-        // Where the modes are not on every coordinate (constraints), the comparison is with the numbers.
-        if (!rest.poly && !modes.constraints.empty()) rest.omega2.clear();
         rests_.push_back(std::move(rest));
     }
     if (rests_.empty() || std::all_of(rests_.begin(), rests_.end(), [](const Rest& r) { return r.omega2.empty(); })) {
@@ -251,8 +249,6 @@ void NormalModesCheck::compute(Comparisons& cmp) {
         if (damped)
             why_not_ = "at the model's stable equilibria damping or gyroscopic terms act: its motion there is not a "
                        "set of normal modes of $\\det(K_0 - \\omega^2 M_0) = 0$";
-        else if (!modes.constraints.empty() && any)
-            why_not_ = "the model's modes lie on its constraints' tangent space, which is not compared";
         else
             why_not_ = any ? "the model's frequencies could not be evaluated"
                            : (modes.equilibria.empty() ? "no equilibrium of the model was found"
@@ -343,22 +339,25 @@ NormalModesCheck::Judgement NormalModesCheck::judge(const Rest& rest, const ex& 
         j.comparable = false;
         return j;
     }
-    // The text's numbers: the roots at the model's parameter values.
-    std::vector<ex> at;
-    for (const ex& c : text) at.push_back(c.subs(values_));
+    // The text's numbers: the roots at the model's parameter values, each to the relative tolerance against the
+    // largest term of P there (for ω² = c: |ω²_k − c| ≤ tol·max(ω²_k, c)).
+    std::vector<double> at;
+    for (const ex& c : text) {
+        const ex v = GiNaC::evalf(c.subs(values_));
+        if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
+            j.comparable = false;
+            return j;
+        }
+        at.push_back(GiNaC::ex_to<GiNaC::numeric>(v).to_double());
+    }
     int roots = 0;
     for (const double w2 : rest.omega2) {
-        ex value = 0, scale = 0;
-        GiNaC::numeric power = 1;  // w2^i (GiNaC refuses 0^0)
-        for (std::size_t i = 0; i < at.size(); ++i, power *= GiNaC::numeric(w2)) {
+        double value = 0, scale = 0, power = 1;
+        for (std::size_t i = 0; i < at.size(); ++i, power *= w2) {
             value += at[i] * power;
-            scale += GiNaC::abs(at[i]) * GiNaC::abs(power);
+            scale = std::max(scale, std::abs(at[i] * power));
         }
-        const ex v = GiNaC::evalf(GiNaC::abs(value)), s = GiNaC::evalf(scale);
-        if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::is_a<GiNaC::numeric>(s) &&
-            GiNaC::ex_to<GiNaC::numeric>(v).to_double() <=
-                std::max(tol, 1e-9) * GiNaC::ex_to<GiNaC::numeric>(s).to_double())
-            ++roots;
+        if (std::abs(value) <= std::max(tol, 1e-9) * scale) ++roots;
     }
     j.agrees = roots >= degree;
     j.how = "in numbers, at the model's parameter values" + std::string(tol > 1e-10 ? " within the text's rounding" : "");

@@ -191,6 +191,14 @@ TEST_CASE("normal modes: an equilibrium known in numbers only", "[checker][modes
     CHECK(r.equations[1].reason.find("in numbers, at the model's parameter values") != std::string::npos);
     CHECK(r.equations[2].verdict == Verdict::Disagrees);
     CHECK(r.equations[2].corrected == "\\omega^{2} = 4");
+    // On a constraint (the pendulum in x, y): the mode on the tangent space, in numbers, within the rounding of
+    // 9.81 but not of 9.9 (±0.05).
+    const CheckReport c = eomgen::test::check_text("models/pendulum_cartesian.toml",
+                                                   "# C\n\n$\\omega^2 = 9.81$, $\\omega^2 = 9.9$\n");
+    REQUIRE(c.equations.size() == 2);
+    CHECK(c.equations[0].verdict == Verdict::Agrees);
+    CHECK(c.equations[0].compared_with.find("at the equilibrium $x = 0$, $y = -1$") != std::string::npos);
+    CHECK(c.equations[1].verdict == Verdict::Disagrees);
 }
 
 TEST_CASE("normal modes: models whose modes are not compared", "[checker][modes]") {
