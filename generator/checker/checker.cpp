@@ -10,6 +10,7 @@
 #include "checker/hamiltonian_check.hpp"
 #include "checker/latex_normalize.hpp"
 #include "checker/latex_parser.hpp"
+#include "checker/normal_modes_check.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/results.hpp"
@@ -286,7 +287,8 @@ class Checker : public Comparisons {
           options_(options),
           numbers_(model, ctx_),
           printer_table_(codegen::symbol_table(model)),
-          hamilton_(model, eq) {}
+          hamilton_(model, eq),
+          modes_(model, eq, d) {}
 
     CheckReport run();
 
@@ -332,7 +334,6 @@ class Checker : public Comparisons {
             if (e.has(c.qd)) return true;
         return false;
     }
-    bool has_root(const GiNaC::ex& e) const;
     bool depends_on_state(const GiNaC::ex& e) const {
         for (const Coordinate& c : model_.coordinates)
             if (e.has(c.q) || e.has(c.qd)) return true;
@@ -448,6 +449,7 @@ class Checker : public Comparisons {
     std::size_t current_offset_ = 0;  ///< file offset of the side being prepared (definitions before it apply)
     void collect_definitions(const std::vector<FullChain>& chains);
     HamiltonianReading hamilton_;  ///< p_q as variables, H(q, p, t) inside ∂
+    NormalModesCheck modes_;       ///< ω² and secular equations against the model's normal modes
     int velocity_h_line_ = 0;       ///< the first line where the text writes H in velocities (0: none)
     std::size_t velocity_h_at_ = 0;  ///< its file offset
     /// The reference's value as a correction prints it: in the momenta when the text's side is written in them.
@@ -772,15 +774,6 @@ Tri Checker::equal(const GiNaC::ex& a, const GiNaC::ex& b, double tol) {
         ++good;
     }
     return good >= 2 ? Tri::Yes : Tri::Unknown;
-}
-
-bool Checker::has_root(const GiNaC::ex& e) const {
-    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
-        !GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer())
-        return true;
-    for (std::size_t i = 0; i < e.nops(); ++i)
-        if (has_root(e.op(i))) return true;
-    return false;
 }
 
 Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor,
@@ -1340,6 +1333,7 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         r.reason = "an inequality or a relation other than equality is not compared";
         return r;
     }
+    if (rel == Relation::Equal && modes_.check(*L.side, *R.side, ctx_, *this, r)) return r;
     // A part of T or V defined by this link: compare it with its share of eomgen's T or V.
     for (int side = 0; side < 2; ++side) {
         const PSide& P = side == 0 ? L : R;

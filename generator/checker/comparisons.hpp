@@ -9,6 +9,16 @@
 
 namespace eomgen::checker {
 
+/// e holds a power with a fractional exponent (a square root, a cube root).
+inline bool has_root(const GiNaC::ex& e) {
+    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+        !GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer())
+        return true;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (has_root(e.op(i))) return true;
+    return false;
+}
+
 class Comparisons {
   public:
     virtual ~Comparisons() = default;

@@ -767,6 +767,13 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
                 bool free = true;
                 for (const symbol& qi : r.q) free = free && !Ke.has(qi) && !Me.has(qi);
                 if (!free) throw std::runtime_error("not exact");
+                e.M_exact.assign(n, std::vector<ex>(n));
+                e.K_exact.assign(n, std::vector<ex>(n));
+                for (std::size_t i = 0; i < n; ++i)
+                    for (std::size_t j = 0; j < n; ++j) {
+                        e.M_exact[i][j] = Me(unsigned(i), unsigned(j));
+                        e.K_exact[i][j] = Ke(unsigned(i), unsigned(j));
+                    }
                 const symbol w("w_");
                 std::vector<ex> roots = exact_roots(char_poly(Ke, Me, w), w);
                 for (NormalMode& mode : e.modes)

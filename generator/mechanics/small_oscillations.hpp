@@ -68,6 +68,10 @@ struct Equilibrium {
     /// as T A_s Tᵀ with T = diag(N, N) (zero on directions that leave the manifold). The identity without constraints.
     std::vector<std::vector<double>> tangent;
     std::vector<NormalMode> modes;         ///< K₀ a = ω² M₀ a (always; with C₀ or G₀ they are not the motion)
+    /// M₀ and K₀ in the parameters, where the equilibrium is exact (each coordinate they depend on has an exact
+    /// value) and there are no constraints, damping or gyroscopic terms; empty otherwise. det(K₀ − ω² M₀) = 0
+    /// is the secular equation (the checker compares a text's with it).
+    std::vector<std::vector<GiNaC::ex>> M_exact, K_exact;
     std::vector<std::complex<double>> eigenvalues;  ///< λ of the full first-order system ẋ = A x
     Stability stability = Stability::Stable;
     double growth_rate = 0;                ///< max Re λ when unstable

@@ -5,7 +5,9 @@
 #include "checker/checker.hpp"
 #include "model/model_file.hpp"
 
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -28,6 +30,36 @@ inline checker::CheckReport check_text(const std::string& model_path, const std:
                                        const checker::CheckOptions& options = {}) {
     const auto& d = derived_model(model_path);
     return checker::check_derivation(d.first, d.second, checker::parse_derivation(text, "text.md"), options);
+}
+
+/// A verdict in one paragraph, for INFO(): line, verdict, equation, what it was compared with, the reason, the
+/// wrong terms, notes and the correction.
+inline std::string describe(const checker::EquationCheck& e) {
+    std::string s = std::to_string(e.where.line) + ": " + checker::verdict_name(e.verdict) + ": " + e.equation + " [" +
+                    e.compared_with + "] " + e.reason;
+    for (const std::string& w : e.wrong_terms) s += "\n  - " + w;
+    for (const std::string& n : e.notes) s += "\n  note: " + n;
+    if (!e.corrected.empty()) s += "\n  corrected: " + e.corrected;
+    return s;
+}
+
+/// The text of tests/checker/fixtures/`name`.
+inline std::string fixture(const std::string& name) {
+    std::ifstream in(std::string(EOMGEN_SOURCE_DIR) + "/tests/checker/fixtures/" + name, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+/// Line → what the verdict on a planted mistake must contain, from the line's `% planted[...]`.
+inline std::map<int, std::string> planted_mistakes(const std::string& text) {
+    std::map<int, std::string> planted;
+    std::istringstream in(text);
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n)
+        if (const std::size_t at = line.find("% planted["); at != std::string::npos)
+            planted[n] = line.substr(at + 10, line.rfind(']') - at - 10);
+    return planted;
 }
 
 }  // namespace eomgen::test

@@ -13,34 +13,14 @@ namespace {
 using eomgen::checker::CheckReport;
 using eomgen::checker::EquationCheck;
 using eomgen::checker::Verdict;
-
-std::string describe(const EquationCheck& e) {
-    std::string s = std::to_string(e.where.line) + ": " + eomgen::checker::verdict_name(e.verdict) + ": " +
-                    e.equation + " [" + e.compared_with + "] " + e.reason;
-    for (const std::string& w : e.wrong_terms) s += "\n  - " + w;
-    return s;
-}
-
-std::string fixture(const std::string& name) {
-    std::ifstream in(std::string(EOMGEN_SOURCE_DIR) + "/tests/checker/fixtures/" + name, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
+using eomgen::test::describe;
 
 }  // namespace
 
 TEST_CASE("approximations: the pendulum to first and second order, and the slips", "[checker][approximation]") {
-    const std::string text = fixture("small_oscillations.md");
+    const std::string text = eomgen::test::fixture("small_oscillations.md");
     const CheckReport r = eomgen::test::check_text("tests/checker/models/plane_pendulum.toml", text);
-    std::map<int, std::string> planted;
-    {
-        std::istringstream in(text);
-        std::string line;
-        for (int n = 1; std::getline(in, line); ++n)
-            if (const std::size_t at = line.find("% planted["); at != std::string::npos)
-                planted[n] = line.substr(at + 10, line.rfind(']') - at - 10);
-    }
+    const std::map<int, std::string> planted = eomgen::test::planted_mistakes(text);
     REQUIRE(planted.size() == 2);
     int agree_first = 0, agree_second = 0, found = 0;
     for (const EquationCheck& e : r.equations) {
