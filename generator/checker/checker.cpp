@@ -10,6 +10,7 @@
 #include "checker/hamiltonian_check.hpp"
 #include "checker/latex_normalize.hpp"
 #include "checker/latex_parser.hpp"
+#include "checker/printed_numbers.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/results.hpp"
@@ -286,7 +287,8 @@ class Checker : public Comparisons {
           options_(options),
           numbers_(model, ctx_),
           printer_table_(codegen::symbol_table(model)),
-          hamilton_(model, eq) {}
+          hamilton_(model, eq),
+          parameter_values_(model, options.set) {}
 
     CheckReport run();
 
@@ -448,6 +450,7 @@ class Checker : public Comparisons {
     std::size_t current_offset_ = 0;  ///< file offset of the side being prepared (definitions before it apply)
     void collect_definitions(const std::vector<FullChain>& chains);
     HamiltonianReading hamilton_;  ///< p_q as variables, H(q, p, t) inside ∂
+    ParameterValues parameter_values_;  ///< for the numbers the text works out
     int velocity_h_line_ = 0;       ///< the first line where the text writes H in velocities (0: none)
     std::size_t velocity_h_at_ = 0;  ///< its file offset
     /// The reference's value as a correction prints it: in the momenta when the text's side is written in them.
@@ -1648,6 +1651,10 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             r.reason = "vector quantities (" + join(vectors) + ") are not compared";
         return;
     }
+    // A number the text works out: units to SI, the parameters' values, its printed digits.
+    if (check_number(a.value, b.value, {L.side->source, R.side->source}, c.relation_offsets[j - 1], model_, ctx_, d_,
+                     parameter_values_, r))
+        return;
     if (!a.units.empty() || !b.units.empty()) {
         if (equal(a.value, b.value, tol) == Tri::Yes) {
             r.verdict = Verdict::Agrees;
