@@ -27,6 +27,14 @@ std::size_t group_end(const std::string& s, std::size_t open) {
     return std::string::npos;
 }
 
+/// `\circ` or `{\circ}` (spaces allowed) starts at `from` of `s`: an exponent that means degrees.
+bool degrees_after(const std::string& s, std::size_t from) {
+    std::string e;
+    for (std::size_t k = from; k < s.size() && e.size() < 7; ++k)
+        if (s[k] != ' ') e += s[k];
+    return e.rfind("\\circ", 0) == 0 || e.rfind("{\\circ}", 0) == 0;
+}
+
 /// `x` with `digits` significant digits, in fixed notation (LaTeX has no `e+04`).
 std::string fixed(double x, int digits) {
     if (x == 0) return "0";
@@ -36,13 +44,11 @@ std::string fixed(double x, int digits) {
     return os.str();
 }
 
-/// `x` rounded to `decimals` digits after the point, as the text would print it.
-std::string to_decimals(double x, int decimals) {
-    std::ostringstream os;
-    os << std::fixed << std::setprecision(decimals) << x;
-    std::string t = os.str();
-    if (t.find_first_not_of("-0.") == std::string::npos) t = std::string(decimals > 0 ? "0." : "0") + std::string(std::size_t(decimals), '0');
-    return t;
+/// `x` rounded to `digits` significant digits (half away from zero): 0.4576 to 2 is 0.46, 457.6 to 2 is 460.
+double round_significant(double x, int digits) {
+    if (x == 0 || digits <= 0) return x;
+    const double unit = std::pow(10.0, std::floor(std::log10(std::abs(x))) - digits + 1);
+    return std::round(x / unit) * unit;
 }
 
 /// "1.7", "0.05", "12": a relative difference in percent with two significant digits.
@@ -168,12 +174,16 @@ std::optional<PrintedNumber> printed_number(const std::string& s) {
                 n.decimals = int(j - point - 1);
             }
             n.end = j;
-            const std::string text = s.substr(k, j - k);
+            k = j;
+            // The base of a power (`10` of `10^{-3}`) is not the printed number; `1.3^{\circ}` is one.
+            std::size_t after = j;
+            while (after < s.size() && s[after] == ' ') ++after;
+            if (after < s.size() && s[after] == '^' && !degrees_after(s, after + 1)) continue;
+            const std::string text = s.substr(n.begin, j - n.begin);
             n.value = std::stod(text[0] == '.' ? "0" + text : text);
             for (char c : text)
                 if (digit(c) && (n.significant > 0 || c != '0')) ++n.significant;
             all.push_back(n);
-            k = j;
             continue;
         }
         ++k;
@@ -291,12 +301,16 @@ bool check_number(const GiNaC::ex& a, const GiNaC::ex& b, const std::pair<std::s
     const std::string printed_text =
         (number_side == 0 ? sources.first : sources.second).substr(printed->begin, printed->end - printed->begin);
     const std::string value = fixed(mine, std::max(printed->significant + 2, 3));
-    const std::string rounded = to_decimals(mine, printed->decimals);
     r.compared_with = "the value eomgen computes" +
                       (used.tellp() > 0 ? " with " + used.str() + " (" + origins + ")" : std::string(""));
-    // The digit rule: eomgen's value rounded to the printed number's last digit is the printed number.
-    const double half_unit = 0.5 * std::pow(10.0, -printed->decimals);
-    if (std::abs(mine - printed->value) <= half_unit * (1 + 1e-9)) {
+    // The digit rule: eomgen's value rounded to as many significant digits as the text prints is the printed
+    // number (a printed zero, "0.00", has none: then within half a unit of its last digit).
+    const int digits = printed->significant;
+    const double mine_rounded = round_significant(mine, digits);
+    const std::string rounded = digits > 0 ? fixed(mine_rounded, digits) : fixed(mine, 1);
+    const bool agrees = digits > 0 ? std::abs(mine_rounded - printed->value) <= 1e-9 * std::abs(printed->value)
+                                   : std::abs(mine) <= 0.5 * std::pow(10.0, -printed->decimals);
+    if (agrees) {
         r.verdict = Verdict::Agrees;
         r.reason = "agrees to the printed digits: eomgen computes $" + value + "$, which rounds to the printed $" +
                    printed_text + "$";
@@ -304,14 +318,14 @@ bool check_number(const GiNaC::ex& a, const GiNaC::ex& b, const std::pair<std::s
     }
     const double rel = std::abs(mine - printed->value) / std::abs(mine);
     r.verdict = Verdict::Disagrees;
-    r.reason = "differs by " + percent(rel) + " %: eomgen computes $" + value + "$, which rounds to $" + rounded +
-               "$, not the printed $" + printed_text + "$";
-    r.difference = fixed(printed->value - mine, std::max(printed->significant, 2));
-    std::ostringstream allowed;
-    allowed << half_unit;
-    r.wrong_terms.push_back("the printed $" + printed_text + "$ is off by more than its last digit allows (±" +
-                            allowed.str() + ")");
+    r.difference = fixed(printed->value - mine, std::max(digits, 2));
+    r.wrong_terms.push_back("differs by " + percent(rel) + " %: eomgen computes $" + value + "$, which is $" +
+                            rounded + "$ to the printed " +
+                            (digits > 0 ? std::to_string(digits) + " significant digit" + (digits == 1 ? "" : "s")
+                                        : std::string("last digit")) +
+                            ", not the printed $" + printed_text + "$");
     std::string fixed_side = number_side == 0 ? sources.first : sources.second;
+    // The digits are replaced; a sign eomgen's value has and the text's does not goes with them.
     fixed_side.replace(printed->begin, printed->end - printed->begin, mine < 0 ? "(" + rounded + ")" : rounded);
     r.corrected = number_side == 0 ? fixed_side + " = " + sources.second : sources.first + " = " + fixed_side;
     return true;

@@ -5,6 +5,7 @@
 #include "checker/checker.hpp"
 #include "model/model_file.hpp"
 
+#include <fstream>
 #include <map>
 #include <string>
 #include <utility>
@@ -28,6 +29,20 @@ inline checker::CheckReport check_text(const std::string& model_path, const std:
                                        const checker::CheckOptions& options = {}) {
     const auto& d = derived_model(model_path);
     return checker::check_derivation(d.first, d.second, checker::parse_derivation(text, "text.md"), options);
+}
+
+/// The lines of the fixture at `path` marked `% planted[phrase]` (a planted mistake), with their phrase.
+inline std::map<int, std::string> planted_lines(const std::string& path) {
+    std::ifstream in(path);
+    std::map<int, std::string> out;
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+        const std::size_t at = line.find("% planted[");
+        if (at == std::string::npos) continue;
+        const std::size_t close = line.rfind(']');
+        out[n] = line.substr(at + 10, close - at - 10);
+    }
+    return out;
 }
 
 }  // namespace eomgen::test
