@@ -183,6 +183,9 @@ std::optional<PrintedNumber> printed_number(const std::string& s) {
             n.value = std::stod(text[0] == '.' ? "0" + text : text);
             for (char c : text)
                 if (digit(c) && (n.significant > 0 || c != '0')) ++n.significant;
+            // An integer's trailing zeros are not counted: `590` is given to two digits, `3.10` to three.
+            for (std::size_t z = text.size(); n.decimals == 0 && n.significant > 1 && z > 0 && text[z - 1] == '0'; --z)
+                --n.significant;
             all.push_back(n);
             continue;
         }
@@ -296,37 +299,47 @@ bool check_number(const GiNaC::ex& a, const GiNaC::ex& b, const std::pair<std::s
     const std::optional<double> computed = real_value(formula.value, subs);
     const std::optional<double> shown = real_value(num.value, none);
     if (!computed || !shown) return false;
-    // eomgen's value in the text's units: the printed number times its unit (and sign, and 10^k) is `shown`.
-    const double mine = *computed / (*shown / printed->value);
+    // In the text's units: the printed number times its unit (with 10^k) is `shown`, up to its sign.
+    const double unit = std::abs(*shown / printed->value);
+    const double text_value = *shown / unit, mine = *computed / unit;
     const std::string printed_text =
+        (text_value < 0 ? "-" : "") +
         (number_side == 0 ? sources.first : sources.second).substr(printed->begin, printed->end - printed->begin);
     const std::string value = fixed(mine, std::max(printed->significant + 2, 3));
     r.compared_with = "the value eomgen computes" +
                       (used.tellp() > 0 ? " with " + used.str() + " (" + origins + ")" : std::string(""));
     // The digit rule: eomgen's value rounded to as many significant digits as the text prints is the printed
-    // number (a printed zero, "0.00", has none: then within half a unit of its last digit).
+    // number (which is not 0: `shown` is not).
     const int digits = printed->significant;
     const double mine_rounded = round_significant(mine, digits);
-    const std::string rounded = digits > 0 ? fixed(mine_rounded, digits) : fixed(mine, 1);
-    const bool agrees = digits > 0 ? std::abs(mine_rounded - printed->value) <= 1e-9 * std::abs(printed->value)
-                                   : std::abs(mine) <= 0.5 * std::pow(10.0, -printed->decimals);
+    const std::string rounded = fixed(mine_rounded, digits);
+    const bool agrees = std::abs(mine_rounded - text_value) <= 1e-9 * std::abs(text_value);
     if (agrees) {
         r.verdict = Verdict::Agrees;
         r.reason = "agrees to the printed digits: eomgen computes $" + value + "$, which rounds to the printed $" +
                    printed_text + "$";
         return true;
     }
-    const double rel = std::abs(mine - printed->value) / std::abs(mine);
+    const double rel = std::abs(mine - text_value) / std::abs(mine);
     r.verdict = Verdict::Disagrees;
-    r.difference = fixed(printed->value - mine, std::max(digits, 2));
+    r.difference = fixed(text_value - mine, std::max(digits, 2));
     r.wrong_terms.push_back("differs by " + percent(rel) + " %: eomgen computes $" + value + "$, which is $" +
                             rounded + "$ to the printed " +
-                            (digits > 0 ? std::to_string(digits) + " significant digit" + (digits == 1 ? "" : "s")
-                                        : std::string("last digit")) +
+                            std::to_string(digits) + " significant digit" + (digits == 1 ? "" : "s") +
                             ", not the printed $" + printed_text + "$");
     std::string fixed_side = number_side == 0 ? sources.first : sources.second;
-    // The digits are replaced; a sign eomgen's value has and the text's does not goes with them.
-    fixed_side.replace(printed->begin, printed->end - printed->begin, mine < 0 ? "(" + rounded + ")" : rounded);
+    // The digits are replaced; where eomgen's value has the other sign, the text's minus goes, or one comes.
+    std::size_t begin = printed->begin;
+    std::string digits_text = rounded[0] == '-' ? rounded.substr(1) : rounded;
+    if ((mine < 0) != (text_value < 0)) {
+        std::size_t k = begin;
+        while (k > 0 && fixed_side[k - 1] == ' ') --k;
+        if (k > 0 && fixed_side[k - 1] == '-')
+            begin = k - 1;
+        else
+            digits_text = fixed_side.find_first_not_of(' ') == begin ? "-" + digits_text : "(-" + digits_text + ")";
+    }
+    fixed_side.replace(begin, printed->end - begin, digits_text);
     r.corrected = number_side == 0 ? fixed_side + " = " + sources.second : sources.first + " = " + fixed_side;
     return true;
 }

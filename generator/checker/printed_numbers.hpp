@@ -23,8 +23,8 @@ namespace eomgen::checker {
 struct PrintedNumber {
     std::size_t begin = 0, end = 0;  ///< byte range in the side's LaTeX
     double value = 0;                ///< as printed, without sign or unit
-    int decimals = 0;                ///< digits after the point: it is given to ±0.5·10^-decimals
-    int significant = 0;             ///< significant digits printed
+    int decimals = 0;                ///< digits after the point (0: an integer)
+    int significant = 0;             ///< significant digits printed (an integer's trailing zeros not counted)
 };
 
 /**
@@ -66,8 +66,9 @@ class ParameterValues {
  * prints a number (printed_number), possibly with units, and the other evaluates to a number once units are
  * converted to SI (degrees to radians) and the parameters take `values` (it must use a parameter or units
  * must be involved; plain arithmetic is left to the other comparisons). Agrees "to the printed digits" when
- * eomgen's value, in the text's units, is within half a unit of the printed number's last digit; otherwise
- * disagrees "differs by 1.7 %", with eomgen's value as the correction. A parameter set to a number alone
+ * eomgen's value, in the text's units, rounded to the printed number's significant digits is the printed
+ * number; otherwise disagrees "differs by 1.7 %", corrected to eomgen's value in as many digits. A number with
+ * units for a quantity of the state is not comparable, with that reason. A parameter set to a number alone
  * (`\theta = \pi/2`) is the text's choice: not comparable, and used for the rest of the paragraph. Returns
  * false (r untouched) when the link is not a number.
  */

@@ -100,6 +100,8 @@ TEST_CASE("numbers: the number a side prints, and its digits", "[checker][number
     CHECK(e->value == 458);
     CHECK(e->significant == 3);
     CHECK_FALSE(printed_number("m g h"));
+    CHECK(printed_number("590 \\mathrm{~J}")->significant == 2);  // an integer's trailing zeros do not count
+    CHECK(printed_number("3.10 \\mathrm{~J}")->significant == 3);
 }
 
 TEST_CASE("numbers: right numbers agree to their printed digits, with no false alarm", "[checker][numbers]") {
@@ -192,4 +194,21 @@ TEST_CASE("numbers: a --set that is not NAME=number or not a parameter is refuse
     o.set = {{"width", 1.0}};
     CHECK_THROWS_WITH(check(kCorrect, o), Catch::Contains("'width' is not a parameter of the model") &&
                                               Catch::Contains("m, w, h, g, theta"));
+}
+
+TEST_CASE("numbers: signs and an integer's trailing zeros", "[checker][numbers]") {
+    const CheckReport r = eomgen::test::check_text("models/door.toml",
+                                                   "$-1.51 \\sqrt{w/g} = -0.46 \\text{ s}$\n\n"
+                                                   "$1.51 \\sqrt{w/g} = -0.46 \\text{ s}$\n\n"
+                                                   "$m g h = 590 \\mathrm{~J}$\n");
+    REQUIRE(r.equations.size() == 3);
+    CHECK(r.equations[0].verdict == Verdict::Agrees);
+    const EquationCheck& sign = r.equations[1];
+    CHECK(sign.verdict == Verdict::Disagrees);
+    REQUIRE(sign.wrong_terms.size() == 1);
+    CHECK(sign.wrong_terms[0] == "differs by 201 %: eomgen computes $0.4576$, which is $0.46$ to the printed 2 "
+                                 "significant digits, not the printed $-0.46$");
+    CHECK(sign.corrected == "1.51 \\sqrt{w/g} = 0.46 \\text{ s}");  // the minus goes
+    INFO(describe(r.equations[2]));
+    CHECK(r.equations[2].verdict == Verdict::Agrees);  // 588 J to two digits
 }
