@@ -51,15 +51,10 @@ double round_significant(double x, int digits) {
     return std::round(x / unit) * unit;
 }
 
-/// "1.7", "0.05", "12": a relative difference in percent with two significant digits.
+/// "1.7", "0.042", "12", "201": a relative difference in percent, two significant digits below 10 %.
 std::string percent(double rel) {
     const double p = rel * 100;
-    std::ostringstream os;
-    if (p >= 10)
-        os << std::fixed << std::setprecision(0) << p;
-    else
-        os << std::setprecision(2) << p;
-    return os.str();
+    return p >= 10 ? std::to_string(std::lround(p)) : fixed(p, 2);
 }
 
 /// The value of `e` with `subs`, when it is a real number.
