@@ -1762,7 +1762,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         }
     }
-    // A formula set equal to a number is evaluated for particular data, which the model keeps symbolic.
+    // A formula set equal to a number that is not a worked-out number (printed_numbers: no single decimal or
+    // number with units, such as the Earth's (I_3 - I)/I \approx 3 \times 10^{-3}) is particular data.
     auto constant = [&](const GiNaC::ex& x) {
         for (const Parameter& p : model_.parameters)
             if (x.has(p.symbol)) return false;
@@ -1771,7 +1772,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     const GiNaC::ex& varying = constant(a.value) ? b.value : a.value;
     if (constant(a.value) != constant(b.value) && !(constant(a.value) ? a.value : b.value).is_zero() &&
         !has_velocity(varying) && !has_acceleration(varying)) {
-        r.reason = "a value for particular data (the model's parameters are symbols): not compared";
+        r.reason = "a value for particular data: not compared (only a printed decimal or a number with units is "
+                   "worked out with the model's values)";
         return;
     }
     // 4. It disagrees with what it tries to be.
