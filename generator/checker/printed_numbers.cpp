@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 
@@ -175,7 +176,8 @@ std::optional<PrintedNumber> printed_number(const std::string& s) {
             while (after < s.size() && s[after] == ' ') ++after;
             if (after < s.size() && s[after] == '^' && !degrees_after(s, after + 1)) continue;
             const std::string text = s.substr(n.begin, j - n.begin);
-            n.value = std::stod(text[0] == '.' ? "0" + text : text);
+            n.value = std::strtod(text.c_str(), nullptr);  // never throws: out of range is ±inf or 0
+            if (!std::isfinite(n.value)) return std::nullopt;
             for (char c : text)
                 if (digit(c) && (n.significant > 0 || c != '0')) ++n.significant;
             // An integer's trailing zeros are not counted: `590` is given to two digits, `3.10` to three.

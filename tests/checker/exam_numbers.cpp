@@ -102,6 +102,8 @@ TEST_CASE("numbers: the number a side prints, and its digits", "[checker][number
     CHECK_FALSE(printed_number("m g h"));
     CHECK(printed_number("590 \\mathrm{~J}")->significant == 2);  // an integer's trailing zeros do not count
     CHECK(printed_number("3.10 \\mathrm{~J}")->significant == 3);
+    CHECK(printed_number(".5")->value == 0.5);
+    CHECK_FALSE(printed_number(std::string(400, '9') + ".5"));  // beyond a double: no number, no exception
 }
 
 TEST_CASE("numbers: right numbers agree to their printed digits, with no false alarm", "[checker][numbers]") {
