@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <cmath>
 #include <fstream>
 #include <iostream>
 
@@ -32,7 +33,26 @@ CheckCommand::CheckCommand(CLI::App& app) {
         ->add_option("--map-file", map_files_, "TOML file with a [latex] table of NAME = VALUE (repeatable)")
         ->check(CLI::ExistingFile)
         ->allow_extra_args(false);
+    command_->add_option("--set", sets_, "NAME=VALUE: a parameter's value for the numbers the text works out "
+                                          "(repeatable)")
+        ->allow_extra_args(false);
     command_->add_option("-o,--output", output_, "Write the report to FILE instead of standard output");
+}
+
+std::pair<std::string, double> parse_set_option(const std::string& text) {
+    const std::size_t eq = text.find('=');
+    if (eq == std::string::npos || eq == 0) throw CheckError("--set " + text + ": expected NAME=VALUE");
+    const std::string value = text.substr(eq + 1);
+    std::size_t used = 0;
+    double v = 0;
+    try {
+        v = std::stod(value, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != value.size() || !std::isfinite(v))
+        throw CheckError("--set " + text + ": '" + value + "' is not a finite number");
+    return {text.substr(0, eq), v};
 }
 
 bool CheckCommand::selected() const {
@@ -48,6 +68,7 @@ int CheckCommand::run() const {
         for (const std::string& f : map_files_)
             for (MapEntry& e : load_map_file(f)) options.map.push_back(std::move(e));
         for (const std::string& m : maps_) options.map.push_back(parse_map_option(m));
+        for (const std::string& a : sets_) options.set.push_back(parse_set_option(a));
     } catch (const CheckError& e) {
         std::cerr << "eomgen check: " << e.what() << "\n";
         return 2;

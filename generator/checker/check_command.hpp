@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CLI {
@@ -17,12 +18,11 @@ constexpr int kExitDisagrees = 5;
  * Registers `check` on the `eomgen` command line:
  *
  *     eomgen check MODEL DERIVATION.md [--section TEXT]... [--format text|markdown|json]
- *                  [--map 'NAME=VALUE']... [--map-file FILE]... [-o FILE]
+ *                  [--map 'NAME=VALUE']... [--map-file FILE]... [--set NAME=VALUE]... [-o FILE]
  *
  * run() loads and derives the model (a ModelError propagates, as for `show`), checks the derivation and
  * prints the report; it returns 0 when nothing disagrees, kExitDisagrees when something does, 2 for a bad
- * --map,
- * --map-file or --section, 3 when the derivation or output file cannot be read or written.
+ * --map, --map-file, --set or --section, 3 when the derivation or output file cannot be read or written.
  */
 class CheckCommand {
   public:
@@ -33,7 +33,10 @@ class CheckCommand {
   private:
     CLI::App* command_ = nullptr;
     std::string model_, derivation_, format_ = "text", output_;
-    std::vector<std::string> sections_, maps_, map_files_;
+    std::vector<std::string> sections_, maps_, map_files_, sets_;
 };
+
+/// `--set NAME=VALUE` → {NAME, VALUE}. @throws CheckError when it is not NAME=<finite number>
+std::pair<std::string, double> parse_set_option(const std::string& text);
 
 }  // namespace eomgen::checker

@@ -11,6 +11,7 @@
 #include "checker/latex_normalize.hpp"
 #include "checker/latex_parser.hpp"
 #include "checker/normal_modes_check.hpp"
+#include "checker/printed_numbers.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/results.hpp"
@@ -288,7 +289,8 @@ class Checker : public Comparisons {
           numbers_(model, ctx_),
           printer_table_(codegen::symbol_table(model)),
           hamilton_(model, eq),
-          modes_(model, eq, d) {}
+          modes_(model, eq, d),
+          parameter_values_(model, options.set) {}
 
     CheckReport run();
 
@@ -450,6 +452,7 @@ class Checker : public Comparisons {
     void collect_definitions(const std::vector<FullChain>& chains);
     HamiltonianReading hamilton_;  ///< p_q as variables, H(q, p, t) inside ∂
     NormalModesCheck modes_;       ///< ω² and secular equations against the model's normal modes
+    ParameterValues parameter_values_;  ///< for the numbers the text works out
     int velocity_h_line_ = 0;       ///< the first line where the text writes H in velocities (0: none)
     std::size_t velocity_h_at_ = 0;  ///< its file offset
     /// The reference's value as a correction prints it: in the momenta when the text's side is written in them.
@@ -1642,6 +1645,10 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             r.reason = "vector quantities (" + join(vectors) + ") are not compared";
         return;
     }
+    // A number the text works out: units to SI, the parameters' values, its printed digits.
+    if (check_number(a.value, b.value, {L.side->source, R.side->source}, c.relation_offsets[j - 1], model_, ctx_, d_,
+                     parameter_values_, r))
+        return;
     if (!a.units.empty() || !b.units.empty()) {
         if (equal(a.value, b.value, tol) == Tri::Yes) {
             r.verdict = Verdict::Agrees;
@@ -1749,7 +1756,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         }
     }
-    // A formula set equal to a number is evaluated for particular data, which the model keeps symbolic.
+    // A formula set equal to a number that is not a worked-out number (printed_numbers: no single decimal or
+    // number with units, such as the Earth's (I_3 - I)/I \approx 3 \times 10^{-3}) is particular data.
     auto constant = [&](const GiNaC::ex& x) {
         for (const Parameter& p : model_.parameters)
             if (x.has(p.symbol)) return false;
@@ -1758,7 +1766,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     const GiNaC::ex& varying = constant(a.value) ? b.value : a.value;
     if (constant(a.value) != constant(b.value) && !(constant(a.value) ? a.value : b.value).is_zero() &&
         !has_velocity(varying) && !has_acceleration(varying)) {
-        r.reason = "a value for particular data (the model's parameters are symbols): not compared";
+        r.reason = "a value for particular data: not compared (only a printed decimal or a number with units is "
+                   "worked out with the model's values)";
         return;
     }
     // 4. It disagrees with what it tries to be.

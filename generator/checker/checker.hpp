@@ -7,6 +7,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eomgen::checker {
@@ -54,6 +55,8 @@ struct CheckOptions {
     std::vector<std::string>
         sections;               ///< --section patterns (case-insensitive substrings of headings); empty: all
     std::vector<MapEntry> map;  ///< applied in order; later entries may use earlier ones
+    /// --set NAME=VALUE: parameter values for the numbers the text works out (printed_numbers.hpp)
+    std::vector<std::pair<std::string, double>> set;
 };
 
 /// A map entry or a --section that cannot be used; the message says which and why.
@@ -92,7 +95,8 @@ struct CheckReport {
  * when it can be matched with what it tries to be (a label, an Euler–Lagrange equation, the energy integral,
  * the neighbouring side of a chain), else it is not comparable.
  *
- * @throws CheckError for a map entry that does not parse or a --section that matches no heading
+ * @throws CheckError for a map entry that does not parse, a --section that matches no heading, or a --set name
+ *         that is not a parameter
  */
 CheckReport check_derivation(const Model& model, const Equations& eq, const Derivation& derivation,
                              const CheckOptions& options);

@@ -2,6 +2,7 @@
 #include "checker/latex_parser.hpp"
 
 #include "checker/latex_normalize.hpp"
+#include "checker/units.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -214,12 +215,6 @@ std::string normal_greek(const std::string& w) {  // w without backslash
     if (w == "varsigma") return "sigma";
     if (w == "varkappa") return "kappa";
     return w;
-}
-
-bool is_unit(const std::string& u) {
-    static const std::set<std::string> units = {"m", "cm", "mm", "km", "s",   "sec", "ms", "min", "kg", "g",
-                                                "N", "J",  "W",  "Hz", "rad", "deg", "K",  "hr",  "Pa", "mN"};
-    return units.count(u) > 0;
 }
 
 std::string trim(std::string_view s) {
@@ -767,7 +762,7 @@ class Parser {
                 n.kind = inner.kind;
             } else if (takes_raw_argument(t->text) && t->text != "\\operatorname") {
                 const std::string content = trim(t->raw);
-                if (t->text == "\\mathrm" && is_unit(content)) {
+                if (is_unit_command(t->text, t->raw)) {
                     n.base = "\\mathrm{" + content + "}";
                     n.kind = NameKind::Unit;
                 } else if (is_plain_word(content)) {
@@ -1088,7 +1083,7 @@ class Parser {
                 ++pos_;
                 return 1;
             }
-            if (is_plain_word(content) || (w == "\\mathrm" && is_unit(content))) return name_value();
+            if (is_plain_word(content) || is_unit_command(w, t.raw)) return name_value();
             fail(at, "text '" + content + "' in a formula is not read");
         }
         if (starts_name(&t)) return name_value();

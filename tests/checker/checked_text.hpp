@@ -62,4 +62,12 @@ inline std::map<int, std::string> planted_mistakes(const std::string& text) {
     return planted;
 }
 
+/// The lines of the fixture at `path` marked `% planted[phrase]` (a planted mistake), with their phrase.
+inline std::map<int, std::string> planted_lines(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return planted_mistakes(ss.str());
+}
+
 }  // namespace eomgen::test

@@ -1,5 +1,6 @@
 /** @file exam_checker.cpp  Correct derivations raise no alarm; planted mistakes are found on their line; the
  * seed. */
+#include "checked_text.hpp"
 #include "checker/checker.hpp"
 #include "checker/latex_parser.hpp"
 #include "checker/report.hpp"
@@ -55,23 +56,9 @@ std::string describe(const EquationCheck& e) {
     return s;
 }
 
-/// The lines marked `% planted[phrase]` in a fixture, with their phrase.
-std::map<int, std::string> planted(const std::string& path) {
-    std::ifstream in(path);
-    std::map<int, std::string> out;
-    std::string line;
-    for (int n = 1; std::getline(in, line); ++n) {
-        const std::size_t at = line.find("% planted[");
-        if (at == std::string::npos) continue;
-        const std::size_t close = line.rfind(']');
-        out[n] = line.substr(at + 10, close - at - 10);
-    }
-    return out;
-}
-
 /// Every planted mistake is a disagreement on its own line explained with its phrase; nothing else disagrees.
 void require_planted_found(const CheckReport& r, const std::string& path) {
-    const std::map<int, std::string> expected = planted(path);
+    const std::map<int, std::string> expected = eomgen::test::planted_lines(path);
     REQUIRE(expected.size() == 5);
     std::set<int> found;
     for (const EquationCheck& e : r.equations) {
@@ -293,7 +280,9 @@ TEST_CASE("seed: the slips of 5-20 and Ex. 30 are found", "[checker]") {
     lines.clear();
     for (const EquationCheck& e : d.equations)
         if (e.verdict == Verdict::Disagrees) lines.insert(e.where.line);
-    CHECK(lines == std::set<int>{554, 560});
+    CHECK(lines == std::set<int>{554, 560, 566});
     CHECK(explanations(d, 554).find("$\\sqrt{\\sin \\theta}$ times") != std::string::npos);
     CHECK(explanations(d, 560).find("opposite signs") != std::string::npos);
+    // 1.51 sqrt(0.9/9.8) = 0.4576 s, which is 0.46 to two digits: the text prints 0.45.
+    CHECK(explanations(d, 566).find("differs by 1.7 %: eomgen computes $0.4576$") != std::string::npos);
 }

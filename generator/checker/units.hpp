@@ -1,0 +1,28 @@
+/** @file units.hpp  Units of measure as derivations print them (`\mathrm{~s}`, `\text{ cm}`, `\mathrm{rad/s}`,
+ * `\mathrm{m}/\mathrm{s}^{2}`): which names are units, and their factors to SI. */
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace eomgen::checker {
+
+/**
+ * The factor that turns a quantity in `unit` into SI (radians for angles): "cm" → 0.01, "min" → 60, "g" →
+ * 0.001 (grams), "deg" → π/180, "rad" → 1, "N" → 1. A compound of them with `/` and integer powers
+ * (`rad/s`, `m/s^2`, `m/s^{2}`, `kg m^2`) multiplies out. Spaces and `~` around it are ignored.
+ * std::nullopt when `unit` is not one (an empty string, an unknown name, a malformed power).
+ */
+std::optional<double> unit_factor(std::string_view unit);
+
+/// unit_factor(unit) has a value: `unit` is printed as a unit of measure.
+bool is_unit(std::string_view unit);
+
+/**
+ * `\mathrm{~s}`, `\mathrm{rad/s}` and `\text{ s}`, `\text{m/s}`: `command` (with its backslash) with its raw
+ * `argument` typesets a unit of measure. `\text{s}` (one word, no space before it) is not one: it may be a
+ * name's subscript (`T_{\text{s}}`).
+ */
+bool is_unit_command(std::string_view command, std::string_view argument);
+
+}  // namespace eomgen::checker
