@@ -12,6 +12,7 @@
 // Conserved: nothing found
 #pragma once
 
+#include "eomgen/analytic_jacobian.hpp"
 #include "eomgen/linear_solve.hpp"
 #include "eomgen/device.hpp"
 #include "eomgen/linearize.hpp"
@@ -276,6 +277,104 @@ struct Model {
         solve_for_accelerations(t, x_, M_, f_, qdd_);
         xdot_.template head<nq>() = qd_;
         xdot_.template tail<nq>() = qdd_;
+    }
+
+    /// R = [dr/dq, dr/dq'] of r = f - M q'' at fixed q'' (the solved accelerations): M dq''/dq = dr/dq, M dq''/dq' = dr/dq'.
+    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, nx>& R_) {
+        static_cast<void>(t);
+        using std::cos;
+        using std::sin;
+        const Scalar m = p_.m;
+        const Scalar l = p_.l;
+        const Scalar g = p_.g;
+        const Scalar c = p_.c;
+        const Scalar theta = q_(0);
+        const Scalar theta_dot = qd_(0);
+        const Scalar phi_dot = qd_(1);
+        const Scalar phi_ddot = qdd_(1);
+        const Scalar cos_theta = cos(theta);
+        const Scalar sin_theta = sin(theta);
+        const Scalar t0 = cos_theta*cos_theta - sin_theta*sin_theta;
+        const Scalar t1 = l*l;
+        const Scalar t2 = m*phi_dot*cos_theta*sin_theta*t1;
+        const Scalar t3 = c*sin_theta;
+        R_(0, 0) = m*l*(l*(phi_dot*phi_dot)*t0 - g*cos_theta);
+        R_(0, 1) = Scalar(0);
+        R_(0, 2) = -(c*t1);
+        R_(0, 3) = Scalar(2)*t2;
+        R_(1, 0) = -Scalar(2)*t1*(m*phi_ddot*cos_theta*sin_theta + phi_dot*(m*theta_dot*t0 + cos_theta*t3));
+        R_(1, 1) = Scalar(0);
+        R_(1, 2) = -Scalar(2)*t2;
+        R_(1, 3) = -(sin_theta*t1*(Scalar(2)*m*theta_dot*cos_theta + t3));
+    }
+
+    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp.
+    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, n_params>& Rp_) {
+        static_cast<void>(t);
+        using std::cos;
+        using std::sin;
+        const Scalar m = p_.m;
+        const Scalar l = p_.l;
+        const Scalar g = p_.g;
+        const Scalar c = p_.c;
+        const Scalar theta = q_(0);
+        const Scalar theta_dot = qd_(0);
+        const Scalar theta_ddot = qdd_(0);
+        const Scalar phi_dot = qd_(1);
+        const Scalar phi_ddot = qdd_(1);
+        const Scalar t0 = l*theta_ddot;
+        const Scalar sin_theta = sin(theta);
+        const Scalar cos_theta = cos(theta);
+        const Scalar t1 = l*cos_theta*(phi_dot*phi_dot);
+        const Scalar t2 = l*l;
+        const Scalar t3 = phi_ddot*sin_theta;
+        Rp_(0, 0) = -(l*(t0 + sin_theta*(g - t1)));
+        Rp_(0, 1) = -Scalar(2)*(m*(t0 + sin_theta*(Scalar(1)/Scalar(2)*g - t1)) + l*c*theta_dot);
+        Rp_(0, 2) = -(m*l*sin_theta);
+        Rp_(0, 3) = -(theta_dot*t2);
+        Rp_(1, 0) = -(sin_theta*t2*(Scalar(2)*theta_dot*phi_dot*cos_theta + t3));
+        Rp_(1, 1) = -Scalar(2)*l*sin_theta*(m*t3 + phi_dot*(Scalar(2)*m*theta_dot*cos_theta + c*sin_theta));
+        Rp_(1, 2) = Scalar(0);
+        Rp_(1, 3) = -(phi_dot*t2*(sin_theta*sin_theta));
+    }
+
+    /// J = dx'/dx = [[0, I], [M^-1 dr/dq, M^-1 dr/dq']] at (t, x), analytic (jacobian_terms()), with one
+    /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.
+    template <class MatJ = StateJacobian>
+    static void state_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJ& J_) {
+        const Config q_ = x_.template head<nq>();
+        const Config qd_ = x_.template tail<nq>();
+        MassMatrix M_;
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
+        Config qdd_;
+        Eigen::Matrix<Scalar, nq, nx> R_;
+        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {
+            jacobian_terms(t, q_, qd_, a_, p_, r_);
+        });
+        J_.resize(nx, nx);
+        J_.template topLeftCorner<nq, nq>().setZero();
+        J_.template topRightCorner<nq, nq>().setIdentity();
+        J_.template bottomRows<nq>() = R_;
+    }
+
+    /// Jp = dx'/dp = [[0], [M^-1 dr/dp]] at (t, x), columns in param_names order, analytic
+    /// (parameter_jacobian_terms()), with one factorization of M. A member template: compiled only where called.
+    template <class MatJp = ParameterJacobian>
+    static void parameter_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJp& Jp_) {
+        const Config q_ = x_.template head<nq>();
+        const Config qd_ = x_.template tail<nq>();
+        MassMatrix M_;
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
+        Config qdd_;
+        Eigen::Matrix<Scalar, nq, n_params> R_;
+        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {
+            parameter_jacobian_terms(t, q_, qd_, a_, p_, r_);
+        });
+        Jp_.resize(nx, n_params);
+        Jp_.template topRows<nq>().setZero();
+        Jp_.template bottomRows<nq>() = R_;
     }
 
     /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward

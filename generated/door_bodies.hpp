@@ -11,6 +11,7 @@
 // Conserved: h (L does not depend on t explicitly)
 #pragma once
 
+#include "eomgen/analytic_jacobian.hpp"
 #include "eomgen/linear_solve.hpp"
 #include "eomgen/device.hpp"
 #include "eomgen/linearize.hpp"
@@ -248,6 +249,86 @@ struct Model {
         solve_for_accelerations(t, x_, M_, f_, qdd_);
         xdot_.template head<nq>() = qd_;
         xdot_.template tail<nq>() = qdd_;
+    }
+
+    /// R = [dr/dq, dr/dq'] of r = f - M q'' at fixed q'' (the solved accelerations): M dq''/dq = dr/dq, M dq''/dq' = dr/dq'.
+    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, nx>& R_) {
+        static_cast<void>(t);
+        static_cast<void>(qd_);
+        static_cast<void>(qdd_);
+        using std::sin;
+        const Scalar m = p_.m;
+        const Scalar w = p_.w;
+        const Scalar g = p_.g;
+        const Scalar theta = p_.theta;
+        const Scalar psi = q_(0);
+        const Scalar sin_theta = sin(theta);
+        const Scalar sin_psi = sin(psi);
+        R_(0, 0) = Scalar(1)/Scalar(2)*m*w*g*sin_theta*sin_psi;
+        R_(0, 1) = Scalar(0);
+    }
+
+    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp.
+    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, n_params>& Rp_) {
+        static_cast<void>(t);
+        static_cast<void>(qd_);
+        using std::cos;
+        using std::sin;
+        const Scalar m = p_.m;
+        const Scalar w = p_.w;
+        const Scalar g = p_.g;
+        const Scalar theta = p_.theta;
+        const Scalar psi = q_(0);
+        const Scalar psi_ddot = qdd_(0);
+        const Scalar t0 = w*psi_ddot;
+        const Scalar cos_psi = cos(psi);
+        const Scalar sin_theta = sin(theta);
+        const Scalar t1 = g*cos_psi*sin_theta;
+        const Scalar cos_theta = cos(theta);
+        Rp_(0, 0) = -(w*(Scalar(1)/Scalar(3)*t0 + Scalar(1)/Scalar(2)*t1));
+        Rp_(0, 1) = -(m*(Scalar(2)/Scalar(3)*t0 + Scalar(1)/Scalar(2)*t1));
+        Rp_(0, 2) = Scalar(0);
+        Rp_(0, 3) = -Scalar(1)/Scalar(2)*m*w*cos_psi*sin_theta;
+        Rp_(0, 4) = -Scalar(1)/Scalar(2)*m*w*g*cos_theta*cos_psi;
+    }
+
+    /// J = dx'/dx = [[0, I], [M^-1 dr/dq, M^-1 dr/dq']] at (t, x), analytic (jacobian_terms()), with one
+    /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.
+    template <class MatJ = StateJacobian>
+    static void state_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJ& J_) {
+        const Config q_ = x_.template head<nq>();
+        const Config qd_ = x_.template tail<nq>();
+        MassMatrix M_;
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
+        Config qdd_;
+        Eigen::Matrix<Scalar, nq, nx> R_;
+        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {
+            jacobian_terms(t, q_, qd_, a_, p_, r_);
+        });
+        J_.resize(nx, nx);
+        J_.template topLeftCorner<nq, nq>().setZero();
+        J_.template topRightCorner<nq, nq>().setIdentity();
+        J_.template bottomRows<nq>() = R_;
+    }
+
+    /// Jp = dx'/dp = [[0], [M^-1 dr/dp]] at (t, x), columns in param_names order, analytic
+    /// (parameter_jacobian_terms()), with one factorization of M. A member template: compiled only where called.
+    template <class MatJp = ParameterJacobian>
+    static void parameter_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJp& Jp_) {
+        const Config q_ = x_.template head<nq>();
+        const Config qd_ = x_.template tail<nq>();
+        MassMatrix M_;
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
+        Config qdd_;
+        Eigen::Matrix<Scalar, nq, n_params> R_;
+        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {
+            parameter_jacobian_terms(t, q_, qd_, a_, p_, r_);
+        });
+        Jp_.resize(nx, n_params);
+        Jp_.template topRows<nq>().setZero();
+        Jp_.template bottomRows<nq>() = R_;
     }
 
     /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward

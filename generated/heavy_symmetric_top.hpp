@@ -13,6 +13,7 @@
 // Conserved: h (L does not depend on t explicitly); p_phi (phi is cyclic (∂L/∂phi = 0)); p_psi (psi is cyclic (∂L/∂psi = 0))
 #pragma once
 
+#include "eomgen/analytic_jacobian.hpp"
 #include "eomgen/linear_solve.hpp"
 #include "eomgen/device.hpp"
 #include "eomgen/linearize.hpp"
@@ -323,6 +324,132 @@ struct Model {
         solve_for_accelerations(t, x_, M_, f_, qdd_);
         xdot_.template head<nq>() = qd_;
         xdot_.template tail<nq>() = qdd_;
+    }
+
+    /// R = [dr/dq, dr/dq'] of r = f - M q'' at fixed q'' (the solved accelerations): M dq''/dq = dr/dq, M dq''/dq' = dr/dq'.
+    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, nx>& R_) {
+        static_cast<void>(t);
+        using std::cos;
+        using std::sin;
+        const Scalar M = p_.M;
+        const Scalar l = p_.l;
+        const Scalar I1 = p_.I1;
+        const Scalar I3 = p_.I3;
+        const Scalar g = p_.g;
+        const Scalar phi_dot = qd_(0);
+        const Scalar phi_ddot = qdd_(0);
+        const Scalar theta = q_(1);
+        const Scalar theta_dot = qd_(1);
+        const Scalar psi_dot = qd_(2);
+        const Scalar psi_ddot = qdd_(2);
+        const Scalar cos_theta = cos(theta);
+        const Scalar t0 = I3*psi_dot;
+        const Scalar t1 = cos_theta*t0;
+        const Scalar t2 = I1 - I3 + M*(l*l);
+        const Scalar sin_theta = sin(theta);
+        const Scalar t3 = phi_dot*t2*(cos_theta*cos_theta - sin_theta*sin_theta);
+        const Scalar t4 = sin_theta*(Scalar(1)/Scalar(2)*t0 - phi_dot*cos_theta*t2);
+        const Scalar t5 = I3*theta_dot*sin_theta;
+        const Scalar t6 = I3*phi_dot*sin_theta;
+        R_(0, 0) = Scalar(0);
+        R_(0, 1) = Scalar(2)*(theta_dot*(Scalar(1)/Scalar(2)*t1 - t3) + sin_theta*(Scalar(1)/Scalar(2)*I3*psi_ddot - phi_ddot*cos_theta*t2));
+        R_(0, 2) = Scalar(0);
+        R_(0, 3) = -Scalar(2)*theta_dot*cos_theta*sin_theta*t2;
+        R_(0, 4) = Scalar(2)*t4;
+        R_(0, 5) = t5;
+        R_(1, 0) = Scalar(0);
+        R_(1, 1) = M*l*g*cos_theta - phi_dot*(t1 - t3);
+        R_(1, 2) = Scalar(0);
+        R_(1, 3) = -Scalar(2)*t4;
+        R_(1, 4) = Scalar(0);
+        R_(1, 5) = -t6;
+        R_(2, 0) = Scalar(0);
+        R_(2, 1) = I3*(phi_dot*theta_dot*cos_theta + phi_ddot*sin_theta);
+        R_(2, 2) = Scalar(0);
+        R_(2, 3) = t5;
+        R_(2, 4) = t6;
+        R_(2, 5) = Scalar(0);
+    }
+
+    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp.
+    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, n_params>& Rp_) {
+        static_cast<void>(t);
+        using std::cos;
+        using std::sin;
+        const Scalar M = p_.M;
+        const Scalar l = p_.l;
+        const Scalar g = p_.g;
+        const Scalar phi_dot = qd_(0);
+        const Scalar phi_ddot = qdd_(0);
+        const Scalar theta = q_(1);
+        const Scalar theta_dot = qd_(1);
+        const Scalar theta_ddot = qdd_(1);
+        const Scalar psi_dot = qd_(2);
+        const Scalar psi_ddot = qdd_(2);
+        const Scalar sin_theta = sin(theta);
+        const Scalar cos_theta = cos(theta);
+        const Scalar t0 = phi_dot*cos_theta;
+        const Scalar t1 = theta_dot*t0;
+        const Scalar t2 = phi_ddot*sin_theta;
+        const Scalar t3 = sin_theta*(Scalar(2)*t1 + t2);
+        const Scalar t4 = M*l*sin_theta;
+        const Scalar t5 = l*theta_ddot;
+        const Scalar t6 = phi_dot*phi_dot;
+        const Scalar t7 = l*cos_theta*t6;
+        Rp_(0, 0) = -((l*l)*t3);
+        Rp_(0, 1) = -(t4*(Scalar(4)*t1 + Scalar(2)*t2));
+        Rp_(0, 2) = -t3;
+        Rp_(0, 3) = -(phi_ddot + psi_ddot*cos_theta - sin_theta*(theta_dot*(psi_dot + Scalar(2)*t0) + t2));
+        Rp_(0, 4) = Scalar(0);
+        Rp_(1, 0) = -(l*(t5 - sin_theta*(g + t7)));
+        Rp_(1, 1) = -(M*(Scalar(2)*t5 - sin_theta*(g + Scalar(2)*t7)));
+        Rp_(1, 2) = -(theta_ddot - cos_theta*sin_theta*t6);
+        Rp_(1, 3) = -(phi_dot*sin_theta*(psi_dot + t0));
+        Rp_(1, 4) = t4;
+        Rp_(2, 0) = Scalar(0);
+        Rp_(2, 1) = Scalar(0);
+        Rp_(2, 2) = Scalar(0);
+        Rp_(2, 3) = -(psi_ddot - phi_dot*theta_dot*sin_theta + phi_ddot*cos_theta);
+        Rp_(2, 4) = Scalar(0);
+    }
+
+    /// J = dx'/dx = [[0, I], [M^-1 dr/dq, M^-1 dr/dq']] at (t, x), analytic (jacobian_terms()), with one
+    /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.
+    template <class MatJ = StateJacobian>
+    static void state_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJ& J_) {
+        const Config q_ = x_.template head<nq>();
+        const Config qd_ = x_.template tail<nq>();
+        MassMatrix M_;
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
+        Config qdd_;
+        Eigen::Matrix<Scalar, nq, nx> R_;
+        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {
+            jacobian_terms(t, q_, qd_, a_, p_, r_);
+        });
+        J_.resize(nx, nx);
+        J_.template topLeftCorner<nq, nq>().setZero();
+        J_.template topRightCorner<nq, nq>().setIdentity();
+        J_.template bottomRows<nq>() = R_;
+    }
+
+    /// Jp = dx'/dp = [[0], [M^-1 dr/dp]] at (t, x), columns in param_names order, analytic
+    /// (parameter_jacobian_terms()), with one factorization of M. A member template: compiled only where called.
+    template <class MatJp = ParameterJacobian>
+    static void parameter_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJp& Jp_) {
+        const Config q_ = x_.template head<nq>();
+        const Config qd_ = x_.template tail<nq>();
+        MassMatrix M_;
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
+        Config qdd_;
+        Eigen::Matrix<Scalar, nq, n_params> R_;
+        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {
+            parameter_jacobian_terms(t, q_, qd_, a_, p_, r_);
+        });
+        Jp_.resize(nx, n_params);
+        Jp_.template topRows<nq>().setZero();
+        Jp_.template bottomRows<nq>() = R_;
     }
 
     /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward

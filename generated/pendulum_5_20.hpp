@@ -16,6 +16,7 @@
 //   y_disk = -l*cos(theta) - a*cos(phi)  [m]
 #pragma once
 
+#include "eomgen/analytic_jacobian.hpp"
 #include "eomgen/linear_solve.hpp"
 #include "eomgen/device.hpp"
 #include "eomgen/linearize.hpp"
@@ -305,6 +306,120 @@ struct Model {
         solve_for_accelerations(t, x_, M_, f_, qdd_);
         xdot_.template head<nq>() = qd_;
         xdot_.template tail<nq>() = qdd_;
+    }
+
+    /// R = [dr/dq, dr/dq'] of r = f - M q'' at fixed q'' (the solved accelerations): M dq''/dq = dr/dq, M dq''/dq' = dr/dq'.
+    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, nx>& R_) {
+        static_cast<void>(t);
+        using std::cos;
+        using std::sin;
+        const Scalar m = p_.m;
+        const Scalar l = p_.l;
+        const Scalar M = p_.M;
+        const Scalar a = p_.a;
+        const Scalar g = p_.g;
+        const Scalar theta = q_(0);
+        const Scalar theta_dot = qd_(0);
+        const Scalar theta_ddot = qdd_(0);
+        const Scalar phi = q_(1);
+        const Scalar phi_dot = qd_(1);
+        const Scalar phi_ddot = qdd_(1);
+        const Scalar cos_theta = cos(theta);
+        const Scalar t0 = g*cos_theta;
+        const Scalar sin_phi = sin(phi);
+        const Scalar cos_phi = cos(phi);
+        const Scalar sin_theta = sin(theta);
+        const Scalar t1 = phi_dot*phi_dot;
+        const Scalar t2 = theta - phi;
+        const Scalar t3 = sin(t2);
+        const Scalar t4 = cos(t2);
+        const Scalar t5 = l*M*a*theta_ddot*t3 + l*M*a*t4*(theta_dot*theta_dot);
+        R_(0, 0) = -(l*(Scalar(1)/Scalar(2)*m*t0 + M*(a*(phi_ddot*(cos_theta*sin_phi - cos_phi*sin_theta) + t1*(cos_theta*cos_phi + sin_theta*sin_phi)) + t0)));
+        R_(0, 1) = -(l*M*a*phi_ddot*t3 - l*M*a*t4*t1);
+        R_(0, 2) = Scalar(0);
+        R_(0, 3) = -Scalar(2)*l*M*a*phi_dot*t3;
+        R_(1, 0) = t5;
+        R_(1, 1) = -(M*a*g*cos_phi + t5);
+        R_(1, 2) = Scalar(2)*l*M*a*theta_dot*t3;
+        R_(1, 3) = Scalar(0);
+    }
+
+    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp.
+    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, n_params>& Rp_) {
+        static_cast<void>(t);
+        using std::cos;
+        using std::sin;
+        const Scalar m = p_.m;
+        const Scalar l = p_.l;
+        const Scalar M = p_.M;
+        const Scalar a = p_.a;
+        const Scalar g = p_.g;
+        const Scalar theta = q_(0);
+        const Scalar theta_dot = qd_(0);
+        const Scalar theta_ddot = qdd_(0);
+        const Scalar phi = q_(1);
+        const Scalar phi_dot = qd_(1);
+        const Scalar phi_ddot = qdd_(1);
+        const Scalar t0 = l*theta_ddot;
+        const Scalar sin_theta = sin(theta);
+        const Scalar t1 = g*sin_theta;
+        const Scalar cos_theta = cos(theta);
+        const Scalar cos_phi = cos(phi);
+        const Scalar sin_phi = sin(phi);
+        const Scalar t2 = phi_dot*phi_dot;
+        const Scalar t3 = theta - phi;
+        const Scalar t4 = cos(t3);
+        const Scalar t5 = sin(t3);
+        const Scalar t6 = theta_dot*theta_dot;
+        Rp_(0, 0) = -(l*(Scalar(1)/Scalar(3)*t0 + Scalar(1)/Scalar(2)*t1));
+        Rp_(0, 1) = -(m*(Scalar(2)/Scalar(3)*t0 + Scalar(1)/Scalar(2)*t1) + M*(Scalar(2)*t0 + a*(phi_ddot*(cos_theta*cos_phi + sin_theta*sin_phi) - t2*(cos_theta*sin_phi - cos_phi*sin_theta)) + t1));
+        Rp_(0, 2) = -(l*a*phi_ddot*t4 + l*a*t5*t2 + l*t1 + theta_ddot*(l*l));
+        Rp_(0, 3) = -(l*M*phi_ddot*t4 + l*M*t5*t2);
+        Rp_(0, 4) = -(l*sin_theta*(Scalar(1)/Scalar(2)*m + M));
+        Rp_(1, 0) = Scalar(0);
+        Rp_(1, 1) = -(M*a*theta_ddot*t4 - M*a*t5*t6);
+        Rp_(1, 2) = -(a*t4*t0 - l*a*t5*t6 + a*g*sin_phi + Scalar(3)/Scalar(2)*phi_ddot*(a*a));
+        Rp_(1, 3) = -(M*t4*t0 - l*M*t5*t6 + Scalar(3)*M*a*phi_ddot + M*g*sin_phi);
+        Rp_(1, 4) = -(M*a*sin_phi);
+    }
+
+    /// J = dx'/dx = [[0, I], [M^-1 dr/dq, M^-1 dr/dq']] at (t, x), analytic (jacobian_terms()), with one
+    /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.
+    template <class MatJ = StateJacobian>
+    static void state_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJ& J_) {
+        const Config q_ = x_.template head<nq>();
+        const Config qd_ = x_.template tail<nq>();
+        MassMatrix M_;
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
+        Config qdd_;
+        Eigen::Matrix<Scalar, nq, nx> R_;
+        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {
+            jacobian_terms(t, q_, qd_, a_, p_, r_);
+        });
+        J_.resize(nx, nx);
+        J_.template topLeftCorner<nq, nq>().setZero();
+        J_.template topRightCorner<nq, nq>().setIdentity();
+        J_.template bottomRows<nq>() = R_;
+    }
+
+    /// Jp = dx'/dp = [[0], [M^-1 dr/dp]] at (t, x), columns in param_names order, analytic
+    /// (parameter_jacobian_terms()), with one factorization of M. A member template: compiled only where called.
+    template <class MatJp = ParameterJacobian>
+    static void parameter_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJp& Jp_) {
+        const Config q_ = x_.template head<nq>();
+        const Config qd_ = x_.template tail<nq>();
+        MassMatrix M_;
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
+        Config qdd_;
+        Eigen::Matrix<Scalar, nq, n_params> R_;
+        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {
+            parameter_jacobian_terms(t, q_, qd_, a_, p_, r_);
+        });
+        Jp_.resize(nx, n_params);
+        Jp_.template topRows<nq>().setZero();
+        Jp_.template bottomRows<nq>() = R_;
     }
 
     /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward

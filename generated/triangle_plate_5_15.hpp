@@ -13,6 +13,7 @@
 // Conserved: h (L does not depend on t explicitly); p_phi (phi is cyclic (∂L/∂phi = 0))
 #pragma once
 
+#include "eomgen/analytic_jacobian.hpp"
 #include "eomgen/linear_solve.hpp"
 #include "eomgen/device.hpp"
 #include "eomgen/linearize.hpp"
@@ -324,6 +325,146 @@ struct Model {
         solve_for_accelerations(t, x_, M_, f_, qdd_);
         xdot_.template head<nq>() = qd_;
         xdot_.template tail<nq>() = qdd_;
+    }
+
+    /// R = [dr/dq, dr/dq'] of r = f - M q'' at fixed q'' (the solved accelerations): M dq''/dq = dr/dq, M dq''/dq' = dr/dq'.
+    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, nx>& R_) {
+        static_cast<void>(t);
+        using std::cos;
+        using std::sin;
+        const Scalar M = p_.M;
+        const Scalar a = p_.a;
+        const Scalar phi_dot = qd_(0);
+        const Scalar phi_ddot = qdd_(0);
+        const Scalar theta = q_(1);
+        const Scalar theta_dot = qd_(1);
+        const Scalar theta_ddot = qdd_(1);
+        const Scalar psi = q_(2);
+        const Scalar psi_dot = qd_(2);
+        const Scalar psi_ddot = qdd_(2);
+        const Scalar t0 = a*a;
+        const Scalar cos_theta = cos(theta);
+        const Scalar t1 = theta_dot*cos_theta;
+        const Scalar sin_theta = sin(theta);
+        const Scalar cos_psi = cos(psi);
+        const Scalar t2 = cos_psi*cos_psi;
+        const Scalar t3 = theta_dot*psi_dot;
+        const Scalar t4 = phi_ddot*sin_theta;
+        const Scalar sin_psi = sin(psi);
+        const Scalar t5 = phi_dot*cos_theta;
+        const Scalar t6 = theta_dot*(psi_dot - t5);
+        const Scalar t7 = phi_dot*psi_dot*sin_theta;
+        const Scalar t8 = cos_psi*sin_psi;
+        const Scalar t9 = t8 + Scalar(1);
+        const Scalar t10 = phi_dot*sin_theta*t9;
+        const Scalar t11 = sin_psi*sin_psi;
+        const Scalar t12 = (theta_dot*theta_dot)*t8;
+        const Scalar t13 = t6 - Scalar(1)/Scalar(2)*t4;
+        const Scalar t14 = Scalar(2)*t8 + Scalar(2);
+        const Scalar t15 = t2 - t11;
+        const Scalar t16 = t11 - Scalar(1)/Scalar(2);
+        const Scalar t17 = phi_dot*sin_theta*t15;
+        const Scalar t18 = theta_ddot + phi_dot*sin_theta*(Scalar(2)*psi_dot + t5);
+        const Scalar t19 = theta_dot*t15;
+        const Scalar t20 = M*t0*(phi_dot*sin_theta*t14 + t19);
+        R_(0, 0) = Scalar(0);
+        R_(0, 1) = Scalar(1)/Scalar(3)*M*t0*(cos_theta*(Scalar(1)/Scalar(4)*theta_ddot + phi_dot*(t1 + psi_dot*sin_theta*t2) + t3 + t4 - sin_psi*(cos_psi*(t6 - t4) + sin_psi*(Scalar(1)/Scalar(2)*theta_ddot + t7))) + sin_theta*(psi_ddot - theta_dot*(t10 - theta_dot*(Scalar(1)/Scalar(2)*t11 - Scalar(1)/Scalar(4)))));
+        R_(0, 2) = -Scalar(1)/Scalar(3)*M*t0*(cos_theta*t12 + sin_theta*(cos_psi*(cos_psi*t13 + sin_psi*(theta_ddot + Scalar(2)*t7)) - t11*t13));
+        R_(0, 3) = Scalar(1)/Scalar(6)*M*sin_theta*t0*(t1*t14 + psi_dot*sin_theta*t15);
+        R_(0, 4) = -Scalar(1)/Scalar(3)*M*t0*(psi_dot*sin_theta*(t8 - Scalar(1)) - cos_theta*(t10 - theta_dot*t16));
+        R_(0, 5) = Scalar(1)/Scalar(6)*M*sin_theta*t0*(t17 - theta_dot*(Scalar(2)*t8 - Scalar(2)));
+        R_(1, 0) = Scalar(0);
+        R_(1, 1) = -Scalar(1)/Scalar(6)*M*t0*(phi_dot*(phi_dot*(cos_theta*cos_theta - sin_theta*sin_theta)*t9 + psi_dot*cos_theta*t14) + phi_ddot*cos_theta*t16);
+        R_(1, 2) = -Scalar(1)/Scalar(6)*M*t0*(cos_psi*(cos_psi*t18 - sin_psi*(Scalar(4)*t3 - Scalar(2)*t4)) - t11*t18);
+        R_(1, 3) = -Scalar(1)/Scalar(3)*M*sin_theta*t0*(psi_dot + t5)*t9;
+        R_(1, 4) = -Scalar(1)/Scalar(6)*M*psi_dot*t0*t15;
+        R_(1, 5) = -Scalar(1)/Scalar(6)*t20;
+        R_(2, 0) = Scalar(0);
+        R_(2, 1) = -Scalar(1)/Scalar(3)*M*t0*(t5*(Scalar(1)/Scalar(2)*t17 - theta_dot*t9) - t4);
+        R_(2, 2) = Scalar(1)/Scalar(3)*M*t0*(phi_dot*sin_theta*(phi_dot*sin_theta*t8 + t19) - t12);
+        R_(2, 3) = -Scalar(1)/Scalar(6)*M*sin_theta*t0*(t17 - theta_dot*t14);
+        R_(2, 4) = Scalar(1)/Scalar(6)*t20;
+        R_(2, 5) = Scalar(0);
+    }
+
+    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp.
+    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, n_params>& Rp_) {
+        static_cast<void>(t);
+        using std::cos;
+        using std::sin;
+        const Scalar M = p_.M;
+        const Scalar a = p_.a;
+        const Scalar phi_dot = qd_(0);
+        const Scalar phi_ddot = qdd_(0);
+        const Scalar theta = q_(1);
+        const Scalar theta_dot = qd_(1);
+        const Scalar theta_ddot = qdd_(1);
+        const Scalar psi = q_(2);
+        const Scalar psi_dot = qd_(2);
+        const Scalar psi_ddot = qdd_(2);
+        const Scalar t0 = a*a;
+        const Scalar cos_theta = cos(theta);
+        const Scalar t1 = theta_dot*theta_dot;
+        const Scalar sin_psi = sin(psi);
+        const Scalar t2 = sin_psi*sin_psi;
+        const Scalar t3 = t2 - Scalar(1)/Scalar(2);
+        const Scalar sin_theta = sin(theta);
+        const Scalar cos_psi = cos(psi);
+        const Scalar t4 = cos_psi*cos_psi;
+        const Scalar t5 = theta_dot*psi_dot;
+        const Scalar t6 = phi_ddot*sin_theta;
+        const Scalar t7 = phi_dot*cos_theta;
+        const Scalar t8 = Scalar(2)*phi_ddot + cos_theta*(Scalar(2)*psi_ddot + t1*t3) - sin_theta*(Scalar(1)/Scalar(2)*theta_ddot + phi_dot*(Scalar(2)*theta_dot*cos_theta + psi_dot*sin_theta*t4) + Scalar(2)*t5 + t6 - sin_psi*(cos_psi*(Scalar(2)*theta_dot*(psi_dot - t7) - t6) + sin_psi*(theta_ddot + phi_dot*psi_dot*sin_theta)));
+        const Scalar t9 = t4 - t2;
+        const Scalar t10 = cos_psi*sin_psi;
+        const Scalar t11 = t10 + Scalar(1);
+        const Scalar t12 = t5*t9 + theta_ddot*t11 + sin_theta*(phi_dot*(t7*t11 + psi_dot*(Scalar(2)*t10 + Scalar(2))) + phi_ddot*t3);
+        const Scalar t13 = Scalar(4)*psi_ddot + phi_dot*sin_theta*(phi_dot*sin_theta*t9 - theta_dot*(Scalar(4)*t10 + Scalar(4))) + Scalar(4)*phi_ddot*cos_theta - t1*t9;
+        Rp_(0, 0) = -Scalar(1)/Scalar(6)*t0*t8;
+        Rp_(0, 1) = -Scalar(1)/Scalar(3)*M*a*t8;
+        Rp_(1, 0) = -Scalar(1)/Scalar(6)*t0*t12;
+        Rp_(1, 1) = -Scalar(1)/Scalar(3)*M*a*t12;
+        Rp_(2, 0) = -Scalar(1)/Scalar(12)*t0*t13;
+        Rp_(2, 1) = -Scalar(1)/Scalar(6)*M*a*t13;
+    }
+
+    /// J = dx'/dx = [[0, I], [M^-1 dr/dq, M^-1 dr/dq']] at (t, x), analytic (jacobian_terms()), with one
+    /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.
+    template <class MatJ = StateJacobian>
+    static void state_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJ& J_) {
+        const Config q_ = x_.template head<nq>();
+        const Config qd_ = x_.template tail<nq>();
+        MassMatrix M_;
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
+        Config qdd_;
+        Eigen::Matrix<Scalar, nq, nx> R_;
+        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {
+            jacobian_terms(t, q_, qd_, a_, p_, r_);
+        });
+        J_.resize(nx, nx);
+        J_.template topLeftCorner<nq, nq>().setZero();
+        J_.template topRightCorner<nq, nq>().setIdentity();
+        J_.template bottomRows<nq>() = R_;
+    }
+
+    /// Jp = dx'/dp = [[0], [M^-1 dr/dp]] at (t, x), columns in param_names order, analytic
+    /// (parameter_jacobian_terms()), with one factorization of M. A member template: compiled only where called.
+    template <class MatJp = ParameterJacobian>
+    static void parameter_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJp& Jp_) {
+        const Config q_ = x_.template head<nq>();
+        const Config qd_ = x_.template tail<nq>();
+        MassMatrix M_;
+        Config f_;
+        dynamics(t, q_, qd_, p_, M_, f_);
+        Config qdd_;
+        Eigen::Matrix<Scalar, nq, n_params> R_;
+        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {
+            parameter_jacobian_terms(t, q_, qd_, a_, p_, r_);
+        });
+        Jp_.resize(nx, n_params);
+        Jp_.template topRows<nq>().setZero();
+        Jp_.template bottomRows<nq>() = R_;
     }
 
     /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward

@@ -1,6 +1,7 @@
 /** @file cpp_emitter.cpp  Common-subexpression elimination over the DAG and the header around it. */
 #include "codegen/cpp_emitter.hpp"
 
+#include "codegen/jacobian_emitter.hpp"
 #include "codegen/mass_solve_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/rest_linearization.hpp"
@@ -246,19 +247,6 @@ FunctionBody emit_body(ExprDag& dag, const std::vector<Output>& outputs) {
     return e.run(outputs);
 }
 
-namespace {
-
-/// One static member function of the generated Model: signature, unused-argument markers, input locals, body.
-struct FunctionSpec {
-    std::string doc;
-    std::string return_type;  ///< "void" or "Scalar"
-    std::string name;
-    std::vector<std::pair<std::string, std::string>> inputs;  ///< (type, name)
-    std::vector<std::pair<std::string, std::string>> outputs;
-    std::vector<Output> values;
-    std::vector<std::string> delegate = {};  ///< when not empty: the whole body, calling another function
-};
-
 std::string emit_function(const FunctionSpec& f, const SymbolTable& table) {
     std::ostringstream os;
     os << "    /// " << f.doc << "\n";
@@ -308,6 +296,8 @@ std::string emit_function(const FunctionSpec& f, const SymbolTable& table) {
     os << "    }\n";
     return os.str();
 }
+
+namespace {
 
 std::string string_array(const std::vector<std::string>& names) {
     std::string s = "{";
@@ -370,7 +360,8 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         os << "\n//   " << cpp_comment(o.name + " = " + printer.print(o.expr.expr, MathStyle::Text) +
                                      (o.unit.empty() ? "" : "  [" + o.unit + "]"));
     os << "\n#pragma once\n\n";
-    os << (eq.constraints.empty() ? "#include \"eomgen/linear_solve.hpp\"\n" : "#include \"eomgen/constraints.hpp\"\n");
+    os << (eq.constraints.empty() ? "#include \"eomgen/analytic_jacobian.hpp\"\n#include \"eomgen/linear_solve.hpp\"\n"
+                                  : "#include \"eomgen/constraints.hpp\"\n");
     os << "#include \"eomgen/device.hpp\"\n#include \"eomgen/linearize.hpp\"\n\n";
     os << "#include <Eigen/Core>\n\n#include <array>\n#include <cmath>\n#include <string_view>\n#include <type_traits>\n\n";
     os << "namespace eomgen::models::" << model.name << " {\n\n";
@@ -597,7 +588,8 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         os << "        MassMatrix M_;\n        Config f_;\n        dynamics(t, q_, qd_, p_, M_, f_);\n";
         os << (unrolled ? "        Config qdd_;\n        solve_for_accelerations(t, x_, M_, f_, qdd_);\n"
                         : "        Config qdd_;\n        eomgen::solve_mass_matrix(M_, f_, qdd_, t, x_);\n");
-        os << "        xdot_.template head<nq>() = qd_;\n        xdot_.template tail<nq>() = qdd_;\n    }\n";
+        os << "        xdot_.template head<nq>() = qd_;\n        xdot_.template tail<nq>() = qdd_;\n    }\n\n";
+        os << emit_analytic_jacobian(model, eq, table);
     } else {
         os << "    /// q'' and the multipliers lambda of M q'' = f + A^T lambda, A q'' = gamma - 2 alpha c - beta^2 g,\n"
               "    /// by a Schur complement on M's Cholesky factor (eomgen::solve_constrained). lambda_k is the\n"

@@ -6,6 +6,7 @@
 #include "model/model.hpp"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eomgen::codegen {
@@ -43,6 +44,20 @@ struct SymbolTable {
 SymbolTable symbol_table(const Model& model);
 
 FunctionBody emit_body(ExprDag& dag, const std::vector<Output>& outputs);
+
+/// One static member function of the generated Model: signature, unused-argument markers, input locals, body.
+struct FunctionSpec {
+    std::string doc;
+    std::string return_type;  ///< "void" or "Scalar"
+    std::string name;
+    std::vector<std::pair<std::string, std::string>> inputs;  ///< (type, name)
+    std::vector<std::pair<std::string, std::string>> outputs;
+    std::vector<Output> values;
+    std::vector<std::string> delegate = {};  ///< when not empty: the whole body, calling another function
+};
+
+/// The function as a member of the generated Model (4-space indented, EOMGEN_HD), its values CSE'd together.
+std::string emit_function(const FunctionSpec& f, const SymbolTable& table);
 
 /// The whole generated header for a model (see docs/generated_code.md). Deterministic: the same model
 /// gives the same bytes in every process. `model_file` is the name printed in the header.

@@ -7,11 +7,14 @@
  *     eomgen::model_jacobian<M>(t, x, p, J);   // M = eomgen::models::door::Model<double>, or TableModel
  *
  * A model that brings its own `static void jacobian(t, x, p, J)` (TableModel: the one computed in the compiled
- * model's shared object) is asked for it; a generated Model<double> is differentiated as Model<AutoDiffScalar>.
+ * model's shared object) is asked for it; an unconstrained generated Model<double> has an analytic one, its member
+ * state_jacobian() (generated from the symbolic equations, docs/generated_code.md), and is asked for that; a
+ * constrained one is differentiated as Model<AutoDiffScalar>.
  */
 #pragma once
 
 #include "eomgen/linearize.hpp"
+#include "eomgen/model_traits.hpp"
 
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
@@ -61,11 +64,14 @@ struct has_own_jacobian<M, std::void_t<decltype(M::jacobian(0.0, std::declval<co
 
 }  // namespace detail
 
-/// J = ∂ẋ/∂x of Model M at (t, x; p): M::jacobian where M has one, else state_jacobian of M's template.
+/// J = ∂ẋ/∂x of Model M at (t, x; p): M::jacobian where M has one, else the analytic M::state_jacobian where M has
+/// one, else state_jacobian (forward differentiation) of M's template.
 template <class M, class MatJ>
 void model_jacobian(double t, const typename M::State& x, const typename M::Params& p, MatJ& J) {
     if constexpr (detail::has_own_jacobian<M>::value)
         M::jacobian(t, x, p, J);
+    else if constexpr (has_analytic_jacobian<M>::value)
+        M::state_jacobian(t, x, p, J);
     else
         state_jacobian<detail::model_template<M>::template type>(t, x, p, J);
 }

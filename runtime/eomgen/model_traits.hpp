@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include <type_traits>
+#include <utility>
 
 namespace eomgen {
 
@@ -17,6 +18,16 @@ template <class M, class = void>
 struct is_constrained : std::false_type {};
 template <class M>
 struct is_constrained<M, std::void_t<decltype(M::n_constraints)>> : std::true_type {};
+
+/// Unconstrained generated models have an analytic state_jacobian(t, x, p, J) (docs/generated_code.md);
+/// constrained ones and models loaded at run time do not.
+template <class M, class = void>
+struct has_analytic_jacobian : std::false_type {};
+template <class M>
+struct has_analytic_jacobian<M, std::void_t<decltype(M::state_jacobian(
+                                    0.0, std::declval<const typename M::State&>(),
+                                    std::declval<const typename M::Params&>(), std::declval<Eigen::MatrixXd&>()))>>
+    : std::true_type {};
 
 /// How many constraints a model has at run time (0 for a model without the constraint interface).
 template <class M>

@@ -1,5 +1,6 @@
 /** @file exam_stiff.cpp  The stiff example under radau5 against a tight dopri5; the models' exact Jacobians. */
 #include "../approx.hpp"
+#include "differences_support.hpp"
 
 #include "eomgen/constraints.hpp"
 #include "eomgen/integrate.hpp"
@@ -16,23 +17,6 @@
 #include <random>
 
 namespace {
-
-/// Central differences of rhs in each state direction, step scaled to the component.
-template <class M>
-Eigen::Matrix<double, M::nx, M::nx> central_differences(double t, const typename M::State& x,
-                                                        const typename M::Params& p) {
-    Eigen::Matrix<double, M::nx, M::nx> J;
-    for (int j = 0; j < M::nx; ++j) {
-        const double h = 1e-6 * (1 + std::abs(x(j)));
-        typename M::State xp = x, xm = x, fp, fm;
-        xp(j) += h;
-        xm(j) -= h;
-        M::rhs(t, xp, p, fp);
-        M::rhs(t, xm, p, fm);
-        J.col(j) = (fp - fm) / (2 * h);
-    }
-    return J;
-}
 
 /// model_jacobian at random states near the default one: equal to linearization()'s A to round-off and to
 /// central differences to their truncation error.
@@ -52,7 +36,7 @@ void check_jacobian(const typename M::Params& p, double spread, bool project) {
         const double scale = 1 + J.cwiseAbs().maxCoeff();
         INFO(M::name << " at x = " << x.transpose());
         CHECK((J - A).cwiseAbs().maxCoeff() <= 1e-13 * scale);
-        CHECK((J - central_differences<M>(0.3, x, p)).cwiseAbs().maxCoeff() <= 1e-6 * scale);
+        CHECK((J - differences_support::state_differences<M>(0.3, x, p)).cwiseAbs().maxCoeff() <= 1e-6 * scale);
     }
 }
 
