@@ -1,11 +1,13 @@
 /** @file time_stiff.cpp  Radau IIA (radau5) against Dormand–Prince (dopri5) on the stiff example model. */
 // Usage: time_stiff [--quick]. One JSON object per line:
 //   {"problem", "method", "rtol", "error", "steps", "rhs_evals", "jacobians", "lu", "seconds"}
+// then {"problem", "jacobian", "seconds_per_call"} for one Jacobian, analytic and by forward differentiation.
 // Problem: examples/stiff_spring_pendulum.toml (k = 1e5, c = 1e4: radial rates 10/s and 1e4/s, swing 3.1 rad/s)
-// from its default state to t = 10; error = max |x - x_ref| against dopri5 at rtol 1e-12, atol 1e-14. Both
-// methods at atol = rtol/100; radau5's Jacobian is model_jacobian (forward differentiation through rhs), each
-// one costing about one rhs of AutoDiff scalars with n_x = 4 derivative lanes. seconds: the fastest of repeated
-// runs (at least 3 and ~30 ms; --quick: one), so ratios within one run compare like with like.
+// from its default state to t = 10; error = max |x - x_ref| against dopri5 at rtol 1e-12, atol 1e-14. All
+// methods at atol = rtol/100. radau5's Jacobian is model_jacobian: the generated analytic state_jacobian();
+// radau5_autodiff is the same integrator with eomgen::state_jacobian (forward differentiation through rhs, AutoDiff
+// scalars with n_x = 4 derivative lanes). seconds: the fastest of repeated runs (at least 3 and ~30 ms; --quick:
+// one), so ratios within one run compare like with like.
 #include "eomgen/integrate.hpp"
 #include "eomgen/model_jacobian.hpp"
 #include "eomgen/models/stiff_spring_pendulum.hpp"
@@ -53,6 +55,9 @@ int main(int argc, char** argv) {
     const auto jac = [&p](const double& t, const State& x, Eigen::Matrix<double, M::nx, M::nx>& J) {
         eomgen::model_jacobian<M>(t, x, p, J);
     };
+    const auto jac_ad = [&p](const double& t, const State& x, Eigen::Matrix<double, M::nx, M::nx>& J) {
+        eomgen::state_jacobian<eomgen::models::stiff_spring_pendulum::Model>(t, x, p, J);
+    };
     eomgen::Dopri5Options<double> tight;
     tight.rtol = 1e-12;
     tight.atol = 1e-14;
@@ -63,16 +68,20 @@ int main(int argc, char** argv) {
         eomgen::Radau5Options<double> ro;
         ro.rtol = rtol;
         ro.atol = rtol * 1e-2;
-        const Run r = timed(
-            [&] {
-                const auto res = eomgen::integrate_radau5(f, jac, 0.0, x0, kEnd, ro);
-                return Run{res.x, res.accepted_steps, res.rhs_evaluations, res.jacobian_evaluations,
-                           res.lu_decompositions};
-            },
-            quick, seconds);
-        std::printf("{\"problem\": \"stiff_spring_pendulum\", \"method\": \"radau5\", \"rtol\": %g, \"error\": %.3g, "
-                    "\"steps\": %zu, \"rhs_evals\": %zu, \"jacobians\": %zu, \"lu\": %zu, \"seconds\": %.4g}\n",
-                    rtol, (r.x - ref).cwiseAbs().maxCoeff(), r.steps, r.rhs, r.jacobians, r.lu, seconds);
+        const auto radau = [&](const char* method, const auto& jacobian) {
+            const Run r = timed(
+                [&] {
+                    const auto res = eomgen::integrate_radau5(f, jacobian, 0.0, x0, kEnd, ro);
+                    return Run{res.x, res.accepted_steps, res.rhs_evaluations, res.jacobian_evaluations,
+                               res.lu_decompositions};
+                },
+                quick, seconds);
+            std::printf("{\"problem\": \"stiff_spring_pendulum\", \"method\": \"%s\", \"rtol\": %g, \"error\": %.3g, "
+                        "\"steps\": %zu, \"rhs_evals\": %zu, \"jacobians\": %zu, \"lu\": %zu, \"seconds\": %.4g}\n",
+                        method, rtol, (r.x - ref).cwiseAbs().maxCoeff(), r.steps, r.rhs, r.jacobians, r.lu, seconds);
+        };
+        radau("radau5", jac);
+        radau("radau5_autodiff", jac_ad);
         eomgen::Dopri5Options<double> dopt;
         dopt.rtol = rtol;
         dopt.atol = rtol * 1e-2;
@@ -87,5 +96,28 @@ int main(int argc, char** argv) {
                     "\"steps\": %zu, \"rhs_evals\": %zu, \"jacobians\": 0, \"lu\": 0, \"seconds\": %.4g}\n",
                     rtol, (d.x - ref).cwiseAbs().maxCoeff(), d.steps, d.rhs, seconds);
     }
+    // One Jacobian, analytic and by forward differentiation, at states near the initial one.
+    const auto per_call = [&](const char* name, const auto& jacobian) {
+        constexpr int kCalls = 20000;
+        double seconds = 0, sink = 0;
+        timed(
+            [&] {
+                Eigen::Matrix<double, M::nx, M::nx> J;
+                State x = x0;
+                sink = 0;  // the sum over one repetition's calls: equal for both Jacobians
+                for (int k = 0; k < kCalls; ++k) {
+                    x(0) = x0(0) + 1e-6 * k;  // a new state each call: nothing to hoist out of the loop
+                    jacobian(0.0, x, J);
+                    sink += J(3, 0);
+                }
+                return Run{x, 0, 0, 0, 0};
+            },
+            quick, seconds);
+        std::printf("{\"problem\": \"stiff_spring_pendulum\", \"jacobian\": \"%s\", \"seconds_per_call\": %.4g, "
+                    "\"sink\": %.6g}\n",
+                    name, seconds / kCalls, sink);
+    };
+    per_call("analytic", jac);
+    per_call("autodiff", jac_ad);
     return 0;
 }

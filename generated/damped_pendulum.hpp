@@ -242,7 +242,9 @@ struct Model {
     }
 
     /// R = [dr/dq, dr/dq'] of r = f - M q'' at fixed q'' (the solved accelerations): M dq''/dq = dr/dq, M dq''/dq' = dr/dq'.
-    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, nx>& R_) {
+    /// R_ is nq x nx; a member template, compiled only where called.
+    template <class MatR>
+    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, MatR& R_) {
         static_cast<void>(t);
         static_cast<void>(qd_);
         static_cast<void>(qdd_);
@@ -257,8 +259,10 @@ struct Model {
         R_(0, 1) = -c;
     }
 
-    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp.
-    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, n_params>& Rp_) {
+    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp. Rp_ is
+    /// nq x n_params; a member template, compiled only where called.
+    template <class MatRp>
+    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, MatRp& Rp_) {
         static_cast<void>(t);
         using std::sin;
         const Scalar m = p_.m;

@@ -280,7 +280,9 @@ struct Model {
     }
 
     /// R = [dr/dq, dr/dq'] of r = f - M q'' at fixed q'' (the solved accelerations): M dq''/dq = dr/dq, M dq''/dq' = dr/dq'.
-    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, nx>& R_) {
+    /// R_ is nq x nx; a member template, compiled only where called.
+    template <class MatR>
+    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, MatR& R_) {
         static_cast<void>(t);
         using std::cos;
         using std::sin;
@@ -308,8 +310,10 @@ struct Model {
         R_(1, 3) = -(sin_theta*t1*(Scalar(2)*m*theta_dot*cos_theta + t3));
     }
 
-    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp.
-    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, Eigen::Matrix<Scalar, nq, n_params>& Rp_) {
+    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp. Rp_ is
+    /// nq x n_params; a member template, compiled only where called.
+    template <class MatRp>
+    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, MatRp& Rp_) {
         static_cast<void>(t);
         using std::cos;
         using std::sin;

@@ -250,6 +250,7 @@ FunctionBody emit_body(ExprDag& dag, const std::vector<Output>& outputs) {
 std::string emit_function(const FunctionSpec& f, const SymbolTable& table) {
     std::ostringstream os;
     os << "    /// " << f.doc << "\n";
+    if (!f.template_head.empty()) os << "    " << f.template_head << "\n";
     os << "    EOMGEN_HD static " << f.return_type << " " << f.name << "(";  // device.hpp: host and CUDA device
     std::vector<std::string> params;
     for (const auto& [type, name] : f.inputs) params.push_back("const " + type + "& " + name);

@@ -54,6 +54,7 @@ struct FunctionSpec {
     std::vector<std::pair<std::string, std::string>> outputs;
     std::vector<Output> values;
     std::vector<std::string> delegate = {};  ///< when not empty: the whole body, calling another function
+    std::string template_head = {};          ///< e.g. "template <class MatR>": a member template, compiled where called
 };
 
 /// The function as a member of the generated Model (4-space indented, EOMGEN_HD), its values CSE'd together.

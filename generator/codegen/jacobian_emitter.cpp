@@ -46,12 +46,14 @@ std::string emit_analytic_jacobian(const Model& model, const Equations& eq, cons
         qdd_in{"Config", "qdd_"}, p_in{"Params", "p_"};
     const FunctionSpec state_terms{
         "R = [dr/dq, dr/dq'] of r = f - M q'' at fixed q'' (the solved accelerations): M dq''/dq = dr/dq, "
-        "M dq''/dq' = dr/dq'.",
-        "void", "jacobian_terms", {t_in, q_in, qd_in, qdd_in, p_in}, {{"Eigen::Matrix<Scalar, nq, nx>", "R_"}}, state};
+        "M dq''/dq' = dr/dq'.\n"
+        "    /// R_ is nq x nx; a member template, compiled only where called.",
+        "void", "jacobian_terms", {t_in, q_in, qd_in, qdd_in, p_in}, {{"MatR", "R_"}}, state, {}, "template <class MatR>"};
     const FunctionSpec param_terms{
-        "Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp.", "void",
-        "parameter_jacobian_terms", {t_in, q_in, qd_in, qdd_in, p_in},
-        {{"Eigen::Matrix<Scalar, nq, n_params>", "Rp_"}}, params};
+        "Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp. Rp_ is\n"
+        "    /// nq x n_params; a member template, compiled only where called.",
+        "void", "parameter_jacobian_terms", {t_in, q_in, qd_in, qdd_in, p_in}, {{"MatRp", "Rp_"}}, params, {},
+        "template <class MatRp>"};
     std::ostringstream os;
     os << emit_function(state_terms, table) << "\n" << emit_function(param_terms, table) << "\n";
     os << combine("    /// J = dx'/dx = [[0, I], [M^-1 dr/dq, M^-1 dr/dq']] at (t, x), analytic (jacobian_terms()), with one\n"

@@ -48,39 +48,11 @@ template <class MatM, class VecF, class Scalar, class VecX>
     throw NonFiniteState(describe_state("accelerations are not finite", t, x), value_of(t));
 }
 
-/**
- * Solves M qdd = f for symmetric positive definite M (n×n, fixed or dynamic size; only its lower triangle is read)
- * by M = L D Lᵀ, row by row (Golub & Van Loan, "Matrix Computations", §4.1): with u_ik = L_ik d_k,
- *   L_ij = (M_ij − Σ_{k<j} u_ik L_jk) / d_j,   d_i = M_ii − Σ_{k<i} u_ik L_ik,
- * then L y = f, z = D⁻¹ y, Lᵀ qdd = z. Throws SingularMassMatrix when the pivots d_i are not regular
- * (pivots_regular) and NonFiniteState when M or f is not finite or q̈ is not (throw_solve_failure); the finite test
- * is on the result only. `t` and `x` (the full state) only go into the error message. Generated headers emit the
- * same factorization unrolled for small n (generator/codegen/mass_solve_emitter.cpp) and call this above.
- * Above kLoopSolveMaxN the factorization is Eigen's LLT (d_i = L_ii²), whose vectorized kernels win there
- * (bench/run.sh --peers-only, section 8: at n = 30 the loop made rhs 1.15× slower than LLT, at n = 20 1.4× faster).
- */
-constexpr Eigen::Index kLoopSolveMaxN = 20;
-
-template <class MatM, class VecF, class VecQdd, class Scalar, class VecX>
-void solve_mass_matrix(const MatM& M, const VecF& f, VecQdd& qdd, const Scalar& t, const VecX& x) {
+/// M = L D Lᵀ row by row (the factorization of solve_mass_matrix, below): L's strict lower triangle in L (row i
+/// holds u_ik = L_ik d_k while it is built), the pivots in d, their inverses in inv_d; n the order of M.
+template <class MatM, class MatL, class VecD>
+void factor_ldlt(const MatM& M, Eigen::Index n, MatL& L, VecD& d, VecD& inv_d) {
     using S = typename MatM::Scalar;
-    constexpr int N = MatM::RowsAtCompileTime;
-    const Eigen::Index n = N == Eigen::Dynamic ? M.rows() : N;  // a constant where M's size is: loops the compiler
-                                                                 // can unroll and schedule (Eigen's dot products
-                                                                 // on segments measured slower up to n = 30)
-    if (n > kLoopSolveMaxN) {
-        const Eigen::LLT<typename MatM::PlainObject> llt(M);
-        if (llt.info() != Eigen::Success || !pivots_regular(llt.matrixLLT().diagonal().cwiseAbs2().eval()))
-            throw_solve_failure(M, f, true, t, x);
-        qdd = llt.solve(f);
-        if (!qdd.allFinite()) throw_solve_failure(M, f, false, t, x);
-        return;
-    }
-    Eigen::Matrix<S, N, N, Eigen::RowMajor> L;  // row i: L_ik for k < i (u_ik while row i is built)
-    Eigen::Matrix<S, N, 1> d, inv_d;
-    L.resize(n, n);
-    d.resize(n);
-    inv_d.resize(n);
     for (Eigen::Index i = 0; i < n; ++i) {
         S di = M(i, i);
         for (Eigen::Index j = 0; j < i; ++j) {
@@ -96,18 +68,76 @@ void solve_mass_matrix(const MatM& M, const VecF& f, VecQdd& qdd, const Scalar& 
         d(i) = di;
         inv_d(i) = S(1) / di;
     }
+}
+
+/// Overwrites every column b of B (n rows) with M⁻¹ b, M = L D Lᵀ as factor_ldlt left it: L y = b, Lᵀ z = D⁻¹ y.
+template <class MatL, class VecD, class MatB>
+void substitute_ldlt(const MatL& L, const VecD& inv_d, Eigen::Index n, MatB& B) {
+    using S = typename MatB::Scalar;
+    for (Eigen::Index c = 0; c < B.cols(); ++c) {
+        for (Eigen::Index i = 0; i < n; ++i) {
+            S y = B(i, c);
+            for (Eigen::Index k = 0; k < i; ++k) y -= L(i, k) * B(k, c);
+            B(i, c) = y;
+        }
+        for (Eigen::Index i = n; i-- > 0;) {
+            S z = B(i, c) * inv_d(i);
+            for (Eigen::Index k = i + 1; k < n; ++k) z -= L(k, i) * B(k, c);
+            B(i, c) = z;
+        }
+    }
+}
+
+/**
+ * Solves M qdd = f for symmetric positive definite M (n×n, fixed or dynamic size; only its lower triangle is read)
+ * by M = L D Lᵀ, row by row (Golub & Van Loan, "Matrix Computations", §4.1): with u_ik = L_ik d_k,
+ *   L_ij = (M_ij − Σ_{k<j} u_ik L_jk) / d_j,   d_i = M_ii − Σ_{k<i} u_ik L_ik,
+ * then L y = f, z = D⁻¹ y, Lᵀ qdd = z. Throws SingularMassMatrix when the pivots d_i are not regular
+ * (pivots_regular) and NonFiniteState when M or f is not finite or q̈ is not (throw_solve_failure); the finite test
+ * is on the result only. `t` and `x` (the full state) only go into the error message. Generated headers emit the
+ * same factorization unrolled for small n (generator/codegen/mass_solve_emitter.cpp) and call this above.
+ * Above kLoopSolveMaxN the factorization is Eigen's LLT (d_i = L_ii²), whose vectorized kernels win there
+ * (bench/run.sh --peers-only, section 8: at n = 30 the loop made rhs 1.15× slower than LLT, at n = 20 1.4× faster).
+ */
+constexpr Eigen::Index kLoopSolveMaxN = 20;
+
+/**
+ * solve_mass_matrix, then `then(solve)` with `solve(B)` overwriting each column of B (n rows) with M⁻¹ of it by the
+ * same factorization: more right-hand sides that depend on q̈ (the generated analytic Jacobians,
+ * analytic_jacobian.hpp) for one factorization of M.
+ */
+template <class MatM, class VecF, class VecQdd, class Scalar, class VecX, class Then>
+void solve_mass_matrix_then(const MatM& M, const VecF& f, VecQdd& qdd, const Scalar& t, const VecX& x, Then&& then) {
+    using S = typename MatM::Scalar;
+    constexpr int N = MatM::RowsAtCompileTime;
+    const Eigen::Index n = N == Eigen::Dynamic ? M.rows() : N;  // a constant where M's size is: loops the compiler
+                                                                 // can unroll and schedule (Eigen's dot products
+                                                                 // on segments measured slower up to n = 30)
+    if (n > kLoopSolveMaxN) {
+        const Eigen::LLT<typename MatM::PlainObject> llt(M);
+        if (llt.info() != Eigen::Success || !pivots_regular(llt.matrixLLT().diagonal().cwiseAbs2().eval()))
+            throw_solve_failure(M, f, true, t, x);
+        qdd = llt.solve(f);
+        if (!qdd.allFinite()) throw_solve_failure(M, f, false, t, x);
+        then([&llt](auto& B) { llt.solveInPlace(B); });
+        return;
+    }
+    Eigen::Matrix<S, N, N, Eigen::RowMajor> L;  // row i: L_ik for k < i
+    Eigen::Matrix<S, N, 1> d, inv_d;
+    L.resize(n, n);
+    d.resize(n);
+    inv_d.resize(n);
+    factor_ldlt(M, n, L, d, inv_d);
     if (!pivots_regular(d)) throw_solve_failure(M, f, true, t, x);
-    for (Eigen::Index i = 0; i < n; ++i) {
-        S y = f(i);
-        for (Eigen::Index k = 0; k < i; ++k) y -= L(i, k) * qdd(k);
-        qdd(i) = y;
-    }
-    for (Eigen::Index i = n; i-- > 0;) {
-        S z = qdd(i) * inv_d(i);
-        for (Eigen::Index k = i + 1; k < n; ++k) z -= L(k, i) * qdd(k);
-        qdd(i) = z;
-    }
+    qdd = f;
+    substitute_ldlt(L, inv_d, n, qdd);
     if (!qdd.allFinite()) throw_solve_failure(M, f, false, t, x);
+    then([&](auto& B) { substitute_ldlt(L, inv_d, n, B); });
+}
+
+template <class MatM, class VecF, class VecQdd, class Scalar, class VecX>
+void solve_mass_matrix(const MatM& M, const VecF& f, VecQdd& qdd, const Scalar& t, const VecX& x) {
+    solve_mass_matrix_then(M, f, qdd, t, x, [](const auto&) {});
 }
 
 }  // namespace eomgen
