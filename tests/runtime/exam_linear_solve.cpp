@@ -2,6 +2,7 @@
  * against Eigen's LLT, and its failures: which error for which broken input. */
 #include "../approx.hpp"
 
+#include "eomgen/analytic_jacobian.hpp"
 #include "eomgen/linear_solve.hpp"
 
 #include <Eigen/Cholesky>
@@ -113,4 +114,47 @@ TEST_CASE("solve_mass_matrix above kLoopSolveMaxN (Eigen's LLT): the same errors
     M(n - 1, n - 1) = 1;
     f(0) = std::numeric_limits<double>::infinity();
     CHECK_THROWS_AS(eomgen::solve_mass_matrix(M, f, qdd, 0.0, f), eomgen::NonFiniteState);
+}
+
+namespace {
+
+/// solve_jacobian_columns (analytic_jacobian.hpp) on random SPD M: q̈ = M⁻¹ f, and the columns R(q̈) the callback
+/// fills solved with the same factorization, M X = R, on both sides of kLoopSolveMaxN.
+template <int N>
+void check_jacobian_columns(int n) {
+    std::mt19937 rng(15u + unsigned(n));
+    std::normal_distribution<double> normal;
+    for (int trial = 0; trial < 10; ++trial) {
+        const Eigen::Matrix<double, N, N> M = random_spd<N>(n, 1e4, rng);
+        Eigen::Matrix<double, N, 1> f(n), qdd(n);
+        for (int i = 0; i < n; ++i) f(i) = normal(rng);
+        Eigen::Matrix<double, N, Eigen::Dynamic> B(n, 3), R(n, 3);
+        for (int i = 0; i < n; ++i)
+            for (int j = 0; j < 3; ++j) B(i, j) = normal(rng);
+        Eigen::Matrix<double, N, Eigen::Dynamic> filled;  // R as the callback wrote it: B + q̈ in each column
+        eomgen::solve_jacobian_columns(M, f, qdd, R, 0.0, f, [&](const auto& a, auto& r) {
+            r = B.colwise() + a;
+            filled = r;
+        });
+        const Eigen::Matrix<double, N, 1> ref = M.llt().solve(f);
+        CHECK_THAT(Eigen::MatrixXd(qdd), AllClose(ref, 1e-8, 1e-8));
+        CHECK_THAT(Eigen::MatrixXd(M * R), AllClose(filled, 1e-8, 1e-8));
+        CHECK_THAT(Eigen::MatrixXd(filled.col(0)), AllClose((B.col(0) + ref).eval(), 1e-8, 1e-8));
+    }
+}
+
+}  // namespace
+
+TEST_CASE("solve_jacobian_columns: q'' and M^-1 R(q'') by one factorization, below and above kLoopSolveMaxN",
+          "[runtime]") {
+    check_jacobian_columns<4>(4);
+    check_jacobian_columns<Eigen::Dynamic>(7);
+    check_jacobian_columns<Eigen::Dynamic>(int(eomgen::kLoopSolveMaxN) + 5);
+    using S = Eigen::Matrix<double, 2, 2>;
+    S M;
+    M << 1, 1, 1, 1;  // singular
+    Eigen::Vector2d f(1, 2), qdd;
+    Eigen::Matrix<double, 2, 3> R;
+    CHECK_THROWS_AS(eomgen::solve_jacobian_columns(M, f, qdd, R, 0.0, f, [](const auto&, auto& r) { r.setOnes(); }),
+                    eomgen::SingularMassMatrix);
 }
