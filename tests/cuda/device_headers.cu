@@ -1,7 +1,8 @@
 // The generated headers' expression functions (EOMGEN_HD, runtime/eomgen/device.hpp) compiled as CUDA device
 // code unchanged, and, where a GPU is present, evaluated there at random states and compared with the same
 // functions on the host: M, f, T, V, the energy, the conserved quantities, the outputs, the rest linearization
-// and, for constrained models, the constraint Jacobian and residuals.
+// and the analytic Jacobians' terms of unconstrained models, and, for constrained models, the constraint Jacobian
+// and residuals.
 #include "eomgen/models/door.hpp"
 #include "eomgen/models/heavy_symmetric_top.hpp"
 #include "eomgen/models/pendulum_cartesian.hpp"
@@ -53,6 +54,17 @@ __host__ __device__ int evaluate(const double* x, double* out) {
     typename M::Outputs o;
     M::outputs(0.25, q, qd, p, o);
     for (int i = 0; i < M::n_outputs; ++i) out[k++] = o(i);
+    if constexpr (!eomgen::is_constrained<M>::value) {
+        // The analytic Jacobians' terms (member templates), at f standing in for q'': they hold for any q''.
+        Eigen::Matrix<double, M::nq, M::nx> R;
+        Eigen::Matrix<double, M::nq, M::n_params> Rp;
+        M::jacobian_terms(0.25, q, qd, f, p, R);
+        M::parameter_jacobian_terms(0.25, q, qd, f, p, Rp);
+        for (int i = 0; i < M::nq; ++i) {
+            for (int j = 0; j < M::nx; ++j) out[k++] = R(i, j);
+            for (int j = 0; j < M::n_params; ++j) out[k++] = Rp(i, j);
+        }
+    }
     if constexpr (eomgen::is_constrained<M>::value) {
         typename M::ConstraintJacobian A;
         typename M::ConstraintVector gamma, position, velocity;
