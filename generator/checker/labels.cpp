@@ -21,6 +21,9 @@ struct Token {
     std::size_t begin = 0, end = 0;  ///< file offsets
 };
 
+/// The most prose read on either side of a display (a sentence is shorter): bounded time on any input.
+constexpr std::size_t kWindow = 2000;
+
 bool space(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
 bool letter(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
 
@@ -67,7 +70,7 @@ std::pair<std::size_t, std::size_t> prose_window(const std::string& s, std::size
             begin = std::max(begin, std::min(after, end));
         }
     }
-    return {begin, end};
+    return {std::max(begin, end > kWindow ? end - kWindow : 0), end};
 }
 
 /// Words, inline math (`$…$`, `\(…\)`, a Unicode letter such as θ) and punctuation of s[begin, end).
@@ -115,7 +118,7 @@ std::vector<Token> tokenize(const std::string& s, std::size_t begin, std::size_t
                 std::string latex;
                 for (const std::string& t : sp->tokens) latex += (latex.empty() ? "" : " ") + t;
                 out.push_back({Token::Math, latex, "", i, i + sp->length});
-                i += sp->length;
+                i += std::max<std::size_t>(1, sp->length);
                 continue;
             }
             if (s.compare(i, 3, "\xE2\x80\x94") == 0) out.push_back({Token::Punct, "-", "", i, i + 3});  // —
@@ -444,15 +447,71 @@ void mismatch(const ProseLabel& l, const std::string& labelled, const std::strin
     r.corrected.clear();
 }
 
-}  // namespace
+/// The label with its phrase and line, its coordinates sorted.
+ProseLabel finished(const Derivation& d, const std::vector<Token>& t, const Candidate& c) {
+    ProseLabel l = c.label;
+    std::sort(l.coordinates.begin(), l.coordinates.end());
+    l.coordinates.erase(std::unique(l.coordinates.begin(), l.coordinates.end()), l.coordinates.end());
+    l.phrase = d.text.substr(t[c.start].begin, t[c.end].end - t[c.start].begin);
+    for (char& ch : l.phrase)
+        if (ch == '\n' || ch == '\r' || ch == '\t') ch = ' ';
+    l.line = d.position(t[c.start].begin).line;
+    return l;
+}
 
-std::optional<ProseLabel> label_before(const Derivation& d, std::size_t at,
-                                       const std::function<int(const std::string&)>& coordinate,
-                                       const Model& model) {
-    const MathRow* row = nullptr;
-    for (const MathRow& r : d.rows)
-        if (r.offset <= at && at <= r.offset + r.text.size()) row = &r;
-    if (!row || !row->display) return std::nullopt;
+/**
+ * "The last equation (Lagrange's equation for ψ) says …" in the prose after the display (up to the next display
+ * or heading): the label of the display's last row ("last", "final") or first row ("first"), given in
+ * parentheses or between commas right after the words.
+ */
+std::optional<ProseLabel> label_after(const Derivation& d, const MathRow& row,
+                                      const std::function<int(const std::string&)>& coordinate, const Model& model) {
+    const MathRow* first = &row;
+    const MathRow* last = &row;
+    std::size_t next = d.text.size();  // the next display's first row
+    for (const MathRow& r : d.rows) {
+        if (r.block == row.block) {
+            if (r.offset < first->offset) first = &r;
+            if (r.offset > last->offset) last = &r;
+        } else if (r.display && r.offset > row.offset && r.offset < next) {
+            next = r.offset;
+        }
+    }
+    const std::string& s = d.text;
+    std::size_t begin = std::min(last->offset + last->text.size(), s.size());
+    const std::size_t heading = s.find("\n#", begin);
+    const std::size_t end = std::min({next, heading == std::string::npos ? s.size() : heading, begin + kWindow});
+    for (bool more = true; more && begin < end;) {  // the display's closing delimiters
+        more = false;
+        while (begin < end && space(s[begin])) ++begin;
+        for (const char* close : {"$$", "\\]", "\\end{"})
+            if (s.compare(begin, std::string(close).size(), close) == 0) {
+                begin = close[1] != 'e' ? begin + std::string(close).size()
+                                        : (s.find('}', begin) < end ? s.find('}', begin) + 1 : end);
+                more = true;
+            }
+    }
+    if (begin >= end) return std::nullopt;
+    const std::vector<Token> t = tokenize(s, begin, end);
+    for (std::size_t k = 1; k + 1 < t.size(); ++k) {
+        const bool words = t[k].kind == Token::Word && t[k].text == "equation" && t[k - 1].kind == Token::Word &&
+                           is_any(t[k - 1].text, {"last", "final", "first"});
+        if (!words || t[k + 1].kind != Token::Punct || (t[k + 1].text != "(" && t[k + 1].text != ",")) continue;
+        const MathRow* meant = t[k - 1].text == "first" ? first : last;
+        if (meant != &row) continue;
+        const std::string close = t[k + 1].text == "(" ? ")" : ",";
+        std::vector<Token> inside;
+        for (std::size_t j = k + 2; j < t.size() && !(t[j].kind == Token::Punct && t[j].text == close); ++j)
+            inside.push_back(t[j]);
+        if (auto c = Reader(inside, coordinate, model).last()) return finished(d, inside, *c);
+    }
+    return std::nullopt;
+}
+
+/// The label in the sentence before the display of `row` (label_before's rules), or std::nullopt.
+std::optional<ProseLabel> label_in_sentence_before(const Derivation& d, const MathRow* row,
+                                                   const std::function<int(const std::string&)>& coordinate,
+                                                   const Model& model) {
     std::size_t first = row->offset;
     for (const MathRow& r : d.rows)
         if (r.block == row->block) first = std::min(first, r.offset);
@@ -486,14 +545,20 @@ std::optional<ProseLabel> label_before(const Derivation& d, std::size_t at,
               sentence[k - 2].text == "conservation"))  // "conservation of energy" names it
             return std::nullopt;
     }
-    ProseLabel l = found->label;
-    std::sort(l.coordinates.begin(), l.coordinates.end());
-    l.coordinates.erase(std::unique(l.coordinates.begin(), l.coordinates.end()), l.coordinates.end());
-    l.phrase = d.text.substr(sentence[found->start].begin, sentence[found->end].end - sentence[found->start].begin);
-    for (char& ch : l.phrase)
-        if (ch == '\n' || ch == '\r' || ch == '\t') ch = ' ';
-    l.line = d.position(sentence[found->start].begin).line;
-    return l;
+    return finished(d, sentence, *found);
+}
+
+}  // namespace
+
+std::optional<ProseLabel> label_before(const Derivation& d, std::size_t at,
+                                       const std::function<int(const std::string&)>& coordinate,
+                                       const Model& model) {
+    const MathRow* row = nullptr;
+    for (const MathRow& r : d.rows)
+        if (r.offset <= at && at <= r.offset + r.text.size()) row = &r;
+    if (!row || !row->display) return std::nullopt;
+    if (auto l = label_in_sentence_before(d, row, coordinate, model)) return l;
+    return label_after(d, *row, coordinate, model);
 }
 
 void check_label(const ProseLabel& label, const GiNaC::ex& a, const GiNaC::ex& b, const Model& model,

@@ -107,6 +107,33 @@ TEST_CASE("labels: the phrasings that name an equation", "[checker][labels]") {
     CHECK(unknown->unknown == std::vector<std::string>{"\\psi"});
 }
 
+TEST_CASE("labels: 'the last equation (...)' after a display labels its last row", "[checker][labels]") {
+    const auto& model = eomgen::test::derived_model(kPendulum).first;
+    const auto coordinate = [&](const std::string& latex) {
+        return eomgen::checker::canonical_name(latex) == "\\phi" ? 1 : -1;
+    };
+    for (const char* words : {"The last equation (Lagrange's equation for $\\phi$) says that",
+                              "The first equation, the φ equation, says that"}) {
+        INFO(words);
+        const auto d = eomgen::checker::parse_derivation(
+            "# S\n\nThe equations are\n\n$$\n\\begin{aligned}\nx &= 0 \\\\\ny &= 0\n\\end{aligned}\n$$\n\nWe see.\n\n" +
+                std::string(words) + " much.\n\n$$ z = 0 $$\n",
+            "t.md");
+        std::vector<std::size_t> displays;  // x = 0, y = 0, z = 0
+        for (const auto& row : d.rows)
+            if (row.display) displays.push_back(row.offset + 1);
+        REQUIRE(displays.size() == 3);
+        const bool last = std::string(words).find("last") != std::string::npos;
+        const auto labelled = eomgen::checker::label_before(d, displays[last ? 1 : 0], coordinate, model);
+        REQUIRE(labelled);
+        CHECK(labelled->kind == LabelKind::EulerLagrange);
+        CHECK(labelled->coordinates == std::vector<std::size_t>{1});
+        CHECK(labelled->line == 14);
+        CHECK_FALSE(eomgen::checker::label_before(d, displays[last ? 0 : 1], coordinate, model));
+        CHECK_FALSE(eomgen::checker::label_before(d, displays[2], coordinate, model));  // no reference to it
+    }
+}
+
 TEST_CASE("labels: prose that names no equation, or names an ingredient", "[checker][labels]") {
     for (const char* prose : {
              "Lagrange's equations are",                                  // no coordinate
