@@ -293,11 +293,12 @@ class Reader {
                 return std::nullopt;  // rotational, translational, elastic: a part
             c.start = phrase_start(k, {"the", "total", "kinetic", "potential", "gravitational", "mechanical"});
             c.end = word(k + 1, {"integral", "function", "equation"}) ? k + 1 : k;
+            if (l.kind == LabelKind::Energy && word(k + 1, {"function"})) l.kind = LabelKind::Hamiltonian;
             return c;
         }
         if (w == "hamiltonian" || (w == "integral" && k > 0 && word(k - 1, {"jacobi"}))) {
             if (word(k + 1, {"mechanics", "formalism", "formulation", "equations", "approach"})) return std::nullopt;
-            l.kind = LabelKind::Energy;
+            l.kind = LabelKind::Hamiltonian;
             c.start = phrase_start(k, {"the", "jacobi"});
             c.end = k;
             return c;
@@ -356,6 +357,8 @@ std::string quantity_name(LabelKind kind, std::size_t i, const Model& model) {
     switch (kind) {
         case LabelKind::Energy:
             return "the energy";
+        case LabelKind::Hamiltonian:
+            return "the energy function $h$ (the Hamiltonian in velocities)";
         case LabelKind::Kinetic:
             return "the kinetic energy $T$";
         case LabelKind::Potential:
@@ -411,7 +414,7 @@ std::vector<Identity> identities(const GiNaC::ex& a, const GiNaC::ex& b, const M
                                                            {eq.V, {LabelKind::Potential}},
                                                            {eq.L, {LabelKind::Lagrangian}},
                                                            {eq.T + eq.V, {LabelKind::Energy}},
-                                                           {eq.energy, {LabelKind::Energy}}};
+                                                           {eq.energy, {LabelKind::Hamiltonian}}};
     for (std::size_t i = 0; i < eq.momenta.size(); ++i) quantities.push_back({eq.momenta[i], {LabelKind::Momentum, i}});
     for (const GiNaC::ex& side : {a, b}) {
         if (!depends_on_state(side, model)) continue;  // a constant equals any quantity that vanishes
@@ -422,7 +425,10 @@ std::vector<Identity> identities(const GiNaC::ex& a, const GiNaC::ex& b, const M
     if (!depends_on_state(r, model)) return out;
     for (const ConservedQuantity& c : eq.conserved) {
         if (!function_of(r, c.value, model, cmp, tol)) continue;
-        if (cmp.same(c.value, eq.energy, tol)) out.push_back({LabelKind::Energy, 0, true});
+        if (cmp.same(c.value, eq.energy, tol)) {
+            if (cmp.same(eq.energy, eq.T + eq.V, tol)) out.push_back({LabelKind::Energy, 0, true});  // h = T + V
+            out.push_back({LabelKind::Hamiltonian, 0, true});
+        }
         for (std::size_t i = 0; i < eq.momenta.size(); ++i)
             if (cmp.same(c.value, eq.momenta[i], tol)) out.push_back({LabelKind::Momentum, i, true});
     }
@@ -430,6 +436,7 @@ std::vector<Identity> identities(const GiNaC::ex& a, const GiNaC::ex& b, const M
 }
 
 bool names(const ProseLabel& l, const Identity& id) {
+    if (l.kind == LabelKind::Energy && id.kind == LabelKind::Hamiltonian) return true;  // h is an energy too
     if (l.kind != id.kind) return false;
     if (l.kind != LabelKind::Momentum || l.coordinates.empty()) return true;
     return std::find(l.coordinates.begin(), l.coordinates.end(), id.coordinate) != l.coordinates.end();

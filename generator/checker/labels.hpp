@@ -21,7 +21,8 @@ namespace eomgen::checker {
 /// What a label names.
 enum class LabelKind {
     EulerLagrange,  ///< "Lagrange's equation for θ", "the θ equation", "the equation of motion for $\phi$"
-    Energy,         ///< "the energy", "the total energy", "the energy integral", "the Hamiltonian"
+    Energy,         ///< "the energy", "the total energy", "the energy integral": E = T + V or h
+    Hamiltonian,    ///< "the Hamiltonian", "the Jacobi integral", "the energy function": h only (H in velocities)
     Momentum,       ///< "the angular momentum", "the momentum conjugate to φ", "$p_\phi$ is conserved"
     Kinetic,        ///< "the kinetic energy"
     Potential,      ///< "the potential energy"
