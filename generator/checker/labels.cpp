@@ -356,9 +356,9 @@ struct Identity {
 std::string quantity_name(LabelKind kind, std::size_t i, const Model& model) {
     switch (kind) {
         case LabelKind::Energy:
-            return "the energy";
+            return "the energy $E = T + V$";
         case LabelKind::Hamiltonian:
-            return "the energy function $h$ (the Hamiltonian in velocities)";
+            return "the energy function $h$";
         case LabelKind::Kinetic:
             return "the kinetic energy $T$";
         case LabelKind::Potential:
@@ -618,6 +618,10 @@ void check_label(const ProseLabel& label, const GiNaC::ex& a, const GiNaC::ex& b
     std::string labelled;
     if (label.kind == LabelKind::Momentum && label.coordinates.empty())
         labelled = "a momentum";
+    else if (label.kind == LabelKind::Energy)
+        labelled = "the energy";  // E or h
+    else if (label.kind == LabelKind::Hamiltonian)
+        labelled = "the Hamiltonian $h$";
     else if (label.kind == LabelKind::Momentum)
         labelled = quantity_name(label.kind, label.coordinates.front(), model);
     else

@@ -219,3 +219,35 @@ TEST_CASE("labels: wrong labels are found at their lines, saying what the equati
           "labelled the $\\phi$ equation (“Lagrange's equation for $\\phi$”, line 7), but it is the $\\theta$ equation "
           "(the Euler–Lagrange equation for $\\theta$, the same equation): the label or the equation is wrong");
 }
+
+TEST_CASE("labels: the Hamiltonian is h, not T + V, on a spinning hoop", "[checker][labels]") {
+    // T = ½mR²(α̇² + ω² sin²α), V = −mgR cos α: h = ½mR²(α̇² − ω² sin²α) − mgR cos α is conserved, T + V is not.
+    const std::string text = R"(# Bead on a spinning hoop
+
+The Jacobi integral is conserved:
+
+$$ \frac12 m R^2 \dot\alpha^2 - \frac12 m R^2 \omega^2 \sin^2\alpha - m g R \cos\alpha = \text{const} $$
+
+and, in words, the energy is conserved:
+
+$$ \frac12 m R^2 \dot\alpha^2 - \frac12 m R^2 \omega^2 \sin^2\alpha - m g R \cos\alpha = \text{const} $$
+
+The Hamiltonian is
+
+$$ E = \frac12 m R^2 \left(\dot\alpha^2 + \omega^2 \sin^2\alpha\right) - m g R \cos\alpha $$
+)";
+    const CheckReport r = eomgen::test::check_text("examples/bead_on_hoop.toml", text);
+    REQUIRE(r.equations.size() == 3);
+    for (const EquationCheck& e : r.equations) {
+        INFO(eomgen::test::describe(e));
+        if (e.where.line < 13) {
+            CHECK(e.verdict == Verdict::Agrees);
+            CHECK(has_note(e, "the quantity its label names"));
+        } else {
+            REQUIRE(e.verdict == Verdict::Disagrees);
+            CHECK(e.wrong_terms.at(0) ==
+                  "labelled the Hamiltonian $h$ (“The Hamiltonian”, line 11), but it is the energy $E = T + V$: the label "
+                  "or the equation is wrong");
+        }
+    }
+}
