@@ -117,8 +117,16 @@ std::vector<Token> tokenize(const std::string& s, std::size_t begin, std::size_t
                                                          sp->tokens[0][0] == '\\') {
                 std::string latex;
                 for (const std::string& t : sp->tokens) latex += (latex.empty() ? "" : " ") + t;
-                out.push_back({Token::Math, latex, "", i, i + sp->length});
+                const std::size_t at = i;
                 i += std::max<std::size_t>(1, sp->length);
+                // Subscript digits ₀ … ₉ (U+2080 … U+2089): θ₁ is \theta_{1}.
+                std::string sub;
+                for (; i + 2 < end && s.compare(i, 2, "\xE2\x82") == 0 && static_cast<unsigned char>(s[i + 2]) >= 0x80 &&
+                       static_cast<unsigned char>(s[i + 2]) <= 0x89;
+                     i += 3)
+                    sub += char('0' + (static_cast<unsigned char>(s[i + 2]) - 0x80));
+                if (!sub.empty()) latex += "_{" + sub + "}";
+                out.push_back({Token::Math, latex, "", at, i});
                 continue;
             }
             if (s.compare(i, 3, "\xE2\x80\x94") == 0) out.push_back({Token::Punct, "-", "", i, i + 3});  // —

@@ -102,6 +102,10 @@ TEST_CASE("labels: the phrasings that name an equation", "[checker][labels]") {
     REQUIRE(aligned);
     CHECK(aligned->coordinates == V{1});
     CHECK(aligned->phrase == "Lagrange's equation for $\\phi$");
+    // Unicode subscripts: θ₁ is \theta_{1} (the spherical pendulum has no θ₁).
+    const auto subscript = label_of("The θ₁ equation is");
+    REQUIRE(subscript);
+    CHECK(subscript->unknown == std::vector<std::string>{"\\theta_{1}"});
     // A coordinate the model does not have is kept as written.
     const auto unknown = label_of("The ψ-equation is");
     REQUIRE(unknown);
@@ -248,6 +252,32 @@ $$ E = \frac12 m R^2 \left(\dot\alpha^2 + \omega^2 \sin^2\alpha\right) - m g R \
             CHECK(e.wrong_terms.at(0) ==
                   "labelled the Hamiltonian $h$ (“The Hamiltonian”, line 11), but it is the energy $E = T + V$: the label "
                   "or the equation is wrong");
+        }
+    }
+}
+
+TEST_CASE("labels: a double pendulum's θ₂ equation called the θ₁ equation", "[checker][labels]") {
+    std::string text = eomgen::test::fixture("double_pendulum_textbook.md");
+    const std::string label = "Lagrange's equation for $\\theta_2$:";
+    const std::size_t at = text.find(label);
+    REQUIRE(at != std::string::npos);
+    for (const char* wrong : {"The θ₁ equation:", "Lagrange's equation for $\\theta_{1}$:"}) {
+        INFO(wrong);
+        const CheckReport right = eomgen::test::check_text("examples/double_pendulum.toml", text);
+        const CheckReport r = eomgen::test::check_text("examples/double_pendulum.toml",
+                                                       std::string(text).replace(at, label.size(), wrong));
+        REQUIRE(r.equations.size() == right.equations.size());
+        for (std::size_t k = 0; k < r.equations.size(); ++k) {
+            const EquationCheck& e = r.equations[k];
+            INFO(eomgen::test::describe(e));
+            if (e.where.line != 21) {
+                CHECK(e.verdict == right.equations[k].verdict);
+                continue;
+            }
+            CHECK(right.equations[k].verdict == Verdict::Agrees);
+            REQUIRE(e.verdict == Verdict::Disagrees);
+            CHECK(e.wrong_terms.at(0).find("labelled the $\\theta_1$ equation") == 0);
+            CHECK(e.wrong_terms.at(0).find("but it is the $\\theta_2$ equation") != std::string::npos);
         }
     }
 }
