@@ -1430,15 +1430,20 @@ void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j
             if (s.value.is_equal(model_.coordinates[k].q)) return int(k);
         return -1;
     };
-    const auto label = label_before(d_, c.relation_offsets[j - 1], coordinate, model_);
-    if (!label) return;
-    Prepared a = prepare(c.sides[i]), b = prepare(c.sides[j]);
-    if (!a.comparable() || !b.comparable()) return;
-    GiNaC::exmap zero;  // `= \text{const}`: any constant
-    for (const Prepared* p : {&a, &b})
-        for (const GiNaC::ex& k : p->constants) zero[k] = 0;
-    const double tol = std::max(1e-9, c.sides[i].side->rounding + c.sides[j].side->rounding);
-    check_label(*label, a.value.subs(zero), b.value.subs(zero), model_, eq_, *this, tol, r);
+    try {  // what GiNaC throws on a strange input leaves the verdict as it is
+        const auto label = label_before(d_, c.relation_offsets[j - 1], coordinate, model_);
+        if (!label) return;
+        Prepared a = prepare(c.sides[i]), b = prepare(c.sides[j]);
+        if (!a.comparable() || !b.comparable()) return;
+        GiNaC::exmap zero;  // `= \text{const}`: any constant
+        for (const Prepared* p : {&a, &b})
+            for (const GiNaC::ex& k : p->constants) zero[k] = 0;
+        const double tol = std::max(1e-9, c.sides[i].side->rounding + c.sides[j].side->rounding);
+        EquationCheck labelled = r;
+        check_label(*label, a.value.subs(zero), b.value.subs(zero), model_, eq_, *this, tol, labelled);
+        r = std::move(labelled);
+    } catch (const std::exception&) {
+    }
 }
 
 bool Checker::approximation(std::size_t at, const std::string& left, const std::string& right, const Prepared& a,
