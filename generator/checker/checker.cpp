@@ -285,6 +285,12 @@ class Checker : public Comparisons {
             return {};
         return used;
     }
+    int closest_euler_lagrange(const GiNaC::ex& r, double tol) override {
+        GiNaC::ex factor = 1;
+        int groups = 0;
+        const int i = has_acceleration(r) ? closest_euler_lagrange(r, tol, &factor, &groups) : -1;
+        return groups >= 1 ? i : -1;
+    }
     std::string latex(const GiNaC::ex& e) override;
     std::vector<std::string> wrong_terms(const GiNaC::ex& text, const GiNaC::ex& truth, double tol) override {
         return compare_to(text, truth, tol).lines;
@@ -442,6 +448,9 @@ class Checker : public Comparisons {
                       double tol, EquationCheck& r);
     void diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
                                  EquationCheck& out);
+    /// The coordinate whose Euler–Lagrange equation r matches best (the most groups of terms equal after the
+    /// best factor, `factor`; `groups` of them).
+    int closest_euler_lagrange(const GiNaC::ex& r, double tol, GiNaC::ex* factor, int* groups);
 
     const Model& model_;
     const Equations& eq_;
@@ -1920,12 +1929,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         "particular value)";
 }
 
-void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
-                                      EquationCheck& out) {
-    (void)left;
-    (void)right;
+int Checker::closest_euler_lagrange(const GiNaC::ex& r, double tol, GiNaC::ex* factor, int* groups) {
     int best_i = -1, best_count = -1;
-    GiNaC::ex best_c = 1;
     for (std::size_t i = 0; i < model_.dof(); ++i) {
         GiNaC::ex c = 1;
         const int count = best_factor(r, motion_[i], tol, &c);
@@ -1935,10 +1940,19 @@ void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, con
         if (better) {
             best_count = count;
             best_i = int(i);
-            best_c = c;
+            *factor = c;
         }
     }
-    const std::size_t i = std::size_t(best_i);
+    if (groups) *groups = best_count;
+    return best_i;
+}
+
+void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
+                                      EquationCheck& out) {
+    (void)left;
+    (void)right;
+    GiNaC::ex best_c = 1;
+    const std::size_t i = std::size_t(closest_euler_lagrange(r, tol, &best_c, nullptr));
     const Coordinate& q = model_.coordinates[i];
     out.verdict = Verdict::Disagrees;
     out.compared_with = "the Euler–Lagrange equation for " + m(q.latex);

@@ -590,6 +590,16 @@ void check_label(const ProseLabel& label, const GiNaC::ex& a, const GiNaC::ex& b
                           " of the model: the label is not checked");
         return;
     }
+    if (label.kind == LabelKind::EulerLagrange && r.verdict == Verdict::Disagrees) {
+        // Compared with the equation it is closest to; say so when that is not the one its label names.
+        const int closest = cmp.closest_euler_lagrange(diff, tol);
+        if (closest >= 0 && std::find(label.coordinates.begin(), label.coordinates.end(), std::size_t(closest)) ==
+                                label.coordinates.end())
+            r.notes.push_back("its label (" + cited(label) + ") names " +
+                              equations_named(label.coordinates, model, " or ") + ", but the equation is closest to " +
+                              equations_named({std::size_t(closest)}, model, " and "));
+        return;
+    }
     if (r.verdict != Verdict::Agrees) return;
     if (label.kind == LabelKind::EulerLagrange) {
         const std::vector<bool> used = cmp.euler_lagrange_terms(diff, tol);

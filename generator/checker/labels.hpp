@@ -59,12 +59,13 @@ std::optional<ProseLabel> label_before(const Derivation& d, std::size_t at,
  * - an Euler–Lagrange label on a link with accelerations that agrees: it agrees still when the combination of
  *   Euler–Lagrange equations it is includes a labelled coordinate's (with a note naming the label), else it
  *   **disagrees**: "labelled the $\theta$ equation, but it is the $\phi$ equation"; a label naming no
- *   coordinate of the model adds a note to such a link (any verdict) and is not checked;
+ *   coordinate of the model adds a note to such a link (any verdict) and is not checked; on a link that
+ *   disagrees already, a note when the equation is closest to another coordinate's than the labelled one;
  * - a quantity label on a link without accelerations that agrees: what the link is — a side equal to T, V, L,
  *   E = T + V, h or a momentum p_q, or a − b a function of a conserved quantity (h, or the momentum of a cyclic
  *   coordinate) — must include what the label names, else it **disagrees**, saying what it is.
- * Links of the other family (an equation of motion after "the energy"), links that disagree already or are not
- * comparable, and links that are none of these quantities are left as they are.
+ * Links of the other family (an equation of motion after "the energy"), links that are not comparable, and links
+ * that are none of these quantities are left as they are.
  */
 void check_label(const ProseLabel& label, const GiNaC::ex& a, const GiNaC::ex& b, const Model& model,
                  const Equations& eq, Comparisons& cmp, double tol, EquationCheck& r);

@@ -281,3 +281,22 @@ TEST_CASE("labels: a double pendulum's θ₂ equation called the θ₁ equation"
         }
     }
 }
+
+TEST_CASE("labels: an equation that disagrees is compared with the equation it is closest to", "[checker][labels]") {
+    // θ's equation with a flipped sign of the gravity term, called φ's (and then θ's).
+    const std::string slip =
+        "\n\n$$ m l^2 \\ddot\\theta - m l^2 \\sin\\theta\\cos\\theta\\,\\dot\\phi^2 - m g l \\sin\\theta = 0 $$\n";
+    const CheckReport wrong = eomgen::test::check_text(kPendulum, "# S\n\nLagrange's equation for $\\phi$ is:" + slip);
+    const CheckReport right = eomgen::test::check_text(kPendulum, "# S\n\nLagrange's equation for $\\theta$ is:" + slip);
+    REQUIRE(wrong.equations.size() == 1);
+    REQUIRE(right.equations.size() == 1);
+    for (const CheckReport* r : {&wrong, &right}) {
+        INFO(eomgen::test::describe(r->equations[0]));
+        CHECK(r->equations[0].verdict == Verdict::Disagrees);
+        CHECK(r->equations[0].compared_with == "the Euler–Lagrange equation for $\\theta$");
+        CHECK_FALSE(r->equations[0].corrected.empty());
+    }
+    CHECK(has_note(wrong.equations[0], "its label (“Lagrange's equation for $\\phi$”, line 3) names the $\\phi$ "
+                                       "equation, but the equation is closest to the $\\theta$ equation"));
+    CHECK_FALSE(has_note(right.equations[0], "its label"));
+}
