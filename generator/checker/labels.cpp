@@ -7,7 +7,8 @@
 
 #include <algorithm>
 #include <cctype>
-#include <set>
+#include <initializer_list>
+#include <utility>
 
 namespace eomgen::checker {
 namespace {
