@@ -11,7 +11,7 @@ install(TARGETS eomgen eomgen_runtime EXPORT eomgenTargets RUNTIME DESTINATION $
 if(TARGET eomgen-sim)
   install(TARGETS eomgen-sim RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
-install(DIRECTORY runtime/eomgen DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp")
+install(DIRECTORY runtime/eomgen DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.hpp" PATTERN "*.cuh")
 install(EXPORT eomgenTargets NAMESPACE eomgen:: DESTINATION ${EOMGEN_CMAKE_DIR})
 configure_package_config_file(cmake/eomgenConfig.cmake.in "${CMAKE_CURRENT_BINARY_DIR}/eomgenConfig.cmake"
                               INSTALL_DESTINATION ${EOMGEN_CMAKE_DIR})

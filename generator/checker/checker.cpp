@@ -8,6 +8,7 @@
 #include "checker/correction_check.hpp"
 #include "checker/definitions.hpp"
 #include "checker/hamiltonian_check.hpp"
+#include "checker/labels.hpp"
 #include "checker/latex_normalize.hpp"
 #include "checker/latex_parser.hpp"
 #include "checker/normal_modes_check.hpp"
@@ -276,6 +277,20 @@ class Checker : public Comparisons {
         std::string factor;
         return has_acceleration(r) && euler_lagrange_combination(r, tol, &only, &factor) == Tri::Yes;
     }
+    std::vector<bool> euler_lagrange_terms(const GiNaC::ex& r, double tol) override {
+        int only = -1;
+        std::string factor;
+        std::vector<bool> used;
+        if (!has_acceleration(r) || euler_lagrange_combination(r, tol, &only, &factor, nullptr, &used) != Tri::Yes)
+            return {};
+        return used;
+    }
+    int closest_euler_lagrange(const GiNaC::ex& r, double tol) override {
+        GiNaC::ex factor = 1;
+        int groups = 0;
+        const int i = has_acceleration(r) ? closest_euler_lagrange(r, tol, &factor, &groups) : -1;
+        return groups >= 1 ? i : -1;
+    }
     std::string latex(const GiNaC::ex& e) override;
     std::vector<std::string> wrong_terms(const GiNaC::ex& text, const GiNaC::ex& truth, double tol) override {
         return compare_to(text, truth, tol).lines;
@@ -346,7 +361,7 @@ class Checker : public Comparisons {
                                              std::string* ratio);
     /// r = Σ c_i EL_i with c from the acceleration coefficients: a consequence of the equations of motion.
     Tri euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor,
-                                   std::vector<std::string>* acting = nullptr);
+                                   std::vector<std::string>* acting = nullptr, std::vector<bool>* terms = nullptr);
     /// The constraints solved for some coordinates and velocities (those `keep` does not use first), with
     /// the substitutions in LaTeX.
     ConstraintReduction reduction(const GiNaC::ex& keep, std::string* shown);
@@ -374,6 +389,7 @@ class Checker : public Comparisons {
         try {
             EquationCheck r = check_link(c, i, j, bridge);
             if (!r.corrected.empty() && !verifying_) verify_correction(c, j, r);
+            if (!verifying_ && c.display) check_prose_label(c, i, j, r);
             return r;
         } catch (const std::exception& e) {
             EquationCheck r;
@@ -384,6 +400,8 @@ class Checker : public Comparisons {
             return r;
         }
     }
+    /// The link compared with what the sentence before its display calls it (labels.hpp).
+    void check_prose_label(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r);
     /// Parses r.corrected back with the names of its line and checks it (correction_check.hpp); a correction
     /// that does not agree is withheld, with a note.
     void verify_correction(const FullChain& c, std::size_t j, EquationCheck& r);
@@ -430,6 +448,9 @@ class Checker : public Comparisons {
                       double tol, EquationCheck& r);
     void diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
                                  EquationCheck& out);
+    /// The coordinate whose Euler–Lagrange equation r matches best (the most groups of terms equal after the
+    /// best factor, `factor`; `groups` of them).
+    int closest_euler_lagrange(const GiNaC::ex& r, double tol, GiNaC::ex* factor, int* groups);
 
     const Model& model_;
     const Equations& eq_;
@@ -780,7 +801,7 @@ Tri Checker::equal(const GiNaC::ex& a, const GiNaC::ex& b, double tol) {
 }
 
 Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor,
-                                            std::vector<std::string>* acting) {
+                                            std::vector<std::string>* acting, std::vector<bool>* terms) {
     const std::size_t n = model_.dof();
     std::vector<GiNaC::ex> a(n);
     for (std::size_t j = 0; j < n; ++j) {
@@ -847,6 +868,7 @@ Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* onl
         ++good;
     }
     if (good < 2) return Tri::Unknown;
+    if (terms) *terms = used;
     const auto count = std::count(used.begin(), used.end(), true);
     *only = -1;
     if (count == 1) *only = int(std::find(used.begin(), used.end(), true) - used.begin());
@@ -1409,6 +1431,30 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     return r;
 }
 
+void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r) {
+    const auto coordinate = [this](const std::string& latex) {
+        LatexContext ctx = ctx_;
+        const Side s = parse_expression(latex, ctx);
+        for (std::size_t k = 0; s.ok && k < model_.dof(); ++k)
+            if (s.value.is_equal(model_.coordinates[k].q)) return int(k);
+        return -1;
+    };
+    try {  // what GiNaC throws on a strange input leaves the verdict as it is
+        const auto label = label_before(d_, c.relation_offsets[j - 1], coordinate, model_);
+        if (!label) return;
+        Prepared a = prepare(c.sides[i]), b = prepare(c.sides[j]);
+        if (!a.comparable() || !b.comparable()) return;
+        GiNaC::exmap zero;  // `= \text{const}`: any constant
+        for (const Prepared* p : {&a, &b})
+            for (const GiNaC::ex& k : p->constants) zero[k] = 0;
+        const double tol = std::max(1e-9, c.sides[i].side->rounding + c.sides[j].side->rounding);
+        EquationCheck labelled = r;
+        check_label(*label, a.value.subs(zero), b.value.subs(zero), model_, eq_, *this, tol, labelled);
+        r = std::move(labelled);
+    } catch (const std::exception&) {
+    }
+}
+
 bool Checker::approximation(std::size_t at, const std::string& left, const std::string& right, const Prepared& a,
                             const Prepared& b, bool implied, EquationCheck& r) {
     if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
@@ -1883,12 +1929,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         "particular value)";
 }
 
-void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
-                                      EquationCheck& out) {
-    (void)left;
-    (void)right;
+int Checker::closest_euler_lagrange(const GiNaC::ex& r, double tol, GiNaC::ex* factor, int* groups) {
     int best_i = -1, best_count = -1;
-    GiNaC::ex best_c = 1;
     for (std::size_t i = 0; i < model_.dof(); ++i) {
         GiNaC::ex c = 1;
         const int count = best_factor(r, motion_[i], tol, &c);
@@ -1898,10 +1940,19 @@ void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, con
         if (better) {
             best_count = count;
             best_i = int(i);
-            best_c = c;
+            *factor = c;
         }
     }
-    const std::size_t i = std::size_t(best_i);
+    if (groups) *groups = best_count;
+    return best_i;
+}
+
+void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
+                                      EquationCheck& out) {
+    (void)left;
+    (void)right;
+    GiNaC::ex best_c = 1;
+    const std::size_t i = std::size_t(closest_euler_lagrange(r, tol, &best_c, nullptr));
     const Coordinate& q = model_.coordinates[i];
     out.verdict = Verdict::Disagrees;
     out.compared_with = "the Euler–Lagrange equation for " + m(q.latex);

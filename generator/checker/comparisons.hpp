@@ -26,6 +26,12 @@ class Comparisons {
     virtual bool same(const GiNaC::ex& a, const GiNaC::ex& b, double tol) = 0;
     /// r (with accelerations) is a combination Σ c_i EL_i of the model's Euler–Lagrange equations.
     virtual bool equation_of_motion(const GiNaC::ex& r, double tol) = 0;
+    /// Which Euler–Lagrange equations r = Σ c_i EL_i combines (c_i ≠ 0), one flag per coordinate; empty when r
+    /// is no such combination.
+    virtual std::vector<bool> euler_lagrange_terms(const GiNaC::ex& r, double tol) = 0;
+    /// The coordinate whose Euler–Lagrange equation r (with accelerations) is closest to, as a disagreement is
+    /// compared (the most groups of terms equal after the best factor); −1 when no group matches.
+    virtual int closest_euler_lagrange(const GiNaC::ex& r, double tol) = 0;
     /// LaTeX by eomgen's canonical printer (symbols in the model's order).
     virtual std::string latex(const GiNaC::ex& e) = 0;
     /// The wrong, missing and extra terms of `text` against `truth`, one sentence each.

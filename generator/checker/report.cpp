@@ -69,9 +69,9 @@ std::string format_text(const CheckReport& r) {
         if (!e.compared_with.empty()) os << "    compared with: " << e.compared_with << "\n";
         if (!e.reason.empty()) os << "    " << e.reason << "\n";
         if (e.verdict == Verdict::Disagrees) {
-            os << "    difference (text - reference): " << e.difference << "\n";
+            if (!e.difference.empty()) os << "    difference (text - reference): " << e.difference << "\n";
             for (const std::string& w : e.wrong_terms) os << "    - " << w << "\n";
-            os << "    corrected: " << e.corrected << "\n";
+            if (!e.corrected.empty()) os << "    corrected: " << e.corrected << "\n";
         }
         for (const std::string& n : e.notes) os << "    note: " << n << "\n";
     }
@@ -116,10 +116,11 @@ std::string format_markdown(const CheckReport& r) {
             os << "### Line " << e.where.line << " (" << markdown_text(e.section) << ")\n\n";
             os << "$$\n" << markdown_math(one_line(e.equation)) << "\n$$\n\n";
             os << "- compared with " << markdown_mixed(e.compared_with) << "\n";
-            os << "- difference (text − reference): $" << markdown_math(e.difference) << "$\n";
+            if (!e.difference.empty()) os << "- difference (text − reference): $" << markdown_math(e.difference) << "$\n";
             for (const std::string& w : e.wrong_terms) os << "- " << markdown_mixed(w) << "\n";
             for (const std::string& n : e.notes) os << "- note: " << markdown_mixed(n) << "\n";
-            os << "\nCorrected:\n\n$$\n" << markdown_math(e.corrected) << "\n$$\n\n";
+            if (!e.corrected.empty()) os << "\nCorrected:\n\n$$\n" << markdown_math(e.corrected) << "\n$$\n";
+            os << "\n";
         }
     }
     os << "## Every equation\n\n| line | equation | verdict | compared with | details "

@@ -1,6 +1,8 @@
 /** @file events.hpp  Events g(t, x) = 0: their description, sign-change detection and root location. */
 #pragma once
 
+#include "eomgen/device.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -43,7 +45,7 @@ struct EventHit {
  * and are not seen; bound the step size (Dopri5Options::hmax) below the fastest oscillation of g.
  */
 template <class Scalar>
-bool crosses(const Scalar& g_start, const Scalar& g_end, EventDirection direction) {
+EOMGEN_HD bool crosses(const Scalar& g_start, const Scalar& g_end, EventDirection direction) {
     const bool rising = g_start < Scalar(0) && g_end >= Scalar(0);
     const bool falling = g_start > Scalar(0) && g_end <= Scalar(0);
     switch (direction) {
@@ -69,7 +71,7 @@ bool crosses(const Scalar& g_start, const Scalar& g_end, EventDirection directio
  * the ground, and a restart from there does not detect the same crossing again.
  */
 template <class Scalar, class G>
-Scalar find_root_brent(G&& g, Scalar a, Scalar ga, Scalar b, Scalar gb, const Scalar& tol) {
+EOMGEN_HD Scalar find_root_brent(G&& g, Scalar a, Scalar ga, Scalar b, Scalar gb, const Scalar& tol) {
     using std::abs;
     const Scalar eps = std::numeric_limits<Scalar>::epsilon();
     const Scalar zero(0), half(0.5), two(2), three(3);

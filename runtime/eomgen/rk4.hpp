@@ -1,6 +1,7 @@
 /** @file rk4.hpp  Classic fixed-step fourth-order Runge–Kutta, with cubic Hermite dense output. */
 #pragma once
 
+#include "eomgen/device.hpp"
 #include "eomgen/errors.hpp"
 
 #include <Eigen/Core>
@@ -26,7 +27,7 @@ namespace eomgen {
  * Exactly three evaluations of f. No error checking: see Rk4Stepper for the checked, counted version.
  */
 template <class System, class State>
-void rk4_step(System&& f, const typename State::Scalar& t, const State& x, const State& k1,
+EOMGEN_HD void rk4_step(System&& f, const typename State::Scalar& t, const State& x, const State& k1,
               const typename State::Scalar& h, State& x_next) {
     using Scalar = typename State::Scalar;
     const Scalar half = h / Scalar(2);
