@@ -1,7 +1,7 @@
 /**
  * @file device_ensemble.hpp  One ensemble member integrated by code that runs on the host and, under nvcc, on a
- * CUDA device (EOMGEN_HD, device.hpp): fixed-step RK4 on the grid of Rk4Stepper, M q̈ = f solved by an
- * L D Lᵀ in registers, one terminal event (a state crossing a value) located on the cubic Hermite dense
+ * CUDA device (EOMGEN_HD, device.hpp): fixed-step RK4 on the grid of Rk4Stepper, M q̈ = f solved by the
+ * runtime's L D Lᵀ in registers, one terminal event (a state crossing a value) located on the cubic Hermite dense
  * output by the same Brent search as integrate(). No exceptions, no allocation: a failure is a status.
  *
  *     eomgen::device::Member<M> r = eomgen::device::integrate_member_rk4<M>(p, x0, t_end, dt, event);
@@ -13,6 +13,7 @@
 
 #include "eomgen/device.hpp"
 #include "eomgen/events.hpp"
+#include "eomgen/linear_solve.hpp"
 #include "eomgen/rk4.hpp"
 
 #include <Eigen/Core>
@@ -40,35 +41,22 @@ struct Member {
 };
 
 /**
- * Solves A x = b for symmetric positive definite A (n×n, fixed size) by A = L D Lᵀ, in place on a copy.
- * Returns false when a pivot is not positive or the result is not finite (a singular or indefinite M).
+ * Solves A x = b for symmetric positive definite A (fixed size) by the runtime's L D Lᵀ (factor_ldlt and
+ * substitute_ldlt of linear_solve.hpp, without its exceptions). Returns false when a pivot is not positive or
+ * not finite, or the result is not finite (a singular or indefinite M).
  */
 template <class Matrix, class Vector>
-EOMGEN_HD bool ldlt_solve(Matrix A, const Vector& b, Vector& x) {
+EOMGEN_HD bool ldlt_solve(const Matrix& A, const Vector& b, Vector& x) {
     constexpr int n = Vector::RowsAtCompileTime;
-    for (int j = 0; j < n; ++j) {
-        double d = A(j, j);
-        for (int k = 0; k < j; ++k) d -= A(j, k) * A(j, k) * A(k, k);
-        if (!(d > 0) || !(d < std::numeric_limits<double>::infinity())) return false;
-        A(j, j) = d;
-        for (int i = j + 1; i < n; ++i) {
-            double s = A(i, j);
-            for (int k = 0; k < j; ++k) s -= A(i, k) * A(j, k) * A(k, k);
-            A(i, j) = s / d;
-        }
-    }
-    for (int i = 0; i < n; ++i) {  // L y = b
-        double s = b(i);
-        for (int k = 0; k < i; ++k) s -= A(i, k) * x(k);
-        x(i) = s;
-    }
-    for (int i = n - 1; i >= 0; --i) {  // D Lᵀ x = y
-        double s = x(i) / A(i, i);
-        for (int k = i + 1; k < n; ++k) s -= A(k, i) * x(k);
-        x(i) = s;
-    }
+    Eigen::Matrix<double, n, n, Eigen::RowMajor> L;
+    Vector d, inv_d;
+    factor_ldlt(A, n, L, d, inv_d);
     for (int i = 0; i < n; ++i)
-        if (!(x(i) == x(i)) || !(x(i) - x(i) == 0)) return false;  // NaN or infinite
+        if (!(d(i) > 0) || !(d(i) < std::numeric_limits<double>::infinity())) return false;
+    x = b;
+    substitute_ldlt(L, inv_d, n, x);
+    for (int i = 0; i < n; ++i)
+        if (!(x(i) - x(i) == 0)) return false;  // NaN or infinite
     return true;
 }
 

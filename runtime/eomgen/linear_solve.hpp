@@ -1,6 +1,7 @@
 /** @file linear_solve.hpp  Solving M(q) q̈ = f for the generated right-hand sides, with failures reported. */
 #pragma once
 
+#include "eomgen/device.hpp"
 #include "eomgen/errors.hpp"
 
 #include <Eigen/Cholesky>
@@ -51,7 +52,7 @@ template <class MatM, class VecF, class Scalar, class VecX>
 /// M = L D Lᵀ row by row (the factorization of solve_mass_matrix, below): L's strict lower triangle in L (row i
 /// holds u_ik = L_ik d_k while it is built), the pivots in d, their inverses in inv_d; n the order of M.
 template <class MatM, class MatL, class VecD>
-void factor_ldlt(const MatM& M, Eigen::Index n, MatL& L, VecD& d, VecD& inv_d) {
+EOMGEN_HD void factor_ldlt(const MatM& M, Eigen::Index n, MatL& L, VecD& d, VecD& inv_d) {
     using S = typename MatM::Scalar;
     for (Eigen::Index i = 0; i < n; ++i) {
         S di = M(i, i);
@@ -72,7 +73,7 @@ void factor_ldlt(const MatM& M, Eigen::Index n, MatL& L, VecD& d, VecD& inv_d) {
 
 /// Overwrites every column b of B (n rows) with M⁻¹ b, M = L D Lᵀ as factor_ldlt left it: L y = b, Lᵀ z = D⁻¹ y.
 template <class MatL, class VecD, class MatB>
-void substitute_ldlt(const MatL& L, const VecD& inv_d, Eigen::Index n, MatB& B) {
+EOMGEN_HD void substitute_ldlt(const MatL& L, const VecD& inv_d, Eigen::Index n, MatB& B) {
     using S = typename MatB::Scalar;
     for (Eigen::Index c = 0; c < B.cols(); ++c) {
         for (Eigen::Index i = 0; i < n; ++i) {
