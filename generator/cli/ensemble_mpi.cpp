@@ -141,6 +141,12 @@ void coordinate(const MpiSession& mpi, std::size_t count, std::size_t chunk, uns
         MPI_Get_count(&status, MPI_BYTE, &size);
         bytes.assign(std::size_t(size), '\0');
         MPI_Recv(bytes.data(), size, MPI_BYTE, status.MPI_SOURCE, kTagRequest, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        // The next chunk goes out before this one's results are filed: filing may make this thread the one
+        // that writes the table's rows (milliseconds for a chunk), and the worker rank would wait that long.
+        const auto [first, last] = take();
+        const std::uint64_t range[2] = {first, last};
+        MPI_Send(range, 2, MPI_UINT64_T, status.MPI_SOURCE, kTagChunk, MPI_COMM_WORLD);
+        if (first >= last) --active;
         try {
             for (Reader in(bytes); !in.done();) {
                 Result r = deserialize(in);
@@ -151,10 +157,6 @@ void coordinate(const MpiSession& mpi, std::size_t count, std::size_t chunk, uns
             if (!failure) failure = std::current_exception();
             failed = true;
         }
-        const auto [first, last] = take();
-        const std::uint64_t range[2] = {first, last};
-        MPI_Send(range, 2, MPI_UINT64_T, status.MPI_SOURCE, kTagChunk, MPI_COMM_WORLD);
-        if (first >= last) --active;
     }
     for (std::thread& t : pool) t.join();
     if (failure) std::rethrow_exception(failure);

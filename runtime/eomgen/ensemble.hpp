@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <condition_variable>
 #include <cstddef>
 #include <exception>
 #include <limits>
@@ -122,37 +123,71 @@ void for_each_index(std::size_t begin, std::size_t end, unsigned threads, std::s
 }
 
 /**
- * Takes results in any order from any thread and hands them to `sink` in index order, from `first` on:
- * each put() delivers every result that has become next in line (one sink call at a time, under a lock).
- * Only results that arrived ahead of an earlier one wait (about threads × chunk of them).
+ * Takes results in any order from any thread and hands them to `sink` in index order, from `first` on.
+ * One thread at a time delivers: the put() that finds no delivery under way hands every result that has
+ * become next in line to the sink, outside the lock, and goes on while others keep arriving; the other
+ * threads only file their result and return to work, so a sink that formats and writes a row (the CLI's
+ * table) runs beside the integrations instead of holding every thread up. Results that arrived ahead of an
+ * earlier one wait; past `max_waiting` of them a put() waits until the sink has caught up, so a sink slower
+ * than the integrations bounds the memory instead of buffering the whole ensemble.
  */
 template <class Result, class Sink>
 class InOrder {
   public:
-    InOrder(std::size_t first, Sink& sink) : next_(first), sink_(sink) {}
+    /// `max_waiting`: no bound by default. Bound it only where the result that is next in line is always
+    /// being computed by a thread that is not itself waiting in put() (ensemble() below); a single thread
+    /// that files results received from elsewhere (the MPI coordinator) must not bound it.
+    InOrder(std::size_t first, Sink& sink, std::size_t max_waiting = std::numeric_limits<std::size_t>::max())
+        : next_(first), sink_(sink), max_waiting_(std::max<std::size_t>(1, max_waiting)) {}
 
     void put(std::size_t index, Result result) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        if (index != next_) {
-            waiting_.emplace(index, std::move(result));
-            return;
+        std::unique_lock<std::mutex> lock(mutex_);
+        // Only a result other than the next one waits for room: the next one always gets in, so the
+        // deliverer is never waited for by the result it needs.
+        caught_up_.wait(lock, [&] { return index == next_ || waiting_.size() < max_waiting_ || failed_; });
+        if (failed_) return;  // the sink threw: the ensemble is ending, and nothing more is delivered
+        waiting_.emplace(index, std::move(result));
+        if (delivering_) return;
+        delivering_ = true;
+        std::vector<Result> ready;
+        try {
+            for (;;) {
+                for (auto it = waiting_.begin(); it != waiting_.end() && it->first == next_ + ready.size();
+                     it = waiting_.erase(it))
+                    ready.push_back(std::move(it->second));
+                if (ready.empty()) break;
+                lock.unlock();
+                for (const Result& r : ready) sink_(r);
+                lock.lock();
+                next_ += ready.size();
+                ready.clear();
+                caught_up_.notify_all();
+            }
+        } catch (...) {
+            if (!lock.owns_lock()) lock.lock();
+            failed_ = true;  // nothing more is delivered: let every waiting put() return
+            delivering_ = false;
+            caught_up_.notify_all();
+            throw;
         }
-        sink_(result);
-        ++next_;
-        for (auto it = waiting_.begin(); it != waiting_.end() && it->first == next_; it = waiting_.erase(it)) {
-            sink_(it->second);
-            ++next_;
-        }
+        delivering_ = false;
     }
 
-    /// The index of the next result the sink is waiting for.
-    std::size_t next() const { return next_; }
+    /// The index of the next result the sink is waiting for (once every put() has returned).
+    std::size_t next() const {
+        std::lock_guard<std::mutex> lock(mutex_);
+        return next_;
+    }
 
   private:
-    std::mutex mutex_;
+    mutable std::mutex mutex_;
+    std::condition_variable caught_up_;
     std::size_t next_;
     std::map<std::size_t, Result> waiting_;
     Sink& sink_;
+    std::size_t max_waiting_;
+    bool delivering_ = false;
+    bool failed_ = false;
 };
 
 /**
@@ -197,8 +232,12 @@ void ensemble(std::size_t count, MakeMember&& member, const EnsembleOptions& opt
     sim::check_options(options.simulation);
     const auto events = sim::until_events<M>(options.simulation);
     const unsigned threads = thread_count(options.threads);
-    InOrder<MemberResult<M>, std::remove_reference_t<Sink>> in_order(0, sink);
-    for_each_index(0, count, threads, chunk_size(count, threads, options.chunk), [&](std::size_t i) {
+    const std::size_t chunk = chunk_size(count, threads, options.chunk);
+    // Each thread computes its chunk in order, so the next result in line is always on its way from a
+    // thread that is not waiting: bounding the buffer cannot deadlock here.
+    InOrder<MemberResult<M>, std::remove_reference_t<Sink>> in_order(
+        0, sink, std::max<std::size_t>(4096, 4 * threads * chunk));
+    for_each_index(0, count, threads, chunk, [&](std::size_t i) {
         const Member<M> m = member(i);
         in_order.put(i, simulate_member<M>(options.simulation, events, i, m));
     });

@@ -6,9 +6,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -176,4 +179,39 @@ TEST_CASE("ensemble: what member() throws ends the ensemble and is rethrown", "[
                             o, [&delivered](const eomgen::MemberResult<Door>&) { ++delivered; }),
                         "no member 7");
     REQUIRE(delivered <= 7);  // nothing after the missing member reaches the sink
+}
+
+TEST_CASE("ensemble: results delivered in order while the sink runs outside the lock, with a bounded buffer",
+          "[runtime][ensemble]") {
+    // Four threads file indices 0 … 3999 in chunks of 5 (so out of order) into a buffer of at most 8; the
+    // sink sleeps now and then, so threads arrive while it runs. Every index reaches the sink once, in order,
+    // never two sink calls at a time, and nothing deadlocks on the bound.
+    std::vector<std::size_t> seen;
+    std::atomic<int> inside{0};
+    bool overlapped = false;
+    auto sink = [&](const std::size_t& i) {
+        if (inside.fetch_add(1) != 0) overlapped = true;
+        if (i % 97 == 0) std::this_thread::sleep_for(std::chrono::microseconds(200));
+        seen.push_back(i);
+        inside.fetch_sub(1);
+    };
+    eomgen::InOrder<std::size_t, decltype(sink)> in_order(0, sink, 8);
+    eomgen::for_each_index(0, 4000, 4, 5, [&](std::size_t i) { in_order.put(i, i); });
+    REQUIRE_FALSE(overlapped);
+    REQUIRE(seen.size() == 4000);
+    for (std::size_t i = 0; i < seen.size(); ++i) REQUIRE(seen[i] == i);
+    REQUIRE(in_order.next() == 4000);
+}
+
+TEST_CASE("ensemble: a sink that throws ends the ensemble without leaving a thread waiting for room",
+          "[runtime][ensemble]") {
+    std::size_t delivered = 0;
+    auto sink = [&](const std::size_t& i) {
+        if (i == 50) throw std::runtime_error("disk full at row 50");
+        ++delivered;
+    };
+    eomgen::InOrder<std::size_t, decltype(sink)> in_order(0, sink, 4);
+    REQUIRE_THROWS_WITH(eomgen::for_each_index(0, 10000, 3, 2, [&](std::size_t i) { in_order.put(i, i); }),
+                        "disk full at row 50");
+    REQUIRE(delivered == 50);
 }
