@@ -2,6 +2,7 @@
  * control, start. */
 #pragma once
 
+#include "eomgen/device.hpp"
 #include "eomgen/errors.hpp"
 
 #include <Eigen/Core>
@@ -37,6 +38,126 @@ struct Dopri5Options {
 
 namespace detail {
 
+/// Whether every component of v is finite (the loop form, which also compiles as device code).
+template <class Vec>
+EOMGEN_HD bool all_finite(const Vec& v) {
+    for (Eigen::Index i = 0; i < v.size(); ++i)
+        if (!(v(i) - v(i) == 0)) return false;  // NaN or infinite
+    return true;
+}
+
+/// Σ (e_i / sc_i)², sc_i = atol + rtol·max(|x_i|, |x_new_i|): the error norm of the embedded pairs, squared
+/// and not yet divided by n.
+template <class Vec, class State>
+EOMGEN_HD typename State::Scalar scaled_sum_of_squares(const Vec& e, const State& x, const State& x_new,
+                                                       const typename State::Scalar& atol,
+                                                       const typename State::Scalar& rtol) {
+    using Scalar = typename State::Scalar;
+    using std::abs;
+    Scalar sum(0);
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+        const Scalar a = abs(x(i)), b = abs(x_new(i));
+        const Scalar sc = atol + rtol * (a < b ? b : a);
+        sum += (e(i) / sc) * (e(i) / sc);
+    }
+    return sum;
+}
+
+/**
+ * Hairer's HINIT (HNW I §II.4, "Starting step size"): the first step of a method of order `order` from (t, x)
+ * with k1 = f(t, x), from ‖x‖/‖k1‖, refined with the second derivative from one explicit Euler step (one call
+ * of eval(t, x, k), into f1; xs is scratch). Signed by dir, at most hmax.
+ */
+template <class Eval, class State>
+EOMGEN_HD typename State::Scalar initial_step_size(Eval& eval, const typename State::Scalar& t, const State& x,
+                                                   const State& k1, const typename State::Scalar& dir,
+                                                   const typename State::Scalar& hmax,
+                                                   const typename State::Scalar& atol,
+                                                   const typename State::Scalar& rtol, int order, State& xs,
+                                                   State& f1) {
+    using Scalar = typename State::Scalar;
+    using std::abs;
+    using std::pow;
+    using std::sqrt;
+    const auto smaller = [](const Scalar& a, const Scalar& b) { return b < a ? b : a; };
+    const auto larger = [](const Scalar& a, const Scalar& b) { return a < b ? b : a; };
+    const Eigen::Index n = x.size();
+    Scalar dnf(0), dny(0);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const Scalar sk = atol + rtol * abs(x(i));
+        dnf += (k1(i) / sk) * (k1(i) / sk);
+        dny += (x(i) / sk) * (x(i) / sk);
+    }
+    dnf /= Scalar(n);
+    dny /= Scalar(n);
+    Scalar h = (dnf <= Scalar(1e-10) || dny <= Scalar(1e-10)) ? Scalar(1e-6) : sqrt(dny / dnf) * Scalar(0.01);
+    h = smaller(h, hmax);
+    xs = x + (dir * h) * k1;
+    eval(t + dir * h, xs, f1);
+    if (!all_finite(f1)) return dir * h;  // the trial steps will shrink it further if need be
+    Scalar der2(0);
+    for (Eigen::Index i = 0; i < n; ++i) {
+        const Scalar sk = atol + rtol * abs(x(i));
+        der2 += ((f1(i) - k1(i)) / sk) * ((f1(i) - k1(i)) / sk);
+    }
+    der2 = sqrt(der2 / Scalar(n)) / h;
+    const Scalar der12 = larger(abs(der2), sqrt(dnf));
+    const Scalar h1 = der12 <= Scalar(1e-15) ? larger(Scalar(1e-6), h * Scalar(1e-3))
+                                             : pow(Scalar(0.01) / der12, Scalar(1) / Scalar(order));
+    return dir * smaller(smaller(Scalar(100) * h, h1), hmax);
+}
+
+/**
+ * The step-size controller of the embedded pairs (HNW I §II.4; the PI variant of Gustafsson, Hairer–Wanner
+ * II §IV.2, as in Hairer's DOPRI5 and DOP853 codes), for an error estimate of order q:
+ *   h_new = h · clamp( safety · err^(-(1/q - w β)) · err_prev^β, min_factor, max_factor ),
+ * with no growth right after a rejection. Shared by EmbeddedRk and the device member integrator.
+ */
+template <class Scalar>
+struct StepSizeControl {
+    Scalar safety, min_factor, max_factor, beta;
+    Scalar expo1;  ///< 1/q − w β
+    Scalar errold = Scalar(1e-4);
+    bool rejected_last = false;
+
+    EOMGEN_HD StepSizeControl(const Scalar& safety_, const Scalar& min_factor_, const Scalar& max_factor_,
+                              const Scalar& beta_, int order, const Scalar& beta_weight)
+        : safety(safety_),
+          min_factor(min_factor_),
+          max_factor(max_factor_),
+          beta(beta_),
+          expo1(Scalar(1) / Scalar(order) - beta_ * beta_weight) {}
+
+    /// The next step after a trial step of size h with scaled error err: accepted (err ≤ 1) or the size to
+    /// retry with. |h_new| stays within hmax (signed by dir).
+    EOMGEN_HD Scalar next(const Scalar& err, const Scalar& h, const Scalar& hmax, const Scalar& dir) {
+        using std::abs;
+        using std::pow;
+        const Scalar one(1);
+        const auto smaller = [](const Scalar& a, const Scalar& b) { return b < a ? b : a; };
+        const auto larger = [](const Scalar& a, const Scalar& b) { return a < b ? b : a; };
+        const Scalar fac11 = pow(err, expo1);
+        if (err <= one) {
+            Scalar fac = fac11 / pow(errold, beta);
+            fac = larger(one / max_factor, smaller(one / min_factor, fac / safety));
+            Scalar h_new = h / fac;
+            errold = larger(err, Scalar(1e-4));
+            if (abs(h_new) > hmax) h_new = dir * hmax;
+            if (rejected_last && abs(h_new) > abs(h)) h_new = h;
+            rejected_last = false;
+            return h_new;
+        }
+        rejected_last = true;
+        return h / smaller(one / min_factor, fac11 / safety);
+    }
+
+    /// The size to retry with after a trial step of size h that produced NaN or infinity.
+    EOMGEN_HD Scalar after_non_finite(const Scalar& h) {
+        rejected_last = true;
+        return h * min_factor;
+    }
+};
+
 /**
  * The part of an adaptive embedded Runge–Kutta stepper that does not depend on its tableau (CRTP: Derived
  * is the stepper). Derived provides
@@ -68,8 +189,6 @@ class EmbeddedRk {
     void step(System&& f) {
         using std::abs;
         using std::max;
-        using std::min;
-        using std::pow;
         if (done()) throw std::logic_error(std::string(name_) + "::step called after reaching t_end");
         const Scalar one(1);
         bool last_nonfinite = false;
@@ -100,27 +219,16 @@ class EmbeddedRk {
             if (!(err <= std::numeric_limits<Scalar>::max())) {  // NaN or inf somewhere in the trial
                 last_nonfinite = true;
                 ++n_rejected_;
-                h_ = h * opts_.min_factor;
-                rejected_last_ = true;
+                h_ = control_.after_non_finite(h);
                 continue;
             }
             last_nonfinite = false;
-            const Scalar fac11 = pow(err, expo1_);
+            h_ = control_.next(err, h, hmax_, dir_);
             if (err <= one) {
-                Scalar fac = fac11 / pow(errold_, opts_.beta);
-                fac = max(one / opts_.max_factor, min(one / opts_.min_factor, fac / opts_.safety));
-                Scalar h_new = h / fac;
-                errold_ = max(err, Scalar(1e-4));
                 self().accept(h, last);
-                if (abs(h_new) > hmax_) h_new = dir_ * hmax_;
-                if (rejected_last_ && abs(h_new) > abs(h)) h_new = h;
-                rejected_last_ = false;
-                h_ = h_new;
                 return;
             }
             ++n_rejected_;
-            h_ = h / min(one / opts_.min_factor, fac11 / opts_.safety);
-            rejected_last_ = true;
         }
     }
 
@@ -151,7 +259,8 @@ class EmbeddedRk {
           x_prev_(x0),
           k1_(x0),
           x_new_(x0),
-          xs_(x0) {
+          xs_(x0),
+          control_(options.safety, options.min_factor, options.max_factor, options.beta, order, beta_weight) {
         using std::abs;
         // atol > 0: with a purely relative test a component passing through 0 would have no error scale.
         if (!(opts_.rtol >= Scalar(0)) || !(opts_.atol > Scalar(0)))
@@ -160,7 +269,6 @@ class EmbeddedRk {
             !(opts_.min_factor < Scalar(1)) || !(opts_.max_factor > Scalar(1)))
             throw std::invalid_argument(std::string(name_) +
                                         ": need safety > 0 and 0 < min_factor < 1 < max_factor");
-        expo1_ = Scalar(1) / Scalar(order) - opts_.beta * beta_weight;
         dir_ = t_end >= t0 ? Scalar(1) : Scalar(-1);
         hmax_ = opts_.hmax > Scalar(0) ? opts_.hmax : abs(t_end - t0);
         if (!x0.allFinite())
@@ -187,14 +295,7 @@ class EmbeddedRk {
     /// Σ (e_i / sc_i)², the sum inside scaled_norm.
     template <class Vec>
     Scalar scaled_sum_of_squares(const Vec& e) const {
-        using std::abs;
-        using std::max;
-        Scalar sum(0);
-        for (Eigen::Index i = 0; i < x_.size(); ++i) {
-            const Scalar sc = opts_.atol + opts_.rtol * max(abs(x_(i)), abs(x_new_(i)));
-            sum += (e(i) / sc) * (e(i) / sc);
-        }
-        return sum;
+        return detail::scaled_sum_of_squares(e, x_, x_new_, opts_.atol, opts_.rtol);
     }
 
     /// The dense output where it is exact by construction: x at t == t() or t == t_prev(). Returns whether
@@ -224,49 +325,20 @@ class EmbeddedRk {
     Dopri5Options<Scalar> opts_;
     const char* name_;
     Scalar t_end_, t_, t_prev_;
-    Scalar dir_ = Scalar(1), hmax_ = Scalar(0), h_ = Scalar(0), h_last_ = Scalar(0), errold_ = Scalar(1e-4);
-    Scalar expo1_ = Scalar(0);
+    Scalar dir_ = Scalar(1), hmax_ = Scalar(0), h_ = Scalar(0), h_last_ = Scalar(0);
     State x_, x_prev_, k1_, x_new_, xs_;  ///< xs_: the stage argument, scratch for the derived stepper
-    bool rejected_last_ = false;
+    StepSizeControl<Scalar> control_;
     std::size_t n_accepted_ = 0, n_rejected_ = 0, n_rhs_ = 0;
 
   private:
     Derived& self() { return static_cast<Derived&>(*this); }
 
-    /// Hairer's HINIT: h from ‖x0‖/‖f0‖, refined with the second derivative from one Euler step.
+    /// Hairer's HINIT (initial_step_size above); one evaluation of f.
     template <class System>
     Scalar initial_step(System& f, int order) {
-        using std::abs;
-        using std::max;
-        using std::min;
-        using std::pow;
-        using std::sqrt;
-        const Eigen::Index n = x_.size();
-        Scalar dnf(0), dny(0);
-        for (Eigen::Index i = 0; i < n; ++i) {
-            const Scalar sk = opts_.atol + opts_.rtol * abs(x_(i));
-            dnf += (k1_(i) / sk) * (k1_(i) / sk);
-            dny += (x_(i) / sk) * (x_(i) / sk);
-        }
-        dnf /= Scalar(n);
-        dny /= Scalar(n);
-        Scalar h =
-            (dnf <= Scalar(1e-10) || dny <= Scalar(1e-10)) ? Scalar(1e-6) : sqrt(dny / dnf) * Scalar(0.01);
-        h = min(h, hmax_);
-        xs_ = x_ + (dir_ * h) * k1_;
+        auto eval = [&](const Scalar& t, const State& x, State& xdot) { evaluate(f, t, x, xdot); };
         State& f1 = x_new_;  // free until the first trial step
-        evaluate(f, t_ + dir_ * h, xs_, f1);
-        if (!f1.allFinite()) return dir_ * h;  // the trial steps will shrink it further if need be
-        Scalar der2(0);
-        for (Eigen::Index i = 0; i < n; ++i) {
-            const Scalar sk = opts_.atol + opts_.rtol * abs(x_(i));
-            der2 += ((f1(i) - k1_(i)) / sk) * ((f1(i) - k1_(i)) / sk);
-        }
-        der2 = sqrt(der2 / Scalar(n)) / h;
-        const Scalar der12 = max(abs(der2), sqrt(dnf));
-        const Scalar h1 = der12 <= Scalar(1e-15) ? max(Scalar(1e-6), h * Scalar(1e-3))
-                                                 : pow(Scalar(0.01) / der12, Scalar(1) / Scalar(order));
-        return dir_ * min(min(Scalar(100) * h, h1), hmax_);
+        return initial_step_size(eval, t_, x_, k1_, dir_, hmax_, opts_.atol, opts_.rtol, order, xs_, f1);
     }
 };
 

@@ -51,6 +51,20 @@ void rk4_step(System&& f, const typename State::Scalar& t, const State& x, const
 }
 
 /**
+ * The cubic Hermite interpolant at θ ∈ [0, 1] across a step (x0, f0) → (x1, f1) of size h (the dense output of
+ * Rk4Stepper and of the device member integrator, device_ensemble.hpp):
+ *   u(θ) = (1−θ) x0 + θ x1 + θ(θ−1) [ (1−2θ)(x1 − x0) + (θ−1) h f0 + θ h f1 ].
+ */
+template <class State>
+EOMGEN_HD void hermite_dense(const typename State::Scalar& th, const typename State::Scalar& h, const State& x0,
+                             const State& f0, const State& x1, const State& f1, State& out) {
+    using Scalar = typename State::Scalar;
+    const Scalar one(1), two(2);
+    out = (one - th) * x0 + th * x1 +
+          (th * (th - one)) * ((one - two * th) * (x1 - x0) + ((th - one) * h) * f0 + (th * h) * f1);
+}
+
+/**
  * Fixed-step RK4 from t0 to t_end, with the interface the integration driver (integrate.hpp) expects of a
  * stepper: step(), t(), x(), t_prev(), x_prev(), dense(), done() and the counters.
  *
@@ -129,11 +143,7 @@ class Rk4Stepper {
             return;
         }
         const Scalar h = t_ - t_prev_;
-        const Scalar th = (t - t_prev_) / h;
-        const Scalar one(1), two(2);
-        x = (one - th) * x_prev_ + th * x_ +
-            (th * (th - one)) *
-                ((one - two * th) * (x_ - x_prev_) + ((th - one) * h) * f_prev_ + (th * h) * f_);
+        hermite_dense((t - t_prev_) / h, h, x_prev_, f_prev_, x_, f_, x);
     }
 
     bool done() const { return k_ == n_steps_; }
