@@ -122,25 +122,27 @@ double compare(int members) {
     return worst;
 }
 
-/// The door's closing time over a θ grid on the device (cuda_ensemble.cuh) against the same member integrator on
-/// the host: the largest relative difference of t, or -1 when a member did not stop at its event.
-double door_sweep(int members) {
+/// The door's closing time over a θ grid on the device (cuda_ensemble.cuh, by on_device(params, x0, event)) against
+/// the same member integrator on the host (on_host(params, x0, event)): the largest relative difference of t, or
+/// -1 when a member did not stop at its event.
+template <class OnDevice, class OnHost>
+double door_sweep(const char* what, int members, OnDevice on_device, OnHost on_host) {
     using Door = eomgen::models::door::Model<double>;
     const double pi = std::acos(-1.0);
     std::vector<Door::Params> params(static_cast<std::size_t>(members));
     std::vector<Door::State> x0(params.size(), Door::default_state());
     for (int i = 0; i < members; ++i) params[std::size_t(i)].theta = 0.02 + (pi / 2 - 0.02) * i / (members - 1);
     const eomgen::device::StateEvent shut{0, -pi / 2};
-    const auto device = eomgen::device::ensemble_rk4<Door>(params, x0, 20.0, 1e-3, shut);
+    const auto device = on_device(params, x0, shut);
     double worst = 0;
     for (int i = 0; i < members; ++i) {
-        const auto host = eomgen::device::integrate_member_rk4<Door>(params[std::size_t(i)], x0[std::size_t(i)], 20.0,
-                                                                     1e-3, shut);
+        const auto host = on_host(params[std::size_t(i)], x0[std::size_t(i)], shut);
         const auto& d = device[std::size_t(i)];
         if (d.status != eomgen::device::Status::Event || host.status != eomgen::device::Status::Event) return -1;
         worst = std::max(worst, std::abs(d.t - host.t) / host.t);
     }
-    std::printf("door sweep: %d members on the device, closing times within %.2e of the host's\n", members, worst);
+    std::printf("door sweep (%s): %d members on the device, closing times within %.2e of the host's\n", what,
+                members, worst);
     return worst;
 }
 
@@ -160,7 +162,28 @@ int main() {
                      compare<eomgen::models::pendulum_cartesian::Model<double>>(1000),
                      compare<eomgen::models::rolling_sphere::Model<double>>(1000)})
         ok = ok && d >= 0 && d <= tolerance;
-    const double sweep = door_sweep(4096);
+    using Door = eomgen::models::door::Model<double>;
+    const double sweep = door_sweep(
+        "RK4", 4096,
+        [](const auto& params, const auto& x0, auto event) {
+            return eomgen::device::ensemble_rk4<Door>(params, x0, 20.0, 1e-3, event);
+        },
+        [](const auto& p, const auto& x0, auto event) {
+            return eomgen::device::integrate_member_rk4<Door>(p, x0, 20.0, 1e-3, event);
+        });
     ok = ok && sweep >= 0 && sweep <= tolerance;
+    // Last-bit differences can change an adaptive step's size; the closing time stays within the tolerance.
+    eomgen::Dopri5Options<double> o;
+    o.rtol = 1e-10;
+    o.atol = 1e-12;
+    const double adaptive = door_sweep(
+        "Dormand-Prince 5(4), rtol 1e-10", 4096,
+        [&o](const auto& params, const auto& x0, auto event) {
+            return eomgen::device::ensemble_dopri5<Door>(params, x0, 20.0, o, event);
+        },
+        [&o](const auto& p, const auto& x0, auto event) {
+            return eomgen::device::integrate_member_dopri5<Door>(p, x0, 20.0, o, event);
+        });
+    ok = ok && adaptive >= 0 && adaptive <= 1e-9;
     return ok ? 0 : 1;
 }
