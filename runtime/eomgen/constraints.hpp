@@ -38,9 +38,10 @@ typename MatM::Scalar augmentation_weight(const MatM& M, const MatA& A) {
  * Solves the constrained equations of motion (Goldstein §2.4; Bauchau & Laulusa, J. Comput. Nonlinear
  * Dynam. 3 (2008), "Review of contemporary approaches for constraint enforcement in multibody systems")
  * \f[ M\ddot q = f + A^T\lambda,\qquad A\ddot q = \gamma \f]
- * by a Schur complement on M's Cholesky factor, never an LDLᵀ of the indefinite KKT matrix:
- * Y = M⁻¹Aᵀ, S = A Y (symmetric positive definite when A has full row rank), λ = S⁻¹(γ − A M⁻¹ f),
- * q̈ = M⁻¹(f + Aᵀλ). Sizes: M n×n, f n, A m×n, γ m; outputs q̈ (n) and λ (m).
+ * by a Schur complement on M's factor (MassFactor, linear_solve.hpp: the L D Lᵀ of solve_mass_matrix), never an
+ * LDLᵀ of the indefinite KKT matrix: Y = M⁻¹Aᵀ, S = A Y (symmetric positive definite when A has full row rank),
+ * λ = S⁻¹(γ − A M⁻¹ f), q̈ = M⁻¹(f + Aᵀλ). Sizes: M n×n, f n, A m×n, γ m; outputs q̈ (n) and λ (m). Both
+ * factorizations are tested on their pivots (pivots_regular; S with a 1e3 margin), not by a condition estimate.
  *
  * M may be singular where the constraints supply what it lacks: a coordinate driven by a rheonomic
  * constraint (a hoop spun at a prescribed rate) has no inertia of its own where the bead sits on the axis.
@@ -56,32 +57,41 @@ template <class MatM, class VecF, class MatA, class VecG, class VecQdd, class Ve
 void solve_constrained(const MatM& M, const VecF& f, const MatA& A, const VecG& gamma, VecQdd& qdd, VecL& lambda,
                        const Scalar& t, const VecX& x) {
     using S = typename MatM::Scalar;
-    if (!M.allFinite() || !f.allFinite() || !A.allFinite() || !gamma.allFinite())
-        throw NonFiniteState(describe_state("mass matrix, forcing or constraints are not finite", t, x), value_of(t));
-    const S eps = std::numeric_limits<S>::epsilon();
-    Eigen::LLT<typename MatM::PlainObject> llt(M);
-    auto fine = [&] { return llt.info() == Eigen::Success && llt.rcond() > S(M.rows()) * eps; };
+    // Nothing passes over the inputs on the way: they are tested for finiteness only once something failed.
+    const auto not_finite = [&](const char* what) {
+        if (!M.allFinite() || !f.allFinite() || !A.allFinite() || !gamma.allFinite())
+            return NonFiniteState(describe_state("mass matrix, forcing or constraints are not finite", t, x),
+                                  value_of(t));
+        return NonFiniteState(describe_state(what, t, x), value_of(t));
+    };
+    MassFactor<S, MatM::RowsAtCompileTime> m_factor;
     typename VecF::PlainObject rhs = f;
-    if (!fine()) {
+    if (!m_factor.compute(M)) {
         const S w = detail::augmentation_weight(M, A);
-        llt.compute(M + w * A.transpose() * A);
-        if (!fine())
+        if (!m_factor.compute((M + w * A.transpose() * A).eval())) {
+            if (!M.allFinite() || !A.allFinite()) throw not_finite("");
             throw SingularMassMatrix(
                 describe_state("mass matrix is singular or not positive definite on the motions the constraints allow",
                                t, x),
                 value_of(t));
+        }
         rhs += w * (A.transpose() * gamma);
     }
-    const auto Y = llt.solve(A.transpose()).eval();   // n×m
-    const auto Minv_f = llt.solve(rhs).eval();
-    const auto schur = (A * Y).eval();                 // m×m
-    Eigen::LLT<std::decay_t<decltype(schur)>> s_llt(schur);
-    if (s_llt.info() != Eigen::Success || !(s_llt.rcond() > S(schur.rows()) * eps * S(1e3)))
+    Eigen::Matrix<S, MatA::ColsAtCompileTime, MatA::RowsAtCompileTime> Y = A.transpose();  // n×m, then M⁻¹Aᵀ
+    m_factor.solve_in_place(Y);
+    m_factor.solve_in_place(rhs);  // M⁻¹ f
+    const auto schur = (A * Y).eval();  // m×m
+    MassFactor<S, std::decay_t<decltype(schur)>::RowsAtCompileTime> s_factor;
+    if (!s_factor.compute(schur, 1e3)) {
+        if (!schur.allFinite()) throw not_finite("the constraints' Schur complement is not finite");
         throw SingularConstraints(
             describe_state("constraint Jacobian lost rank (redundant constraints or a singular configuration)", t, x),
             value_of(t));
-    lambda = s_llt.solve(gamma - A * Minv_f);
-    qdd = Minv_f + Y * lambda;
+    }
+    lambda = gamma - A * rhs;
+    s_factor.solve_in_place(lambda);
+    qdd = rhs + Y * lambda;
+    if (!qdd.allFinite() || !lambda.allFinite()) throw not_finite("accelerations or multipliers are not finite");
 }
 
 /// The residuals of a constrained Model at (t, x): the largest |g_k| over holonomic constraints (position
@@ -120,11 +130,10 @@ Eigen::Matrix<typename MatM::Scalar, MatM::RowsAtCompileTime, 1> metric_correcti
                                                                                      const VecR& r) {
     // Where M is singular (see solve_constrained) the metric is M + w BᵀB: positive definite, and the
     // correction still zeroes B Δ + r.
-    Eigen::LLT<typename MatM::PlainObject> llt(M);
-    using Sc = typename MatM::Scalar;
-    if (llt.info() != Eigen::Success || !(llt.rcond() > Sc(M.rows()) * std::numeric_limits<Sc>::epsilon()))
-        llt.compute(M + augmentation_weight(M, B) * B.transpose() * B);
-    const auto Y = llt.solve(B.transpose()).eval();
+    MassFactor<typename MatM::Scalar, MatM::RowsAtCompileTime> factor;
+    if (!factor.compute(M)) factor.compute((M + augmentation_weight(M, B) * B.transpose() * B).eval());
+    Eigen::Matrix<typename MatM::Scalar, MatB::ColsAtCompileTime, MatB::RowsAtCompileTime> Y = B.transpose();
+    factor.solve_in_place(Y);
     const auto S = (B * Y).eval();
     return -Y * S.ldlt().solve(r);
 }

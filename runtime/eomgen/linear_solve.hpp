@@ -19,10 +19,11 @@ namespace eomgen {
  * a NaN pivot fails). The pivots are Schur complements of M's leading blocks, so λ_min(M) ≤ d_i ≤ λ_max(M)
  * (interlacing): the ratio is never below 1/cond₂(M), and a collapsing pivot is how a singular M shows in its
  * factor. It costs n comparisons, where LLT::rcond() costs several triangular solves. For an automatic-
- * differentiation Scalar the comparisons are on the value parts.
+ * differentiation Scalar the comparisons are on the value parts. `margin` > 1 asks for that much more room
+ * (the constraints' Schur complement, whose entries carry M's rounding already).
  */
 template <class Pivots>
-bool pivots_regular(const Pivots& d) {
+bool pivots_regular(const Pivots& d, double margin = 1) {
     using S = std::decay_t<decltype(d[0])>;
     const int n = int(d.size());
     S lo = d[0], hi = d[0];
@@ -30,7 +31,7 @@ bool pivots_regular(const Pivots& d) {
         if (d[i] < lo) lo = d[i];
         if (d[i] > hi) hi = d[i];
     }
-    return lo > S(n) * S(Eigen::NumTraits<S>::epsilon()) * hi;
+    return lo > S(margin) * S(n) * S(Eigen::NumTraits<S>::epsilon()) * hi;
 }
 
 /**
@@ -103,37 +104,63 @@ EOMGEN_HD void substitute_ldlt(const MatL& L, const VecD& inv_d, Eigen::Index n,
 constexpr Eigen::Index kLoopSolveMaxN = 20;
 
 /**
+ * The factorization of a symmetric positive definite matrix that solve_mass_matrix and the constrained solve
+ * (constraints.hpp) use: M = L D Lᵀ by factor_ldlt up to kLoopSolveMaxN rows, Eigen's LLT above (d_i = L_ii²);
+ * only M's lower triangle is read. compute() says whether the pivots are regular (pivots_regular); nothing else
+ * passes over M. N is M's compile-time size (or Eigen::Dynamic).
+ */
+template <class S, int N>
+class MassFactor {
+  public:
+    template <class MatM>
+    bool compute(const MatM& M, double margin = 1) {
+        n_ = N == Eigen::Dynamic ? M.rows() : N;  // a constant where M's size is: loops the compiler can unroll
+                                                  // and schedule (Eigen's dot products on segments measured slower
+                                                  // up to n = 30)
+        loops_ = n_ <= kLoopSolveMaxN;
+        if (n_ == 0) return true;  // no constraints: nothing to factor
+        if (!loops_) {
+            llt_.compute(M);
+            return llt_.info() == Eigen::Success &&
+                   pivots_regular(llt_.matrixLLT().diagonal().cwiseAbs2().eval(), margin);
+        }
+        L_.resize(n_, n_);
+        d_.resize(n_);
+        inv_d_.resize(n_);
+        factor_ldlt(M, n_, L_, d_, inv_d_);
+        return pivots_regular(d_, margin);
+    }
+
+    /// Overwrites every column b of B (n rows) with M⁻¹ b.
+    template <class MatB>
+    void solve_in_place(MatB& B) const {
+        if (loops_)
+            substitute_ldlt(L_, inv_d_, n_, B);
+        else
+            llt_.solveInPlace(B);
+    }
+
+  private:
+    Eigen::Index n_ = 0;
+    bool loops_ = true;
+    Eigen::Matrix<S, N, N, Eigen::RowMajor> L_;  // row i: L_ik for k < i
+    Eigen::Matrix<S, N, 1> d_, inv_d_;
+    Eigen::LLT<Eigen::Matrix<S, N, N>> llt_;
+};
+
+/**
  * solve_mass_matrix, then `then(solve)` with `solve(B)` overwriting each column of B (n rows) with M⁻¹ of it by the
  * same factorization: more right-hand sides that depend on q̈ (the generated analytic Jacobians,
  * analytic_jacobian.hpp) for one factorization of M.
  */
 template <class MatM, class VecF, class VecQdd, class Scalar, class VecX, class Then>
 void solve_mass_matrix_then(const MatM& M, const VecF& f, VecQdd& qdd, const Scalar& t, const VecX& x, Then&& then) {
-    using S = typename MatM::Scalar;
-    constexpr int N = MatM::RowsAtCompileTime;
-    const Eigen::Index n = N == Eigen::Dynamic ? M.rows() : N;  // a constant where M's size is: loops the compiler
-                                                                 // can unroll and schedule (Eigen's dot products
-                                                                 // on segments measured slower up to n = 30)
-    if (n > kLoopSolveMaxN) {
-        const Eigen::LLT<typename MatM::PlainObject> llt(M);
-        if (llt.info() != Eigen::Success || !pivots_regular(llt.matrixLLT().diagonal().cwiseAbs2().eval()))
-            throw_solve_failure(M, f, true, t, x);
-        qdd = llt.solve(f);
-        if (!qdd.allFinite()) throw_solve_failure(M, f, false, t, x);
-        then([&llt](auto& B) { llt.solveInPlace(B); });
-        return;
-    }
-    Eigen::Matrix<S, N, N, Eigen::RowMajor> L;  // row i: L_ik for k < i
-    Eigen::Matrix<S, N, 1> d, inv_d;
-    L.resize(n, n);
-    d.resize(n);
-    inv_d.resize(n);
-    factor_ldlt(M, n, L, d, inv_d);
-    if (!pivots_regular(d)) throw_solve_failure(M, f, true, t, x);
+    MassFactor<typename MatM::Scalar, MatM::RowsAtCompileTime> factor;
+    if (!factor.compute(M)) throw_solve_failure(M, f, true, t, x);
     qdd = f;
-    substitute_ldlt(L, inv_d, n, qdd);
+    factor.solve_in_place(qdd);
     if (!qdd.allFinite()) throw_solve_failure(M, f, false, t, x);
-    then([&](auto& B) { substitute_ldlt(L, inv_d, n, B); });
+    then([&factor](auto& B) { factor.solve_in_place(B); });
 }
 
 template <class MatM, class VecF, class VecQdd, class Scalar, class VecX>
