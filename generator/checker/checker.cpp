@@ -7,6 +7,7 @@
 #include "checker/budget.hpp"
 #include "checker/correction_check.hpp"
 #include "checker/definitions.hpp"
+#include "checker/motions.hpp"
 #include "checker/hamiltonian_check.hpp"
 #include "checker/labels.hpp"
 #include "checker/latex_normalize.hpp"
@@ -472,6 +473,17 @@ class Checker : public Comparisons {
     std::size_t current_offset_ = 0;  ///< file offset of the side being prepared (definitions before it apply)
     void collect_definitions(const std::vector<FullChain>& chains);
     HamiltonianReading hamilton_;  ///< p_q as variables, H(q, p, t) inside ∂
+    ParticularMotions motions_{model_, eq_, ctx_};  ///< [[motions]]: lines that hold on one motion
+    /// a = b (link j of c) on the model's particular motion for its section (motions.hpp).
+    bool on_motion(const FullChain& c, std::size_t i, std::size_t j, const GiNaC::ex& a, const GiNaC::ex& b,
+                   double tol, EquationCheck& r) {
+        if (motions_.empty()) return false;
+        std::vector<std::string> titles;
+        const std::size_t at = c.relation_offsets[j - 1];
+        for (const Section& s : d_.sections)
+            if (s.begin <= at && at < s.end) titles.push_back(s.title);
+        return motions_.check(a, b, c.sides[i].side->source, titles, *this, tol, r);
+    }
     NormalModesCheck modes_;       ///< ω² and secular equations against the model's normal modes
     ParameterValues parameter_values_;  ///< for the numbers the text works out
     int velocity_h_line_ = 0;       ///< the first line where the text writes H in velocities (0: none)
@@ -696,6 +708,10 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
             p.notes.push_back(n);
             p.from_definition = true;
         }
+        // The text's abbreviations ("with \Omega = ..."), everywhere in the rest of their section.
+        definitions_.take_abbreviations();
+        v = definitions_.abbreviate(v, current_offset_);
+        for (const std::string& n : definitions_.take_abbreviations()) p.notes.push_back(n);
         if (H_inside && !hamilton_.has_hamiltonian(v)) p.has_truth_label = p.has_momenta = true;
         if (hamilton_.has_hamiltonian(v))  // H outside a derivative, inside an expression: a letter (a height)
             v = v.subs(ctx_.names.at("H") == ctx_.free_symbol("H", NameKind::Unknown));
@@ -1293,7 +1309,10 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
             const Prepared p = prepare(c.sides[k]);
             if (!p.comparable() || !p.units.empty() || p.value.has(head)) continue;
             const std::size_t at = c.sides[k].base + c.sides[k].side->begin;
-            definitions_.add(head, f->name, p.value, at, d_.position(at).line);
+            const std::size_t until =
+                c.section >= 0 ? d_.sections[std::size_t(c.section)].end : std::string::npos;
+            definitions_.add(head, f->name, p.value, at, d_.position(at).line, until, c.sides[k].side->source,
+                             c.sides[0].base + c.sides[0].side->begin);
             break;
         }
     }
@@ -1660,6 +1679,14 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             r.reason = "both sides are equal (in the text's own symbols)" + within;
             return;
         }
+        // `k = g/l`: a definition, used in the rest of its section (definitions.hpp).
+        if (const std::string def = definitions_.defined_at(L.base + L.side->begin); !def.empty()) {
+            r.reason = "a definition: the text's abbreviation $" + def + "$ for the rest of its section";
+            return;
+        }
+        if (a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
+            on_motion(c, i, j, a.value, b.value, tol, r))
+            return;
         std::vector<std::string> unknown, vectors;
         auto describe = [&](const PSide& s, const Prepared& p) {
             for (const FreeName* f : p.vectors) {
@@ -1844,6 +1871,7 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         }
     }
+    if (on_motion(c, i, j, a.value, b.value, tol, r)) return;
     if (has_acceleration(r_ex)) {
         diagnose_euler_lagrange(L, R, r_ex, tol, r);
         return;
