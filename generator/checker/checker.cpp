@@ -1679,12 +1679,9 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             r.reason = "both sides are equal (in the text's own symbols)" + within;
             return;
         }
-        // `k = g/l`: a definition, used in the rest of its section (definitions.hpp).
-        if (const std::string def = definitions_.defined_at(L.base + L.side->begin); !def.empty()) {
-            r.reason = "a definition: the text's abbreviation $" + def + "$ for the rest of its section";
-            return;
-        }
-        if (a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
+        // `k = g/l`: a definition, used in the rest of its section (definitions.hpp), not a line of a motion.
+        const std::string def = definitions_.defined_at(L.base + L.side->begin);
+        if (def.empty() && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
             on_motion(c, i, j, a.value, b.value, tol, r))
             return;
         std::vector<std::string> unknown, vectors;
@@ -1716,6 +1713,7 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
                        ": not a symbol of the model (--map can say what it stands for)";
         else
             r.reason = "vector quantities (" + join(vectors) + ") are not compared";
+        if (!def.empty()) r.reason += "; a definition: the text's abbreviation $" + def + "$ for the rest of its section";
         return;
     }
     // A number the text works out: units to SI, the parameters' values, its printed digits.

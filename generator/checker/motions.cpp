@@ -99,6 +99,10 @@ std::vector<GiNaC::ex> ParticularMotions::text_names(const Reading& rd, const Gi
             continue;
         out.push_back(s);
     }
+    // In the order of their names: the order of GiNaC's terms is not the same from run to run.
+    std::sort(out.begin(), out.end(), [&](const GiNaC::ex& x, const GiNaC::ex& y) {
+        return ctx_.free_name_of(x)->name < ctx_.free_name_of(y)->name;
+    });
     return out;
 }
 
@@ -168,7 +172,7 @@ bool ParticularMotions::check(const GiNaC::ex& a, const GiNaC::ex& b, const std:
         r.verdict = Verdict::Disagrees;
         r.compared_with = "the motion '" + mo->name + "'";
         r.notes.push_back("not an identity; compared " + on_motion);
-        r.difference = cmp.latex(GiNaC::normal(rdiff));
+        r.difference = cmp.latex(GiNaC::normal(rb - ra));  // text − reference: the left side is the reference
         if (free_coordinates(ra) && !cmp.same(rate, 0, tol)) {
             // `\psi = \pi/2 - \Omega`: the left side still moves on the motion, the right does not keep up.
             r.wrong_terms.push_back("the two sides differ by " + m(r.difference) +

@@ -34,7 +34,9 @@ TEST_CASE("motions: a correct derivation on the conical motion agrees, with no f
     }
     CHECK(r.count(Verdict::Agrees) == 9);  // and the two definitions, k and v
     // The definition is an abbreviation for the rest of the section, named where it is used.
-    CHECK(at_line(r, 3).reason == "a definition: the text's abbreviation $k = g/l$ for the rest of its section");
+    CHECK(at_line(r, 3).reason == "unknown symbol $k$ (3:70): not a symbol of the model (--map can say what it "
+                                   "stands for); a definition: the text's abbreviation $k = g/l$ for the rest of "
+                                   "its section");
     CHECK(has_note(at_line(r, 5), "using $k = g/l$ (line 3)"));  // the θ equation, outside any derivative
     const EquationCheck& k = at_line(r, 9);
     CHECK(k.verdict == Verdict::Agrees);
