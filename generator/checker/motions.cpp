@@ -26,6 +26,24 @@ void symbols_of(const GiNaC::ex& e, std::vector<GiNaC::ex>& out) {
     for (std::size_t i = 0; i < e.nops(); ++i) symbols_of(e.op(i), out);
 }
 
+/// Whether e evaluates to a finite real number at some of a few points (every symbol a rational in
+/// (0.5, 1.5)): otherwise a comparison on the motion proves nothing (a root of a negative number, a pole).
+bool evaluable(const GiNaC::ex& e) {
+    std::vector<GiNaC::ex> symbols;
+    symbols_of(e, symbols);
+    for (unsigned seed = 1; seed <= 5; ++seed) {
+        GiNaC::exmap at;
+        for (std::size_t k = 0; k < symbols.size(); ++k)
+            at[symbols[k]] = GiNaC::numeric(int(500 + (seed * 7919u + k * 104729u) % 1000), 1000);
+        try {
+            const GiNaC::ex v = GiNaC::evalf(e.subs(at));
+            if (GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return true;
+        } catch (...) {
+        }
+    }
+    return false;
+}
+
 }  // namespace
 
 GiNaC::ex ParticularMotions::on(const Reading& rd, const GiNaC::ex& e) const {
@@ -79,7 +97,10 @@ ParticularMotions::Reading& ParticularMotions::reading(const Motion& mo, Compari
             const GiNaC::ex el = i < eq_.generalized_forces.size() ? eq_.euler_lagrange[i] - eq_.generalized_forces[i]
                                                                  : eq_.euler_lagrange[i];
             const GiNaC::ex left = on(rd, el);
-            if (!cmp.same(left, 0, 1e-9))
+            if (!evaluable(left))
+                rd.problem = "the Euler–Lagrange equation for " + m(model_.coordinates[i].latex) +
+                             " cannot be evaluated on the motion '" + mo.name + "' (" + rd.conditions + ")";
+            else if (!cmp.same(left, 0, 1e-9))
                 rd.problem = "the motion '" + mo.name + "' (" + rd.conditions +
                              ") does not solve the model's Euler–Lagrange equation for " +
                              m(model_.coordinates[i].latex) + ", which leaves " + m(cmp.latex(left)) + " (not 0) on it";
@@ -143,6 +164,10 @@ bool ParticularMotions::check(const GiNaC::ex& a, const GiNaC::ex& b, const std:
         return true;
     };
     if (cmp.same(ra, rb, tol)) return agree("");
+    if (!evaluable(ra - rb)) {
+        r.notes.push_back("on the motion '" + mo->name + "' it cannot be evaluated: not decided");
+        return false;
+    }
     const std::vector<GiNaC::ex> names = text_names(rd, rdiff);
     auto free_coordinates = [&](const GiNaC::ex& e) {
         for (const Coordinate& q : model_.coordinates)

@@ -87,6 +87,15 @@ TEST_CASE("motions: a motion that does not solve the equations of motion decides
     CHECK(e.reason.find("does not solve the model's Euler–Lagrange equation for $\\theta$") != std::string::npos);
 }
 
+TEST_CASE("motions: a motion that cannot be evaluated decides nothing", "[checker][motions]") {
+    const CheckReport r =
+        eomgen::test::check_text(kConical, "# Imaginary rate\n\n$$ \\dot\\phi^2 \\cos\\theta = -\\frac{g}{l} $$\n");
+    REQUIRE(r.equations.size() == 1);
+    INFO(eomgen::test::describe(r.equations[0]));
+    CHECK(r.equations[0].verdict == Verdict::NotComparable);
+    CHECK(r.equations[0].reason.find("cannot be evaluated on the motion 'imaginary'") != std::string::npos);
+}
+
 TEST_CASE("motions: without [[motions]] a line of the motion is taken for the energy integral", "[checker][motions]") {
     // The same line against the model without the motion is compared with what it looks closest to, the
     // conservation of h, and disagrees; with the motion it agrees on it.
