@@ -110,6 +110,19 @@ TEST_CASE("motions: without [[motions]] a line of the motion is taken for the en
     CHECK(with.equations[0].compared_with == "the motion 'conical'");
 }
 
+TEST_CASE("definitions: a definition of a name the model knows that contradicts it disagrees at its line",
+          "[checker][definitions]") {
+    // p_φ is eomgen's momentum: "write p_φ = m l² φ̇" is a claim about it (sin²θ is missing), not a new name.
+    const CheckReport r = eomgen::test::check_text(
+        kConical, "# Momentum\n\nWrite $p_{\\phi} = m l^2 \\dot\\phi$; then\n\n$$ \\dot\\phi^2\\cos\\theta = \\frac{g}{l} $$\n");
+    const EquationCheck& def = at_line(r, 3);
+    INFO(eomgen::test::describe(def));
+    CHECK(def.verdict == Verdict::Disagrees);
+    CHECK(def.compared_with == "$p_{\\phi}$");  // eomgen's p_φ
+    CHECK(def.corrected == "p_{\\phi} = m l^{2} \\dot{\\phi} \\sin^{2} \\theta");
+    CHECK(at_line(r, 5).verdict == Verdict::Agrees);  // the line after it, on the conical motion
+}
+
 TEST_CASE("definitions: an abbreviation holds for the rest of its section only", "[checker][definitions]") {
     const CheckReport r = eomgen::test::check_text(
         "tests/checker/models/spherical_pendulum.toml",
