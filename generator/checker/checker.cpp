@@ -1123,8 +1123,11 @@ std::string Checker::pair_kind(const GiNaC::ex& t, const GiNaC::ex& u, double to
         for (const GiNaC::ex& f : trig) {
             const bool is_sin = GiNaC::is_the_function<GiNaC::sin_SERIAL>(f);
             const GiNaC::ex other = is_sin ? GiNaC::cos(f.op(0)) : GiNaC::sin(f.op(0));
-            swaps.push_back({t.subs(f == other), is_sin ? m("\\sin") + " where " + m("\\cos") + " belongs"
-                                                        : m("\\cos") + " where " + m("\\sin") + " belongs"});
+            try {  // a swap that divides by zero (1/(I_3 - I) with I for I_3) is no candidate
+                swaps.push_back({t.subs(f == other), is_sin ? m("\\sin") + " where " + m("\\cos") + " belongs"
+                                                            : m("\\cos") + " where " + m("\\sin") + " belongs"});
+            } catch (const std::exception&) {
+            }
         }
     }
     for (const auto& [x, what] : swaps) {
@@ -1144,7 +1147,13 @@ std::string Checker::pair_kind(const GiNaC::ex& t, const GiNaC::ex& u, double to
     for (const auto& [a, la] : names)
         for (const auto& [b, lb] : names) {
             if (a.is_equal(b) || !t.has(a)) continue;
-            if (same_signature(signature(t.subs(a == b)), su, tol)) {
+            GiNaC::ex swapped;
+            try {
+                swapped = t.subs(a == b);
+            } catch (const std::exception&) {
+                continue;
+            }
+            if (same_signature(signature(swapped), su, tol)) {
                 *score = 2;
                 return m(la) + " where " + m(lb) + " belongs";
             }

@@ -206,7 +206,9 @@ bool ParticularMotions::check(const GiNaC::ex& a, const GiNaC::ex& b, const std:
             return true;
         }
         try {  // the diagnosis by terms: what GiNaC throws on a strange form leaves just the difference
-            r.wrong_terms = cmp.wrong_terms(rb, ra, tol);
+            // Each side as one fraction: the substitutions leave sums in denominators that the term-by-term
+            // diagnosis would split into terms the text never wrote.
+            r.wrong_terms = cmp.wrong_terms(GiNaC::normal(rb), GiNaC::normal(ra), tol);
         } catch (const std::exception&) {
             r.wrong_terms.clear();
         }
