@@ -10,6 +10,7 @@
 #include "checker/hamiltonian_check.hpp"
 #include "checker/labels.hpp"
 #include "checker/latex_normalize.hpp"
+#include "checker/motions.hpp"
 #include "checker/latex_parser.hpp"
 #include "checker/normal_modes_check.hpp"
 #include "checker/printed_numbers.hpp"
@@ -472,6 +473,17 @@ class Checker : public Comparisons {
     std::size_t current_offset_ = 0;  ///< file offset of the side being prepared (definitions before it apply)
     void collect_definitions(const std::vector<FullChain>& chains);
     HamiltonianReading hamilton_;  ///< p_q as variables, H(q, p, t) inside ∂
+    ParticularMotions motions_{model_, eq_, ctx_};  ///< [[motions]]: lines that hold on one motion
+    /// a = b (link j of c) on the model's particular motion for its section (motions.hpp).
+    bool on_motion(const FullChain& c, std::size_t i, std::size_t j, const GiNaC::ex& a, const GiNaC::ex& b,
+                   double tol, EquationCheck& r) {
+        if (motions_.empty()) return false;
+        std::vector<std::string> titles;
+        const std::size_t at = c.relation_offsets[j - 1];
+        for (const Section& s : d_.sections)
+            if (s.begin <= at && at < s.end) titles.push_back(s.title);
+        return motions_.check(a, b, c.sides[i].side->source, titles, *this, tol, r);
+    }
     NormalModesCheck modes_;       ///< ω² and secular equations against the model's normal modes
     ParameterValues parameter_values_;  ///< for the numbers the text works out
     int velocity_h_line_ = 0;       ///< the first line where the text writes H in velocities (0: none)
@@ -696,6 +708,10 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
             p.notes.push_back(n);
             p.from_definition = true;
         }
+        // The text's abbreviations ("with \Omega = ..."), everywhere in the rest of their section.
+        definitions_.take_abbreviations();
+        v = definitions_.abbreviate(v, current_offset_);
+        for (const std::string& n : definitions_.take_abbreviations()) p.notes.push_back(n);
         if (H_inside && !hamilton_.has_hamiltonian(v)) p.has_truth_label = p.has_momenta = true;
         if (hamilton_.has_hamiltonian(v))  // H outside a derivative, inside an expression: a letter (a height)
             v = v.subs(ctx_.names.at("H") == ctx_.free_symbol("H", NameKind::Unknown));
@@ -1107,8 +1123,11 @@ std::string Checker::pair_kind(const GiNaC::ex& t, const GiNaC::ex& u, double to
         for (const GiNaC::ex& f : trig) {
             const bool is_sin = GiNaC::is_the_function<GiNaC::sin_SERIAL>(f);
             const GiNaC::ex other = is_sin ? GiNaC::cos(f.op(0)) : GiNaC::sin(f.op(0));
-            swaps.push_back({t.subs(f == other), is_sin ? m("\\sin") + " where " + m("\\cos") + " belongs"
-                                                        : m("\\cos") + " where " + m("\\sin") + " belongs"});
+            try {  // a swap that divides by zero (1/(I_3 - I) with I for I_3) is no candidate
+                swaps.push_back({t.subs(f == other), is_sin ? m("\\sin") + " where " + m("\\cos") + " belongs"
+                                                            : m("\\cos") + " where " + m("\\sin") + " belongs"});
+            } catch (const std::exception&) {
+            }
         }
     }
     for (const auto& [x, what] : swaps) {
@@ -1128,7 +1147,13 @@ std::string Checker::pair_kind(const GiNaC::ex& t, const GiNaC::ex& u, double to
     for (const auto& [a, la] : names)
         for (const auto& [b, lb] : names) {
             if (a.is_equal(b) || !t.has(a)) continue;
-            if (same_signature(signature(t.subs(a == b)), su, tol)) {
+            GiNaC::ex swapped;
+            try {
+                swapped = t.subs(a == b);
+            } catch (const std::exception&) {
+                continue;
+            }
+            if (same_signature(signature(swapped), su, tol)) {
                 *score = 2;
                 return m(la) + " where " + m(lb) + " belongs";
             }
@@ -1293,7 +1318,10 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
             const Prepared p = prepare(c.sides[k]);
             if (!p.comparable() || !p.units.empty() || p.value.has(head)) continue;
             const std::size_t at = c.sides[k].base + c.sides[k].side->begin;
-            definitions_.add(head, f->name, p.value, at, d_.position(at).line);
+            const std::size_t until =
+                c.section >= 0 ? d_.sections[std::size_t(c.section)].end : std::string::npos;
+            definitions_.add(head, f->name, p.value, at, d_.position(at).line, until, c.sides[k].side->source,
+                             c.sides[0].base + c.sides[0].side->begin);
             break;
         }
     }
@@ -1660,6 +1688,11 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             r.reason = "both sides are equal (in the text's own symbols)" + within;
             return;
         }
+        // `k = g/l`: a definition, used in the rest of its section (definitions.hpp), not a line of a motion.
+        const std::string def = definitions_.defined_at(L.base + L.side->begin);
+        if (def.empty() && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
+            on_motion(c, i, j, a.value, b.value, tol, r))
+            return;
         std::vector<std::string> unknown, vectors;
         auto describe = [&](const PSide& s, const Prepared& p) {
             for (const FreeName* f : p.vectors) {
@@ -1689,6 +1722,7 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
                        ": not a symbol of the model (--map can say what it stands for)";
         else
             r.reason = "vector quantities (" + join(vectors) + ") are not compared";
+        if (!def.empty()) r.reason += "; a definition: the text's abbreviation $" + def + "$ for the rest of its section";
         return;
     }
     // A number the text works out: units to SI, the parameters' values, its printed digits.
@@ -1844,6 +1878,7 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         }
     }
+    if (on_motion(c, i, j, a.value, b.value, tol, r)) return;
     if (has_acceleration(r_ex)) {
         diagnose_euler_lagrange(L, R, r_ex, tol, r);
         return;

@@ -8,8 +8,56 @@
 namespace eomgen::checker {
 
 void TextDefinitions::add(const GiNaC::ex& symbol, const std::string& name, const GiNaC::ex& value,
-                          std::size_t offset, int line) {
-    defs_[symbol].push_back({name, value, offset, line});
+                          std::size_t offset, int line, std::size_t until, const std::string& source,
+                          std::size_t head) {
+    // A number (`\phi = 0`, `y' = 0`) is a condition or a particular value rather than an abbreviation: it is
+    // used inside derivatives only.
+    const bool abbreviation = !GiNaC::is_a<GiNaC::numeric>(value);
+    defs_[symbol].push_back({name, value, offset, line, abbreviation ? until : offset, source});
+    if (head != std::string::npos && abbreviation)
+        heads_.push_back({head, name + " = " + (source.empty() ? name : source)});
+}
+
+const TextDefinitions::Definition* TextDefinitions::in_force(const std::vector<Definition>& list, std::size_t at,
+                                                            bool in_section) const {
+    const Definition* best = nullptr;
+    for (const Definition& d : list)
+        if (d.offset < at && (!in_section || at < d.until) && (!best || d.offset > best->offset)) best = &d;
+    return best;
+}
+
+GiNaC::ex TextDefinitions::abbreviate(const GiNaC::ex& e, std::size_t at) const {
+    GiNaC::ex x = e;
+    // `K = ...` again: a new definition of K, not a claim about the old one.
+    if (!defined_at(at).empty()) return x;
+    for (std::size_t round = 0; round <= defs_.size(); ++round) {  // definitions may use earlier ones
+        GiNaC::exmap subs;
+        for (const auto& [symbol, list] : defs_) {
+            if (!x.has(symbol)) continue;
+            const Definition* d = in_force(list, at, true);
+            if (!d) continue;
+            subs[symbol] = d->value;
+            const std::string note = "using $" + d->name + " = " + (d->source.empty() ? d->name : d->source) +
+                                     "$ (line " + std::to_string(d->line) + ")";
+            if (std::find(abbreviations_.begin(), abbreviations_.end(), note) == abbreviations_.end())
+                abbreviations_.push_back(note);
+        }
+        if (subs.empty()) break;
+        x = x.subs(subs);
+    }
+    return x;
+}
+
+std::string TextDefinitions::defined_at(std::size_t head) const {
+    for (const auto& [offset, shown] : heads_)
+        if (offset == head) return shown;
+    return "";
+}
+
+std::vector<std::string> TextDefinitions::take_abbreviations() const {
+    std::vector<std::string> out;
+    out.swap(abbreviations_);
+    return out;
 }
 
 GiNaC::ex TextDefinitions::expand(const GiNaC::ex& operand, std::size_t at) const {
@@ -20,9 +68,7 @@ GiNaC::ex TextDefinitions::expand(const GiNaC::ex& operand, std::size_t at) cons
         GiNaC::exmap subs;
         for (const auto& [symbol, list] : defs_) {
             if (!e.has(symbol)) continue;
-            const Definition* best = nullptr;
-            for (const Definition& d : list)
-                if (d.offset < at && (!best || d.offset > best->offset)) best = &d;
+            const Definition* best = in_force(list, at, false);
             if (!best) continue;
             subs[symbol] = best->value;
             const std::string note =

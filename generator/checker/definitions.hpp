@@ -11,6 +11,7 @@
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eomgen::checker {
@@ -32,8 +33,25 @@ class UndefinedInDerivative : public std::runtime_error {
 class TextDefinitions {
   public:
     /// Records that `symbol` (the free name `name`) is `value` from file offset `offset` (line `line`) on.
+    /// Records that `symbol` (the free name `name`) is `value` from file offset `offset` (line `line`) on;
+    /// as an abbreviation everywhere (abbreviate()) up to `until`, the end of its section. `source` is the
+    /// value as the text writes it, for the notes.
     void add(const GiNaC::ex& symbol, const std::string& name, const GiNaC::ex& value, std::size_t offset,
-             int line);
+             int line, std::size_t until = std::string::npos, const std::string& source = "",
+             std::size_t head = std::string::npos);
+
+    /**
+     * `e` (a side at file offset `at`, outside derivatives too) with the names defined before it in its
+     * section replaced by their definitions: "with $\Omega = \omega_3 (I_3 - I)/I$" makes Ω an abbreviation
+     * for the rest of the section. Records a note for each definition used (see take_abbreviations()).
+     */
+    GiNaC::ex abbreviate(const GiNaC::ex& e, std::size_t at) const;
+
+    /// "using $\Omega = ...$ (line 15)", for each definition abbreviate() used since the last call.
+    std::vector<std::string> take_abbreviations() const;
+
+    /// "k = g/l" when the side at file offset `head` is a name the text defines there, else "".
+    std::string defined_at(std::size_t head) const;
 
     /// The operand of a derivative at file offset `at`, with the defined names in it replaced by their
     /// definitions (which may use earlier ones). Records the definitions used (see take_used()).
@@ -61,9 +79,16 @@ class TextDefinitions {
         GiNaC::ex value;
         std::size_t offset = 0;
         int line = 0;
+        std::size_t until = std::string::npos;
+        std::string source;
     };
+    /// The definition of `symbol` in force at `at` (within its section when `in_section`), or nullptr.
+    const Definition* in_force(const std::vector<Definition>& list, std::size_t at, bool in_section) const;
     std::map<GiNaC::ex, std::vector<Definition>, GiNaC::ex_is_less> defs_;
     mutable std::vector<std::string> used_;
+    mutable std::vector<std::string> abbreviations_;
+    /// The defined names where they are defined (never abbreviated): file offset, "k = g/l".
+    std::vector<std::pair<std::size_t, std::string>> heads_;
 };
 
 }  // namespace eomgen::checker

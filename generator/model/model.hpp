@@ -128,6 +128,31 @@ struct DeclaredOutput {
     SourceLocation where;     ///< of the name (its key in [outputs])
 };
 
+/// One condition of a particular motion ([[motions]]): a coordinate, or its velocity, as a function of the
+/// motion's constants, the parameters, the coordinates and t ("theta' = 0", "psi' = -Omega").
+struct MotionCondition {
+    std::size_t coordinate = 0;  ///< index into Model::coordinates
+    bool velocity = false;       ///< q' = value (else q = value)
+    SourceExpression value;      ///< the right side
+    std::string text;            ///< the condition as written
+};
+
+/// A particular motion a derivation may speak of ([[motions]]: steady precession, an equilibrium, a circular
+/// orbit): `eomgen check` compares the lines that are not identities on it (docs/checker.md).
+struct Motion {
+    std::string name;
+    std::string description;
+    std::string section;  ///< "" (every section) or a case-insensitive substring of the headings it applies to
+    /// Constants of the motion the conditions use (`Omega`): name, LaTeX, symbol.
+    struct Constant {
+        std::string name, latex;
+        GiNaC::symbol symbol;
+    };
+    std::vector<Constant> constants;
+    std::vector<MotionCondition> conditions;
+    SourceLocation where;  ///< of the name
+};
+
 struct Model {
     std::string name;         ///< identifier: namespace of the generated code, file name
     std::string title;        ///< human title
@@ -148,6 +173,7 @@ struct Model {
     std::array<GiNaC::ex, 3> gravity{0, 0, 0};  ///< [gravity] acceleration vector g, space axes
     std::vector<Result> results;                 ///< [[results]]: declared closed forms
     std::vector<DeclaredOutput> outputs;         ///< [outputs]: quantities recorded beside the state, in file order
+    std::vector<Motion> motions;                 ///< [[motions]]: particular motions, for `eomgen check`
 
     /// Baumgarte stabilisation of the constraints, A q̈ = γ − 2α(A q̇ + b) − β² g (0, 0: none).
     double baumgarte_alpha = 0.0;

@@ -269,7 +269,7 @@ class Loader {
         check_keys(root,
                    {"name", "title", "source", "description", "coordinates", "parameters", "lagrangian",
                     "constraints", "forces", "stabilization", "bodies", "gravity", "springs", "results",
-                    "outputs"},
+                    "outputs", "motions"},
                    "at the top level");
 
         std::vector<Declaration> declarations;
@@ -293,6 +293,8 @@ class Loader {
         const std::vector<Entry> constraints = entries(root, "constraints", {"name", "kind", "expr"}, false);
         const std::vector<Entry> results =
             entries(root, "results", {"name", "latex", "expr", "description", "equals", "on_constraints"}, false);
+        const std::vector<Entry> motions =
+            entries(root, "motions", {"name", "description", "section", "constants", "conditions"}, false);
         const std::vector<Entry> bodies =
             entries(root, "bodies",
                     {"name", "mass", "shape", "dimensions", "inertia", "position", "orientation", "sequence",
@@ -354,6 +356,7 @@ class Loader {
         read_stabilization(root, model);
         read_results(results, symbols, model);
         read_outputs(outputs, symbols, model);
+        read_motions(motions, symbols, model);
         return model;
     }
 
@@ -795,6 +798,13 @@ class Loader {
         }
     }
 
+    /// An entry's name, not empty and not one of `seen` (name → line), which it joins; `what`: "result".
+    void unique_name(const Entry& e, const std::string& what, std::map<std::string, int>& seen) const {
+        if (e.name.empty()) fail(e.where, "a " + what + "'s name may not be empty");
+        if (const auto [it, inserted] = seen.emplace(e.name, e.where.line); !inserted)
+            fail(e.where, "duplicate " + what + " '" + e.name + "': already on line " + std::to_string(it->second));
+    }
+
     /// [[results]]: name, latex, expr, description, equals, on_constraints. `equals` is checked for its form
     /// and its names here; whether the result holds is checked by the mechanics stage (verify_results).
     void read_results(const std::vector<Entry>& entries, const SymbolTable& symbols, Model& model) const {
@@ -804,9 +814,7 @@ class Loader {
             Result r;
             r.name = e.name;
             r.where = e.where;
-            if (e.name.empty()) fail(e.where, "a result's name may not be empty");
-            if (const auto [it, inserted] = seen.emplace(e.name, e.where.line); !inserted)
-                fail(e.where, "duplicate result '" + e.name + "': already on line " + std::to_string(it->second));
+            unique_name(e, "result", seen);
             r.latex = latex_field(t).value_or(default_latex(e.name));
             r.description = optional_string(t, "description").value_or("");
             const toml::node* expr = t.get("expr");
@@ -830,6 +838,82 @@ class Loader {
                 fail(src_.at(*t.get("on_constraints")), "'on_constraints' goes with 'equals'");
             }
             model.results.push_back(std::move(r));
+        }
+    }
+
+    /// [[motions]]: name, description, section, constants (names the conditions may use), conditions
+    /// ("theta' = 0", "psi' = -Omega": a coordinate or its velocity, each at most once, = an expression in the
+    /// constants, parameters, coordinates and t).
+    void read_motions(const std::vector<Entry>& entries, const SymbolTable& model_symbols, Model& model) const {
+        std::map<std::string, int> seen;
+        for (const Entry& e : entries) {
+            const toml::table& t = *e.table;
+            Motion m;
+            m.name = e.name;
+            m.where = e.where;
+            unique_name(e, "motion", seen);
+            m.description = optional_string(t, "description").value_or("");
+            m.section = optional_string(t, "section").value_or("");
+            SymbolTable symbols = model_symbols;
+            if (const toml::node* cs = t.get("constants")) {
+                const toml::array* list = cs->as_array();
+                if (!list) fail(src_.at(*cs), "'constants' must be an array of names, not " + type_name(*cs));
+                for (const toml::node& c : *list) {
+                    const std::string name = string_value(c, "constants");
+                    if (const std::string why = name_problem(name); !why.empty())
+                        fail(string_start(c), "the constant '" + name + "' of motion '" + e.name + "': " + why);
+                    if (symbols.symbols.count(name))
+                        fail(string_start(c), "the constant '" + name + "' of motion '" + e.name +
+                                                  "' is already a name of the model");
+                    const std::string latex = default_latex(name);
+                    m.constants.push_back({name, latex, GiNaC::symbol(name, latex)});
+                    symbols.symbols[name] = m.constants.back().symbol;
+                }
+            }
+            const toml::node* cn = t.get("conditions");
+            if (!cn) fail(src_.at(t), "missing key 'conditions' in [[motions]] (such as \"theta' = 0\")");
+            const toml::array* list = cn->as_array();
+            if (!list || list->empty())
+                fail(src_.at(*cn), "'conditions' must be a non-empty array of strings such as \"theta' = 0\"");
+            std::map<std::size_t, std::string> given;
+            for (const toml::node& c : *list) {
+                const std::string text = string_value(c, "conditions");
+                const std::size_t eq = text.find('=');
+                if (eq == std::string::npos || text.find('=', eq + 1) != std::string::npos)
+                    fail(string_start(c), "a condition is one equation 'coordinate = value' or "
+                                          "'coordinate' = value', such as \"theta' = 0\"");
+                const std::size_t lb = text.find_first_not_of(" \t");
+                std::size_t le = text.find_last_not_of(" \t", eq - 1);
+                if (lb >= eq || le == std::string::npos) fail(string_start(c), "a condition needs a left side");
+                std::string lhs = text.substr(lb, le - lb + 1);
+                MotionCondition mc;
+                mc.text = text;
+                if (!lhs.empty() && lhs.back() == '\'') {
+                    mc.velocity = true;
+                    lhs.pop_back();
+                }
+                const auto coord = std::find_if(model.coordinates.begin(), model.coordinates.end(),
+                                                [&](const Coordinate& q) { return q.name == lhs; });
+                if (coord == model.coordinates.end())
+                    fail(inside_string(c, lb), "the left side of a condition is a coordinate or its velocity "
+                                               "(such as theta or theta'), not '" + text.substr(lb, le - lb + 1) + "'");
+                mc.coordinate = std::size_t(coord - model.coordinates.begin());
+                if (const auto [it, inserted] = given.emplace(mc.coordinate, text); !inserted)
+                    fail(inside_string(c, lb), "'" + lhs + "' is already given by the condition \"" + it->second +
+                                                   "\" of motion '" + e.name + "'");
+                ParseOptions options;
+                options.forbid_velocities = "a condition's value is in the constants, parameters, coordinates "
+                                            "and t (no velocities)";
+                try {
+                    mc.value.expr = parse_expression(text.substr(eq + 1), symbols, options);
+                } catch (const ExpressionError& err) {
+                    fail(inside_string(c, eq + 1 + err.offset()), err.message());
+                }
+                mc.value.text = text.substr(eq + 1);
+                mc.value.where = inside_string(c, eq + 1);
+                m.conditions.push_back(std::move(mc));
+            }
+            model.motions.push_back(std::move(m));
         }
     }
 

@@ -43,6 +43,13 @@ inline std::string describe(const checker::EquationCheck& e) {
     return s;
 }
 
+/// Whether one of the verdict's notes contains `part`.
+inline bool has_note(const checker::EquationCheck& e, const std::string& part) {
+    for (const std::string& n : e.notes)
+        if (n.find(part) != std::string::npos) return true;
+    return false;
+}
+
 /// The text of tests/checker/fixtures/`name`.
 inline std::string fixture(const std::string& name) {
     std::ifstream in(std::string(EOMGEN_SOURCE_DIR) + "/tests/checker/fixtures/" + name, std::ios::binary);
