@@ -1,0 +1,1399 @@
+/** @file linear_algebra.cpp  A text's vectors and matrices: arrays, tuples, products, determinants and
+ * eigen-equations, compared entry by entry with the model's quantities. */
+#include "checker/linear_algebra.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <set>
+#include <stdexcept>
+
+namespace eomgen::checker {
+
+using GiNaC::ex;
+
+struct LinearAlgebra::Factor {
+    enum Kind { Scalar, Array, Tuple, Name, Group, Det, DetArray } kind = Scalar;
+    enum Op { Juxtapose, Dot, Cross } op = Juxtapose;  ///< the product with the factor before it
+    std::size_t begin = 0, end = 0;                    ///< the factor in the side's source
+    std::size_t inner_begin = 0, inner_end = 0;        ///< Group, Det: what it holds
+    std::string key;                                   ///< Name: `n_{1}`, `I`, `1`
+    std::vector<std::vector<std::pair<std::size_t, std::size_t>>> cells;  ///< Array, Tuple, DetArray
+};
+
+struct LinearAlgebra::Term {
+    bool negative = false;
+    std::vector<Factor> factors;
+};
+
+struct LinearAlgebra::Value {
+    GiNaC::matrix m{1, 1};
+    bool scalar = true;
+};
+
+namespace {
+
+using Factor = LinearAlgebra::Factor;
+using Term = LinearAlgebra::Term;
+using Cells = std::vector<std::vector<std::pair<std::size_t, std::size_t>>>;
+
+const char* const kVectorCommands[] = {"\\mathbf", "\\boldsymbol", "\\bm", "\\vec", "\\underline", "\\overrightarrow"};
+const char* const kMatrixEnvironments[] = {"array", "pmatrix", "bmatrix", "Bmatrix", "matrix", "smallmatrix",
+                                           "vmatrix", "Vmatrix"};
+
+std::string dollars(const std::string& latex) { return "$" + latex + "$"; }
+
+bool starts_command(std::string_view s, std::size_t i, std::string_view cmd) {
+    if (s.substr(i, cmd.size()) != cmd) return false;
+    const std::size_t k = i + cmd.size();
+    return k >= s.size() || !std::isalpha(static_cast<unsigned char>(s[k]));
+}
+
+bool blank(std::string_view s) {
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const char c = s[i];
+        if (std::isspace(static_cast<unsigned char>(c)) || c == '.' || c == ',' || c == '~') continue;
+        if (c == '\\' && i + 1 < s.size() && std::string_view(",;:! ").find(s[i + 1]) != std::string_view::npos) {
+            ++i;
+            continue;
+        }
+        if (starts_command(s, i, "\\quad")) {
+            i += 4;
+            continue;
+        }
+        if (starts_command(s, i, "\\qquad")) {
+            i += 5;
+            continue;
+        }
+        return false;
+    }
+    return true;
+}
+
+std::pair<std::size_t, std::size_t> trimmed(std::string_view s, std::size_t b, std::size_t e) {
+    while (b < e && std::isspace(static_cast<unsigned char>(s[b]))) ++b;
+    while (e > b && std::isspace(static_cast<unsigned char>(s[e - 1]))) --e;
+    return {b, e};
+}
+
+/// The end of the bracket group opening at s[i] ('(', '[' or '{'), past its close; npos when it does not close.
+std::size_t group_end(std::string_view s, std::size_t i) {
+    int depth = 0;
+    for (std::size_t k = i; k < s.size(); ++k) {
+        const char c = s[k];
+        if (c == '\\' && k + 1 < s.size() && (s[k + 1] == '{' || s[k + 1] == '}')) {
+            ++k;
+            continue;
+        }
+        if (c == '(' || c == '[' || c == '{') ++depth;
+        if (c == ')' || c == ']' || c == '}') {
+            if (--depth == 0) return k + 1;
+        }
+    }
+    return std::string_view::npos;
+}
+
+/// The environment's name when s[i] starts `\begin{name}`, else "".
+std::string environment_at(std::string_view s, std::size_t i) {
+    if (s.substr(i, 7) != "\\begin{") return "";
+    const std::size_t close = s.find('}', i + 7);
+    if (close == std::string_view::npos) return "";
+    return std::string(s.substr(i + 7, close - i - 7));
+}
+
+/// Past the `\end{...}` matching the `\begin` at s[i]; npos when it does not close.
+std::size_t environment_end(std::string_view s, std::size_t i) {
+    int depth = 0;
+    for (std::size_t k = i; k < s.size(); ++k) {
+        if (s.substr(k, 7) == "\\begin{") ++depth;
+        if (s.substr(k, 5) == "\\end{") {
+            if (--depth == 0) {
+                const std::size_t close = s.find('}', k);
+                return close == std::string_view::npos ? close : close + 1;
+            }
+        }
+    }
+    return std::string_view::npos;
+}
+
+bool is_matrix_environment(const std::string& env) {
+    return std::find(std::begin(kMatrixEnvironments), std::end(kMatrixEnvironments), env) != std::end(kMatrixEnvironments);
+}
+
+/// The cells of the matrix environment s[b, e) (`\begin{env}` … `\end{env}`), by rows.
+Cells environment_cells(std::string_view s, std::size_t b, std::size_t e) {
+    const std::string env = environment_at(s, b);
+    std::size_t body = s.find('}', b) + 1;
+    if (env == "array" && body < e && s[body] == '{') body = group_end(s, body);
+    const std::size_t end = s.rfind("\\end{", e);
+    Cells rows(1);
+    std::size_t start = body;
+    int depth = 0;
+    for (std::size_t k = body; k < end; ++k) {
+        const char c = s[k];
+        if (s.substr(k, 7) == "\\begin{") ++depth;
+        if (s.substr(k, 5) == "\\end{") --depth;
+        if (c == '{') ++depth;
+        if (c == '}') --depth;
+        const bool row_break = depth == 0 && c == '\\' && k + 1 < end && s[k + 1] == '\\';
+        if (row_break || (depth == 0 && c == '&')) {
+            rows.back().push_back(trimmed(s, start, k));
+            if (row_break) rows.emplace_back();
+            k += row_break ? 1 : 0;
+            start = k + 1;
+        }
+    }
+    rows.back().push_back(trimmed(s, start, end));
+    if (rows.size() > 1 && rows.back().size() == 1 && rows.back()[0].first == rows.back()[0].second) rows.pop_back();
+    return rows;
+}
+
+/// The top-level commas of s[b, e) split it: a tuple's entries (one piece when there is no comma).
+std::vector<std::pair<std::size_t, std::size_t>> comma_pieces(std::string_view s, std::size_t b, std::size_t e) {
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    int depth = 0;
+    std::size_t start = b;
+    for (std::size_t k = b; k < e; ++k) {
+        const char c = s[k];
+        if (c == '\\' && k + 1 < e && (s[k + 1] == '{' || s[k + 1] == '}')) {
+            ++k;
+            continue;
+        }
+        if (s.substr(k, 7) == "\\begin{") ++depth;
+        if (s.substr(k, 5) == "\\end{") --depth;
+        if (c == '(' || c == '[' || c == '{') ++depth;
+        if (c == ')' || c == ']' || c == '}') --depth;
+        if (depth == 0 && c == ',') {
+            out.push_back(trimmed(s, start, k));
+            start = k + 1;
+        }
+    }
+    out.push_back(trimmed(s, start, e));
+    return out;
+}
+
+bool mentions_array(std::string_view s) {
+    if (s.find("\\begin{") != std::string_view::npos || s.find("\\det") != std::string_view::npos ||
+        s.find("operatorname{det}") != std::string_view::npos)
+        return true;
+    for (const char* c : kVectorCommands)
+        for (std::size_t k = s.find(c); k != std::string_view::npos; k = s.find(c, k + 1))
+            if (starts_command(s, k, c)) return true;
+    return false;
+}
+
+/// The letter inside vector decorations: `\underline{\mathrm{n}}` → "n".
+std::string undecorated(std::string_view arg) {
+    std::string s(arg);
+    for (bool changed = true; changed;) {
+        changed = false;
+        const auto t = trimmed(s, 0, s.size());
+        s = s.substr(t.first, t.second - t.first);
+        if (s.size() >= 2 && s.front() == '{' && group_end(s, 0) == s.size()) {
+            s = s.substr(1, s.size() - 2);
+            changed = true;
+            continue;
+        }
+        for (const char* c : {"\\mathbf", "\\boldsymbol", "\\bm", "\\vec", "\\underline", "\\overrightarrow", "\\mathrm",
+                              "\\mathit", "\\text", "\\mathsf"}) {
+            const std::string cmd = c;
+            if (s.rfind(cmd, 0) != 0) continue;
+            std::size_t k = cmd.size();
+            while (k < s.size() && s[k] == ' ') ++k;
+            if (k < s.size() && s[k] == '{') {
+                const std::size_t e = group_end(s, k);
+                if (e == s.size()) {
+                    s = s.substr(k + 1, e - k - 2);
+                    changed = true;
+                }
+            } else if (k < s.size() && k > cmd.size()) {
+                s = s.substr(k);
+                changed = true;
+            }
+            if (changed) break;
+        }
+    }
+    return s;
+}
+
+/// Splits `n_{1x}` into its vector `n_{1}` and the component 0, 1, 2 (x, y, z); false when it is no component.
+bool component_of(const std::string& name, std::string* key, int* index) {
+    const std::size_t u = name.find("_{");
+    if (u == std::string::npos || u == 0 || name.back() != '}') return false;
+    const std::string sub = name.substr(u + 2, name.size() - u - 3);
+    if (sub.empty()) return false;
+    const char c = sub.back();
+    if (c != 'x' && c != 'y' && c != 'z') return false;
+    std::string rest = sub.substr(0, sub.size() - 1);
+    while (!rest.empty() && rest.back() == ' ') rest.pop_back();
+    const std::string base = name.substr(0, u);
+    if (rest.empty()) {
+        *key = base;
+    } else {
+        *key = canonical_name(base + "_{" + rest + "}");
+        if (key->empty()) *key = base + "_{" + rest + "}";
+    }
+    *index = c - 'x';
+    return true;
+}
+
+/// Scans s[b, e) into terms; false with `why` when it cannot be read so.
+bool scan(std::string_view s, std::size_t b, std::size_t e, std::vector<Term>& terms, std::string* why);
+
+/// One factor starting at s[i] that is not scalar text, or false (i unchanged).
+bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Factor& f, std::string* why) {
+    const std::size_t start = i;
+    f = Factor{};
+    f.begin = start;
+    // \left<d> … \right<d>
+    if (starts_command(s, i, "\\left")) {
+        std::size_t k = i + 5;
+        while (k < e && s[k] == ' ') ++k;
+        std::string open;
+        if (k < e && s[k] == '\\') {
+            std::size_t w = k + 1;
+            while (w < e && std::isalpha(static_cast<unsigned char>(s[w]))) ++w;
+            if (w == k + 1) ++w;
+            open = std::string(s.substr(k, w - k));
+            k = w;
+        } else if (k < e) {
+            open = std::string(1, s[k++]);
+        }
+        int depth = 1;
+        std::size_t r = k;
+        for (; r < e; ++r) {
+            if (starts_command(s, r, "\\left")) ++depth;
+            if (starts_command(s, r, "\\right") && --depth == 0) break;
+        }
+        if (r >= e) return false;
+        std::size_t after = r + 6;
+        while (after < e && s[after] == ' ') ++after;
+        if (after < e && s[after] == '\\') {
+            std::size_t w = after + 1;
+            while (w < e && std::isalpha(static_cast<unsigned char>(s[w]))) ++w;
+            if (w == after + 1) ++w;
+            after = w;
+        } else if (after < e) {
+            ++after;
+        }
+        const auto inner = trimmed(s, k, r);
+        const bool bars = open == "|" || open == "\\vert" || open == "\\lvert" || open == "\\|";
+        const std::string env = environment_at(s, inner.first);
+        if (is_matrix_environment(env) && environment_end(s, inner.first) == inner.second) {
+            f.kind = bars ? Factor::DetArray : Factor::Array;
+            f.cells = environment_cells(s, inner.first, inner.second);
+        } else if (!bars && comma_pieces(s, inner.first, inner.second).size() > 1) {
+            f.kind = Factor::Tuple;
+            for (const auto& p : comma_pieces(s, inner.first, inner.second)) f.cells.push_back({p});
+        } else if (!bars && mentions_array(s.substr(inner.first, inner.second - inner.first))) {
+            f.kind = Factor::Group;
+            f.inner_begin = inner.first;
+            f.inner_end = inner.second;
+        } else {
+            return false;
+        }
+        i = after;
+        f.end = after;
+        return true;
+    }
+    if (s[i] == '(' || s[i] == '[' || s[i] == '{') {
+        const std::size_t end = group_end(s, i);
+        if (end == std::string_view::npos || end > e) return false;
+        const auto inner = trimmed(s, i + 1, end - 1);
+        const std::string env = environment_at(s, inner.first);
+        if (is_matrix_environment(env) && environment_end(s, inner.first) == inner.second) {
+            f.kind = Factor::Array;
+            f.cells = environment_cells(s, inner.first, inner.second);
+        } else if (s[i] != '{' && comma_pieces(s, inner.first, inner.second).size() > 1) {
+            f.kind = Factor::Tuple;
+            for (const auto& p : comma_pieces(s, inner.first, inner.second)) f.cells.push_back({p});
+        } else if (mentions_array(s.substr(inner.first, inner.second - inner.first))) {
+            f.kind = Factor::Group;
+            f.inner_begin = inner.first;
+            f.inner_end = inner.second;
+        } else {
+            return false;
+        }
+        i = end;
+        f.end = end;
+        return true;
+    }
+    if (s.substr(i, 7) == "\\begin{") {
+        const std::string env = environment_at(s, i);
+        const std::size_t end = environment_end(s, i);
+        if (!is_matrix_environment(env) || end == std::string_view::npos || end > e) {
+            *why = "an environment \\begin{" + env + "} is not read as a matrix";
+            return false;
+        }
+        f.kind = env == "vmatrix" ? Factor::DetArray : Factor::Array;
+        f.cells = environment_cells(s, i, end);
+        i = end;
+        f.end = end;
+        return true;
+    }
+    const bool det = starts_command(s, i, "\\det") || s.substr(i, 18) == "\\operatorname{det}";
+    if (det) {
+        std::size_t k = i + (s[i + 1] == 'd' ? 4 : 18);
+        while (k < e && s[k] == ' ') ++k;
+        Factor inner;
+        std::size_t j = k;
+        if (k >= e || !scan_factor(s, j, e, inner, why)) {
+            if (why->empty()) *why = "\\det of something that is not a matrix";
+            return false;
+        }
+        f.kind = Factor::Det;
+        f.inner_begin = inner.kind == Factor::Group ? inner.inner_begin : inner.begin;
+        f.inner_end = inner.kind == Factor::Group ? inner.inner_end : inner.end;
+        i = j;
+        f.end = j;
+        return true;
+    }
+    for (const char* c : kVectorCommands) {
+        if (!starts_command(s, i, c)) continue;
+        std::size_t k = i + std::string_view(c).size();
+        while (k < e && s[k] == ' ') ++k;
+        std::size_t arg_end = k;
+        if (k < e && s[k] == '{') {
+            arg_end = group_end(s, k);
+            if (arg_end == std::string_view::npos || arg_end > e) return false;
+        } else if (k < e && s[k] == '\\') {
+            arg_end = k + 1;
+            while (arg_end < e && std::isalpha(static_cast<unsigned char>(s[arg_end]))) ++arg_end;
+        } else if (k < e) {
+            arg_end = k + 1;
+        }
+        std::string letter = undecorated(s.substr(k, arg_end - k));
+        if (!letter.empty() && letter.front() == '{' && letter.back() == '}') letter = letter.substr(1, letter.size() - 2);
+        std::size_t end = arg_end;
+        std::string sub;
+        std::size_t u = end;
+        while (u < e && s[u] == ' ') ++u;
+        if (u < e && s[u] == '_') {
+            std::size_t v = u + 1;
+            while (v < e && s[v] == ' ') ++v;
+            if (v < e && s[v] == '{') {
+                const std::size_t ge = group_end(s, v);
+                if (ge == std::string_view::npos || ge > e) return false;
+                sub = std::string(s.substr(v, ge - v));
+                end = ge;
+            } else if (v < e) {
+                sub = "{" + std::string(1, s[v]) + "}";
+                end = v + 1;
+            }
+        }
+        f.kind = Factor::Name;
+        f.key = canonical_name(letter + (sub.empty() ? "" : "_" + sub));
+        if (f.key.empty()) f.key = letter + (sub.empty() ? "" : "_" + sub);
+        i = end;
+        f.end = end;
+        return true;
+    }
+    return false;
+}
+
+bool scan(std::string_view s, std::size_t b, std::size_t e, std::vector<Term>& terms, std::string* why) {
+    terms.assign(1, Term{});
+    std::size_t pending = std::string_view::npos;  // start of scalar text not yet a factor
+    Factor::Op op = Factor::Juxtapose;
+    auto flush = [&](std::size_t upto) {
+        if (pending == std::string_view::npos) return;
+        const auto t = trimmed(s, pending, upto);
+        if (!blank(s.substr(t.first, t.second - t.first))) {
+            Factor f;
+            f.kind = Factor::Scalar;
+            f.begin = t.first;
+            f.end = t.second;
+            terms.back().factors.push_back(f);
+        }
+        pending = std::string_view::npos;
+    };
+    for (std::size_t i = b; i < e;) {
+        const char c = s[i];
+        if (std::isspace(static_cast<unsigned char>(c))) {
+            ++i;
+            continue;
+        }
+        if (starts_command(s, i, "\\cdot") || starts_command(s, i, "\\times")) {
+            flush(i);
+            op = s[i + 1] == 'c' ? Factor::Dot : Factor::Cross;
+            i += s[i + 1] == 'c' ? 5 : 6;
+            continue;
+        }
+        if (c == '+' || c == '-') {
+            const bool empty = terms.back().factors.empty() &&
+                               (pending == std::string_view::npos || blank(s.substr(pending, i - pending)));
+            flush(i);
+            if (!empty) terms.emplace_back();
+            if (c == '-') terms.back().negative = !terms.back().negative;
+            op = Factor::Juxtapose;
+            ++i;
+            continue;
+        }
+        if ((c == '^' || c == '_') && pending == std::string_view::npos && !terms.back().factors.empty() &&
+            terms.back().factors.back().kind != Factor::Scalar) {
+            *why = "a power or an index of a matrix or vector is not read";
+            return false;
+        }
+        Factor f;
+        std::size_t j = i;
+        if (scan_factor(s, j, e, f, why)) {
+            flush(i);
+            f.op = op;
+            op = Factor::Juxtapose;
+            terms.back().factors.push_back(f);
+            i = j;
+            continue;
+        }
+        if (!why->empty()) return false;
+        // Scalar text: a command with its brace arguments, a bracket group, or one character.
+        if (pending == std::string_view::npos) pending = i;
+        if (c == '\\') {
+            std::size_t k = i + 1;
+            while (k < e && std::isalpha(static_cast<unsigned char>(s[k]))) ++k;
+            if (k == i + 1) ++k;
+            while (k < e && (s[k] == '{' || s[k] == '[')) {
+                const std::size_t g = group_end(s, k);
+                if (g == std::string_view::npos || g > e) break;
+                k = g;
+            }
+            i = k;
+        } else if (c == '(' || c == '[' || c == '{') {
+            const std::size_t g = group_end(s, i);
+            i = g == std::string_view::npos || g > e ? i + 1 : g;
+        } else {
+            ++i;
+        }
+    }
+    flush(e);
+    for (const Term& t : terms)
+        if (t.factors.empty()) {
+            *why = "an empty term";
+            return false;
+        }
+    return true;
+}
+
+/// a = b exactly (normal) or at random points.
+bool same(const ex& a, const ex& b, Comparisons& cmp, double tol) {
+    try {
+        if (GiNaC::normal((a - b).expand()).is_zero()) return true;
+    } catch (const std::exception&) {
+    }
+    return cmp.same(a, b, tol);
+}
+
+/// A basis of the null space of m (Gaussian elimination, pivots decided by normal()).
+std::vector<GiNaC::matrix> null_space(GiNaC::matrix m) {
+    const unsigned rows = m.rows(), cols = m.cols();
+    std::vector<int> pivot_of_col(cols, -1);
+    unsigned r = 0;
+    for (unsigned c = 0; c < cols && r < rows; ++c) {
+        unsigned p = r;
+        while (p < rows && GiNaC::normal(m(p, c)).is_zero()) ++p;
+        if (p == rows) continue;
+        for (unsigned k = 0; k < cols; ++k) std::swap(m(r, k), m(p, k));
+        const ex pv = m(r, c);
+        for (unsigned k = 0; k < cols; ++k) m(r, k) = GiNaC::normal(m(r, k) / pv);
+        for (unsigned q = 0; q < rows; ++q) {
+            if (q == r) continue;
+            const ex f = m(q, c);
+            for (unsigned k = 0; k < cols; ++k) m(q, k) = GiNaC::normal(m(q, k) - f * m(r, k));
+        }
+        pivot_of_col[c] = int(r);
+        ++r;
+    }
+    std::vector<GiNaC::matrix> basis;
+    for (unsigned f = 0; f < cols; ++f) {
+        if (pivot_of_col[f] >= 0) continue;
+        GiNaC::matrix v(cols, 1);
+        v(f, 0) = 1;
+        for (unsigned c = 0; c < cols; ++c)
+            if (pivot_of_col[c] >= 0) v(c, 0) = -m(unsigned(pivot_of_col[c]), f);
+        basis.push_back(v);
+    }
+    return basis;
+}
+
+std::string entry_name(const GiNaC::matrix& m, unsigned i, unsigned j) {
+    if (m.cols() == 1) {
+        std::string s = "row " + std::to_string(i + 1);
+        if (m.rows() == 3) s += std::string(" (") + char('x' + i) + ")";
+        return s;
+    }
+    return "row " + std::to_string(i + 1) + ", column " + std::to_string(j + 1);
+}
+
+std::string matrix_latex(const GiNaC::matrix& m, Comparisons& cmp) {
+    std::string s = "\\begin{pmatrix} ";
+    for (unsigned i = 0; i < m.rows(); ++i) {
+        for (unsigned j = 0; j < m.cols(); ++j) s += (j ? " & " : "") + cmp.latex(m(i, j));
+        s += i + 1 < m.rows() ? " \\\\ " : " ";
+    }
+    return s + "\\end{pmatrix}";
+}
+
+/// The one factor of a side's single term that is not scalar, with the scalar factors' text; -1 otherwise.
+int single_array(const std::vector<Term>& terms) {
+    if (terms.size() != 1 || terms[0].negative) return -1;
+    int found = -1;
+    for (std::size_t k = 0; k < terms[0].factors.size(); ++k) {
+        const Factor& f = terms[0].factors[k];
+        if (f.kind == Factor::Scalar) continue;
+        if (found >= 0 || (f.kind != Factor::Array && f.kind != Factor::Tuple)) return -1;
+        found = int(k);
+    }
+    return found;
+}
+
+}  // namespace
+
+bool reads_as_array(const Side& side) {
+    if (side.ok) return false;
+    for (const char* e : {"a vector or tuple", "a matrix or array", "the function 'det'"})
+        if (side.error.find(e) != std::string::npos) return true;
+    return false;
+}
+
+const MathRow* LinearAlgebra::row_at(std::size_t offset) const {
+    const MathRow* best = nullptr;
+    for (const MathRow& r : d_.rows)
+        if (r.offset <= offset && offset <= r.offset + r.text.size()) best = &r;
+    return best;
+}
+
+std::optional<GiNaC::matrix> LinearAlgebra::declared(const std::string& key) const {
+    if (key.find('_') != std::string::npos) return std::nullopt;
+    auto result = [&](const std::string& sub) -> std::optional<ex> {
+        for (const Result& r : model_.results) {
+            std::string c = canonical_name(r.latex);
+            if (c.empty()) c = r.latex;
+            if (c == key + "_{" + sub + "}") return r.expr.expr;
+        }
+        return std::nullopt;
+    };
+    GiNaC::matrix t(3, 3);
+    bool tensor = true;
+    for (int i = 0; i < 3 && tensor; ++i)
+        for (int j = i; j < 3 && tensor; ++j) {
+            const std::string a{char('x' + i), char('x' + j)}, b{char('x' + j), char('x' + i)};
+            auto v = result(a);
+            if (!v) v = result(b);
+            if (!v) tensor = false;
+            else t(unsigned(i), unsigned(j)) = t(unsigned(j), unsigned(i)) = *v;
+        }
+    if (tensor) return t;
+    GiNaC::matrix v(3, 1);
+    for (int i = 0; i < 3; ++i) {
+        const auto x = result(std::string(1, char('x' + i)));
+        if (!x) return std::nullopt;
+        v(unsigned(i), 0) = *x;
+    }
+    return v;
+}
+
+void LinearAlgebra::note_link(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base) {
+    const Side* sides[2] = {&left, &right};
+    const std::size_t bases[2] = {left_base, right_base};
+    std::vector<Term> terms[2];
+    for (int k = 0; k < 2; ++k) {
+        std::string why;
+        if (sides[k]->empty() || !scan(sides[k]->source, 0, sides[k]->source.size(), terms[k], &why)) return;
+    }
+    // A stated vector: one side is its name alone.
+    for (int k = 0; k < 2; ++k) {
+        const auto& t = terms[k];
+        if (t.size() != 1 || t[0].negative || t[0].factors.size() != 1 || t[0].factors[0].kind != Factor::Name) continue;
+        const std::string& key = t[0].factors[0].key;
+        bool self = false;
+        for (const Term& o : terms[1 - k])
+            for (const Factor& f : o.factors) self = self || (f.kind == Factor::Name && f.key == key);
+        if (!self && !stated_.count(key) && key != "1" && !declared(key))
+            stated_[key] = {sides[1 - k]->source, bases[1 - k] + sides[1 - k]->begin, sides[1 - k],
+                            d_.position(bases[1 - k] + sides[1 - k]->begin).line};
+    }
+    // An eigen-equation: A · n = λ n.
+    const auto& l = terms[0];
+    const auto& r = terms[1];
+    if (l.size() != 1 || r.size() != 1 || l[0].factors.size() < 2) return;
+    const Factor& n = l[0].factors.back();
+    if (n.kind != Factor::Name || r[0].factors.back().kind != Factor::Name || r[0].factors.back().key != n.key) return;
+    for (std::size_t k = 0; k + 1 < r[0].factors.size(); ++k)
+        if (r[0].factors[k].kind != Factor::Scalar) return;
+    bool matrix = false;
+    for (std::size_t k = 0; k + 1 < l[0].factors.size(); ++k) matrix = matrix || l[0].factors[k].kind != Factor::Scalar;
+    if (!matrix || eigen_.count(n.key)) return;
+    Eigen e;
+    e.line = d_.position(right_base + right.begin).line;
+    const MathRow* row = row_at(left_base + left.begin);
+    e.block = row && row->display ? row->block : -1;
+    // A and λ are read when first needed (the names they use may be stated later in the text).
+    eigen_sources_[n.key] = {left.source.substr(0, n.begin), left_base + left.begin,
+                             right.source.substr(0, r[0].factors.back().begin), right_base + right.begin};
+    eigen_[n.key] = e;
+}
+
+std::optional<LinearAlgebra::Value> LinearAlgebra::read(std::string_view source, std::size_t base, Comparisons& cmp,
+                                                        std::string* why, bool* reference) {
+    std::vector<Term> terms;
+    if (!scan(source, 0, source.size(), terms, why)) return std::nullopt;
+    if (reference) {
+        *reference = false;
+        if (terms.size() == 1 && terms[0].factors.size() == 1 && !terms[0].negative) {
+            const Factor& f = terms[0].factors[0];
+            if (f.kind == Factor::Name) *reference = declared(f.key).has_value();
+            if (f.kind == Factor::Tuple || f.kind == Factor::Array) {
+                bool all = true;
+                for (const auto& row : f.cells)
+                    for (const auto& [b, e] : row) {
+                        LatexContext scratch = ctx_;
+                        const Side s = parse_expression(source.substr(b, e - b), scratch);
+                        all = all && s.ok && evaluate_(s, base + b).reference;
+                    }
+                *reference = all;
+            }
+        }
+    }
+    return evaluate(terms, source, base, cmp, why);
+}
+
+std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Term>& terms, std::string_view source,
+                                                            std::size_t base, Comparisons& cmp, std::string* why) {
+    // Components of eigenvectors (n_{1x}): names a cell may create on first reading.
+    GiNaC::exmap components;
+    std::size_t names_seen = std::size_t(-1);
+    auto scalar = [&](std::size_t b, std::size_t e) -> std::optional<ex> {
+        const Side s = parse_expression(source.substr(b, e - b), ctx_);
+        if (ctx_.free_names.size() != names_seen) {
+            components = component_values(cmp);
+            names_seen = ctx_.free_names.size();
+        }
+        if (!s.ok) {
+            *why = "cannot read " + dollars(std::string(source.substr(b, e - b))) + ": " + s.error;
+            return std::nullopt;
+        }
+        const ScalarReading v = evaluate_(s, base + b);
+        if (!v.ok) {
+            *why = v.problem;
+            return std::nullopt;
+        }
+        return v.value.subs(components);
+    };
+    std::optional<Value> total;
+    for (const Term& t : terms) {
+        ex coefficient = t.negative ? -1 : 1;
+        std::optional<GiNaC::matrix> m;
+        for (const Factor& f : t.factors) {
+            Value v;
+            if (f.kind == Factor::Scalar) {
+                const auto x = scalar(f.begin, f.end);
+                if (!x) return std::nullopt;
+                v.m(0, 0) = *x;
+            } else if (f.kind == Factor::Array || f.kind == Factor::Tuple || f.kind == Factor::DetArray) {
+                const unsigned rows = unsigned(f.cells.size()), cols = unsigned(f.cells[0].size());
+                for (const auto& row : f.cells)
+                    if (row.size() != cols) {
+                        *why = "the rows of an array have different lengths";
+                        return std::nullopt;
+                    }
+                GiNaC::matrix a(rows, cols);
+                for (unsigned i = 0; i < rows; ++i)
+                    for (unsigned j = 0; j < cols; ++j) {
+                        const auto x = scalar(f.cells[i][j].first, f.cells[i][j].second);
+                        if (!x) return std::nullopt;
+                        a(i, j) = *x;
+                    }
+                v.m = a;
+                v.scalar = false;
+                if (f.kind == Factor::DetArray) {
+                    if (rows != cols) {
+                        *why = "the determinant of a matrix that is not square";
+                        return std::nullopt;
+                    }
+                    v.m = GiNaC::matrix{{a.determinant()}};
+                    v.scalar = true;
+                }
+            } else if (f.kind == Factor::Name) {
+                const auto x = named(f.key, cmp, why);
+                if (!x) return std::nullopt;
+                v.m = *x;
+                v.scalar = false;
+            } else {  // Group, Det
+                std::vector<Term> inner;
+                if (!scan(source, f.inner_begin, f.inner_end, inner, why)) return std::nullopt;
+                const auto x = evaluate(inner, source, base, cmp, why);
+                if (!x) return std::nullopt;
+                v = *x;
+                if (f.kind == Factor::Det) {
+                    if (v.scalar || v.m.rows() != v.m.cols()) {
+                        *why = "the determinant of something that is not a square matrix";
+                        return std::nullopt;
+                    }
+                    v.m = GiNaC::matrix{{v.m.determinant()}};
+                    v.scalar = true;
+                }
+            }
+            if (v.scalar) {
+                coefficient *= v.m(0, 0);
+                continue;
+            }
+            if (!m) {
+                m = v.m;
+                continue;
+            }
+            const auto shape = [](const GiNaC::matrix& x) {
+                return std::to_string(x.rows()) + "×" + std::to_string(x.cols());
+            };
+            if (f.op == Factor::Cross) {
+                if (m->rows() != 3 || m->cols() != 1 || v.m.rows() != 3 || v.m.cols() != 1) {
+                    *why = "a cross product of a " + shape(*m) + " and a " + shape(v.m) + " (it needs two 3-vectors)";
+                    return std::nullopt;
+                }
+                const GiNaC::matrix& a = *m;
+                const GiNaC::matrix& b = v.m;
+                m = GiNaC::matrix{{a(1, 0) * b(2, 0) - a(2, 0) * b(1, 0)},
+                                  {a(2, 0) * b(0, 0) - a(0, 0) * b(2, 0)},
+                                  {a(0, 0) * b(1, 0) - a(1, 0) * b(0, 0)}};
+            } else if (f.op == Factor::Dot && m->cols() == 1 && v.m.cols() == 1 && m->rows() == v.m.rows()) {
+                coefficient *= m->transpose().mul(v.m)(0, 0);
+                m.reset();
+            } else if (m->cols() == v.m.rows()) {
+                m = m->mul(v.m);
+            } else {
+                *why = "a " + shape(*m) + " matrix times a " + shape(v.m) + " one";
+                return std::nullopt;
+            }
+        }
+        Value tv;
+        if (m && m->rows() == 1 && m->cols() == 1) {
+            coefficient *= (*m)(0, 0);
+            m.reset();
+        }
+        if (m) {
+            tv.m = m->mul_scalar(coefficient);
+            tv.scalar = false;
+        } else {
+            tv.m(0, 0) = coefficient;
+        }
+        if (!total) {
+            total = tv;
+        } else if (total->scalar != tv.scalar || total->m.rows() != tv.m.rows() || total->m.cols() != tv.m.cols()) {
+            *why = "a sum of a scalar, vectors or matrices of different shapes";
+            return std::nullopt;
+        } else {
+            total->m = total->m.add(tv.m);
+        }
+    }
+    return total;
+}
+
+std::optional<GiNaC::matrix> LinearAlgebra::named(const std::string& key, Comparisons& cmp, std::string* why) {
+    if (key == "1") return GiNaC::matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    if (auto d = declared(key)) return d;
+    if (resolving_.count(key)) {
+        *why = "the vector " + dollars(key) + " is defined by itself";
+        return std::nullopt;
+    }
+    resolving_.insert(key);
+    struct Done {
+        std::set<std::string>& s;
+        const std::string& k;
+        ~Done() { s.erase(k); }
+    } done{resolving_, key};
+    if (eigen_.count(key)) {
+        Eigen* e = eigen(key, cmp);
+        if (e && !e->basis.empty()) {
+            if (e->stated_fits) return e->stated;
+            GiNaC::matrix v(e->basis[0].rows(), 1);
+            for (std::size_t k = 0; k < e->basis.size(); ++k) {
+                const std::string name = "c_{" + std::to_string(k + 1) + "}";
+                auto it = coefficients_.find(name);
+                if (it == coefficients_.end()) it = coefficients_.emplace(name, GiNaC::symbol(name, name)).first;
+                v = v.add(e->basis[k].mul_scalar(it->second));
+            }
+            return v;
+        }
+        *why = "the eigenvector " + dollars(key) + " is not known: " +
+               (e ? e->why_not : std::string("its eigen-equation cannot be read"));
+        return std::nullopt;
+    }
+    auto s = stated_.find(key);
+    if (s != stated_.end()) {
+        std::string inner;
+        const auto v = read(s->second.source, s->second.base, cmp, &inner, nullptr);
+        if (v && !v->scalar && unknown_names(v->m).empty()) return v->m;
+    }
+    *why = "the vector " + dollars(key) + " is not known (the model declares no components of it, and the text "
+                                           "states no value of it)";
+    return std::nullopt;
+}
+
+std::vector<std::string> LinearAlgebra::unknown_names(const GiNaC::matrix& m) const {
+    std::set<std::string> out;
+    std::vector<ex> stack;
+    for (unsigned i = 0; i < m.rows(); ++i)
+        for (unsigned j = 0; j < m.cols(); ++j) stack.push_back(m(i, j));
+    while (!stack.empty()) {
+        const ex x = stack.back();
+        stack.pop_back();
+        if (GiNaC::is_a<GiNaC::symbol>(x)) {
+            if (const FreeName* f = ctx_.free_name_of(x)) out.insert(f->name);
+        }
+        for (std::size_t k = 0; k < x.nops(); ++k) stack.push_back(x.op(k));
+    }
+    return {out.begin(), out.end()};
+}
+
+LinearAlgebra::Eigen* LinearAlgebra::eigen(const std::string& key, Comparisons& cmp) {
+    auto it = eigen_.find(key);
+    if (it == eigen_.end()) return nullptr;
+    Eigen& e = it->second;
+    if (e.judged) return &e;
+    e.judged = true;
+    const EigenSources& src = eigen_sources_.at(key);
+    std::string why;
+    const auto A = read(src.matrix, src.matrix_base, cmp, &why, nullptr);
+    if (!A || A->scalar || A->m.rows() != A->m.cols()) {
+        e.why_not = A ? "its matrix is not square" : why;
+        return &e;
+    }
+    e.A = A->m;
+    ex lambda = 1;
+    if (!blank(src.lambda)) {
+        const auto l = read(src.lambda, src.lambda_base, cmp, &why, nullptr);
+        if (!l || !l->scalar) {
+            e.why_not = l ? "its eigenvalue is not a scalar" : why;
+            return &e;
+        }
+        lambda = l->m(0, 0);
+    }
+    e.lambda = lambda;
+    if (!unknown_names(e.A).empty() || !unknown_names(GiNaC::matrix{{lambda}}).empty()) {
+        e.why_not = "its eigen-equation (line " + std::to_string(e.line) + ") has symbols that are not the model's";
+        return &e;
+    }
+    const unsigned n = e.A.rows();
+    auto shifted = [&](const ex& x) {
+        GiNaC::matrix s = e.A;
+        for (unsigned i = 0; i < n; ++i) s(i, i) -= x;
+        return s;
+    };
+    e.valid = same(shifted(lambda).determinant(), 0, cmp, 1e-9);
+    // The vector the text states, if any (read without itself: the eigen-equation is not used for it).
+    std::optional<GiNaC::matrix> v;
+    if (auto s = stated_.find(key); s != stated_.end()) {
+        const auto x = read(s->second.source, s->second.base, cmp, &why, nullptr);
+        if (x && !x->scalar && x->m.cols() == 1 && x->m.rows() == n && unknown_names(x->m).empty()) v = x->m;
+    }
+    e.used_lambda = lambda;
+    if (!e.valid && v) {
+        // λ is no eigenvalue: the stated vector's own, if it is an eigenvector.
+        const GiNaC::matrix u = e.A.mul(*v);
+        for (unsigned i = 0; i < n; ++i) {
+            if (GiNaC::normal((*v)(i, 0)).is_zero()) continue;
+            const ex mu = GiNaC::normal(u(i, 0) / (*v)(i, 0));
+            bool all = true;
+            for (unsigned k = 0; k < n; ++k) all = all && same(u(k, 0), mu * (*v)(k, 0), cmp, 1e-9);
+            if (all) {
+                e.used_lambda = mu;
+                e.stated_eigenvalue = true;
+            }
+            break;
+        }
+        if (!e.stated_eigenvalue) {
+            e.why_not = "its eigenvalue " + dollars(cmp.latex(lambda)) + " (line " + std::to_string(e.line) +
+                        ") is not one of the matrix's, and the vector the text states is no eigenvector";
+            return &e;
+        }
+    } else if (!e.valid) {
+        e.why_not = "its eigenvalue " + dollars(cmp.latex(lambda)) + " (line " + std::to_string(e.line) +
+                    ") is not one of the matrix's";
+        return &e;
+    }
+    e.basis = null_space(shifted(e.used_lambda));
+    if (e.basis.empty()) {
+        e.why_not = "no eigenvector found";
+        return &e;
+    }
+    if (v) {
+        const GiNaC::matrix res = shifted(e.used_lambda).mul(*v);
+        bool zero = true;
+        for (unsigned i = 0; i < n; ++i) zero = zero && same(res(i, 0), 0, cmp, 1e-9);
+        bool nonzero = false;
+        for (unsigned i = 0; i < n; ++i) nonzero = nonzero || !GiNaC::normal((*v)(i, 0)).is_zero();
+        if (zero && nonzero) {
+            e.stated = *v;
+            e.stated_fits = true;
+        }
+    }
+    return &e;
+}
+
+std::map<std::string, std::vector<std::string>> LinearAlgebra::component_uses(const GiNaC::ex& e) const {
+    std::map<std::string, std::vector<std::string>> out;
+    std::vector<ex> stack{e};
+    while (!stack.empty()) {
+        const ex x = stack.back();
+        stack.pop_back();
+        if (GiNaC::is_a<GiNaC::symbol>(x)) {
+            const FreeName* f = ctx_.free_name_of(x);
+            std::string key;
+            int index = 0;
+            if (f && f->kind == NameKind::Unknown && component_of(f->name, &key, &index) &&
+                (eigen_.count(key) || stated_.count(key))) {
+                auto& v = out[key];
+                if (std::find(v.begin(), v.end(), f->name) == v.end()) v.push_back(f->name);
+            }
+        }
+        for (std::size_t k = 0; k < x.nops(); ++k) stack.push_back(x.op(k));
+    }
+    return out;
+}
+
+GiNaC::exmap LinearAlgebra::component_values(Comparisons& cmp) {
+    GiNaC::exmap out;
+    for (const auto& [name, fn] : ctx_.free_names) {
+        std::string key;
+        int index = 0;
+        if (fn.kind != NameKind::Unknown || !component_of(name, &key, &index)) continue;
+        if (!eigen_.count(key) && !stated_.count(key)) continue;
+        if (resolving_.count(key)) continue;
+        std::string why;
+        const auto v = named(key, cmp, &why);
+        if (v && v->cols() == 1 && v->rows() == 3) out[fn.symbol] = (*v)(unsigned(index), 0);
+    }
+    return out;
+}
+
+bool LinearAlgebra::check(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
+                          Comparisons& cmp, EquationCheck& r) {
+    bool involved = false;
+    for (const Side* s : {&left, &right}) {
+        if (s->empty()) return false;
+        involved = involved || reads_as_array(*s) || mentions_array(s->source) ||
+                   (s->ok && !component_uses(s->value).empty());
+    }
+    if (!involved) return false;
+    judge_link(left, left_base, right, right_base, cmp, r);
+    if (!verifying_) flag_block(left, left_base, right, right_base, cmp, r);
+    return true;
+}
+
+bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
+                               Comparisons& cmp, EquationCheck& r) {
+    const double tol = std::max(1e-9, left.rounding + right.rounding);
+    std::vector<Term> terms[2];
+    std::string why;
+    const Side* sides[2] = {&left, &right};
+    const std::size_t bases[2] = {left_base + left.begin, right_base + right.begin};
+    for (int k = 0; k < 2; ++k)
+        if (!scan(sides[k]->source, 0, sides[k]->source.size(), terms[k], &why)) {
+            r.reason = "cannot read " + dollars(sides[k]->source) + ": " + why;
+            return false;
+        }
+    // A stated eigenvector: n = (…), judged against its eigen-equation.
+    for (int k = 0; k < 2; ++k) {
+        const auto& t = terms[k];
+        if (t.size() != 1 || t[0].negative || t[0].factors.size() != 1 || t[0].factors[0].kind != Factor::Name) continue;
+        const std::string& key = t[0].factors[0].key;
+        bool self = false;
+        for (const Term& o : terms[1 - k])
+            for (const Factor& f : o.factors) self = self || (f.kind == Factor::Name && f.key == key);
+        if (!self && eigen_.count(key))
+            return judge_definition(key, *sides[1 - k], bases[1 - k], terms[1 - k], cmp, r);
+    }
+    // An eigen-equation A · n = λ n: λ must be an eigenvalue of A.
+    const auto& l = terms[0];
+    const auto& rt = terms[1];
+    if (l.size() == 1 && rt.size() == 1 && l[0].factors.size() >= 2 && l[0].factors.back().kind == Factor::Name &&
+        rt[0].factors.back().kind == Factor::Name && rt[0].factors.back().key == l[0].factors.back().key) {
+        const std::string& key = l[0].factors.back().key;
+        bool scalar_lambda = true, matrix = false;
+        for (std::size_t k = 0; k + 1 < rt[0].factors.size(); ++k)
+            scalar_lambda = scalar_lambda && rt[0].factors[k].kind == Factor::Scalar;
+        for (std::size_t k = 0; k + 1 < l[0].factors.size(); ++k) matrix = matrix || l[0].factors[k].kind != Factor::Scalar;
+        if (scalar_lambda && matrix)
+            return judge_eigen_equation(key, left, bases[0], l[0].factors.back().begin, right, bases[1],
+                                        rt[0].factors.back().begin, cmp, r);
+    }
+    bool reference[2] = {false, false};
+    std::optional<Value> v[2];
+    for (int k = 0; k < 2; ++k) {
+        v[k] = read(sides[k]->source, bases[k], cmp, &why, &reference[k]);
+        if (!v[k]) {
+            r.reason = why;
+            return false;
+        }
+    }
+    // Shapes: a row against a column of the same entries is the same vector.
+    GiNaC::matrix a = v[0]->m, b = v[1]->m;
+    if (!v[0]->scalar && !v[1]->scalar && a.rows() == b.cols() && a.cols() == b.rows() && (a.rows() == 1 || a.cols() == 1))
+        b = b.transpose();
+    if (v[0]->scalar != v[1]->scalar && (v[0]->scalar ? a(0, 0) : b(0, 0)).is_zero()) {
+        if (v[0]->scalar) a = GiNaC::matrix(b.rows(), b.cols());
+        else b = GiNaC::matrix(a.rows(), a.cols());
+    } else if (v[0]->scalar != v[1]->scalar || a.rows() != b.rows() || a.cols() != b.cols()) {
+        r.reason = "the sides have different shapes (" + std::string(v[0]->scalar ? "a scalar" : "a matrix or vector") +
+                   " and " + (v[1]->scalar ? "a scalar" : "a matrix or vector") + ")";
+        return false;
+    }
+    const bool vector = !v[0]->scalar || !v[1]->scalar;
+    std::vector<std::pair<unsigned, unsigned>> wrong;
+    for (unsigned i = 0; i < a.rows(); ++i)
+        for (unsigned j = 0; j < a.cols(); ++j)
+            if (!same(a(i, j), b(i, j), cmp, tol)) wrong.emplace_back(i, j);
+    std::vector<std::string> unknown = unknown_names(a);
+    for (const std::string& u : unknown_names(b)) unknown.push_back(u);
+    std::sort(unknown.begin(), unknown.end());
+    unknown.erase(std::unique(unknown.begin(), unknown.end()), unknown.end());
+    const bool coefficients = !coefficients_.empty() && [&] {
+        for (const auto& [name, sym] : coefficients_)
+            for (unsigned i = 0; i < a.rows(); ++i)
+                for (unsigned j = 0; j < a.cols(); ++j)
+                    if (a(i, j).has(sym) || b(i, j).has(sym)) return true;
+        return false;
+    }();
+    auto eigen_note = [&] {
+        std::set<std::string> keys;
+        for (const Term& t : terms[0])
+            for (const Factor& f : t.factors)
+                if (f.kind == Factor::Name && eigen_.count(f.key)) keys.insert(f.key);
+        for (const Term& t : terms[1])
+            for (const Factor& f : t.factors)
+                if (f.kind == Factor::Name && eigen_.count(f.key)) keys.insert(f.key);
+        for (const Side* s : sides)
+            if (s->ok)
+                for (const auto& [key, names] : component_uses(s->value)) keys.insert(key);
+        for (const std::string& key : keys) {
+            if (!eigen_.count(key)) continue;
+            const Eigen& e = eigen_.at(key);
+            if (e.basis.empty()) continue;
+            r.notes.push_back(
+                e.stated_fits ? "with " + dollars(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) + ")"
+                              : "with " + dollars(key) + " any eigenvector of its eigen-equation (line " + std::to_string(e.line) +
+                                    ")" + (coefficients ? ", $c_{k}$ its free coefficients" : ""));
+        }
+    };
+    if (wrong.empty()) {
+        r.verdict = Verdict::Agrees;
+        r.compared_with = reference[0] || reference[1] ? (vector ? "the model's quantities, entry by entry" : "the model's quantity")
+                                                       : "an identity";
+        r.reason = vector ? "equal entry by entry" : "both sides are equal";
+        if (!unknown.empty()) r.reason += " (in the text's own symbols)";
+        eigen_note();
+        return true;
+    }
+    if (!unknown.empty()) {
+        std::string list;
+        for (const std::string& u : unknown) list += (list.empty() ? "" : ", ") + dollars(u);
+        r.reason = "unknown symbols " + list + ": not symbols of the model (--map can say what they stand for)";
+        return false;
+    }
+    r.verdict = Verdict::Disagrees;
+    eigen_note();
+    // The reference: the model's side. Without one, the two sides are shown and nothing is corrected.
+    const int ref = reference[1] && !reference[0] ? 1 : 0;
+    const GiNaC::matrix& R = ref == 0 ? a : b;
+    const GiNaC::matrix& T = ref == 0 ? b : a;
+    GiNaC::matrix diff(T.rows(), T.cols());
+    for (unsigned i = 0; i < T.rows(); ++i)
+        for (unsigned j = 0; j < T.cols(); ++j) diff(i, j) = GiNaC::normal(T(i, j) - R(i, j));
+    r.difference = vector ? matrix_latex(diff, cmp) : cmp.latex(diff(0, 0));
+    if (!reference[ref]) {
+        r.compared_with = vector ? "the two sides, entry by entry" : "the two sides";
+        for (const auto& [i, j] : wrong)
+            r.wrong_terms.push_back((vector ? entry_name(T, i, j) + ": " : std::string()) + "the left side is " +
+                                    dollars(cmp.latex(a(i, j))) + ", the right side " + dollars(cmp.latex(b(i, j))));
+        return true;
+    }
+    r.compared_with = "the model's quantities, entry by entry";
+    // The text's cells, when its side is s · [array] or s · (tuple): the right cell in the array's own scale.
+    const std::vector<Term>& tt = terms[1 - ref];
+    const int arr = single_array(tt);
+    ex scale = 1;
+    if (arr >= 0) {
+        for (std::size_t k = 0; k < tt[0].factors.size(); ++k) {
+            if (int(k) == arr) continue;
+            const Factor& f = tt[0].factors[k];
+            const std::string text = sides[1 - ref]->source.substr(f.begin, f.end - f.begin);
+            const Side s = parse_expression(text, ctx_);
+            const ScalarReading x = s.ok ? evaluate_(s, bases[1 - ref] + f.begin) : ScalarReading{};
+            scale = x.ok ? scale * x.value : ex(0);
+        }
+    }
+    const bool cells = arr >= 0 && !scale.is_zero() &&
+                       tt[0].factors[std::size_t(arr)].cells.size() == (vector ? T.rows() : 0) &&
+                       (T.cols() == 1 ? tt[0].factors[std::size_t(arr)].cells[0].size() == 1
+                                      : tt[0].factors[std::size_t(arr)].cells[0].size() == T.cols());
+    std::string corrected = sides[1 - ref]->source;
+    std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::string>> splices;
+    for (const auto& [i, j] : wrong) {
+        const std::string where = vector ? entry_name(T, i, j) + ": " : "";
+        if (cells) {
+            const auto& cell = tt[0].factors[std::size_t(arr)].cells[i][T.cols() == 1 ? 0 : j];
+            const std::string right_cell = cmp.latex(GiNaC::normal(R(i, j) / scale));
+            r.wrong_terms.push_back(where + "the text's entry " +
+                                    dollars(sides[1 - ref]->source.substr(cell.first, cell.second - cell.first)) + " where " +
+                                    dollars(right_cell) + " belongs" +
+                                    (scale.is_equal(1) ? "" : " (times " + dollars(cmp.latex(scale)) + ")"));
+            splices.push_back({cell, right_cell});
+        } else {
+            r.wrong_terms.push_back(where + dollars(cmp.latex(T(i, j))) + " where " + dollars(cmp.latex(R(i, j))) +
+                                    " belongs");
+        }
+    }
+    if (cells) {
+        std::sort(splices.begin(), splices.end());
+        for (auto it = splices.rbegin(); it != splices.rend(); ++it)
+            corrected.replace(it->first.first, it->first.second - it->first.first, it->second);
+    } else {
+        corrected = vector ? matrix_latex(R, cmp) : cmp.latex(R(0, 0));
+    }
+    r.corrected = ref == 0 ? left.source + " = " + corrected : corrected + " = " + right.source;
+    return true;
+}
+
+bool LinearAlgebra::judge_eigen_equation(const std::string& key, const Side& left, std::size_t left_base,
+                                         std::size_t name_at, const Side& right, std::size_t right_base,
+                                         std::size_t right_name_at, Comparisons& cmp, EquationCheck& r) {
+    std::string why;
+    const auto A = read(left.source.substr(0, name_at), left_base, cmp, &why, nullptr);
+    std::optional<Value> l;
+    const std::string lambda_source = right.source.substr(0, right_name_at);
+    if (blank(lambda_source)) l = Value{GiNaC::matrix{{1}}, true};
+    else l = read(lambda_source, right_base, cmp, &why, nullptr);
+    if (!A || !l) {
+        r.reason = why;
+        return false;
+    }
+    if (A->scalar || A->m.rows() != A->m.cols() || !l->scalar) {
+        r.reason = "not an eigen-equation: a square matrix times a vector, a scalar times the vector";
+        return false;
+    }
+    std::vector<std::string> unknown = unknown_names(A->m);
+    for (const std::string& u : unknown_names(l->m)) unknown.push_back(u);
+    if (!unknown.empty()) {
+        std::string list;
+        for (const std::string& u : unknown) list += (list.empty() ? "" : ", ") + dollars(u);
+        r.reason = "unknown symbols " + list + ": not symbols of the model (--map can say what they stand for)";
+        return false;
+    }
+    const ex lambda = l->m(0, 0);
+    GiNaC::matrix s = A->m;
+    for (unsigned i = 0; i < s.rows(); ++i) s(i, i) -= lambda;
+    const ex det = GiNaC::normal(s.determinant());
+    std::string matrix_source = left.source.substr(0, name_at);
+    const auto t = trimmed(matrix_source, 0, matrix_source.size());
+    matrix_source = matrix_source.substr(t.first, t.second - t.first);
+    if (matrix_source.size() >= 5 && matrix_source.compare(matrix_source.size() - 5, 5, "\\cdot") == 0)
+        matrix_source.resize(matrix_source.size() - 5);
+    while (!matrix_source.empty() && matrix_source.back() == ' ') matrix_source.pop_back();
+    r.compared_with = "the eigenvalues of " + dollars(matrix_source);
+    const Eigen* e = eigen(key, cmp);
+    const bool stated = stated_.count(key) != 0;
+    if (same(det, 0, cmp, 1e-9)) {
+        r.verdict = Verdict::Agrees;
+        r.reason = dollars(cmp.latex(lambda)) + " is an eigenvalue: $\\det(A - \\lambda 1) = 0$";
+        if (e && e->stated_fits && e->used_lambda.is_equal(lambda))
+            r.notes.push_back(dollars(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
+                              ") satisfies it");
+        else if (stated && e && !e->stated_fits)
+            r.notes.push_back(dollars(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
+                              ") does not satisfy it");
+        return true;
+    }
+    r.verdict = Verdict::Disagrees;
+    r.difference = "\\det(A - \\lambda 1) = " + cmp.latex(det);
+    r.wrong_terms.push_back(dollars(cmp.latex(lambda)) + " is not an eigenvalue: $\\det(A - \\lambda 1) = " +
+                            cmp.latex(det) + " \\neq 0$");
+    if (e && e->stated_eigenvalue) {
+        r.wrong_terms.push_back(dollars(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
+                                ") is an eigenvector with the eigenvalue " + dollars(cmp.latex(e->used_lambda)));
+        r.corrected = left.source + " = " + cmp.latex(e->used_lambda) + " " + right.source.substr(right_name_at);
+    }
+    return true;
+}
+
+bool LinearAlgebra::judge_definition(const std::string& key, const Side& side, std::size_t base,
+                                     const std::vector<Term>& terms, Comparisons& cmp, EquationCheck& r) {
+    std::string why;
+    const auto v = read(side.source, base, cmp, &why, nullptr);
+    if (!v) {
+        r.reason = why;
+        return false;
+    }
+    const std::vector<std::string> unknown = unknown_names(v->m);
+    if (!unknown.empty()) {
+        std::string list;
+        for (const std::string& u : unknown) list += (list.empty() ? "" : ", ") + dollars(u);
+        r.reason = "the components of " + dollars(key) + " are written in unknown symbols " + list;
+        return false;
+    }
+    Eigen* e = eigen(key, cmp);
+    if (!e || e->basis.empty()) {
+        r.reason = "the eigenvector " + dollars(key) + " cannot be compared: " + (e ? e->why_not : std::string());
+        return false;
+    }
+    const unsigned n = e->A.rows();
+    if (v->scalar || v->m.cols() != 1 || v->m.rows() != n) {
+        r.reason = dollars(key) + " is not a vector of " + std::to_string(n) + " components";
+        return false;
+    }
+    r.compared_with = "the eigenvectors of its eigen-equation (line " + std::to_string(e->line) + ") for " +
+                      dollars(cmp.latex(e->used_lambda));
+    const GiNaC::matrix& x = v->m;
+    GiNaC::matrix s = e->A;
+    for (unsigned i = 0; i < n; ++i) s(i, i) -= e->used_lambda;
+    const GiNaC::matrix res = s.mul(x);
+    bool zero = true, nonzero = false;
+    for (unsigned i = 0; i < n; ++i) {
+        zero = zero && same(res(i, 0), 0, cmp, 1e-9);
+        nonzero = nonzero || !GiNaC::normal(x(i, 0)).is_zero();
+    }
+    if (zero && nonzero) {
+        r.verdict = Verdict::Agrees;
+        r.reason = "an eigenvector: $(A - \\lambda 1) n = 0$ with $\\lambda = " + cmp.latex(e->used_lambda) + "$";
+        return true;
+    }
+    r.verdict = Verdict::Disagrees;
+    r.difference = "(A - \\lambda 1) n = " + matrix_latex(res, cmp);
+    if (e->basis.size() != 1 || !nonzero) {
+        for (unsigned i = 0; i < n; ++i)
+            if (!same(res(i, 0), 0, cmp, 1e-9))
+                r.wrong_terms.push_back(entry_name(res, i, 0) + " of $(A - \\lambda 1) n$ is " +
+                                        dollars(cmp.latex(res(i, 0))) + ", not 0");
+        return true;
+    }
+    // One eigenvector up to scale: the scale most components agree with (unit length breaking ties).
+    const GiNaC::matrix& basis = e->basis[0];
+    ex best = 0;
+    int best_matches = -1;
+    bool best_unit = false;
+    for (unsigned i = 0; i < n; ++i) {
+        if (GiNaC::normal(basis(i, 0)).is_zero()) continue;
+        const ex c = GiNaC::normal(x(i, 0) / basis(i, 0));
+        if (c.is_zero()) continue;
+        int matches = 0;
+        for (unsigned k = 0; k < n; ++k) matches += same(x(k, 0), c * basis(k, 0), cmp, 1e-9) ? 1 : 0;
+        ex norm2 = 0;
+        for (unsigned k = 0; k < n; ++k) norm2 += GiNaC::pow(c * basis(k, 0), 2);
+        const bool unit = same(norm2, 1, cmp, 1e-9);
+        if (matches > best_matches || (matches == best_matches && unit && !best_unit)) {
+            best = c;
+            best_matches = matches;
+            best_unit = unit;
+        }
+    }
+    if (best.is_zero()) best = 1;
+    GiNaC::matrix right(n, 1);
+    for (unsigned i = 0; i < n; ++i) right(i, 0) = GiNaC::normal(best * basis(i, 0));
+    const int arr = single_array(terms);
+    ex scale = 1;
+    if (arr >= 0)
+        for (std::size_t k = 0; k < terms[0].factors.size(); ++k) {
+            if (int(k) == arr) continue;
+            const Factor& f = terms[0].factors[k];
+            const Side sc = parse_expression(side.source.substr(f.begin, f.end - f.begin), ctx_);
+            const ScalarReading xr = sc.ok ? evaluate_(sc, base + f.begin) : ScalarReading{};
+            scale = xr.ok ? scale * xr.value : ex(0);
+        }
+    const bool cells = arr >= 0 && !scale.is_zero() && terms[0].factors[std::size_t(arr)].cells.size() * 1 ==
+                                                            (terms[0].factors[std::size_t(arr)].kind == Factor::Tuple ? n : n);
+    std::string corrected = side.source;
+    std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::string>> splices;
+    const auto& cellrows = cells ? terms[0].factors[std::size_t(arr)].cells : Cells{};
+    for (unsigned i = 0; i < n; ++i) {
+        if (same(x(i, 0), right(i, 0), cmp, 1e-9)) continue;
+        if (cells && cellrows[i].size() == 1) {
+            const auto& cell = cellrows[i][0];
+            const std::string rc = cmp.latex(GiNaC::normal(right(i, 0) / scale));
+            r.wrong_terms.push_back(entry_name(x, i, 0) + ": the text's entry " +
+                                    dollars(side.source.substr(cell.first, cell.second - cell.first)) + " where " +
+                                    dollars(rc) + " belongs" +
+                                    (scale.is_equal(1) ? "" : " (times " + dollars(cmp.latex(scale)) + ")"));
+            splices.push_back({cell, rc});
+        } else {
+            r.wrong_terms.push_back(entry_name(x, i, 0) + ": " + dollars(cmp.latex(x(i, 0))) + " where " +
+                                    dollars(cmp.latex(right(i, 0))) + " belongs");
+        }
+    }
+    if (!splices.empty() && splices.size() == r.wrong_terms.size()) {
+        std::sort(splices.begin(), splices.end());
+        for (auto it = splices.rbegin(); it != splices.rend(); ++it)
+            corrected.replace(it->first.first, it->first.second - it->first.first, it->second);
+    } else {
+        corrected = matrix_latex(right, cmp);
+    }
+    r.corrected = r.equation.substr(0, r.equation.find(" = ")) + " = " + corrected;
+    return true;
+}
+
+void LinearAlgebra::flag_block(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
+                               Comparisons& cmp, EquationCheck& r) {
+    const MathRow* row = row_at(left_base + left.begin);
+    if (!row || !row->display) return;
+    std::string subject;
+    int subject_line = 0;
+    for (const auto& [key, e] : eigen_)
+        if (e.block == row->block && (subject.empty() || e.line < subject_line)) {
+            subject = key;
+            subject_line = e.line;
+        }
+    if (subject.empty()) return;
+    std::map<std::string, std::vector<std::string>> uses;
+    for (const Side* s : {&left, &right})
+        if (s->ok)
+            for (const auto& [k, names] : component_uses(s->value)) uses[k].insert(uses[k].end(), names.begin(), names.end());
+    const auto u = subject.find("_{");
+    if (u == std::string::npos) return;
+    const std::string sub_subject = subject.substr(u + 2, subject.size() - u - 3);
+    // Component names inside arrays are not in the sides' values: read them from the sources.
+    for (const Side* s : {&left, &right}) {
+        if (s->ok) continue;
+        for (const auto& [name, fn] : ctx_.free_names) {
+            std::string key;
+            int index = 0;
+            if (!component_of(name, &key, &index) || !eigen_.count(key)) continue;
+            // The name as the text writes it, subscript with or without a space: n_{2 x} or n_{2x}.
+            const std::string base = name.substr(0, name.find("_{"));
+            const std::string sub = name.substr(name.find("_{") + 2, name.size() - name.find("_{") - 3);
+            const std::string spaced = base + "_{" + sub.substr(0, sub.size() - 1) + " " + sub.back() + "}";
+            if (s->source.find(name) != std::string::npos || s->source.find(spaced) != std::string::npos) {
+                auto& v = uses[key];
+                if (std::find(v.begin(), v.end(), name) == v.end()) v.push_back(name);
+            }
+        }
+    }
+    for (const auto& [key, names] : uses) {
+        if (key == subject || key.find("_{") == std::string::npos) continue;
+        std::string list;
+        for (const std::string& n : names) list += (list.empty() ? "" : ", ") + dollars(n);
+        r.notes.push_back("row " + std::to_string(row->row_in_block + 1) + " of this display uses the components of " +
+                          dollars(key) + " (" + list + ") in the display about " + dollars(subject) +
+                          " (its eigen-equation, line " + std::to_string(subject_line) + ")");
+        if (r.verdict != Verdict::Disagrees) continue;
+        // The row with the subject's components instead: the correction when it holds.
+        const std::string other = key.substr(key.find("_{") + 2, key.size() - key.find("_{") - 3);
+        const std::string letter = key.substr(0, key.find("_{"));
+        auto renamed = [&](std::string s) {
+            const std::string from = letter + "_{" + other;
+            for (std::size_t p = s.find(from); p != std::string::npos; p = s.find(from, p + 1)) {
+                const std::size_t after = p + from.size();
+                if (after < s.size() && (s[after] == ' ' || s[after] == 'x' || s[after] == 'y' || s[after] == 'z'))
+                    s.replace(p + letter.size() + 2, other.size(), sub_subject);
+            }
+            return s;
+        };
+        const std::string fixed = renamed(left.source) + " = " + renamed(right.source);
+        const std::vector<Chain> chains = parse_math(fixed, ctx_);
+        if (chains.size() != 1 || chains[0].sides.size() != 2) continue;
+        EquationCheck again;
+        verifying_ = true;
+        check(chains[0].sides[0], left_base, chains[0].sides[1], left_base, cmp, again);
+        verifying_ = false;
+        if (again.verdict == Verdict::Agrees) {
+            r.corrected = fixed;
+            r.wrong_terms.insert(r.wrong_terms.begin(), "the row holds with the components of " + dollars(subject));
+        }
+    }
+}
+
+}  // namespace eomgen::checker
