@@ -36,11 +36,21 @@ using Factor = LinearAlgebra::Factor;
 using Term = LinearAlgebra::Term;
 using Cells = std::vector<std::vector<std::pair<std::size_t, std::size_t>>>;
 
-const char* const kVectorCommands[] = {"\\mathbf", "\\boldsymbol", "\\bm", "\\vec", "\\underline", "\\overrightarrow"};
+const char* const kVectorCommands[] = {"\\mathbf", "\\boldsymbol", "\\bm",     "\\vec",
+                                       "\\underline", "\\overrightarrow", "\\hat"};
 const char* const kMatrixEnvironments[] = {"array", "pmatrix", "bmatrix", "Bmatrix", "matrix", "smallmatrix",
                                            "vmatrix", "Vmatrix"};
 
 std::string dollars(const std::string& latex) { return "$" + latex + "$"; }
+
+/// A vector's name as the report shows it: `n_{1}` → `$\\mathbf{n}_{1}$`.
+std::string shown(const std::string& key) {
+    if (key == "1" || key.rfind("\\hat{", 0) == 0) return dollars(key == "1" ? "\\mathbf{1}" : key);
+    std::size_t end = key.find("_{");
+    if (end == std::string::npos) end = key.find('\'');
+    if (end == std::string::npos) end = key.size();
+    return dollars("\\mathbf{" + key.substr(0, end) + "}" + key.substr(end));
+}
 
 bool starts_command(std::string_view s, std::size_t i, std::string_view cmd) {
     if (s.substr(i, cmd.size()) != cmd) return false;
@@ -380,9 +390,28 @@ bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Factor& f, s
                 end = v + 1;
             }
         }
+        // Primes: r' is another vector than r.
+        std::string primes;
+        for (std::size_t p = end;;) {
+            while (p < e && s[p] == ' ') ++p;
+            if (p < e && s[p] == '\'') {
+                primes += "'";
+                end = ++p;
+            } else if (s.substr(p, 9) == "^{\\prime}") {
+                primes += "'";
+                end = p += 9;
+            } else if (s.substr(p, 7) == "^\\prime") {
+                primes += "'";
+                end = p += 7;
+            } else {
+                break;
+            }
+        }
+        if (std::string_view(c) == "\\hat") letter = "\\hat{" + letter + "}";
         f.kind = Factor::Name;
         f.key = canonical_name(letter + (sub.empty() ? "" : "_" + sub));
         if (f.key.empty()) f.key = letter + (sub.empty() ? "" : "_" + sub);
+        f.key += primes;
         i = end;
         f.end = end;
         return true;
@@ -479,6 +508,33 @@ bool same(const ex& a, const ex& b, Comparisons& cmp, double tol) {
     } catch (const std::exception&) {
     }
     return cmp.same(a, b, tol);
+}
+
+/// The names every text shares: the identity `\\mathbf{1}` and the unit vectors of the axes, `\\hat{i}`, `\\hat{j}`,
+/// `\\hat{k}` and `\\hat{x}`, `\\hat{y}`, `\\hat{z}`.
+std::optional<GiNaC::matrix> builtin(const std::string& key) {
+    if (key == "1") return GiNaC::matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int k = 0; k < 3; ++k)
+        if (key == std::string("\\hat{") + "ijk"[k] + "}" || key == std::string("\\hat{") + "xyz"[k] + "}") {
+            GiNaC::matrix u(3, 1);
+            u(unsigned(k), 0) = 1;
+            return u;
+        }
+    return std::nullopt;
+}
+
+/// s without the spaces, spacing commands and `\\cdot` it ends with (what stood before a vector's name).
+std::string without_trailing_operators(std::string s) {
+    for (bool more = true; more;) {
+        more = false;
+        for (const std::string tail : {"\\cdot", "\\,", "\\;", "\\!", " "})
+            if (s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0) {
+                s.resize(s.size() - tail.size());
+                more = true;
+            }
+    }
+    const auto t = trimmed(s, 0, s.size());
+    return s.substr(t.first, t.second - t.first);
 }
 
 /// A basis of the null space of m (Gaussian elimination, pivots decided by normal()).
@@ -606,7 +662,7 @@ void LinearAlgebra::note_link(const Side& left, std::size_t left_base, const Sid
         bool self = false;
         for (const Term& o : terms[1 - k])
             for (const Factor& f : o.factors) self = self || (f.kind == Factor::Name && f.key == key);
-        if (!self && !stated_.count(key) && key != "1" && !declared(key))
+        if (!self && !stated_.count(key) && !builtin(key) && !declared(key))
             stated_[key] = {sides[1 - k]->source, bases[1 - k] + sides[1 - k]->begin, sides[1 - k],
                             d_.position(bases[1 - k] + sides[1 - k]->begin).line};
     }
@@ -675,6 +731,12 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
             *why = v.problem;
             return std::nullopt;
         }
+        for (const auto& [name, fn] : ctx_.free_names)
+            if (fn.kind == NameKind::Vector && v.value.has(fn.symbol)) {
+                *why = "a vector inside a scalar expression (" + dollars(name) +
+                       " in a derivative, a magnitude or a function) is not compared";
+                return std::nullopt;
+            }
         return v.value.subs(components);
     };
     std::optional<Value> total;
@@ -757,6 +819,8 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
                 m.reset();
             } else if (m->cols() == v.m.rows()) {
                 m = m->mul(v.m);
+            } else if (f.op == Factor::Dot && m->cols() == 1 && m->rows() == v.m.rows()) {
+                m = m->transpose().mul(v.m);  // n · A: the vector as a row
             } else {
                 *why = "a " + shape(*m) + " matrix times a " + shape(v.m) + " one";
                 return std::nullopt;
@@ -786,10 +850,10 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
 }
 
 std::optional<GiNaC::matrix> LinearAlgebra::named(const std::string& key, Comparisons& cmp, std::string* why) {
-    if (key == "1") return GiNaC::matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    if (auto b = builtin(key)) return b;
     if (auto d = declared(key)) return d;
     if (resolving_.count(key)) {
-        *why = "the vector " + dollars(key) + " is defined by itself";
+        *why = "the vector " + shown(key) + " is defined by itself";
         return std::nullopt;
     }
     resolving_.insert(key);
@@ -811,7 +875,7 @@ std::optional<GiNaC::matrix> LinearAlgebra::named(const std::string& key, Compar
             }
             return v;
         }
-        *why = "the eigenvector " + dollars(key) + " is not known: " +
+        *why = "the eigenvector " + shown(key) + " is not known: " +
                (e ? e->why_not : std::string("its eigen-equation cannot be read"));
         return std::nullopt;
     }
@@ -819,9 +883,12 @@ std::optional<GiNaC::matrix> LinearAlgebra::named(const std::string& key, Compar
     if (s != stated_.end()) {
         std::string inner;
         const auto v = read(s->second.source, s->second.base, cmp, &inner, nullptr);
-        if (v && !v->scalar && unknown_names(v->m).empty()) return v->m;
+        if (v && !v->scalar && unknown_names(v->m).empty()) {
+            used_stated_.insert(key);
+            return v->m;
+        }
     }
-    *why = "the vector " + dollars(key) + " is not known (the model declares no components of it, and the text "
+    *why = "the vector " + shown(key) + " is not known (the model declares no components of it, and the text "
                                            "states no value of it)";
     return std::nullopt;
 }
@@ -963,6 +1030,19 @@ GiNaC::exmap LinearAlgebra::component_values(Comparisons& cmp) {
     return out;
 }
 
+namespace {
+/// A correction on one line: the source's line breaks (inside arrays) as spaces.
+std::string one_line(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        if (c == '\n' || c == '\r') c = ' ';
+        if (c == ' ' && !out.empty() && out.back() == ' ') continue;
+        out += c;
+    }
+    return out;
+}
+}  // namespace
+
 bool LinearAlgebra::check(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
                           Comparisons& cmp, EquationCheck& r) {
     bool involved = false;
@@ -974,6 +1054,7 @@ bool LinearAlgebra::check(const Side& left, std::size_t left_base, const Side& r
     if (!involved) return false;
     judge_link(left, left_base, right, right_base, cmp, r);
     if (!verifying_) flag_block(left, left_base, right, right_base, cmp, r);
+    r.corrected = one_line(r.corrected);
     return true;
 }
 
@@ -1000,6 +1081,26 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
         if (!self && eigen_.count(key))
             return judge_definition(key, *sides[1 - k], bases[1 - k], terms[1 - k], cmp, r);
     }
+    // The text's statement of a vector that is not the model's: a definition, compared where it is used.
+    for (int k = 0; k < 2; ++k) {
+        const auto& t = terms[k];
+        if (t.size() != 1 || t[0].negative || t[0].factors.size() != 1 || t[0].factors[0].kind != Factor::Name) continue;
+        const auto st = stated_.find(t[0].factors[0].key);
+        if (st == stated_.end() || st->second.side != sides[1 - k]) continue;
+        const auto x = read(sides[1 - k]->source, bases[1 - k], cmp, &why, nullptr);
+        if (!x) {
+            r.reason = why;
+        } else if (const auto unknown = unknown_names(x->m); !unknown.empty()) {
+            std::string list;
+            for (const std::string& u : unknown) list += (list.empty() ? "" : ", ") + dollars(u);
+            r.reason = "unknown symbols " + list + ": not symbols of the model (--map can say what they stand for)";
+        } else {
+            r.reason = "the text's definition of " + shown(st->first) +
+                       " (not a quantity of the model): compared where it is used";
+        }
+        return false;
+    }
+    used_stated_.clear();
     // An eigen-equation A · n = λ n: λ must be an eigenvalue of A.
     const auto& l = terms[0];
     const auto& rt = terms[1];
@@ -1031,8 +1132,13 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
         if (v[0]->scalar) a = GiNaC::matrix(b.rows(), b.cols());
         else b = GiNaC::matrix(a.rows(), a.cols());
     } else if (v[0]->scalar != v[1]->scalar || a.rows() != b.rows() || a.cols() != b.cols()) {
-        r.reason = "the sides have different shapes (" + std::string(v[0]->scalar ? "a scalar" : "a matrix or vector") +
-                   " and " + (v[1]->scalar ? "a scalar" : "a matrix or vector") + ")";
+        const auto shape = [](const Value& x) {
+            return x.scalar ? std::string("a scalar")
+                            : (x.m.cols() == 1 ? "a " + std::to_string(x.m.rows()) + "-vector"
+                                               : "a " + std::to_string(x.m.rows()) + "×" + std::to_string(x.m.cols()) +
+                                                     " matrix");
+        };
+        r.reason = "the sides have different shapes: " + shape(*v[0]) + " and " + shape(*v[1]);
         return false;
     }
     const bool vector = !v[0]->scalar || !v[1]->scalar;
@@ -1062,13 +1168,17 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
         for (const Side* s : sides)
             if (s->ok)
                 for (const auto& [key, names] : component_uses(s->value)) keys.insert(key);
+        for (const std::string& key : used_stated_)
+            if (!eigen_.count(key))
+                r.notes.push_back("with " + shown(key) + " as the text states it (line " +
+                                  std::to_string(stated_.at(key).line) + ")");
         for (const std::string& key : keys) {
             if (!eigen_.count(key)) continue;
             const Eigen& e = eigen_.at(key);
             if (e.basis.empty()) continue;
             r.notes.push_back(
-                e.stated_fits ? "with " + dollars(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) + ")"
-                              : "with " + dollars(key) + " any eigenvector of its eigen-equation (line " + std::to_string(e.line) +
+                e.stated_fits ? "with " + shown(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) + ")"
+                              : "with " + shown(key) + " any eigenvector of its eigen-equation (line " + std::to_string(e.line) +
                                     ")" + (coefficients ? ", $c_{k}$ its free coefficients" : ""));
         }
     };
@@ -1086,6 +1196,24 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
         for (const std::string& u : unknown) list += (list.empty() ? "" : ", ") + dollars(u);
         r.reason = "unknown symbols " + list + ": not symbols of the model (--map can say what they stand for)";
         return false;
+    }
+    if (coefficients) {
+        // Any multiple of an eigenvector: a relation homogeneous in its coefficients fails for them all, one that is
+        // not (a normalization, n₁ × n₂ = −n₃) depends on the scale, which the text does not state.
+        GiNaC::exmap zero;
+        for (const auto& [name, sym] : coefficients_) zero[sym] = 0;
+        bool real = false;
+        for (const auto& [i, j] : wrong) {
+            const ex d = a(i, j) - b(i, j);
+            bool scaled = false;
+            for (const auto& [name, sym] : coefficients_) scaled = scaled || d.has(sym);
+            real = real || !scaled || same(d.subs(zero), 0, cmp, tol);
+        }
+        if (!real) {
+            r.reason = "it depends on the length of an eigenvector that the text does not state as one";
+            eigen_note();
+            return false;
+        }
     }
     r.verdict = Verdict::Disagrees;
     eigen_note();
@@ -1183,9 +1311,7 @@ bool LinearAlgebra::judge_eigen_equation(const std::string& key, const Side& lef
     std::string matrix_source = left.source.substr(0, name_at);
     const auto t = trimmed(matrix_source, 0, matrix_source.size());
     matrix_source = matrix_source.substr(t.first, t.second - t.first);
-    if (matrix_source.size() >= 5 && matrix_source.compare(matrix_source.size() - 5, 5, "\\cdot") == 0)
-        matrix_source.resize(matrix_source.size() - 5);
-    while (!matrix_source.empty() && matrix_source.back() == ' ') matrix_source.pop_back();
+    matrix_source = without_trailing_operators(matrix_source);
     r.compared_with = "the eigenvalues of " + dollars(matrix_source);
     const Eigen* e = eigen(key, cmp);
     const bool stated = stated_.count(key) != 0;
@@ -1193,19 +1319,21 @@ bool LinearAlgebra::judge_eigen_equation(const std::string& key, const Side& lef
         r.verdict = Verdict::Agrees;
         r.reason = dollars(cmp.latex(lambda)) + " is an eigenvalue: $\\det(A - \\lambda 1) = 0$";
         if (e && e->stated_fits && e->used_lambda.is_equal(lambda))
-            r.notes.push_back(dollars(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
+            r.notes.push_back(shown(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
                               ") satisfies it");
         else if (stated && e && !e->stated_fits)
-            r.notes.push_back(dollars(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
+            r.notes.push_back(shown(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
                               ") does not satisfy it");
         return true;
     }
     r.verdict = Verdict::Disagrees;
     r.difference = "\\det(A - \\lambda 1) = " + cmp.latex(det);
-    r.wrong_terms.push_back(dollars(cmp.latex(lambda)) + " is not an eigenvalue: $\\det(A - \\lambda 1) = " +
+    const std::string written = without_trailing_operators(lambda_source);
+    r.wrong_terms.push_back(dollars(written) + " (" + dollars(cmp.latex(lambda)) +
+                            ") is not an eigenvalue: $\\det(A - \\lambda 1) = " +
                             cmp.latex(det) + " \\neq 0$");
     if (e && e->stated_eigenvalue) {
-        r.wrong_terms.push_back(dollars(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
+        r.wrong_terms.push_back(shown(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
                                 ") is an eigenvector with the eigenvalue " + dollars(cmp.latex(e->used_lambda)));
         r.corrected = left.source + " = " + cmp.latex(e->used_lambda) + " " + right.source.substr(right_name_at);
     }
@@ -1224,17 +1352,17 @@ bool LinearAlgebra::judge_definition(const std::string& key, const Side& side, s
     if (!unknown.empty()) {
         std::string list;
         for (const std::string& u : unknown) list += (list.empty() ? "" : ", ") + dollars(u);
-        r.reason = "the components of " + dollars(key) + " are written in unknown symbols " + list;
+        r.reason = "the components of " + shown(key) + " are written in unknown symbols " + list;
         return false;
     }
     Eigen* e = eigen(key, cmp);
     if (!e || e->basis.empty()) {
-        r.reason = "the eigenvector " + dollars(key) + " cannot be compared: " + (e ? e->why_not : std::string());
+        r.reason = "the eigenvector " + shown(key) + " cannot be compared: " + (e ? e->why_not : std::string());
         return false;
     }
     const unsigned n = e->A.rows();
     if (v->scalar || v->m.cols() != 1 || v->m.rows() != n) {
-        r.reason = dollars(key) + " is not a vector of " + std::to_string(n) + " components";
+        r.reason = shown(key) + " is not a vector of " + std::to_string(n) + " components";
         return false;
     }
     r.compared_with = "the eigenvectors of its eigen-equation (line " + std::to_string(e->line) + ") for " +
@@ -1367,7 +1495,7 @@ void LinearAlgebra::flag_block(const Side& left, std::size_t left_base, const Si
         std::string list;
         for (const std::string& n : names) list += (list.empty() ? "" : ", ") + dollars(n);
         r.notes.push_back("row " + std::to_string(row->row_in_block + 1) + " of this display uses the components of " +
-                          dollars(key) + " (" + list + ") in the display about " + dollars(subject) +
+                          shown(key) + " (" + list + ") in the display about " + shown(subject) +
                           " (its eigen-equation, line " + std::to_string(subject_line) + ")");
         if (r.verdict != Verdict::Disagrees) continue;
         // The row with the subject's components instead: the correction when it holds.
@@ -1391,7 +1519,7 @@ void LinearAlgebra::flag_block(const Side& left, std::size_t left_base, const Si
         verifying_ = false;
         if (again.verdict == Verdict::Agrees) {
             r.corrected = fixed;
-            r.wrong_terms.insert(r.wrong_terms.begin(), "the row holds with the components of " + dollars(subject));
+            r.wrong_terms.insert(r.wrong_terms.begin(), "the row holds with the components of " + shown(subject));
         }
     }
 }

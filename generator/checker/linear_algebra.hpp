@@ -142,6 +142,7 @@ class LinearAlgebra {
     std::map<std::string, Eigen> eigen_;
     std::map<std::string, EigenSources> eigen_sources_;
     std::map<std::string, Stated> stated_;
+    std::set<std::string> used_stated_;  ///< stated vectors a link used (for its notes)
     std::set<std::string> resolving_;  ///< names being resolved (a vector stated in terms of itself)
     std::map<std::string, GiNaC::symbol> coefficients_;  ///< free coefficients of eigenspaces, by name
     bool verifying_ = false;

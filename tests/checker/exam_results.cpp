@@ -213,7 +213,7 @@ TEST_CASE("seed: the slips of 5-6, 5-15, 5-17, 5-18 and Ex. 25 are found where t
     };
     const std::vector<Case> cases = {
         {"torque_free_top", "Derivation 5-6", "torque_free_top", {30, 39}, 48},
-        {"triangle_plate_5_15", "Exercise 5-15", "", {88, 89}, 57},
+        {"triangle_plate_5_15", "Exercise 5-15", "", {88, 89, 171, 197}, 57},  // n₁, n₂ in n₂'s, n₃'s rows
         {"rolling_cone", "5-17", "rolling_cone", {217, 219}, 17},
         {"dumbbell_5_18", "Exercise 5-18", "dumbbell_5_18", {238}, 28},
         {"rolling_sphere", "Exercise 25", "rolling_sphere", {469}, 56},  // φ's equation called ψ's (line 475)
