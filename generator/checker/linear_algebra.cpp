@@ -49,7 +49,8 @@ std::string shown(const std::string& key) {
     std::size_t end = key.find("_{");
     if (end == std::string::npos) end = key.find('\'');
     if (end == std::string::npos) end = key.size();
-    return dollars("\\mathbf{" + key.substr(0, end) + "}" + key.substr(end));
+    const std::string bold = key[0] == '\\' ? "\\boldsymbol{" : "\\mathbf{";  // \mathbf does not make Greek bold
+    return dollars(bold + key.substr(0, end) + "}" + key.substr(end));
 }
 
 bool starts_command(std::string_view s, std::size_t i, std::string_view cmd) {
