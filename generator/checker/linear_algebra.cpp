@@ -714,15 +714,8 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::read(std::string_view source,
 
 std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Term>& terms, std::string_view source,
                                                             std::size_t base, Comparisons& cmp, std::string* why) {
-    // Components of eigenvectors (n_{1x}): names a cell may create on first reading.
-    GiNaC::exmap components;
-    std::size_t names_seen = std::size_t(-1);
     auto scalar = [&](std::size_t b, std::size_t e) -> std::optional<ex> {
         const Side s = parse_expression(source.substr(b, e - b), ctx_);
-        if (ctx_.free_names.size() != names_seen) {
-            components = component_values(cmp);
-            names_seen = ctx_.free_names.size();
-        }
         if (!s.ok) {
             *why = "cannot read " + dollars(std::string(source.substr(b, e - b))) + ": " + s.error;
             return std::nullopt;
@@ -738,7 +731,7 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
                        " in a derivative, a magnitude or a function) is not compared";
                 return std::nullopt;
             }
-        return v.value.subs(components);
+        return v.value.subs(component_values(v.value, cmp));
     };
     std::optional<Value> total;
     for (const Term& t : terms) {
@@ -882,11 +875,20 @@ std::optional<GiNaC::matrix> LinearAlgebra::named(const std::string& key, Compar
     }
     auto s = stated_.find(key);
     if (s != stated_.end()) {
-        std::string inner;
-        const auto v = read(s->second.source, s->second.base, cmp, &inner, nullptr);
-        if (v && !v->scalar && unknown_names(v->m).empty()) {
+        // Read once: a stated vector may use others, each of which is read once too.
+        auto memo = stated_values_.find(key);
+        if (memo == stated_values_.end()) {
+            std::string inner;
+            const auto v = read(s->second.source, s->second.base, cmp, &inner, nullptr);
+            std::optional<GiNaC::matrix> value;
+            if (v && !v->scalar && unknown_names(v->m).empty()) value = v->m;
+            // Read inside another vector's reading, a value may miss that vector: kept only when final.
+            if (resolving_.size() == 1 || value) memo = stated_values_.emplace(key, value).first;
+            else memo = stated_values_.end();
+        }
+        if (memo != stated_values_.end() && memo->second) {
             used_stated_.insert(key);
-            return v->m;
+            return memo->second;
         }
     }
     *why = "the vector " + shown(key) + " is not known (the model declares no components of it, and the text "
@@ -1016,17 +1018,19 @@ std::map<std::string, std::vector<std::string>> LinearAlgebra::component_uses(co
     return out;
 }
 
-GiNaC::exmap LinearAlgebra::component_values(Comparisons& cmp) {
+GiNaC::exmap LinearAlgebra::component_values(const GiNaC::ex& e, Comparisons& cmp) {
     GiNaC::exmap out;
-    for (const auto& [name, fn] : ctx_.free_names) {
-        std::string key;
-        int index = 0;
-        if (fn.kind != NameKind::Unknown || !component_of(name, &key, &index)) continue;
-        if (!eigen_.count(key) && !stated_.count(key)) continue;
+    for (const auto& [key, names] : component_uses(e)) {
         if (resolving_.count(key)) continue;
         std::string why;
         const auto v = named(key, cmp, &why);
-        if (v && v->cols() == 1 && v->rows() == 3) out[fn.symbol] = (*v)(unsigned(index), 0);
+        if (!v || v->cols() != 1 || v->rows() != 3) continue;
+        for (const std::string& name : names) {
+            std::string k;
+            int index = 0;
+            component_of(name, &k, &index);
+            out[ctx_.free_names.at(name).symbol] = (*v)(unsigned(index), 0);
+        }
     }
     return out;
 }

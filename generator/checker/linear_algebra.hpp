@@ -122,8 +122,8 @@ class LinearAlgebra {
     std::vector<std::string> unknown_names(const GiNaC::matrix& m) const;
     /// The vectors whose components `e` uses, as keys (`n_{1}`), with the component names.
     std::map<std::string, std::vector<std::string>> component_uses(const GiNaC::ex& e) const;
-    /// Component symbol → its value, for every vector with a known value.
-    GiNaC::exmap component_values(Comparisons& cmp);
+    /// Component symbol → its value, for the components `e` uses of vectors with a known value.
+    GiNaC::exmap component_values(const GiNaC::ex& e, Comparisons& cmp);
     bool judge_link(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
                     Comparisons& cmp, EquationCheck& r);
     bool judge_eigen_equation(const std::string& key, const Side& left, std::size_t left_base, std::size_t name_at,
@@ -142,6 +142,7 @@ class LinearAlgebra {
     std::map<std::string, Eigen> eigen_;
     std::map<std::string, EigenSources> eigen_sources_;
     std::map<std::string, Stated> stated_;
+    std::map<std::string, std::optional<GiNaC::matrix>> stated_values_;  ///< stated vectors, read once
     std::set<std::string> used_stated_;  ///< stated vectors a link used (for its notes)
     std::set<std::string> resolving_;  ///< names being resolved (a vector stated in terms of itself)
     std::map<std::string, GiNaC::symbol> coefficients_;  ///< free coefficients of eigenspaces, by name
