@@ -292,7 +292,7 @@ bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Factor& f, s
         if (is_matrix_environment(env) && environment_end(s, inner.first) == inner.second) {
             f.kind = bars ? Factor::DetArray : Factor::Array;
             f.cells = environment_cells(s, inner.first, inner.second);
-        } else if (!bars && comma_pieces(s, inner.first, inner.second).size() > 1) {
+        } else if ((open == "(" || open == "[") && comma_pieces(s, inner.first, inner.second).size() > 1) {
             f.kind = Factor::Tuple;
             for (const auto& p : comma_pieces(s, inner.first, inner.second)) f.cells.push_back({p});
         } else if (!bars && mentions_array(s.substr(inner.first, inner.second - inner.first))) {

@@ -115,3 +115,12 @@ TEST_CASE("linear algebra: scalar equations are left to the checker", "[checker]
     CHECK(k.verdict == Verdict::Agrees);
     CHECK(k.compared_with.find("the declared result k") == 0);
 }
+
+TEST_CASE("linear algebra: a Poisson bracket is not a tuple", "[checker][linear_algebra]") {
+    // \{a, b\} is the parser's bracket, a scalar factor ({θ, θ} = 0), never a vector: only ( ) and [ ] make tuples.
+    const EquationCheck e = one("\\{\\theta, \\theta\\} (1, 0) = (0, 0)");
+    INFO(describe(e));
+    CHECK(e.verdict == Verdict::Agrees);
+    const EquationCheck f = one("\\{\\theta, \\theta\\} (1, 0) = (1, 0)");
+    CHECK(f.verdict == Verdict::Disagrees);
+}
