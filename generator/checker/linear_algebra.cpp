@@ -2,6 +2,8 @@
  * eigen-equations, compared entry by entry with the model's quantities. */
 #include "checker/linear_algebra.hpp"
 
+#include "mechanics/bodies.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <set>
@@ -617,6 +619,15 @@ const MathRow* LinearAlgebra::row_at(std::size_t offset) const {
     return best;
 }
 
+bool LinearAlgebra::any_declared(const std::string& key) const {
+    for (const Result& r : model_.results) {
+        std::string c = canonical_name(r.latex);
+        if (c.empty()) c = r.latex;
+        if (c.rfind(key + "_{", 0) == 0) return true;
+    }
+    return false;
+}
+
 std::optional<GiNaC::matrix> LinearAlgebra::declared(const std::string& key) const {
     if (key.find('_') != std::string::npos) return std::nullopt;
     auto result = [&](const std::string& sub) -> std::optional<ex> {
@@ -638,6 +649,14 @@ std::optional<GiNaC::matrix> LinearAlgebra::declared(const std::string& key) con
             else t(unsigned(i), unsigned(j)) = t(unsigned(j), unsigned(i)) = *v;
         }
     if (tensor) return t;
+    // Not declared: the inertia tensor of the model's one body, when its centre of mass stays at the origin (about
+    // the centre of mass is then about the fixed point, in body axes: no other reading of I).
+    if (key == "I" && model_.bodies.size() == 1 && !any_declared(key)) {
+        const Body& b = model_.bodies[0];
+        bool fixed = true;
+        for (const ex& c : b.centre) fixed = fixed && c.is_zero();
+        if (fixed) return body_inertia(b);
+    }
     GiNaC::matrix v(3, 1);
     for (int i = 0; i < 3; ++i) {
         const auto x = result(std::string(1, char('x' + i)));

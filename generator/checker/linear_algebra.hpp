@@ -45,6 +45,8 @@ bool reads_as_array(const Side& side);
  *  - `\mathbf{1}`: the 3×3 identity;
  *  - X whose components the model declares as results (`I_{xx}`, `I_{xy}`, … with I_{yx} = I_{xy} where only
  *    one is declared: a tensor; `\omega_{x}`, `\omega_{y}`, `\omega_{z}`: a vector): those results;
+ *  - `\mathbf{I}` with no component declared, in a model of one body whose centre of mass stays at the origin:
+ *    that body's inertia tensor (about its centre of mass, body axes: mechanics/bodies.hpp);
  *  - n with an eigen-equation in the text, `A \cdot n = λ n` (A a matrix the text or the model gives, λ a
  *    scalar), where λ is an eigenvalue of A (det(A − λ1) = 0): an eigenvector, the vector the text states
  *    (`n = (1/\sqrt{2})(1, 1, 0)`) when it is one, else any vector of the eigenspace (each coordinate a free
@@ -111,6 +113,8 @@ class LinearAlgebra {
     std::optional<GiNaC::matrix> named(const std::string& key, Comparisons& cmp, std::string* why);
     /// The tensor or vector whose components the model declares as results (X_{xx}…, X_{x}…).
     std::optional<GiNaC::matrix> declared(const std::string& key) const;
+    /// The model declares some component X_{…} of `key` as a result.
+    bool any_declared(const std::string& key) const;
     /// A side's value; `reference` (when given): the side is the model's quantity as a whole.
     std::optional<Value> read(std::string_view source, std::size_t base, Comparisons& cmp, std::string* why,
                               bool* reference);

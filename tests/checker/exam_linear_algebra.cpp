@@ -124,3 +124,27 @@ TEST_CASE("linear algebra: a Poisson bracket is not a tuple", "[checker][linear_
     const EquationCheck f = one("\\{\\theta, \\theta\\} (1, 0) = (1, 0)");
     CHECK(f.verdict == Verdict::Disagrees);
 }
+
+TEST_CASE("linear algebra: the torque-free top's tensor and its declared angular velocity", "[checker][linear_algebra]") {
+    // No component of I declared, one body fixed at its centre of mass: I is that body's tensor, diag(I, I, I_3);
+    // ω's components are the model's declared results (Goldstein (4.87), verified by eomgen).
+    const auto check = [](const std::string& math) {
+        const CheckReport r = eomgen::test::check_text("models/torque_free_top.toml", "# T\n\n$$" + math + "$$\n");
+        REQUIRE(r.equations.size() == 1);
+        INFO(describe(r.equations[0]));
+        return r.equations[0];
+    };
+    CHECK(check("\\mathbf{I} = \\begin{pmatrix} I & 0 & 0 \\\\ 0 & I & 0 \\\\ 0 & 0 & I_3 \\end{pmatrix}").verdict == Verdict::Agrees);
+    const EquationCheck swapped = check("\\mathbf{I} = \\begin{pmatrix} I_3 & 0 & 0 \\\\ 0 & I & 0 \\\\ 0 & 0 & I \\end{pmatrix}");
+    CHECK(swapped.verdict == Verdict::Disagrees);
+    CHECK(wrong_terms(swapped).find("row 1, column 1: the text's entry $I_3$ where $I$ belongs") != std::string::npos);
+    CHECK(wrong_terms(swapped).find("row 3, column 3: the text's entry $I$ where $I_{3}$ belongs") != std::string::npos);
+    CHECK(check("\\mathbf{I} \\boldsymbol{\\omega} = \\left(I \\omega_x, I \\omega_y, I_3 \\omega_z\\right)").verdict ==
+          Verdict::Agrees);
+    const std::string omega = "\\boldsymbol{\\omega} = \\left(\\dot\\phi \\sin\\theta \\sin\\psi + \\dot\\theta \\cos\\psi, "
+                              "\\dot\\phi \\sin\\theta \\cos\\psi SIGN \\dot\\theta \\sin\\psi, \\dot\\phi \\cos\\theta + \\dot\\psi\\right)";
+    CHECK(check(omega.substr(0, omega.find("SIGN")) + "-" + omega.substr(omega.find("SIGN") + 4)).verdict == Verdict::Agrees);
+    const EquationCheck sign = check(omega.substr(0, omega.find("SIGN")) + "+" + omega.substr(omega.find("SIGN") + 4));
+    CHECK(sign.verdict == Verdict::Disagrees);
+    CHECK(wrong_terms(sign).find("row 2 (y): the text's entry") == 0);
+}
