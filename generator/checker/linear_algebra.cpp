@@ -1257,50 +1257,53 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
         return true;
     }
     r.compared_with = "the model's quantities, entry by entry";
-    // The text's cells, when its side is s · [array] or s · (tuple): the right cell in the array's own scale.
-    const std::vector<Term>& tt = terms[1 - ref];
-    const int arr = single_array(tt);
-    ex scale = 1;
-    if (arr >= 0) {
-        for (std::size_t k = 0; k < tt[0].factors.size(); ++k) {
-            if (int(k) == arr) continue;
-            const Factor& f = tt[0].factors[k];
-            const std::string text = sides[1 - ref]->source.substr(f.begin, f.end - f.begin);
-            const Side s = parse_expression(text, ctx_);
-            const ScalarReading x = s.ok ? evaluate_(s, bases[1 - ref] + f.begin) : ScalarReading{};
-            scale = x.ok ? scale * x.value : ex(0);
-        }
-    }
-    const bool cells = arr >= 0 && !scale.is_zero() &&
-                       tt[0].factors[std::size_t(arr)].cells.size() == (vector ? T.rows() : 0) &&
-                       (T.cols() == 1 ? tt[0].factors[std::size_t(arr)].cells[0].size() == 1
-                                      : tt[0].factors[std::size_t(arr)].cells[0].size() == T.cols());
-    std::string corrected = sides[1 - ref]->source;
-    std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::string>> splices;
-    for (const auto& [i, j] : wrong) {
-        const std::string where = vector ? entry_name(T, i, j) + ": " : "";
-        if (cells) {
-            const auto& cell = tt[0].factors[std::size_t(arr)].cells[i][T.cols() == 1 ? 0 : j];
-            const std::string right_cell = cmp.latex(GiNaC::normal(R(i, j) / scale));
-            r.wrong_terms.push_back(where + "the text's entry " +
-                                    dollars(sides[1 - ref]->source.substr(cell.first, cell.second - cell.first)) + " where " +
-                                    dollars(right_cell) + " belongs" +
-                                    (scale.is_equal(1) ? "" : " (times " + dollars(cmp.latex(scale)) + ")"));
-            splices.push_back({cell, right_cell});
-        } else {
-            r.wrong_terms.push_back(where + dollars(cmp.latex(T(i, j))) + " where " + dollars(cmp.latex(R(i, j))) +
-                                    " belongs");
-        }
-    }
-    if (cells) {
-        std::sort(splices.begin(), splices.end());
-        for (auto it = splices.rbegin(); it != splices.rend(); ++it)
-            corrected.replace(it->first.first, it->first.second - it->first.first, it->second);
-    } else {
-        corrected = vector ? matrix_latex(R, cmp) : cmp.latex(R(0, 0));
-    }
+    const std::string corrected =
+        corrected_side(sides[1 - ref]->source, bases[1 - ref], terms[1 - ref], T, R, vector, wrong, cmp, r);
     r.corrected = ref == 0 ? left.source + " = " + corrected : corrected + " = " + right.source;
     return true;
+}
+
+std::string LinearAlgebra::corrected_side(const std::string& source, std::size_t base, const std::vector<Term>& terms,
+                                          const GiNaC::matrix& text, const GiNaC::matrix& right, bool vector,
+                                          const std::vector<std::pair<unsigned, unsigned>>& wrong, Comparisons& cmp,
+                                          EquationCheck& r) {
+    // s · [array] or s · (tuple): the right cell in the array's own scale, s the product of the scalar factors.
+    const int arr = single_array(terms);
+    ex scale = 1;
+    if (arr >= 0)
+        for (std::size_t k = 0; k < terms[0].factors.size(); ++k) {
+            if (int(k) == arr) continue;
+            const Factor& f = terms[0].factors[k];
+            const Side s = parse_expression(source.substr(f.begin, f.end - f.begin), ctx_);
+            const ScalarReading x = s.ok ? evaluate_(s, base + f.begin) : ScalarReading{};
+            scale = x.ok ? scale * x.value : ex(0);
+        }
+    const Cells* cells = nullptr;
+    if (arr >= 0 && vector && !scale.is_zero()) {
+        const Cells& c = terms[0].factors[std::size_t(arr)].cells;
+        if (c.size() == text.rows() && c[0].size() == (text.cols() == 1 ? 1 : text.cols())) cells = &c;
+    }
+    std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::string>> splices;
+    for (const auto& [i, j] : wrong) {
+        const std::string where = vector ? entry_name(text, i, j) + ": " : "";
+        if (!cells) {
+            r.wrong_terms.push_back(where + dollars(cmp.latex(text(i, j))) + " where " + dollars(cmp.latex(right(i, j))) +
+                                    " belongs");
+            continue;
+        }
+        const auto& cell = (*cells)[i][text.cols() == 1 ? 0 : j];
+        const std::string right_cell = cmp.latex(GiNaC::normal(right(i, j) / scale));
+        r.wrong_terms.push_back(where + "the text's entry " + dollars(source.substr(cell.first, cell.second - cell.first)) +
+                                " where " + dollars(right_cell) + " belongs" +
+                                (scale.is_equal(1) ? "" : " (times " + dollars(cmp.latex(scale)) + ")"));
+        splices.push_back({cell, right_cell});
+    }
+    if (!cells) return vector ? matrix_latex(right, cmp) : cmp.latex(right(0, 0));
+    std::string corrected = source;
+    std::sort(splices.begin(), splices.end());
+    for (auto it = splices.rbegin(); it != splices.rend(); ++it)
+        corrected.replace(it->first.first, it->first.second - it->first.first, it->second);
+    return corrected;
 }
 
 bool LinearAlgebra::judge_eigen_equation(const std::string& key, const Side& left, std::size_t left_base,
@@ -1437,43 +1440,10 @@ bool LinearAlgebra::judge_definition(const std::string& key, const Side& side, s
     if (best.is_zero()) best = 1;
     GiNaC::matrix right(n, 1);
     for (unsigned i = 0; i < n; ++i) right(i, 0) = GiNaC::normal(best * basis(i, 0));
-    const int arr = single_array(terms);
-    ex scale = 1;
-    if (arr >= 0)
-        for (std::size_t k = 0; k < terms[0].factors.size(); ++k) {
-            if (int(k) == arr) continue;
-            const Factor& f = terms[0].factors[k];
-            const Side sc = parse_expression(side.source.substr(f.begin, f.end - f.begin), ctx_);
-            const ScalarReading xr = sc.ok ? evaluate_(sc, base + f.begin) : ScalarReading{};
-            scale = xr.ok ? scale * xr.value : ex(0);
-        }
-    const bool cells = arr >= 0 && !scale.is_zero() && terms[0].factors[std::size_t(arr)].cells.size() * 1 ==
-                                                            (terms[0].factors[std::size_t(arr)].kind == Factor::Tuple ? n : n);
-    std::string corrected = side.source;
-    std::vector<std::pair<std::pair<std::size_t, std::size_t>, std::string>> splices;
-    const auto& cellrows = cells ? terms[0].factors[std::size_t(arr)].cells : Cells{};
-    for (unsigned i = 0; i < n; ++i) {
-        if (same(x(i, 0), right(i, 0), cmp, 1e-9)) continue;
-        if (cells && cellrows[i].size() == 1) {
-            const auto& cell = cellrows[i][0];
-            const std::string rc = cmp.latex(GiNaC::normal(right(i, 0) / scale));
-            r.wrong_terms.push_back(entry_name(x, i, 0) + ": the text's entry " +
-                                    dollars(side.source.substr(cell.first, cell.second - cell.first)) + " where " +
-                                    dollars(rc) + " belongs" +
-                                    (scale.is_equal(1) ? "" : " (times " + dollars(cmp.latex(scale)) + ")"));
-            splices.push_back({cell, rc});
-        } else {
-            r.wrong_terms.push_back(entry_name(x, i, 0) + ": " + dollars(cmp.latex(x(i, 0))) + " where " +
-                                    dollars(cmp.latex(right(i, 0))) + " belongs");
-        }
-    }
-    if (!splices.empty() && splices.size() == r.wrong_terms.size()) {
-        std::sort(splices.begin(), splices.end());
-        for (auto it = splices.rbegin(); it != splices.rend(); ++it)
-            corrected.replace(it->first.first, it->first.second - it->first.first, it->second);
-    } else {
-        corrected = matrix_latex(right, cmp);
-    }
+    std::vector<std::pair<unsigned, unsigned>> wrong;
+    for (unsigned i = 0; i < n; ++i)
+        if (!same(x(i, 0), right(i, 0), cmp, 1e-9)) wrong.emplace_back(i, 0);
+    const std::string corrected = corrected_side(side.source, base, terms, x, right, true, wrong, cmp, r);
     r.corrected = r.equation.substr(0, r.equation.find(" = ")) + " = " + corrected;
     return true;
 }

@@ -135,6 +135,15 @@ class LinearAlgebra {
                               EquationCheck& r);
     bool judge_definition(const std::string& key, const Side& side, std::size_t base, const std::vector<Term>& terms,
                           Comparisons& cmp, EquationCheck& r);
+    /**
+     * The text's side `source` (its `terms`, first byte at file offset `base`) that reads as `text` where `right`
+     * belongs, wrong at the entries `wrong`: one sentence per wrong entry into r.wrong_terms; returns the side
+     * corrected (its cells replaced, in the array's own scale, when it is s · [array] or s · (tuple); else `right`).
+     */
+    std::string corrected_side(const std::string& source, std::size_t base, const std::vector<Term>& terms,
+                               const GiNaC::matrix& text, const GiNaC::matrix& right, bool vector,
+                               const std::vector<std::pair<unsigned, unsigned>>& wrong, Comparisons& cmp,
+                               EquationCheck& r);
     void flag_block(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
                     Comparisons& cmp, EquationCheck& r);
     const MathRow* row_at(std::size_t offset) const;
