@@ -38,12 +38,14 @@ using Factor = LinearAlgebra::Factor;
 using Term = LinearAlgebra::Term;
 using Cells = std::vector<std::vector<std::pair<std::size_t, std::size_t>>>;
 
-const char* const kVectorCommands[] = {"\\mathbf", "\\boldsymbol", "\\bm",     "\\vec",
+const char* const kVectorCommands[] = {"\\mathbf",    "\\boldsymbol",     "\\bm", "\\vec",
                                        "\\underline", "\\overrightarrow", "\\hat"};
-const char* const kMatrixEnvironments[] = {"array", "pmatrix", "bmatrix", "Bmatrix", "matrix", "smallmatrix",
-                                           "vmatrix", "Vmatrix"};
+const char* const kMatrixEnvironments[] = {"array",  "pmatrix",     "bmatrix", "Bmatrix",
+                                           "matrix", "smallmatrix", "vmatrix", "Vmatrix"};
 
-std::string dollars(const std::string& latex) { return "$" + latex + "$"; }
+std::string dollars(const std::string& latex) {
+    return "$" + latex + "$";
+}
 
 /// A vector's name as the report shows it: `n_{1}` → `$\\mathbf{n}_{1}$`.
 std::string shown(const std::string& key) {
@@ -51,7 +53,8 @@ std::string shown(const std::string& key) {
     std::size_t end = key.find("_{");
     if (end == std::string::npos) end = key.find('\'');
     if (end == std::string::npos) end = key.size();
-    const std::string bold = key[0] == '\\' ? "\\boldsymbol{" : "\\mathbf{";  // \mathbf does not make Greek bold
+    const std::string bold =
+        key[0] == '\\' ? "\\boldsymbol{" : "\\mathbf{";  // \mathbf does not make Greek bold
     return dollars(bold + key.substr(0, end) + "}" + key.substr(end));
 }
 
@@ -65,7 +68,8 @@ bool blank(std::string_view s) {
     for (std::size_t i = 0; i < s.size(); ++i) {
         const char c = s[i];
         if (std::isspace(static_cast<unsigned char>(c)) || c == '.' || c == ',' || c == '~') continue;
-        if (c == '\\' && i + 1 < s.size() && std::string_view(",;:! ").find(s[i + 1]) != std::string_view::npos) {
+        if (c == '\\' && i + 1 < s.size() &&
+            std::string_view(",;:! ").find(s[i + 1]) != std::string_view::npos) {
             ++i;
             continue;
         }
@@ -88,7 +92,8 @@ std::pair<std::size_t, std::size_t> trimmed(std::string_view s, std::size_t b, s
     return {b, e};
 }
 
-/// The end of the bracket group opening at s[i] ('(', '[' or '{'), past its close; npos when it does not close.
+/// The end of the bracket group opening at s[i] ('(', '[' or '{'), past its close; npos when it does not
+/// close.
 std::size_t group_end(std::string_view s, std::size_t i) {
     int depth = 0;
     for (std::size_t k = i; k < s.size(); ++k) {
@@ -129,7 +134,8 @@ std::size_t environment_end(std::string_view s, std::size_t i) {
 }
 
 bool is_matrix_environment(const std::string& env) {
-    return std::find(std::begin(kMatrixEnvironments), std::end(kMatrixEnvironments), env) != std::end(kMatrixEnvironments);
+    return std::find(std::begin(kMatrixEnvironments), std::end(kMatrixEnvironments), env) !=
+           std::end(kMatrixEnvironments);
 }
 
 /// The cells of the matrix environment s[b, e) (`\begin{env}` … `\end{env}`), by rows.
@@ -156,12 +162,14 @@ Cells environment_cells(std::string_view s, std::size_t b, std::size_t e) {
         }
     }
     rows.back().push_back(trimmed(s, start, end));
-    if (rows.size() > 1 && rows.back().size() == 1 && rows.back()[0].first == rows.back()[0].second) rows.pop_back();
+    if (rows.size() > 1 && rows.back().size() == 1 && rows.back()[0].first == rows.back()[0].second)
+        rows.pop_back();
     return rows;
 }
 
 /// The top-level commas of s[b, e) split it: a tuple's entries (one piece when there is no comma).
-std::vector<std::pair<std::size_t, std::size_t>> comma_pieces(std::string_view s, std::size_t b, std::size_t e) {
+std::vector<std::pair<std::size_t, std::size_t>> comma_pieces(std::string_view s, std::size_t b,
+                                                              std::size_t e) {
     std::vector<std::pair<std::size_t, std::size_t>> out;
     int depth = 0;
     std::size_t start = b;
@@ -206,8 +214,8 @@ std::string undecorated(std::string_view arg) {
             changed = true;
             continue;
         }
-        for (const char* c : {"\\mathbf", "\\boldsymbol", "\\bm", "\\vec", "\\underline", "\\overrightarrow", "\\mathrm",
-                              "\\mathit", "\\text", "\\mathsf"}) {
+        for (const char* c : {"\\mathbf", "\\boldsymbol", "\\bm", "\\vec", "\\underline", "\\overrightarrow",
+                              "\\mathrm", "\\mathit", "\\text", "\\mathsf"}) {
             const std::string cmd = c;
             if (s.rfind(cmd, 0) != 0) continue;
             std::size_t k = cmd.size();
@@ -228,7 +236,8 @@ std::string undecorated(std::string_view arg) {
     return s;
 }
 
-/// Splits `n_{1x}` into its vector `n_{1}` and the component 0, 1, 2 (x, y, z); false when it is no component.
+/// Splits `n_{1x}` into its vector `n_{1}` and the component 0, 1, 2 (x, y, z); false when it is no
+/// component.
 bool component_of(const std::string& name, std::string* key, int* index) {
     const std::size_t u = name.find("_{");
     if (u == std::string::npos || u == 0 || name.back() != '}') return false;
@@ -375,7 +384,8 @@ bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Factor& f, s
             arg_end = k + 1;
         }
         std::string letter = undecorated(s.substr(k, arg_end - k));
-        if (!letter.empty() && letter.front() == '{' && letter.back() == '}') letter = letter.substr(1, letter.size() - 2);
+        if (!letter.empty() && letter.front() == '{' && letter.back() == '}')
+            letter = letter.substr(1, letter.size() - 2);
         std::size_t end = arg_end;
         std::string sub;
         std::size_t u = end;
@@ -513,7 +523,8 @@ bool same(const ex& a, const ex& b, Comparisons& cmp, double tol) {
     return cmp.same(a, b, tol);
 }
 
-/// The names every text shares: the identity `\\mathbf{1}` and the unit vectors of the axes, `\\hat{i}`, `\\hat{j}`,
+/// The names every text shares: the identity `\\mathbf{1}` and the unit vectors of the axes, `\\hat{i}`,
+/// `\\hat{j}`,
 /// `\\hat{k}` and `\\hat{x}`, `\\hat{y}`, `\\hat{z}`.
 std::optional<GiNaC::matrix> builtin(const std::string& key) {
     if (key == "1") return GiNaC::matrix{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
@@ -645,12 +656,14 @@ std::optional<GiNaC::matrix> LinearAlgebra::declared(const std::string& key) con
             const std::string a{char('x' + i), char('x' + j)}, b{char('x' + j), char('x' + i)};
             auto v = result(a);
             if (!v) v = result(b);
-            if (!v) tensor = false;
-            else t(unsigned(i), unsigned(j)) = t(unsigned(j), unsigned(i)) = *v;
+            if (!v)
+                tensor = false;
+            else
+                t(unsigned(i), unsigned(j)) = t(unsigned(j), unsigned(i)) = *v;
         }
     if (tensor) return t;
-    // Not declared: the inertia tensor of the model's one body, when its centre of mass stays at the origin (about
-    // the centre of mass is then about the fixed point, in body axes: no other reading of I).
+    // Not declared: the inertia tensor of the model's one body, when its centre of mass stays at the origin
+    // (about the centre of mass is then about the fixed point, in body axes: no other reading of I).
     if (key == "I" && model_.bodies.size() == 1 && !any_declared(key)) {
         const Body& b = model_.bodies[0];
         bool fixed = true;
@@ -666,7 +679,8 @@ std::optional<GiNaC::matrix> LinearAlgebra::declared(const std::string& key) con
     return v;
 }
 
-void LinearAlgebra::note_link(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base) {
+void LinearAlgebra::note_link(const Side& left, std::size_t left_base, const Side& right,
+                              std::size_t right_base) {
     const Side* sides[2] = {&left, &right};
     const std::size_t bases[2] = {left_base, right_base};
     std::vector<Term> terms[2];
@@ -677,7 +691,9 @@ void LinearAlgebra::note_link(const Side& left, std::size_t left_base, const Sid
     // A stated vector: one side is its name alone.
     for (int k = 0; k < 2; ++k) {
         const auto& t = terms[k];
-        if (t.size() != 1 || t[0].negative || t[0].factors.size() != 1 || t[0].factors[0].kind != Factor::Name) continue;
+        if (t.size() != 1 || t[0].negative || t[0].factors.size() != 1 ||
+            t[0].factors[0].kind != Factor::Name)
+            continue;
         const std::string& key = t[0].factors[0].key;
         bool self = false;
         for (const Term& o : terms[1 - k])
@@ -691,11 +707,14 @@ void LinearAlgebra::note_link(const Side& left, std::size_t left_base, const Sid
     const auto& r = terms[1];
     if (l.size() != 1 || r.size() != 1 || l[0].factors.size() < 2) return;
     const Factor& n = l[0].factors.back();
-    if (n.kind != Factor::Name || r[0].factors.back().kind != Factor::Name || r[0].factors.back().key != n.key) return;
+    if (n.kind != Factor::Name || r[0].factors.back().kind != Factor::Name ||
+        r[0].factors.back().key != n.key)
+        return;
     for (std::size_t k = 0; k + 1 < r[0].factors.size(); ++k)
         if (r[0].factors[k].kind != Factor::Scalar) return;
     bool matrix = false;
-    for (std::size_t k = 0; k + 1 < l[0].factors.size(); ++k) matrix = matrix || l[0].factors[k].kind != Factor::Scalar;
+    for (std::size_t k = 0; k + 1 < l[0].factors.size(); ++k)
+        matrix = matrix || l[0].factors[k].kind != Factor::Scalar;
     if (!matrix || eigen_.count(n.key)) return;
     Eigen e;
     e.line = d_.position(right_base + right.begin).line;
@@ -707,8 +726,8 @@ void LinearAlgebra::note_link(const Side& left, std::size_t left_base, const Sid
     eigen_[n.key] = e;
 }
 
-std::optional<LinearAlgebra::Value> LinearAlgebra::read(std::string_view source, std::size_t base, Comparisons& cmp,
-                                                        std::string* why, bool* reference) {
+std::optional<LinearAlgebra::Value> LinearAlgebra::read(std::string_view source, std::size_t base,
+                                                        Comparisons& cmp, std::string* why, bool* reference) {
     std::vector<Term> terms;
     if (!scan(source, 0, source.size(), terms, why)) return std::nullopt;
     if (reference) {
@@ -731,8 +750,9 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::read(std::string_view source,
     return evaluate(terms, source, base, cmp, why);
 }
 
-std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Term>& terms, std::string_view source,
-                                                            std::size_t base, Comparisons& cmp, std::string* why) {
+std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Term>& terms,
+                                                            std::string_view source, std::size_t base,
+                                                            Comparisons& cmp, std::string* why) {
     auto scalar = [&](std::size_t b, std::size_t e) -> std::optional<ex> {
         const Side s = parse_expression(source.substr(b, e - b), ctx_);
         if (!s.ok) {
@@ -819,7 +839,8 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
             };
             if (f.op == Factor::Cross) {
                 if (m->rows() != 3 || m->cols() != 1 || v.m.rows() != 3 || v.m.cols() != 1) {
-                    *why = "a cross product of a " + shape(*m) + " and a " + shape(v.m) + " (it needs two 3-vectors)";
+                    *why = "a cross product of a " + shape(*m) + " and a " + shape(v.m) +
+                           " (it needs two 3-vectors)";
                     return std::nullopt;
                 }
                 const GiNaC::matrix& a = *m;
@@ -852,7 +873,8 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
         }
         if (!total) {
             total = tv;
-        } else if (total->scalar != tv.scalar || total->m.rows() != tv.m.rows() || total->m.cols() != tv.m.cols()) {
+        } else if (total->scalar != tv.scalar || total->m.rows() != tv.m.rows() ||
+                   total->m.cols() != tv.m.cols()) {
             *why = "a sum of a scalar, vectors or matrices of different shapes";
             return std::nullopt;
         } else {
@@ -862,7 +884,8 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
     return total;
 }
 
-std::optional<GiNaC::matrix> LinearAlgebra::named(const std::string& key, Comparisons& cmp, std::string* why) {
+std::optional<GiNaC::matrix> LinearAlgebra::named(const std::string& key, Comparisons& cmp,
+                                                  std::string* why) {
     if (auto b = builtin(key)) return b;
     if (auto d = declared(key)) return d;
     if (resolving_.count(key)) {
@@ -883,13 +906,14 @@ std::optional<GiNaC::matrix> LinearAlgebra::named(const std::string& key, Compar
             for (std::size_t k = 0; k < e->basis.size(); ++k) {
                 const std::string name = "c_{" + std::to_string(k + 1) + "}";
                 auto it = coefficients_.find(name);
-                if (it == coefficients_.end()) it = coefficients_.emplace(name, GiNaC::symbol(name, name)).first;
+                if (it == coefficients_.end())
+                    it = coefficients_.emplace(name, GiNaC::symbol(name, name)).first;
                 v = v.add(e->basis[k].mul_scalar(it->second));
             }
             return v;
         }
-        *why = "the eigenvector " + shown(key) + " is not known: " +
-               (e ? e->why_not : std::string("its eigen-equation cannot be read"));
+        *why = "the eigenvector " + shown(key) +
+               " is not known: " + (e ? e->why_not : std::string("its eigen-equation cannot be read"));
         return std::nullopt;
     }
     auto s = stated_.find(key);
@@ -902,16 +926,19 @@ std::optional<GiNaC::matrix> LinearAlgebra::named(const std::string& key, Compar
             std::optional<GiNaC::matrix> value;
             if (v && !v->scalar && unknown_names(v->m).empty()) value = v->m;
             // Read inside another vector's reading, a value may miss that vector: kept only when final.
-            if (resolving_.size() == 1 || value) memo = stated_values_.emplace(key, value).first;
-            else memo = stated_values_.end();
+            if (resolving_.size() == 1 || value)
+                memo = stated_values_.emplace(key, value).first;
+            else
+                memo = stated_values_.end();
         }
         if (memo != stated_values_.end() && memo->second) {
             used_stated_.insert(key);
             return memo->second;
         }
     }
-    *why = "the vector " + shown(key) + " is not known (the model declares no components of it, and the text "
-                                           "states no value of it)";
+    *why = "the vector " + shown(key) +
+           " is not known (the model declares no components of it, and the text "
+           "states no value of it)";
     return std::nullopt;
 }
 
@@ -956,7 +983,8 @@ LinearAlgebra::Eigen* LinearAlgebra::eigen(const std::string& key, Comparisons& 
     }
     e.lambda = lambda;
     if (!unknown_names(e.A).empty() || !unknown_names(GiNaC::matrix{{lambda}}).empty()) {
-        e.why_not = "its eigen-equation (line " + std::to_string(e.line) + ") has symbols that are not the model's";
+        e.why_not =
+            "its eigen-equation (line " + std::to_string(e.line) + ") has symbols that are not the model's";
         return &e;
     }
     const unsigned n = e.A.rows();
@@ -1082,8 +1110,8 @@ bool LinearAlgebra::check(const Side& left, std::size_t left_base, const Side& r
     return true;
 }
 
-bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
-                               Comparisons& cmp, EquationCheck& r) {
+bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Side& right,
+                               std::size_t right_base, Comparisons& cmp, EquationCheck& r) {
     const double tol = std::max(1e-9, left.rounding + right.rounding);
     std::vector<Term> terms[2];
     std::string why;
@@ -1097,7 +1125,9 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
     // A stated eigenvector: n = (…), judged against its eigen-equation.
     for (int k = 0; k < 2; ++k) {
         const auto& t = terms[k];
-        if (t.size() != 1 || t[0].negative || t[0].factors.size() != 1 || t[0].factors[0].kind != Factor::Name) continue;
+        if (t.size() != 1 || t[0].negative || t[0].factors.size() != 1 ||
+            t[0].factors[0].kind != Factor::Name)
+            continue;
         const std::string& key = t[0].factors[0].key;
         bool self = false;
         for (const Term& o : terms[1 - k])
@@ -1108,7 +1138,9 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
     // The text's statement of a vector that is not the model's: a definition, compared where it is used.
     for (int k = 0; k < 2; ++k) {
         const auto& t = terms[k];
-        if (t.size() != 1 || t[0].negative || t[0].factors.size() != 1 || t[0].factors[0].kind != Factor::Name) continue;
+        if (t.size() != 1 || t[0].negative || t[0].factors.size() != 1 ||
+            t[0].factors[0].kind != Factor::Name)
+            continue;
         const auto st = stated_.find(t[0].factors[0].key);
         if (st == stated_.end() || st->second.side != sides[1 - k]) continue;
         const auto x = read(sides[1 - k]->source, bases[1 - k], cmp, &why, nullptr);
@@ -1117,7 +1149,8 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
         } else if (const auto unknown = unknown_names(x->m); !unknown.empty()) {
             std::string list;
             for (const std::string& u : unknown) list += (list.empty() ? "" : ", ") + dollars(u);
-            r.reason = "unknown symbols " + list + ": not symbols of the model (--map can say what they stand for)";
+            r.reason =
+                "unknown symbols " + list + ": not symbols of the model (--map can say what they stand for)";
         } else {
             r.reason = "the text's definition of " + shown(st->first) +
                        " (not a quantity of the model): compared where it is used";
@@ -1128,13 +1161,15 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
     // An eigen-equation A · n = λ n: λ must be an eigenvalue of A.
     const auto& l = terms[0];
     const auto& rt = terms[1];
-    if (l.size() == 1 && rt.size() == 1 && l[0].factors.size() >= 2 && l[0].factors.back().kind == Factor::Name &&
-        rt[0].factors.back().kind == Factor::Name && rt[0].factors.back().key == l[0].factors.back().key) {
+    if (l.size() == 1 && rt.size() == 1 && l[0].factors.size() >= 2 &&
+        l[0].factors.back().kind == Factor::Name && rt[0].factors.back().kind == Factor::Name &&
+        rt[0].factors.back().key == l[0].factors.back().key) {
         const std::string& key = l[0].factors.back().key;
         bool scalar_lambda = true, matrix = false;
         for (std::size_t k = 0; k + 1 < rt[0].factors.size(); ++k)
             scalar_lambda = scalar_lambda && rt[0].factors[k].kind == Factor::Scalar;
-        for (std::size_t k = 0; k + 1 < l[0].factors.size(); ++k) matrix = matrix || l[0].factors[k].kind != Factor::Scalar;
+        for (std::size_t k = 0; k + 1 < l[0].factors.size(); ++k)
+            matrix = matrix || l[0].factors[k].kind != Factor::Scalar;
         if (scalar_lambda && matrix)
             return judge_eigen_equation(key, left, bases[0], l[0].factors.back().begin, right, bases[1],
                                         rt[0].factors.back().begin, cmp, r);
@@ -1150,17 +1185,20 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
     }
     // Shapes: a row against a column of the same entries is the same vector.
     GiNaC::matrix a = v[0]->m, b = v[1]->m;
-    if (!v[0]->scalar && !v[1]->scalar && a.rows() == b.cols() && a.cols() == b.rows() && (a.rows() == 1 || a.cols() == 1))
+    if (!v[0]->scalar && !v[1]->scalar && a.rows() == b.cols() && a.cols() == b.rows() &&
+        (a.rows() == 1 || a.cols() == 1))
         b = b.transpose();
     if (v[0]->scalar != v[1]->scalar && (v[0]->scalar ? a(0, 0) : b(0, 0)).is_zero()) {
-        if (v[0]->scalar) a = GiNaC::matrix(b.rows(), b.cols());
-        else b = GiNaC::matrix(a.rows(), a.cols());
+        if (v[0]->scalar)
+            a = GiNaC::matrix(b.rows(), b.cols());
+        else
+            b = GiNaC::matrix(a.rows(), a.cols());
     } else if (v[0]->scalar != v[1]->scalar || a.rows() != b.rows() || a.cols() != b.cols()) {
         const auto shape = [](const Value& x) {
             return x.scalar ? std::string("a scalar")
                             : (x.m.cols() == 1 ? "a " + std::to_string(x.m.rows()) + "-vector"
-                                               : "a " + std::to_string(x.m.rows()) + "×" + std::to_string(x.m.cols()) +
-                                                     " matrix");
+                                               : "a " + std::to_string(x.m.rows()) + "×" +
+                                                     std::to_string(x.m.cols()) + " matrix");
         };
         r.reason = "the sides have different shapes: " + shape(*v[0]) + " and " + shape(*v[1]);
         return false;
@@ -1200,16 +1238,19 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
             if (!eigen_.count(key)) continue;
             const Eigen& e = eigen_.at(key);
             if (e.basis.empty()) continue;
-            r.notes.push_back(
-                e.stated_fits ? "with " + shown(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) + ")"
-                              : "with " + shown(key) + " any eigenvector of its eigen-equation (line " + std::to_string(e.line) +
-                                    ")" + (coefficients ? ", $c_{k}$ its free coefficients" : ""));
+            r.notes.push_back(e.stated_fits
+                                  ? "with " + shown(key) + " as the text states it (line " +
+                                        std::to_string(stated_.at(key).line) + ")"
+                                  : "with " + shown(key) + " any eigenvector of its eigen-equation (line " +
+                                        std::to_string(e.line) + ")" +
+                                        (coefficients ? ", $c_{k}$ its free coefficients" : ""));
         }
     };
     if (wrong.empty()) {
         r.verdict = Verdict::Agrees;
-        r.compared_with = reference[0] || reference[1] ? (vector ? "the model's quantities, entry by entry" : "the model's quantity")
-                                                       : "an identity";
+        r.compared_with = reference[0] || reference[1]
+                              ? (vector ? "the model's quantities, entry by entry" : "the model's quantity")
+                              : "an identity";
         r.reason = vector ? "equal entry by entry" : "both sides are equal";
         if (!unknown.empty()) r.reason += " (in the text's own symbols)";
         eigen_note();
@@ -1218,12 +1259,13 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
     if (!unknown.empty()) {
         std::string list;
         for (const std::string& u : unknown) list += (list.empty() ? "" : ", ") + dollars(u);
-        r.reason = "unknown symbols " + list + ": not symbols of the model (--map can say what they stand for)";
+        r.reason =
+            "unknown symbols " + list + ": not symbols of the model (--map can say what they stand for)";
         return false;
     }
     if (coefficients) {
-        // Any multiple of an eigenvector: a relation homogeneous in its coefficients fails for them all, one that is
-        // not (a normalization, n₁ × n₂ = −n₃) depends on the scale, which the text does not state.
+        // Any multiple of an eigenvector: a relation homogeneous in its coefficients fails for them all, one
+        // that is not (a normalization, n₁ × n₂ = −n₃) depends on the scale, which the text does not state.
         GiNaC::exmap zero;
         for (const auto& [name, sym] : coefficients_) zero[sym] = 0;
         bool real = false;
@@ -1252,8 +1294,9 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
     if (!reference[ref]) {
         r.compared_with = vector ? "the two sides, entry by entry" : "the two sides";
         for (const auto& [i, j] : wrong)
-            r.wrong_terms.push_back((vector ? entry_name(T, i, j) + ": " : std::string()) + "the left side is " +
-                                    dollars(cmp.latex(a(i, j))) + ", the right side " + dollars(cmp.latex(b(i, j))));
+            r.wrong_terms.push_back((vector ? entry_name(T, i, j) + ": " : std::string()) +
+                                    "the left side is " + dollars(cmp.latex(a(i, j))) + ", the right side " +
+                                    dollars(cmp.latex(b(i, j))));
         return true;
     }
     r.compared_with = "the model's quantities, entry by entry";
@@ -1263,11 +1306,13 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
     return true;
 }
 
-std::string LinearAlgebra::corrected_side(const std::string& source, std::size_t base, const std::vector<Term>& terms,
-                                          const GiNaC::matrix& text, const GiNaC::matrix& right, bool vector,
-                                          const std::vector<std::pair<unsigned, unsigned>>& wrong, Comparisons& cmp,
-                                          EquationCheck& r) {
-    // s · [array] or s · (tuple): the right cell in the array's own scale, s the product of the scalar factors.
+std::string LinearAlgebra::corrected_side(const std::string& source, std::size_t base,
+                                          const std::vector<Term>& terms, const GiNaC::matrix& text,
+                                          const GiNaC::matrix& right, bool vector,
+                                          const std::vector<std::pair<unsigned, unsigned>>& wrong,
+                                          Comparisons& cmp, EquationCheck& r) {
+    // s · [array] or s · (tuple): the right cell in the array's own scale, s the product of the scalar
+    // factors.
     const int arr = single_array(terms);
     ex scale = 1;
     if (arr >= 0)
@@ -1287,14 +1332,15 @@ std::string LinearAlgebra::corrected_side(const std::string& source, std::size_t
     for (const auto& [i, j] : wrong) {
         const std::string where = vector ? entry_name(text, i, j) + ": " : "";
         if (!cells) {
-            r.wrong_terms.push_back(where + dollars(cmp.latex(text(i, j))) + " where " + dollars(cmp.latex(right(i, j))) +
-                                    " belongs");
+            r.wrong_terms.push_back(where + dollars(cmp.latex(text(i, j))) + " where " +
+                                    dollars(cmp.latex(right(i, j))) + " belongs");
             continue;
         }
         const auto& cell = (*cells)[i][text.cols() == 1 ? 0 : j];
         const std::string right_cell = cmp.latex(GiNaC::normal(right(i, j) / scale));
-        r.wrong_terms.push_back(where + "the text's entry " + dollars(source.substr(cell.first, cell.second - cell.first)) +
-                                " where " + dollars(right_cell) + " belongs" +
+        r.wrong_terms.push_back(where + "the text's entry " +
+                                dollars(source.substr(cell.first, cell.second - cell.first)) + " where " +
+                                dollars(right_cell) + " belongs" +
                                 (scale.is_equal(1) ? "" : " (times " + dollars(cmp.latex(scale)) + ")"));
         splices.push_back({cell, right_cell});
     }
@@ -1313,8 +1359,10 @@ bool LinearAlgebra::judge_eigen_equation(const std::string& key, const Side& lef
     const auto A = read(left.source.substr(0, name_at), left_base, cmp, &why, nullptr);
     std::optional<Value> l;
     const std::string lambda_source = right.source.substr(0, right_name_at);
-    if (blank(lambda_source)) l = Value{GiNaC::matrix{{1}}, true};
-    else l = read(lambda_source, right_base, cmp, &why, nullptr);
+    if (blank(lambda_source))
+        l = Value{GiNaC::matrix{{1}}, true};
+    else
+        l = read(lambda_source, right_base, cmp, &why, nullptr);
     if (!A || !l) {
         r.reason = why;
         return false;
@@ -1328,7 +1376,8 @@ bool LinearAlgebra::judge_eigen_equation(const std::string& key, const Side& lef
     if (!unknown.empty()) {
         std::string list;
         for (const std::string& u : unknown) list += (list.empty() ? "" : ", ") + dollars(u);
-        r.reason = "unknown symbols " + list + ": not symbols of the model (--map can say what they stand for)";
+        r.reason =
+            "unknown symbols " + list + ": not symbols of the model (--map can say what they stand for)";
         return false;
     }
     const ex lambda = l->m(0, 0);
@@ -1346,23 +1395,25 @@ bool LinearAlgebra::judge_eigen_equation(const std::string& key, const Side& lef
         r.verdict = Verdict::Agrees;
         r.reason = dollars(cmp.latex(lambda)) + " is an eigenvalue: $\\det(A - \\lambda 1) = 0$";
         if (e && e->stated_fits && e->used_lambda.is_equal(lambda))
-            r.notes.push_back(shown(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
-                              ") satisfies it");
+            r.notes.push_back(shown(key) + " as the text states it (line " +
+                              std::to_string(stated_.at(key).line) + ") satisfies it");
         else if (stated && e && !e->stated_fits)
-            r.notes.push_back(shown(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
-                              ") does not satisfy it");
+            r.notes.push_back(shown(key) + " as the text states it (line " +
+                              std::to_string(stated_.at(key).line) + ") does not satisfy it");
         return true;
     }
     r.verdict = Verdict::Disagrees;
     r.difference = "\\det(A - \\lambda 1) = " + cmp.latex(det);
     const std::string written = without_trailing_operators(lambda_source);
     r.wrong_terms.push_back(dollars(written) + " (" + dollars(cmp.latex(lambda)) +
-                            ") is not an eigenvalue: $\\det(A - \\lambda 1) = " +
-                            cmp.latex(det) + " \\neq 0$");
+                            ") is not an eigenvalue: $\\det(A - \\lambda 1) = " + cmp.latex(det) +
+                            " \\neq 0$");
     if (e && e->stated_eigenvalue) {
-        r.wrong_terms.push_back(shown(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
-                                ") is an eigenvector with the eigenvalue " + dollars(cmp.latex(e->used_lambda)));
-        r.corrected = left.source + " = " + cmp.latex(e->used_lambda) + " " + right.source.substr(right_name_at);
+        r.wrong_terms.push_back(
+            shown(key) + " as the text states it (line " + std::to_string(stated_.at(key).line) +
+            ") is an eigenvector with the eigenvalue " + dollars(cmp.latex(e->used_lambda)));
+        r.corrected =
+            left.source + " = " + cmp.latex(e->used_lambda) + " " + right.source.substr(right_name_at);
     }
     return true;
 }
@@ -1384,7 +1435,8 @@ bool LinearAlgebra::judge_definition(const std::string& key, const Side& side, s
     }
     Eigen* e = eigen(key, cmp);
     if (!e || e->basis.empty()) {
-        r.reason = "the eigenvector " + shown(key) + " cannot be compared: " + (e ? e->why_not : std::string());
+        r.reason =
+            "the eigenvector " + shown(key) + " cannot be compared: " + (e ? e->why_not : std::string());
         return false;
     }
     const unsigned n = e->A.rows();
@@ -1405,7 +1457,8 @@ bool LinearAlgebra::judge_definition(const std::string& key, const Side& side, s
     }
     if (zero && nonzero) {
         r.verdict = Verdict::Agrees;
-        r.reason = "an eigenvector: $(A - \\lambda 1) n = 0$ with $\\lambda = " + cmp.latex(e->used_lambda) + "$";
+        r.reason =
+            "an eigenvector: $(A - \\lambda 1) n = 0$ with $\\lambda = " + cmp.latex(e->used_lambda) + "$";
         return true;
     }
     r.verdict = Verdict::Disagrees;
@@ -1448,8 +1501,8 @@ bool LinearAlgebra::judge_definition(const std::string& key, const Side& side, s
     return true;
 }
 
-void LinearAlgebra::flag_block(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
-                               Comparisons& cmp, EquationCheck& r) {
+void LinearAlgebra::flag_block(const Side& left, std::size_t left_base, const Side& right,
+                               std::size_t right_base, Comparisons& cmp, EquationCheck& r) {
     const MathRow* row = row_at(left_base + left.begin);
     if (!row || !row->display) return;
     std::string subject;
@@ -1463,7 +1516,8 @@ void LinearAlgebra::flag_block(const Side& left, std::size_t left_base, const Si
     std::map<std::string, std::vector<std::string>> uses;
     for (const Side* s : {&left, &right})
         if (s->ok)
-            for (const auto& [k, names] : component_uses(s->value)) uses[k].insert(uses[k].end(), names.begin(), names.end());
+            for (const auto& [k, names] : component_uses(s->value))
+                uses[k].insert(uses[k].end(), names.begin(), names.end());
     const auto u = subject.find("_{");
     if (u == std::string::npos) return;
     const std::string sub_subject = subject.substr(u + 2, subject.size() - u - 3);
@@ -1488,9 +1542,10 @@ void LinearAlgebra::flag_block(const Side& left, std::size_t left_base, const Si
         if (key == subject || key.find("_{") == std::string::npos) continue;
         std::string list;
         for (const std::string& n : names) list += (list.empty() ? "" : ", ") + dollars(n);
-        r.notes.push_back("row " + std::to_string(row->row_in_block + 1) + " of this display uses the components of " +
-                          shown(key) + " (" + list + ") in the display about " + shown(subject) +
-                          " (its eigen-equation, line " + std::to_string(subject_line) + ")");
+        r.notes.push_back("row " + std::to_string(row->row_in_block + 1) +
+                          " of this display uses the components of " + shown(key) + " (" + list +
+                          ") in the display about " + shown(subject) + " (its eigen-equation, line " +
+                          std::to_string(subject_line) + ")");
         if (r.verdict != Verdict::Disagrees) continue;
         // The row with the subject's components instead: the correction when it holds.
         const std::string other = key.substr(key.find("_{") + 2, key.size() - key.find("_{") - 3);
@@ -1499,7 +1554,8 @@ void LinearAlgebra::flag_block(const Side& left, std::size_t left_base, const Si
             const std::string from = letter + "_{" + other;
             for (std::size_t p = s.find(from); p != std::string::npos; p = s.find(from, p + 1)) {
                 const std::size_t after = p + from.size();
-                if (after < s.size() && (s[after] == ' ' || s[after] == 'x' || s[after] == 'y' || s[after] == 'z'))
+                if (after < s.size() &&
+                    (s[after] == ' ' || s[after] == 'x' || s[after] == 'y' || s[after] == 'z'))
                     s.replace(p + letter.size() + 2, other.size(), sub_subject);
             }
             return s;
@@ -1513,7 +1569,8 @@ void LinearAlgebra::flag_block(const Side& left, std::size_t left_base, const Si
         verifying_ = false;
         if (again.verdict == Verdict::Agrees) {
             r.corrected = fixed;
-            r.wrong_terms.insert(r.wrong_terms.begin(), "the row holds with the components of " + shown(subject));
+            r.wrong_terms.insert(r.wrong_terms.begin(),
+                                 "the row holds with the components of " + shown(subject));
         }
     }
 }

@@ -37,16 +37,16 @@ bool reads_as_array(const Side& side);
  * scalars (anything the LaTeX parser reads), arrays (`\begin{array}`, `pmatrix`, `bmatrix`, `matrix`, inside
  * `\left( \right)` or `\left[ \right]`), tuples `(a, b, c)` (column vectors), determinants (`vmatrix`,
  * `\left| \begin{array} … \right|`, `\det(…)`, `\operatorname{det}(…)`), vectors and matrices by name
- * (`\mathbf{X}`, `\vec{X}`, `\boldsymbol{X}`, `\bm{X}`, `\underline{X}`: one name whatever the decoration), and
- * groups of these. Juxtaposition and `\cdot` multiply matrices (`\cdot` between two vectors is their dot
+ * (`\mathbf{X}`, `\vec{X}`, `\boldsymbol{X}`, `\bm{X}`, `\underline{X}`: one name whatever the decoration),
+ * and groups of these. Juxtaposition and `\cdot` multiply matrices (`\cdot` between two vectors is their dot
  * product); `\times` between two 3-vectors is their cross product.
  *
  * What the names stand for:
  *  - `\mathbf{1}`: the 3×3 identity;
  *  - X whose components the model declares as results (`I_{xx}`, `I_{xy}`, … with I_{yx} = I_{xy} where only
  *    one is declared: a tensor; `\omega_{x}`, `\omega_{y}`, `\omega_{z}`: a vector): those results;
- *  - `\mathbf{I}` with no component declared, in a model of one body whose centre of mass stays at the origin:
- *    that body's inertia tensor (about its centre of mass, body axes: mechanics/bodies.hpp);
+ *  - `\mathbf{I}` with no component declared, in a model of one body whose centre of mass stays at the
+ * origin: that body's inertia tensor (about its centre of mass, body axes: mechanics/bodies.hpp);
  *  - n with an eigen-equation in the text, `A \cdot n = λ n` (A a matrix the text or the model gives, λ a
  *    scalar), where λ is an eigenvalue of A (det(A − λ1) = 0): an eigenvector, the vector the text states
  *    (`n = (1/\sqrt{2})(1, 1, 0)`) when it is one, else any vector of the eigenspace (each coordinate a free
@@ -71,8 +71,9 @@ class LinearAlgebra {
     void note_link(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base);
 
     /**
-     * Judges left = right into r (its `where`, `section` and `equation` already set) when a side holds an array,
-     * a tuple, a determinant, a vector name or a component of an eigenvector; false (r untouched) otherwise.
+     * Judges left = right into r (its `where`, `section` and `equation` already set) when a side holds an
+     * array, a tuple, a determinant, a vector name or a component of an eigenvector; false (r untouched)
+     * otherwise.
      */
     bool check(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
                Comparisons& cmp, EquationCheck& r);
@@ -88,11 +89,11 @@ class LinearAlgebra {
         int line = 0;    ///< of the eigen-equation
         int block = -1;  ///< its display block (-1: inline)
         bool judged = false;
-        bool valid = false;             ///< λ is an eigenvalue of A
+        bool valid = false;              ///< λ is an eigenvalue of A
         bool stated_eigenvalue = false;  ///< λ is none, the stated vector is an eigenvector (of used_lambda)
-        GiNaC::ex used_lambda;          ///< the eigenvalue whose eigenspace n lies in
+        GiNaC::ex used_lambda;           ///< the eigenvalue whose eigenspace n lies in
         std::vector<GiNaC::matrix> basis;  ///< of that eigenspace (empty: unknown, see why_not)
-        bool stated_fits = false;       ///< the stated vector lies in it (and is `stated`)
+        bool stated_fits = false;          ///< the stated vector lies in it (and is `stated`)
         GiNaC::matrix stated{1, 1};
         std::string why_not;
     };
@@ -104,8 +105,8 @@ class LinearAlgebra {
         std::size_t lambda_base = 0;
     };
     struct Stated {
-        std::string source;     ///< the side that states the vector
-        std::size_t base = 0;   ///< file offset of its first byte
+        std::string source;    ///< the side that states the vector
+        std::size_t base = 0;  ///< file offset of its first byte
         const Side* side = nullptr;
         int line = 0;
     };
@@ -130,15 +131,16 @@ class LinearAlgebra {
     GiNaC::exmap component_values(const GiNaC::ex& e, Comparisons& cmp);
     bool judge_link(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
                     Comparisons& cmp, EquationCheck& r);
-    bool judge_eigen_equation(const std::string& key, const Side& left, std::size_t left_base, std::size_t name_at,
-                              const Side& right, std::size_t right_base, std::size_t right_name_at, Comparisons& cmp,
-                              EquationCheck& r);
-    bool judge_definition(const std::string& key, const Side& side, std::size_t base, const std::vector<Term>& terms,
-                          Comparisons& cmp, EquationCheck& r);
+    bool judge_eigen_equation(const std::string& key, const Side& left, std::size_t left_base,
+                              std::size_t name_at, const Side& right, std::size_t right_base,
+                              std::size_t right_name_at, Comparisons& cmp, EquationCheck& r);
+    bool judge_definition(const std::string& key, const Side& side, std::size_t base,
+                          const std::vector<Term>& terms, Comparisons& cmp, EquationCheck& r);
     /**
-     * The text's side `source` (its `terms`, first byte at file offset `base`) that reads as `text` where `right`
-     * belongs, wrong at the entries `wrong`: one sentence per wrong entry into r.wrong_terms; returns the side
-     * corrected (its cells replaced, in the array's own scale, when it is s · [array] or s · (tuple); else `right`).
+     * The text's side `source` (its `terms`, first byte at file offset `base`) that reads as `text` where
+     * `right` belongs, wrong at the entries `wrong`: one sentence per wrong entry into r.wrong_terms; returns
+     * the side corrected (its cells replaced, in the array's own scale, when it is s · [array] or s ·
+     * (tuple); else `right`).
      */
     std::string corrected_side(const std::string& source, std::size_t base, const std::vector<Term>& terms,
                                const GiNaC::matrix& text, const GiNaC::matrix& right, bool vector,
@@ -157,7 +159,7 @@ class LinearAlgebra {
     std::map<std::string, Stated> stated_;
     std::map<std::string, std::optional<GiNaC::matrix>> stated_values_;  ///< stated vectors, read once
     std::set<std::string> used_stated_;  ///< stated vectors a link used (for its notes)
-    std::set<std::string> resolving_;  ///< names being resolved (a vector stated in terms of itself)
+    std::set<std::string> resolving_;    ///< names being resolved (a vector stated in terms of itself)
     std::map<std::string, GiNaC::symbol> coefficients_;  ///< free coefficients of eigenspaces, by name
     bool verifying_ = false;
 };
