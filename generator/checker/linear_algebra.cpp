@@ -523,6 +523,15 @@ bool same(const ex& a, const ex& b, Comparisons& cmp, double tol) {
     return cmp.same(a, b, tol);
 }
 
+/// Determinants and eigenvalues are expanded symbolically for matrices up to 4×4 (a derivation's tensors and
+/// mass matrices); a larger one is refused, with `why`, rather than expanded without bound.
+bool small(const GiNaC::matrix& m, std::string* why) {
+    if (m.rows() <= 4) return true;
+    *why = "the determinant of a " + std::to_string(m.rows()) + "×" + std::to_string(m.cols()) +
+           " matrix is not expanded (at most 4×4)";
+    return false;
+}
+
 /// The names every text shares: the identity `\\mathbf{1}` and the unit vectors of the axes, `\\hat{i}`,
 /// `\\hat{j}`,
 /// `\\hat{k}` and `\\hat{x}`, `\\hat{y}`, `\\hat{z}`.
@@ -803,6 +812,7 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
                         *why = "the determinant of a matrix that is not square";
                         return std::nullopt;
                     }
+                    if (!small(a, why)) return std::nullopt;
                     v.m = GiNaC::matrix{{a.determinant()}};
                     v.scalar = true;
                 }
@@ -822,6 +832,7 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
                         *why = "the determinant of something that is not a square matrix";
                         return std::nullopt;
                     }
+                    if (!small(v.m, why)) return std::nullopt;
                     v.m = GiNaC::matrix{{v.m.determinant()}};
                     v.scalar = true;
                 }
@@ -993,6 +1004,7 @@ LinearAlgebra::Eigen* LinearAlgebra::eigen(const std::string& key, Comparisons& 
         for (unsigned i = 0; i < n; ++i) s(i, i) -= x;
         return s;
     };
+    if (!small(e.A, &e.why_not)) return &e;
     e.valid = same(shifted(lambda).determinant(), 0, cmp, 1e-9);
     // The vector the text states, if any (read without itself: the eigen-equation is not used for it).
     std::optional<GiNaC::matrix> v;
@@ -1380,6 +1392,7 @@ bool LinearAlgebra::judge_eigen_equation(const std::string& key, const Side& lef
             "unknown symbols " + list + ": not symbols of the model (--map can say what they stand for)";
         return false;
     }
+    if (!small(A->m, &r.reason)) return false;
     const ex lambda = l->m(0, 0);
     GiNaC::matrix s = A->m;
     for (unsigned i = 0; i < s.rows(); ++i) s(i, i) -= lambda;

@@ -121,6 +121,10 @@ TEST_CASE("linear algebra: the pieces", "[checker][linear_algebra]") {
     CHECK(one("(1, 2) = (1, 2, 3)").reason.find("different shapes: a 2-vector and a 3-vector") !=
           std::string::npos);
     CHECK(one("\\mathbf{w} = \\mathbf{I} \\mathbf{u}").reason.find("is not known") != std::string::npos);
+    // A determinant above 4×4 is refused at once rather than expanded without bound.
+    CHECK(one("\\begin{vmatrix} a & 1 & 0 & 0 & 0 \\\\ 1 & a & 1 & 0 & 0 \\\\ 0 & 1 & a & 1 & 0 \\\\ 0 & 0 & 1 & a & 1 "
+              "\\\\ 0 & 0 & 0 & 1 & a \\end{vmatrix} = 0")
+              .reason == "the determinant of a 5×5 matrix is not expanded (at most 4×4)");
     // An eigen-equation with an eigenvalue of the tensor agrees, with one that is none disagrees.
     CHECK(one("\\mathbf{I} \\cdot \\mathbf{m} = \\frac{M a^2}{4} \\mathbf{m}").verdict == Verdict::Agrees);
     CHECK(one("\\mathbf{I} \\cdot \\mathbf{m} = \\frac{M a^2}{5} \\mathbf{m}").verdict == Verdict::Disagrees);
