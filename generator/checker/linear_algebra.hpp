@@ -6,6 +6,7 @@
 #include "checker/comparisons.hpp"
 #include "checker/derivation.hpp"
 #include "checker/latex_parser.hpp"
+#include "checker/matrix_latex.hpp"
 #include "model/model.hpp"
 
 #include <ginac/ginac.h>
@@ -78,9 +79,9 @@ class LinearAlgebra {
     bool check(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
                Comparisons& cmp, EquationCheck& r);
 
-    struct Value;   ///< a scalar or a matrix, read from a side
-    struct Factor;  ///< one factor of a term, as scanned
-    struct Term;
+    struct Value;  ///< a scalar or a matrix, read from a side
+    using Factor = matrix_latex::Factor;
+    using Term = matrix_latex::Term;
 
   private:
     struct Eigen {
