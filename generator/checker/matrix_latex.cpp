@@ -215,6 +215,27 @@ bool component_of(const std::string& name, std::string* key, int* index) {
     return true;
 }
 
+/// What the brackets around s[inner) hold: an array (a determinant between bars), a tuple (where `tuple`
+/// brackets may make one), a group with arrays inside; false for a scalar.
+static bool bracketed(std::string_view s, std::pair<std::size_t, std::size_t> inner, bool bars, bool tuple,
+                      Factor& f) {
+    const std::string env = environment_at(s, inner.first);
+    if (is_matrix_environment(env) && environment_end(s, inner.first) == inner.second) {
+        f.kind = bars ? Factor::DetArray : Factor::Array;
+        f.cells = environment_cells(s, inner.first, inner.second);
+    } else if (tuple && comma_pieces(s, inner.first, inner.second).size() > 1) {
+        f.kind = Factor::Tuple;
+        for (const auto& p : comma_pieces(s, inner.first, inner.second)) f.cells.push_back({p});
+    } else if (!bars && mentions_array(s.substr(inner.first, inner.second - inner.first))) {
+        f.kind = Factor::Group;
+        f.inner_begin = inner.first;
+        f.inner_end = inner.second;
+    } else {
+        return false;
+    }
+    return true;
+}
+
 /// One factor starting at s[i] that is not scalar text, or false (i unchanged).
 static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Factor& f, std::string* why) {
     const std::size_t start = i;
@@ -253,20 +274,7 @@ static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Facto
         }
         const auto inner = trimmed(s, k, r);
         const bool bars = open == "|" || open == "\\vert" || open == "\\lvert" || open == "\\|";
-        const std::string env = environment_at(s, inner.first);
-        if (is_matrix_environment(env) && environment_end(s, inner.first) == inner.second) {
-            f.kind = bars ? Factor::DetArray : Factor::Array;
-            f.cells = environment_cells(s, inner.first, inner.second);
-        } else if ((open == "(" || open == "[") && comma_pieces(s, inner.first, inner.second).size() > 1) {
-            f.kind = Factor::Tuple;
-            for (const auto& p : comma_pieces(s, inner.first, inner.second)) f.cells.push_back({p});
-        } else if (!bars && mentions_array(s.substr(inner.first, inner.second - inner.first))) {
-            f.kind = Factor::Group;
-            f.inner_begin = inner.first;
-            f.inner_end = inner.second;
-        } else {
-            return false;
-        }
+        if (!bracketed(s, inner, bars, open == "(" || open == "[", f)) return false;
         i = after;
         f.end = after;
         return true;
@@ -275,20 +283,7 @@ static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Facto
         const std::size_t end = group_end(s, i);
         if (end == std::string_view::npos || end > e) return false;
         const auto inner = trimmed(s, i + 1, end - 1);
-        const std::string env = environment_at(s, inner.first);
-        if (is_matrix_environment(env) && environment_end(s, inner.first) == inner.second) {
-            f.kind = Factor::Array;
-            f.cells = environment_cells(s, inner.first, inner.second);
-        } else if (s[i] != '{' && comma_pieces(s, inner.first, inner.second).size() > 1) {
-            f.kind = Factor::Tuple;
-            for (const auto& p : comma_pieces(s, inner.first, inner.second)) f.cells.push_back({p});
-        } else if (mentions_array(s.substr(inner.first, inner.second - inner.first))) {
-            f.kind = Factor::Group;
-            f.inner_begin = inner.first;
-            f.inner_end = inner.second;
-        } else {
-            return false;
-        }
+        if (!bracketed(s, inner, false, s[i] != '{', f)) return false;
         i = end;
         f.end = end;
         return true;
