@@ -12,6 +12,7 @@
 #include "checker/latex_normalize.hpp"
 #include "checker/motions.hpp"
 #include "checker/latex_parser.hpp"
+#include "checker/linear_algebra.hpp"
 #include "checker/normal_modes_check.hpp"
 #include "checker/printed_numbers.hpp"
 #include "codegen/cpp_emitter.hpp"
@@ -306,7 +307,11 @@ class Checker : public Comparisons {
           printer_table_(codegen::symbol_table(model)),
           hamilton_(model, eq),
           modes_(model, eq, d),
-          parameter_values_(model, options.set) {}
+          parameter_values_(model, options.set),
+          algebra_(model, d, ctx_, [this](const Side& s, std::size_t base) {
+              const Prepared p = prepare(PSide{&s, base});
+              return ScalarReading{p.ok, p.value, p.problem, p.has_truth_label};
+          }) {}
 
     CheckReport run();
 
@@ -486,6 +491,7 @@ class Checker : public Comparisons {
     }
     NormalModesCheck modes_;       ///< ω² and secular equations against the model's normal modes
     ParameterValues parameter_values_;  ///< for the numbers the text works out
+    LinearAlgebra algebra_;             ///< arrays, tuples, eigen-equations: entry by entry
     int velocity_h_line_ = 0;       ///< the first line where the text writes H in velocities (0: none)
     std::size_t velocity_h_at_ = 0;  ///< its file offset
     /// The reference's value as a correction prints it: in the momenta when the text's side is written in them.
@@ -1387,6 +1393,7 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         return r;
     }
     if (rel == Relation::Equal && modes_.check(*L.side, *R.side, ctx_, *this, r)) return r;
+    if (rel == Relation::Equal && algebra_.check(*L.side, L.base, *R.side, R.base, *this, r)) return r;
     // A part of T or V defined by this link: compare it with its share of eomgen's T or V.
     for (int side = 0; side < 2; ++side) {
         const PSide& P = side == 0 ? L : R;
@@ -2131,6 +2138,10 @@ CheckReport Checker::run() {
         if (row_selected(d_, at, selected, whole)) report.problems.push_back({d_.position(tp.offset), tp.message});
     }
     collect_definitions(chains);
+    for (const FullChain& c : chains)  // stated vectors and eigen-equations, used before and after their line
+        for (std::size_t k = 0; k + 1 < c.sides.size(); ++k)
+            if (c.relations[k] == Relation::Equal)
+                algebra_.note_link(*c.sides[k].side, c.sides[k].base, *c.sides[k + 1].side, c.sides[k + 1].base);
     // Where the text first writes H = (an expression in velocities, without momenta).
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2 || !c.sides[0].side->ok || !hamilton_.is_hamiltonian(c.sides[0].side->value)) continue;

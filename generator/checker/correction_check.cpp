@@ -1,6 +1,8 @@
 /** @file correction_check.cpp  Corrections parsed back and checked before they are printed. */
 #include "checker/correction_check.hpp"
 
+#include "checker/linear_algebra.hpp"
+
 namespace eomgen::checker {
 namespace {
 
@@ -22,7 +24,7 @@ std::string correction_problem(const std::string& corrected, LatexContext& conte
     if (chains.size() != 1 || chains[0].sides.size() < 2) return "it is not one equation";
     const Chain& c = chains[0];
     for (const Side& s : c.sides)
-        if (!s.ok) return "it cannot be read back (" + s.error + ")";
+        if (!s.ok && !reads_as_array(s)) return "it cannot be read back (" + s.error + ")";
     for (std::size_t j = 1; j < c.sides.size(); ++j) {
         const EquationCheck r = check(c, j - 1, j);
         if (r.verdict != Verdict::Agrees)

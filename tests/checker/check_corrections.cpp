@@ -128,6 +128,7 @@ TEST_CASE("corrections check themselves: every fixture", "[checker][corrections]
         {"models/door.toml", "tests/checker/fixtures/repro/hang_prose_between_dollars_door.md", "", ""},
         {"models/pendulum_5_20.toml", "tests/checker/fixtures/repro/hang_prose_between_dollars_pendulum.md", "", ""},
         {"models/pendulum_5_20.toml", "tests/checker/fixtures/repro/fuzz_check_stray_bracket_pendulum.md", "", ""},
+        {"models/triangle_plate_5_15.toml", "tests/checker/fixtures/matrices_plate.md", "", ""},
     };
     int checked = 0;
     for (const Case& c : cases) checked += check_case(c);

@@ -215,7 +215,7 @@ TEST_CASE("seed: the slips of 5-6, 5-15, 5-17, 5-18 and Ex. 25 are found where t
         // On the steady precession ([[motions]]): line 39 agrees; 35 (ψ = π/2 − Ω, no t), 44 (read as (I₃ω₃/I) cos θ)
         // and 50 (a missing 1/cos θ) disagree.
         {"torque_free_top", "Derivation 5-6", "torque_free_top", {30, 35, 44, 50}, 48},
-        {"triangle_plate_5_15", "Exercise 5-15", "", {88, 89}, 57},
+        {"triangle_plate_5_15", "Exercise 5-15", "", {88, 89, 171, 197}, 57},  // n₁, n₂ in n₂'s, n₃'s rows
         {"rolling_cone", "5-17", "rolling_cone", {217, 219}, 17},
         {"dumbbell_5_18", "Exercise 5-18", "dumbbell_5_18", {238}, 28},
         {"rolling_sphere", "Exercise 25", "rolling_sphere", {469}, 56},  // φ's equation called ψ's (line 475)
