@@ -98,7 +98,7 @@ std::string MathPrinter::node(NodeId id, MathStyle style, int context) {
         case Op::Pow:  // only in lowered DAGs, which this printer does not build
         case Op::Mul: {
             std::vector<std::string> num, den;
-            std::size_t n_den = 0;
+            std::size_t n_den = 0, num_sums = 0, den_sums = 0;
             for (const GiNaC::numeric& k : n.coeffs) n_den += k.is_negative() ? 1 : 0;
             for (std::size_t i = 0; i < n.args.size(); ++i) {
                 const GiNaC::numeric k = GiNaC::abs(n.coeffs[i]);
@@ -115,7 +115,11 @@ std::string MathPrinter::node(NodeId id, MathStyle style, int context) {
                         f = latex ? node(n.args[i], style, kAtom) + "^{" + numeric_string(k) + "}"
                                   : node(n.args[i], style, kAtom) + "^" + numeric_string(k);
                 }
-                (n.coeffs[i].is_negative() ? den : num).push_back(f);
+                // A sum factor leads its product, as people write it: (m + 3 M) l^2, not l^2 (m + 3 M).
+                std::vector<std::string>& side = n.coeffs[i].is_negative() ? den : num;
+                std::size_t& sums = n.coeffs[i].is_negative() ? den_sums : num_sums;
+                const bool sum_factor = dag_.node(n.args[i]).op == Op::Add;
+                side.insert(sum_factor ? side.begin() + long(sums++) : side.end(), f);
             }
             auto join = [&](const std::vector<std::string>& v) {
                 std::string s;

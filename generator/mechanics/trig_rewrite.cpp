@@ -83,6 +83,9 @@ struct ExpandSums : GiNaC::map_function {
     GiNaC::ex operator()(const GiNaC::ex& x) override {
         if (is_trig(x))
             return split(x.op(0).map(*this).expand(), GiNaC::is_the_function<GiNaC::sin_SERIAL>(x));
+        if (GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<GiNaC::numeric>(x.op(1)) &&
+            GiNaC::ex_to<GiNaC::numeric>(x.op(1)).is_negative())
+            return x;  // denominators are rewritten on their own (TidyDenominators)
         return x.map(*this);
     }
 };
@@ -199,12 +202,16 @@ bool only_constants(const GiNaC::ex& f, const GiNaC::exset& constants) {
     return false;
 }
 
-/// Denominators: sin² + cos² = 1 inside sums raised to negative powers (1/(m₁ + m₂ sin² θ + m₂ cos² θ)).
+/// Denominators rewritten like the whole (1/(m₁ + m₂ sin² θ + m₂ cos² θ) → 1/(m₁ + m₂)), before the terms
+/// are paired, so that terms over the same denominator meet.
 struct TidyDenominators : GiNaC::map_function {
+    const Hints& hints;
+    std::size_t max_terms;
+    TidyDenominators(const Hints& h, std::size_t m) : hints(h), max_terms(m) {}
     GiNaC::ex operator()(const GiNaC::ex& x) override {
         if (GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<GiNaC::add>(x.op(0)) && GiNaC::is_a<GiNaC::numeric>(x.op(1)) &&
-            GiNaC::ex_to<GiNaC::numeric>(x.op(1)).is_negative() && x.op(0).nops() <= 40)
-            return GiNaC::pow(pythagoras(x.op(0).map(*this)), x.op(1));
+            GiNaC::ex_to<GiNaC::numeric>(x.op(1)).is_negative())
+            return GiNaC::pow(readable(x.op(0).map(*this), hints, max_terms), x.op(1));
         return x.map(*this);
     }
 };
@@ -273,7 +280,11 @@ GiNaC::ex collect_like_terms(const GiNaC::ex& e, const GiNaC::exset& constants) 
 }
 
 GiNaC::ex readable(const GiNaC::ex& e, const Hints& hints, std::size_t max_terms) {
-    const GiNaC::ex x = e.expand();
+    GiNaC::ex x = e.expand();
+    if (terms(x) <= max_terms && !trig_arguments(x).empty()) {
+        TidyDenominators tidy(hints, max_terms);
+        x = tidy(x).expand();
+    }
     GiNaC::ex best = x;
     if (terms(x) <= max_terms && !trig_arguments(x).empty()) {
         const GiNaC::ex p = pythagoras(x);
@@ -286,10 +297,19 @@ GiNaC::ex readable(const GiNaC::ex& e, const Hints& hints, std::size_t max_terms
         }
         // The author's angles where they cost no terms; else the shorter.
         best = terms(z) <= terms(p) ? z : p;
-        TidyDenominators tidy;
-        best = tidy(best);
     }
     return hints.collect ? collect_like_terms(best, hints.constants) : best;
+}
+
+Hints model_hints(const Model& model) {
+    Hints h;
+    GiNaC::ex text = model.T.expr + model.V.expr;
+    for (const Constraint& c : model.constraints) text += c.expr.expr;
+    for (const Body& b : model.bodies)
+        for (std::size_t k = 0; k < 3; ++k) text += b.centre[k] + b.angles[k];
+    h.angles = angle_sums(text);
+    for (const Parameter& p : model.parameters) h.constants.insert(p.symbol);
+    return h;
 }
 
 }  // namespace eomgen::trig

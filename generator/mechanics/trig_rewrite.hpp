@@ -1,6 +1,8 @@
 /** @file trig_rewrite.hpp  Expressions rewritten for people: angle sums, sin² + cos² = 1, like terms collected. */
 #pragma once
 
+#include "model/model.hpp"
+
 #include <ginac/ginac.h>
 
 #include <vector>
@@ -9,7 +11,7 @@ namespace eomgen::trig {
 
 /// sin(a ± b) = sin a cos b ± cos a sin b and cos(a ± b) = cos a cos b ∓ sin a sin b, applied to every sine
 /// and cosine whose argument is a sum, recursively, then expanded: what is left are sines and cosines of
-/// the terms of those sums (sin(−θ) = −sin θ). Equal in value to e.
+/// the terms of those sums (sin(−θ) = −sin θ). Denominators are left as they are. Equal in value to e.
 GiNaC::ex expand_sums(const GiNaC::ex& e);
 
 /// The arguments of e's sines and cosines that are a sum or difference of two terms (θ₁ − θ₂, φ + ψ), each
@@ -46,5 +48,9 @@ struct Hints {
 /// result never has more terms than e expanded, and equals e in value (every step is an identity).
 /// Expressions of more than `max_terms` terms are only collected (the rewriting is quadratic in terms).
 GiNaC::ex readable(const GiNaC::ex& e, const Hints& hints, std::size_t max_terms = 400);
+
+/// The hints of a model's own text, for `eomgen show` and the report: the angle sums its T, V, bodies and
+/// constraints write (cos(θ₁ − θ₂)), its parameters as the constants.
+Hints model_hints(const Model& model);
 
 }  // namespace eomgen::trig
