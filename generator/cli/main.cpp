@@ -92,6 +92,7 @@ void show_constraints(const eomgen::Model& model, const eomgen::Equations& eq, e
                       const std::vector<GiNaC::symbol>& lambda, std::ostream& os) {
     using eomgen::codegen::MathStyle;
     const eomgen::trig::Hints hints = eomgen::trig::model_hints(model);
+    pr.prefer_angles(hints.angles);
     auto P = [&pr, &hints](const GiNaC::ex& e) { return pr.print(eomgen::trig::readable(e, hints), MathStyle::Text); };
     os << rule("Constraints  M q'' = f + A^T lambda,  A q'' = gamma  (c = A q' + b = 0)");
     for (const eomgen::ConstraintEquations& c : eq.constraints) {
@@ -121,6 +122,7 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     eomgen::cli::MultiplierTable mt = eomgen::cli::multiplier_table(model, eq, &ham);
     eomgen::codegen::MathPrinter pr(mt.table);
     const eomgen::trig::Hints hints = eomgen::trig::model_hints(model);
+    pr.prefer_angles(hints.angles);
     auto P = [&pr, &hints](const GiNaC::ex& e) { return pr.print(eomgen::trig::readable(e, hints), MathStyle::Text); };
     os << model.name << ": " << model.title;
     if (!model.source.empty()) os << " (" << model.source << ")";

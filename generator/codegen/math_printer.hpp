@@ -5,7 +5,9 @@
 
 #include <ginac/ginac.h>
 
+#include <set>
 #include <string>
+#include <vector>
 
 namespace eomgen::codegen {
 
@@ -18,11 +20,19 @@ public:
     explicit MathPrinter(const SymbolTable& table);
     std::string print(const GiNaC::ex& e, MathStyle style);
 
+    /// Angle differences to print as given: sin(φ − θ) and cos(φ − θ) rather than the canonical −sin(θ − φ)
+    /// and cos(θ − φ), the sign of a sine moved into its term's coefficient. For the author's own angles.
+    void prefer_angles(const std::vector<GiNaC::ex>& angles);
+
 private:
+    int flipped_sines(NodeId id) const;  ///< how many sines of a reversed angle a term's node holds (odd powers)
+    bool reversed(NodeId func) const;
     std::string term(const Term& t, MathStyle style);
     std::string sum(const Node& n, const GiNaC::numeric& factor, MathStyle style);
     std::string node(NodeId id, MathStyle style, int context);
     ExprDag dag_;
+    std::set<NodeId> reversed_;  ///< canonical argument nodes (θ − φ) the author writes the other way round
+    bool in_term_ = false;       ///< printing a term's own factors: a reversed sine's sign is in its coefficient
 };
 
 }  // namespace eomgen::codegen

@@ -182,13 +182,33 @@ GiNaC::ex contract_others(const GiNaC::ex& e) {
     return best;
 }
 
-/// The coefficient of a group of like terms, factored where that is cheap: ½ g l (m + 2M).
+/// No negative or fractional powers of a symbol: a sum that factor() takes without a common denominator.
+bool polynomial(const GiNaC::ex& e) {
+    if (GiNaC::is_a<GiNaC::power>(e) && !GiNaC::is_a<GiNaC::numeric>(e.op(0)) &&
+        !e.op(1).info(GiNaC::info_flags::posint))
+        return false;
+    for (const GiNaC::ex& x : e)
+        if (!polynomial(x)) return false;
+    return true;
+}
+
+/// The coefficient of a group of like terms, factored where that is cheap: ½ g l (m + 2M), and over the
+/// denominator its terms share: I₃/I − 1 → (I₃ − I)/I. Terms over different denominators stay as written
+/// (k/m + 2k/M, not (2m + M) k/(m M)).
 GiNaC::ex factored(const GiNaC::ex& c) {
     if (!GiNaC::is_a<GiNaC::add>(c) || c.nops() > 12) return c;
     try {
-        const GiNaC::ex n = GiNaC::normal(c);
-        const GiNaC::ex nd = GiNaC::numer_denom(n);
-        return GiNaC::factor(nd.op(0)) / GiNaC::factor(nd.op(1));
+        if (polynomial(c)) return GiNaC::factor(c);
+        GiNaC::ex shared = 1;  // the one denominator other than 1 that the terms have
+        for (const GiNaC::ex& t : c) {
+            const GiNaC::ex d = GiNaC::numer_denom(t).op(1);
+            if (d.is_equal(1) || d.is_equal(shared)) continue;
+            if (!shared.is_equal(1)) return c;
+            shared = d;
+        }
+        const GiNaC::ex numerator = (c * shared).expand();
+        if (!polynomial(numerator)) return c;
+        return GiNaC::factor(numerator) / shared;
     } catch (const std::exception&) {
         return c;
     }
@@ -275,11 +295,27 @@ GiNaC::ex collect_like_terms(const GiNaC::ex& e, const GiNaC::exset& constants) 
             groups[it->second].second += coefficient;
     }
     GiNaC::ex out = 0;
-    for (const auto& [rest, coefficient] : groups) out += factored(coefficient) * rest;
+    // Quantities of parameters alone with denominators (2 g/l − √2 g/l, a normal frequency) stay as written.
+    for (const auto& [rest, coefficient] : groups)
+        out += (rest.is_equal(1) && !polynomial(coefficient) ? coefficient : factored(coefficient)) * rest;
     return out;
 }
 
+namespace {
+GiNaC::ex rewritten(const GiNaC::ex& e, const Hints& hints, std::size_t max_terms);
+}  // namespace
+
 GiNaC::ex readable(const GiNaC::ex& e, const Hints& hints, std::size_t max_terms) {
+    try {
+        return rewritten(e, hints, max_terms);
+    } catch (const std::exception&) {  // something GiNaC cannot expand or factor: as it is
+        return e;
+    }
+}
+
+namespace {
+
+GiNaC::ex rewritten(const GiNaC::ex& e, const Hints& hints, std::size_t max_terms) {
     GiNaC::ex x = e.expand();
     if (terms(x) <= max_terms && !trig_arguments(x).empty()) {
         TidyDenominators tidy(hints, max_terms);
@@ -299,6 +335,15 @@ GiNaC::ex readable(const GiNaC::ex& e, const Hints& hints, std::size_t max_terms
         best = terms(z) <= terms(p) ? z : p;
     }
     return hints.collect ? collect_like_terms(best, hints.constants) : best;
+}
+
+}  // namespace
+
+GiNaC::ex readable_ratio(const GiNaC::ex& num, const GiNaC::ex& den, const Hints& hints) {
+    Hints h = hints;
+    h.collect = false;
+    const GiNaC::ex nd = GiNaC::numer_denom(GiNaC::normal(num / den));
+    return GiNaC::normal(readable(nd.op(0), h) / readable(nd.op(1), h));
 }
 
 Hints model_hints(const Model& model) {

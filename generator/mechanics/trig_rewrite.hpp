@@ -32,7 +32,9 @@ GiNaC::ex pythagoras(const GiNaC::ex& e);
 
 /// Like terms collected: terms that differ only in a factor made of `constants` (parameters) and numbers are
 /// summed into one, whose coefficient is factored: m₁ l₁² θ̈₁ + m₂ l₁² θ̈₁ becomes (m₁ + m₂) l₁² θ̈₁.
-/// Terms are those of e expanded; the result is not expanded again (expand() undoes it).
+/// Coefficients over one shared denominator are factored over it ((I₃ − I)/I); a sum of parameters alone with
+/// denominators stays as written (2 g/l − √2 g/l). Terms are those of e expanded; the result is not expanded
+/// again (expand() undoes it).
 GiNaC::ex collect_like_terms(const GiNaC::ex& e, const GiNaC::exset& constants);
 
 /// What to rewrite towards.
@@ -48,6 +50,10 @@ struct Hints {
 /// result never has more terms than e expanded, and equals e in value (every step is an identity).
 /// Expressions of more than `max_terms` terms are only collected (the rewriting is quadratic in terms).
 GiNaC::ex readable(const GiNaC::ex& e, const Hints& hints, std::size_t max_terms = 400);
+
+/// num/den in lowest terms after both are made readable (GiNaC's normal() cannot see sin² + cos² = 1): the
+/// ratio of the same equation's coefficients written two ways is exactly 1.
+GiNaC::ex readable_ratio(const GiNaC::ex& num, const GiNaC::ex& den, const Hints& hints);
 
 /// The hints of a model's own text, for `eomgen show` and the report: the angle sums its T, V, bodies and
 /// constraints write (cos(θ₁ − θ₂)), its parameters as the constants.
