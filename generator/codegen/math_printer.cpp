@@ -1,6 +1,7 @@
 /** @file math_printer.cpp  Plain-text and LaTeX rendering of the canonical DAG. */
 #include "codegen/math_printer.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 namespace eomgen::codegen {
@@ -32,6 +33,13 @@ void MathPrinter::prefer_angles(const std::vector<GiNaC::ex>& angles) {
             dag_.node(t.node).args.size() == 2 && dag_.node(t.node).value.is_zero())
             reversed_.insert(t.node);
     }
+}
+
+bool MathPrinter::parameters_only(NodeId id) const {
+    if (id == kOne) return true;
+    const Node& n = dag_.node(id);
+    if (n.op == Op::Symbol) return dag_.symbol(n.symbol).kind == SymbolKind::Parameter;
+    return std::all_of(n.args.begin(), n.args.end(), [this](NodeId a) { return parameters_only(a); });
 }
 
 bool MathPrinter::reversed(NodeId func) const {
@@ -170,10 +178,11 @@ std::string MathPrinter::node(NodeId id, MathStyle style, int context) {
                                   : node(n.args[i], style, kAtom) + "^" + numeric_string(k);
                 }
                 in_term_ = saved;
-                // A sum factor leads its product, as people write it: (m + 3 M) l^2, not l^2 (m + 3 M).
+                // A sum of parameters leads its product, as people write it: (m + 3 M) l^2, not l^2 (m + 3 M);
+                // a sum in the coordinates stays last: m g (w sin θ sin ψ + h cos θ).
                 std::vector<std::string>& side = n.coeffs[i].is_negative() ? den : num;
                 std::size_t& sums = n.coeffs[i].is_negative() ? den_sums : num_sums;
-                const bool sum_factor = dag_.node(n.args[i]).op == Op::Add;
+                const bool sum_factor = dag_.node(n.args[i]).op == Op::Add && parameters_only(n.args[i]);
                 side.insert(sum_factor ? side.begin() + long(sums++) : side.end(), f);
             }
             auto join = [&](const std::vector<std::string>& v) {

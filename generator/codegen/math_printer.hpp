@@ -27,6 +27,7 @@ public:
 private:
     int flipped_sines(NodeId id) const;  ///< how many sines of a reversed angle a term's node holds (odd powers)
     bool reversed(NodeId func) const;
+    bool parameters_only(NodeId id) const;  ///< no symbol but parameters below id
     std::string term(const Term& t, MathStyle style);
     std::string sum(const Node& n, const GiNaC::numeric& factor, MathStyle style);
     std::string node(NodeId id, MathStyle style, int context);
