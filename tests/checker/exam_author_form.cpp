@@ -92,3 +92,15 @@ TEST_CASE("author form: the angle difference in the author's orientation, sin(th
                  "\\ddot{\\theta_1} \\cos\\left(\\theta_2 - \\theta_1\\right) + m_{2} l_{2} g \\sin \\theta_2 + m_{2} "
                  "l_{2}^{2} \\ddot{\\theta_2} = 0");
 }
+
+TEST_CASE("author form: a corrected T with sin^2 + cos^2 = 1 applied and (m1 + m2) grouped", "[checker][author_form]") {
+    std::map<int, EquationCheck> lines = checked_lines();
+    // Was ½ m₁ l₁² θ̇₁² cos² θ₁ + ½ m₁ l₁² θ̇₁² sin² θ₁ + m₂ l₁ l₂ θ̇₁ θ̇₂ cos θ₁ cos θ₂ + … (eight terms).
+    check_pinned(lines[55],
+                 "the $\\dot{\\theta_1} \\dot{\\theta_2}$ terms: $2 m_{2} l_{1} l_{2} \\dot{\\theta_1} \\dot{\\theta_2} "
+                 "\\cos\\left(\\theta_1 - \\theta_2\\right)$ where $m_{2} l_{1} l_{2} \\dot{\\theta_1} \\dot{\\theta_2} "
+                 "\\cos\\left(\\theta_1 - \\theta_2\\right)$ belongs (off by a factor $2$)",
+                 "T = m_{2} l_{1} l_{2} \\dot{\\theta_1} \\dot{\\theta_2} \\cos\\left(\\theta_1 - \\theta_2\\right) + "
+                 "\\frac{1}{2} m_{2} l_{2}^{2} \\dot{\\theta_2}^{2} + \\frac{1}{2} \\left(m_{1} + m_{2}\\right) l_{1}^{2} "
+                 "\\dot{\\theta_1}^{2}");
+}
