@@ -6,7 +6,6 @@
 #include "checker/approximation.hpp"
 #include "checker/budget.hpp"
 #include "checker/correction_check.hpp"
-#include "mechanics/trig_rewrite.hpp"
 #include "checker/definitions.hpp"
 #include "checker/hamiltonian_check.hpp"
 #include "checker/labels.hpp"
@@ -17,6 +16,7 @@
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/results.hpp"
+#include "mechanics/trig_rewrite.hpp"
 
 #include <Eigen/Dense>
 
@@ -882,7 +882,8 @@ Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* onl
         const GiNaC::symbol& qi = model_.coordinates[std::size_t(*only)].qdd;
         try {
             // sin² + cos² = 1 first: (m₁ + m₂)/(m₁ + m₂ sin² θ₁ + m₂ cos² θ₁) is 1, not a factor.
-            const GiNaC::ex c = trig::readable_ratio(GiNaC::diff(r, qi), GiNaC::diff(motion_[std::size_t(*only)], qi), hints_);
+            const GiNaC::ex c = trig::readable_ratio(GiNaC::diff(r, qi),
+                                                     GiNaC::diff(motion_[std::size_t(*only)], qi), hints_);
             if (!c.is_equal(1)) *factor = latex(c);
         } catch (...) {
         }

@@ -46,7 +46,9 @@ std::vector<LatexBlock> latex_equations(const Model& model, const Equations& eq)
     codegen::MathPrinter pr(mt.table);
     const trig::Hints hints = trig::model_hints(model);
     pr.prefer_angles(hints.angles);
-    auto P = [&pr, &hints](const GiNaC::ex& e) { return pr.print(trig::readable(e, hints), codegen::MathStyle::Latex); };
+    auto P = [&pr, &hints](const GiNaC::ex& e) {
+        return pr.print(trig::readable(e, hints), codegen::MathStyle::Latex);
+    };
     const std::size_t n = model.dof();
     std::vector<LatexBlock> blocks;
 

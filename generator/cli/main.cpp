@@ -93,7 +93,9 @@ void show_constraints(const eomgen::Model& model, const eomgen::Equations& eq, e
     using eomgen::codegen::MathStyle;
     const eomgen::trig::Hints hints = eomgen::trig::model_hints(model);
     pr.prefer_angles(hints.angles);
-    auto P = [&pr, &hints](const GiNaC::ex& e) { return pr.print(eomgen::trig::readable(e, hints), MathStyle::Text); };
+    auto P = [&pr, &hints](const GiNaC::ex& e) {
+        return pr.print(eomgen::trig::readable(e, hints), MathStyle::Text);
+    };
     os << rule("Constraints  M q'' = f + A^T lambda,  A q'' = gamma  (c = A q' + b = 0)");
     for (const eomgen::ConstraintEquations& c : eq.constraints) {
         const bool holonomic = c.kind == eomgen::ConstraintKind::Holonomic;
@@ -123,7 +125,9 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     eomgen::codegen::MathPrinter pr(mt.table);
     const eomgen::trig::Hints hints = eomgen::trig::model_hints(model);
     pr.prefer_angles(hints.angles);
-    auto P = [&pr, &hints](const GiNaC::ex& e) { return pr.print(eomgen::trig::readable(e, hints), MathStyle::Text); };
+    auto P = [&pr, &hints](const GiNaC::ex& e) {
+        return pr.print(eomgen::trig::readable(e, hints), MathStyle::Text);
+    };
     os << model.name << ": " << model.title;
     if (!model.source.empty()) os << " (" << model.source << ")";
     os << "\n";

@@ -178,8 +178,8 @@ std::string MathPrinter::node(NodeId id, MathStyle style, int context) {
                                   : node(n.args[i], style, kAtom) + "^" + numeric_string(k);
                 }
                 in_term_ = saved;
-                // A sum of parameters leads its product, as people write it: (m + 3 M) l^2, not l^2 (m + 3 M);
-                // a sum in the coordinates stays last: m g (w sin θ sin ψ + h cos θ).
+                // A sum of parameters leads its product, as people write it: (m + 3 M) l^2, not
+                // l^2 (m + 3 M); a sum in the coordinates stays last: m g (w sin θ sin ψ + h cos θ).
                 std::vector<std::string>& side = n.coeffs[i].is_negative() ? den : num;
                 std::size_t& sums = n.coeffs[i].is_negative() ? den_sums : num_sums;
                 const bool sum_factor = dag_.node(n.args[i]).op == Op::Add && parameters_only(n.args[i]);

@@ -25,15 +25,16 @@ public:
     void prefer_angles(const std::vector<GiNaC::ex>& angles);
 
 private:
-    int flipped_sines(NodeId id) const;  ///< how many sines of a reversed angle a term's node holds (odd powers)
+    /// How many sines of a reversed angle (to odd integer powers) a term's node holds.
+    int flipped_sines(NodeId id) const;
     bool reversed(NodeId func) const;
     bool parameters_only(NodeId id) const;  ///< no symbol but parameters below id
     std::string term(const Term& t, MathStyle style);
     std::string sum(const Node& n, const GiNaC::numeric& factor, MathStyle style);
     std::string node(NodeId id, MathStyle style, int context);
     ExprDag dag_;
-    std::set<NodeId> reversed_;  ///< canonical argument nodes (θ − φ) the author writes the other way round
-    bool in_term_ = false;       ///< printing a term's own factors: a reversed sine's sign is in its coefficient
+    std::set<NodeId> reversed_;  ///< canonical angle nodes (θ − φ) the author writes the other way round
+    bool in_term_ = false;       ///< printing a term's factors: reversed sines' signs are in its coefficient
 };
 
 }  // namespace eomgen::codegen

@@ -1,4 +1,5 @@
-/** @file trig_rewrite.cpp  Angle-sum formulas both ways, sin² + cos² = 1, like terms collected (GiNaC has none). */
+/** @file trig_rewrite.cpp  Angle-sum formulas both ways, sin² + cos² = 1, like terms collected (GiNaC has
+ * none). */
 #include "mechanics/trig_rewrite.hpp"
 
 #include <algorithm>
@@ -9,7 +10,9 @@
 namespace eomgen::trig {
 namespace {
 
-std::size_t terms(const GiNaC::ex& e) { return GiNaC::is_a<GiNaC::add>(e) ? e.nops() : (e.is_zero() ? 0 : 1); }
+std::size_t terms(const GiNaC::ex& e) {
+    return GiNaC::is_a<GiNaC::add>(e) ? e.nops() : (e.is_zero() ? 0 : 1);
+}
 
 std::vector<GiNaC::ex> terms_of(const GiNaC::ex& e) {
     std::vector<GiNaC::ex> out;
@@ -54,7 +57,8 @@ std::string key(const GiNaC::ex& e) {
 void sort_by_key(std::vector<GiNaC::ex>& v) {
     std::vector<std::pair<std::string, GiNaC::ex>> keyed;
     for (const GiNaC::ex& x : v) keyed.push_back({key(x), x});
-    std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::stable_sort(keyed.begin(), keyed.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
     for (std::size_t i = 0; i < v.size(); ++i) v[i] = keyed[i].second;
 }
 
@@ -139,7 +143,7 @@ std::vector<GiNaC::ex> contract_one(std::vector<GiNaC::ex> ts, const GiNaC::ex& 
             for (const Pattern& pat : patterns) {
                 const GiNaC::ex f0 = pat.first.op(0), f1 = pat.first.op(1);
                 if (ts[i].degree(f0) < 1 || ts[i].degree(f1) < 1) continue;
-                const GiNaC::ex x = ts[i] / pat.first;              // X: the term without the first pair
+                const GiNaC::ex x = ts[i] / pat.first;                // X: the term without the first pair
                 const GiNaC::ex partner = pat.sign * x * pat.second;  // the term the formula needs beside it
                 const auto it = index.find(partner / numeric_part(partner));
                 if (it == index.end() || it->second == i) continue;
@@ -229,8 +233,8 @@ struct TidyDenominators : GiNaC::map_function {
     std::size_t max_terms;
     TidyDenominators(const Hints& h, std::size_t m) : hints(h), max_terms(m) {}
     GiNaC::ex operator()(const GiNaC::ex& x) override {
-        if (GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<GiNaC::add>(x.op(0)) && GiNaC::is_a<GiNaC::numeric>(x.op(1)) &&
-            GiNaC::ex_to<GiNaC::numeric>(x.op(1)).is_negative())
+        if (GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<GiNaC::add>(x.op(0)) &&
+            GiNaC::is_a<GiNaC::numeric>(x.op(1)) && GiNaC::ex_to<GiNaC::numeric>(x.op(1)).is_negative())
             return GiNaC::pow(readable(x.op(0).map(*this), hints, max_terms), x.op(1));
         return x.map(*this);
     }
@@ -264,8 +268,9 @@ GiNaC::ex pythagoras(const GiNaC::ex& e) {
     for (bool better = true; better;) {
         better = false;
         for (const GiNaC::ex& x : trig_arguments(best)) {
-            for (const GiNaC::ex& rule : {GiNaC::ex(GiNaC::pow(GiNaC::cos(x), 2) == 1 - GiNaC::pow(GiNaC::sin(x), 2)),
-                                          GiNaC::ex(GiNaC::pow(GiNaC::sin(x), 2) == 1 - GiNaC::pow(GiNaC::cos(x), 2))}) {
+            for (const GiNaC::ex& rule :
+                 {GiNaC::ex(GiNaC::pow(GiNaC::cos(x), 2) == 1 - GiNaC::pow(GiNaC::sin(x), 2)),
+                  GiNaC::ex(GiNaC::pow(GiNaC::sin(x), 2) == 1 - GiNaC::pow(GiNaC::cos(x), 2))}) {
                 const GiNaC::ex candidate = best.subs(rule, GiNaC::subs_options::algebraic).expand();
                 if (terms(candidate) < terms(best)) {
                     best = candidate;

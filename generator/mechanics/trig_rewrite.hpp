@@ -1,4 +1,5 @@
-/** @file trig_rewrite.hpp  Expressions rewritten for people: angle sums, sin² + cos² = 1, like terms collected. */
+/** @file trig_rewrite.hpp  Expressions rewritten for people: angle sums, sin² + cos² = 1, like terms
+ * collected. */
 #pragma once
 
 #include "model/model.hpp"

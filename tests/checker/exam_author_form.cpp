@@ -1,6 +1,6 @@
-/** @file exam_author_form.cpp  Differences and corrections in the author's form (issue 13): a double pendulum whose
- * model derives products of sines and cosines, checked against a textbook that writes cos(θ₁ − θ₂) and (m₁ + m₂).
- * The expected texts are pinned whole, so the form is. */
+/** @file exam_author_form.cpp  Differences and corrections in the author's form (issue 13): a double pendulum
+ * whose model derives products of sines and cosines, checked against a textbook that writes cos(θ₁ − θ₂) and
+ * (m₁ + m₂). The expected texts are pinned whole, so the form is. */
 #include "checked_text.hpp"
 
 #include <catch2/catch.hpp>
@@ -38,7 +38,8 @@ void check_pinned(const EquationCheck& e, const std::string& wrong, const std::s
 
 }  // namespace
 
-TEST_CASE("author form: agreeing equations show no factor that is 1 (sin^2 + cos^2)", "[checker][author_form]") {
+TEST_CASE("author form: agreeing equations show no factor that is 1 (sin^2 + cos^2)",
+          "[checker][author_form]") {
     std::map<int, EquationCheck> lines = checked_lines();
     for (int line : {11, 15, 21, 25, 43}) {
         INFO(eomgen::test::describe(lines[line]));
@@ -61,46 +62,57 @@ TEST_CASE("author form: a sign slip in the angle-difference term, corrected in c
         INFO(eomgen::test::describe(e));
         CHECK((e.verdict == Verdict::Disagrees) == (planted.count(e.where.line) > 0));
     }
-    check_pinned(lines[31],
-                 "the $\\dot{\\theta_2}^{2}$ terms: $-m_{2} l_{1} l_{2} \\dot{\\theta_2}^{2} \\sin\\left(\\theta_1 - "
-                 "\\theta_2\\right)$ where $m_{2} l_{1} l_{2} \\dot{\\theta_2}^{2} \\sin\\left(\\theta_1 - "
-                 "\\theta_2\\right)$ belongs (a flipped sign)",
-                 "m_{2} l_{1} l_{2} \\dot{\\theta_2}^{2} \\sin\\left(\\theta_1 - \\theta_2\\right) + m_{2} l_{1} l_{2} "
-                 "\\ddot{\\theta_2} \\cos\\left(\\theta_1 - \\theta_2\\right) + \\left(m_{1} + m_{2}\\right) l_{1} g "
-                 "\\sin \\theta_1 + \\left(m_{1} + m_{2}\\right) l_{1}^{2} \\ddot{\\theta_1} = 0");
+    check_pinned(
+        lines[31],
+        "the $\\dot{\\theta_2}^{2}$ terms: $-m_{2} l_{1} l_{2} \\dot{\\theta_2}^{2} \\sin\\left(\\theta_1 - "
+        "\\theta_2\\right)$ where $m_{2} l_{1} l_{2} \\dot{\\theta_2}^{2} \\sin\\left(\\theta_1 - "
+        "\\theta_2\\right)$ belongs (a flipped sign)",
+        "m_{2} l_{1} l_{2} \\dot{\\theta_2}^{2} \\sin\\left(\\theta_1 - \\theta_2\\right) + m_{2} l_{1} "
+        "l_{2} "
+        "\\ddot{\\theta_2} \\cos\\left(\\theta_1 - \\theta_2\\right) + \\left(m_{1} + m_{2}\\right) l_{1} g "
+        "\\sin \\theta_1 + \\left(m_{1} + m_{2}\\right) l_{1}^{2} \\ddot{\\theta_1} = 0");
 }
 
 TEST_CASE("author form: k sin(th1 - th2) where k cos(th1 - th2) belongs", "[checker][author_form]") {
     std::map<int, EquationCheck> lines = checked_lines();
-    check_pinned(lines[37],
-                 "the $\\ddot{\\theta_1}$ terms: $m_{2} l_{1} l_{2} \\ddot{\\theta_1} \\sin\\left(\\theta_1 - "
-                 "\\theta_2\\right)$ where $m_{2} l_{1} l_{2} \\ddot{\\theta_1} \\cos\\left(\\theta_1 - "
-                 "\\theta_2\\right)$ belongs ($\\sin$ where $\\cos$ belongs)",
-                 "-m_{2} l_{1} l_{2} \\dot{\\theta_1}^{2} \\sin\\left(\\theta_1 - \\theta_2\\right) + m_{2} l_{1} "
-                 "l_{2} \\ddot{\\theta_1} \\cos\\left(\\theta_1 - \\theta_2\\right) + m_{2} l_{2} g \\sin "
-                 "\\theta_2 + m_{2} l_{2}^{2} \\ddot{\\theta_2} = 0");
+    check_pinned(
+        lines[37],
+        "the $\\ddot{\\theta_1}$ terms: $m_{2} l_{1} l_{2} \\ddot{\\theta_1} \\sin\\left(\\theta_1 - "
+        "\\theta_2\\right)$ where $m_{2} l_{1} l_{2} \\ddot{\\theta_1} \\cos\\left(\\theta_1 - "
+        "\\theta_2\\right)$ belongs ($\\sin$ where $\\cos$ belongs)",
+        "-m_{2} l_{1} l_{2} \\dot{\\theta_1}^{2} \\sin\\left(\\theta_1 - \\theta_2\\right) + m_{2} l_{1} "
+        "l_{2} \\ddot{\\theta_1} \\cos\\left(\\theta_1 - \\theta_2\\right) + m_{2} l_{2} g \\sin "
+        "\\theta_2 + m_{2} l_{2}^{2} \\ddot{\\theta_2} = 0");
 }
 
-TEST_CASE("author form: the angle difference in the author's orientation, sin(th2 - th1)", "[checker][author_form]") {
+TEST_CASE("author form: the angle difference in the author's orientation, sin(th2 - th1)",
+          "[checker][author_form]") {
     std::map<int, EquationCheck> lines = checked_lines();
     // The model and the other lines write θ₁ − θ₂; this line's own θ₂ − θ₁ is what its correction uses.
-    check_pinned(lines[49],
-                 "the $\\dot{\\theta_1}^{2}$ terms: $-m_{2} l_{1} l_{2} \\dot{\\theta_1}^{2} \\sin\\left(\\theta_2 - "
-                 "\\theta_1\\right)$ where $m_{2} l_{1} l_{2} \\dot{\\theta_1}^{2} \\sin\\left(\\theta_2 - "
-                 "\\theta_1\\right)$ belongs (a flipped sign)",
-                 "m_{2} l_{1} l_{2} \\dot{\\theta_1}^{2} \\sin\\left(\\theta_2 - \\theta_1\\right) + m_{2} l_{1} l_{2} "
-                 "\\ddot{\\theta_1} \\cos\\left(\\theta_2 - \\theta_1\\right) + m_{2} l_{2} g \\sin \\theta_2 + m_{2} "
-                 "l_{2}^{2} \\ddot{\\theta_2} = 0");
+    check_pinned(
+        lines[49],
+        "the $\\dot{\\theta_1}^{2}$ terms: $-m_{2} l_{1} l_{2} \\dot{\\theta_1}^{2} \\sin\\left(\\theta_2 - "
+        "\\theta_1\\right)$ where $m_{2} l_{1} l_{2} \\dot{\\theta_1}^{2} \\sin\\left(\\theta_2 - "
+        "\\theta_1\\right)$ belongs (a flipped sign)",
+        "m_{2} l_{1} l_{2} \\dot{\\theta_1}^{2} \\sin\\left(\\theta_2 - \\theta_1\\right) + m_{2} l_{1} "
+        "l_{2} "
+        "\\ddot{\\theta_1} \\cos\\left(\\theta_2 - \\theta_1\\right) + m_{2} l_{2} g \\sin \\theta_2 + m_{2} "
+        "l_{2}^{2} \\ddot{\\theta_2} = 0");
 }
 
-TEST_CASE("author form: a corrected T with sin^2 + cos^2 = 1 applied and (m1 + m2) grouped", "[checker][author_form]") {
+TEST_CASE("author form: a corrected T with sin^2 + cos^2 = 1 applied and (m1 + m2) grouped",
+          "[checker][author_form]") {
     std::map<int, EquationCheck> lines = checked_lines();
     // Was ½ m₁ l₁² θ̇₁² cos² θ₁ + ½ m₁ l₁² θ̇₁² sin² θ₁ + m₂ l₁ l₂ θ̇₁ θ̇₂ cos θ₁ cos θ₂ + … (eight terms).
-    check_pinned(lines[55],
-                 "the $\\dot{\\theta_1} \\dot{\\theta_2}$ terms: $2 m_{2} l_{1} l_{2} \\dot{\\theta_1} \\dot{\\theta_2} "
-                 "\\cos\\left(\\theta_1 - \\theta_2\\right)$ where $m_{2} l_{1} l_{2} \\dot{\\theta_1} \\dot{\\theta_2} "
-                 "\\cos\\left(\\theta_1 - \\theta_2\\right)$ belongs (off by a factor $2$)",
-                 "T = m_{2} l_{1} l_{2} \\dot{\\theta_1} \\dot{\\theta_2} \\cos\\left(\\theta_1 - \\theta_2\\right) + "
-                 "\\frac{1}{2} m_{2} l_{2}^{2} \\dot{\\theta_2}^{2} + \\frac{1}{2} \\left(m_{1} + m_{2}\\right) l_{1}^{2} "
-                 "\\dot{\\theta_1}^{2}");
+    check_pinned(
+        lines[55],
+        "the $\\dot{\\theta_1} \\dot{\\theta_2}$ terms: $2 m_{2} l_{1} l_{2} \\dot{\\theta_1} "
+        "\\dot{\\theta_2} "
+        "\\cos\\left(\\theta_1 - \\theta_2\\right)$ where $m_{2} l_{1} l_{2} \\dot{\\theta_1} "
+        "\\dot{\\theta_2} "
+        "\\cos\\left(\\theta_1 - \\theta_2\\right)$ belongs (off by a factor $2$)",
+        "T = m_{2} l_{1} l_{2} \\dot{\\theta_1} \\dot{\\theta_2} \\cos\\left(\\theta_1 - \\theta_2\\right) + "
+        "\\frac{1}{2} m_{2} l_{2}^{2} \\dot{\\theta_2}^{2} + \\frac{1}{2} \\left(m_{1} + m_{2}\\right) "
+        "l_{1}^{2} "
+        "\\dot{\\theta_1}^{2}");
 }

@@ -114,9 +114,9 @@ TEST_CASE("printed with the author's angles, expressions parse back to the same 
     MathPrinter p(f.table);
     p.prefer_angles({f.y - f.x});
     eomgen::SymbolTable names;
-    for (const auto& [n, s] : {std::pair<std::string, GiNaC::symbol>{"a", f.a}, {"b", f.b}, {"c", f.c}, {"x", f.x},
-                               {"y", f.y}, {"t", f.t}})
-        names.symbols[n] = s;
+    const std::vector<std::pair<std::string, GiNaC::symbol>> all = {
+        {"a", f.a}, {"b", f.b}, {"c", f.c}, {"x", f.x}, {"y", f.y}, {"t", f.t}};
+    for (const auto& [n, s] : all) names.symbols[n] = s;
     const GiNaC::ex u = f.x - f.y;
     const GiNaC::ex pieces[] = {GiNaC::sin(u), GiNaC::cos(u), GiNaC::pow(GiNaC::sin(u), 3), 1 / GiNaC::sin(u),
                                 GiNaC::sqrt(1 + GiNaC::pow(GiNaC::sin(u), 2)), f.a + f.b * GiNaC::sin(u),

@@ -1,5 +1,6 @@
-/** @file test_trig_rewrite.cpp  mechanics/trig_rewrite: angle sums both ways, sin² + cos² = 1 with coefficients
- * and powers, like terms collected, and (random consistency) the rewritten value always equals the original. */
+/** @file test_trig_rewrite.cpp  mechanics/trig_rewrite: angle sums both ways, sin² + cos² = 1 with
+ * coefficients and powers, like terms collected, and (random consistency) the rewritten value always equals
+ * the original. */
 #include "mechanics/trig_rewrite.hpp"
 
 #include <catch2/catch.hpp>
@@ -15,7 +16,9 @@ using GiNaC::pow;
 using GiNaC::sin;
 using GiNaC::symbol;
 
-bool same(const ex& a, const ex& b) { return (a - b).expand().is_zero(); }
+bool same(const ex& a, const ex& b) {
+    return (a - b).expand().is_zero();
+}
 
 std::size_t terms(const ex& e) {
     const ex x = e.expand();
@@ -53,7 +56,8 @@ TEST_CASE("expand_sums splits sines and cosines of sums into products", "[trig]"
 TEST_CASE("contract_sums gives back the angle the author wrote, in the author's orientation", "[trig]") {
     Syms s;
     using eomgen::trig::contract_sums;
-    const ex cc = cos(s.a) * cos(s.b), ss = sin(s.a) * sin(s.b), sc = sin(s.a) * cos(s.b), cs = cos(s.a) * sin(s.b);
+    const ex cc = cos(s.a) * cos(s.b), ss = sin(s.a) * sin(s.b), sc = sin(s.a) * cos(s.b),
+             cs = cos(s.a) * sin(s.b);
     CHECK(contract_sums(cc + ss, {s.a - s.b}).is_equal(cos(s.a - s.b)));
     CHECK(contract_sums(cc - ss, {s.a + s.b}).is_equal(cos(s.a + s.b)));
     CHECK(contract_sums(sc - cs, {s.a - s.b}).is_equal(sin(s.a - s.b)));
@@ -74,7 +78,8 @@ TEST_CASE("contract_sums gives back the angle the author wrote, in the author's 
 
 TEST_CASE("angle_sums lists the sums and differences of the text's sines and cosines", "[trig]") {
     Syms s;
-    const std::vector<ex> u = eomgen::trig::angle_sums(s.m1 * cos(s.b - s.a) + sin(s.a) + pow(sin(s.a + s.b), 2));
+    const std::vector<ex> u =
+        eomgen::trig::angle_sums(s.m1 * cos(s.b - s.a) + sin(s.a) + pow(sin(s.a + s.b), 2));
     REQUIRE(u.size() == 2);
     CHECK(((u[0].is_equal(s.b - s.a) && u[1].is_equal(s.a + s.b)) ||
            (u[1].is_equal(s.b - s.a) && u[0].is_equal(s.a + s.b))));
@@ -89,9 +94,9 @@ TEST_CASE("pythagoras applies sin^2 + cos^2 = 1 with coefficients and powers", "
     CHECK(same(pythagoras(GiNaC::numeric(1, 2) * s.m2 * pow(s.l1 * s.d1, 2) * (pow(sa, 2) + pow(ca, 2))),
                GiNaC::numeric(1, 2) * s.m2 * pow(s.l1 * s.d1, 2)));
     // The bead on a spinning hoop written in Cartesian velocities: M = m R².
-    CHECK(same(pythagoras(s.m1 * pow(s.R, 2) *
-                          (pow(ca, 2) * pow(cw, 2) + pow(ca, 2) * pow(sw, 2) + pow(sa, 2))),
-               s.m1 * pow(s.R, 2)));
+    CHECK(same(
+        pythagoras(s.m1 * pow(s.R, 2) * (pow(ca, 2) * pow(cw, 2) + pow(ca, 2) * pow(sw, 2) + pow(sa, 2))),
+        s.m1 * pow(s.R, 2)));
     // Unequal coefficients that do not shorten stay as they are.
     const ex kept = s.m1 * pow(ca, 2) + s.m2 * pow(sa, 2);
     CHECK(pythagoras(kept).is_equal(kept.expand()));
@@ -118,8 +123,8 @@ TEST_CASE("readable: the two-link chain from Cartesian velocities reads as the t
     const ex x1 = s.l1 * s.d1 * cos(a), y1 = s.l1 * s.d1 * sin(a);
     const ex x2 = x1 + s.l2 * s.d2 * cos(b), y2 = y1 + s.l2 * s.d2 * sin(b);
     const ex T = (s.m1 * (pow(x1, 2) + pow(y1, 2)) + s.m2 * (pow(x2, 2) + pow(y2, 2))) / 2;
-    const ex textbook = (s.m1 + s.m2) * pow(s.l1 * s.d1, 2) / 2 + s.m2 * s.l1 * s.l2 * s.d1 * s.d2 * cos(a - b) +
-                        s.m2 * pow(s.l2 * s.d2, 2) / 2;
+    const ex textbook = (s.m1 + s.m2) * pow(s.l1 * s.d1, 2) / 2 +
+                        s.m2 * s.l1 * s.l2 * s.d1 * s.d2 * cos(a - b) + s.m2 * pow(s.l2 * s.d2, 2) / 2;
     eomgen::trig::Hints hints;
     hints.angles = {a - b};
     hints.constants = s.constants();
