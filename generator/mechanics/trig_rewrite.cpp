@@ -196,23 +196,15 @@ bool polynomial(const GiNaC::ex& e) {
     return true;
 }
 
-/// The coefficient of a group of like terms, factored where that is cheap: ½ g l (m + 2M), and over the
-/// denominator its terms share: I₃/I − 1 → (I₃ − I)/I. Terms over different denominators stay as written
-/// (k/m + 2k/M, not (2m + M) k/(m M)).
+/// The coefficient of a group of like terms, factored where that is cheap: ½ g l (m + 2M), and over a
+/// common denominator when its terms have denominators: I₃/I − 1 → (I₃ − I)/I.
 GiNaC::ex factored(const GiNaC::ex& c) {
     if (!GiNaC::is_a<GiNaC::add>(c) || c.nops() > 12) return c;
     try {
         if (polynomial(c)) return GiNaC::factor(c);
-        GiNaC::ex shared = 1;  // the one denominator other than 1 that the terms have
-        for (const GiNaC::ex& t : c) {
-            const GiNaC::ex d = GiNaC::numer_denom(t).op(1);
-            if (d.is_equal(1) || d.is_equal(shared)) continue;
-            if (!shared.is_equal(1)) return c;
-            shared = d;
-        }
-        const GiNaC::ex numerator = (c * shared).expand();
-        if (!polynomial(numerator)) return c;
-        return GiNaC::factor(numerator) / shared;
+        const GiNaC::ex nd = GiNaC::numer_denom(GiNaC::normal(c));
+        if (!polynomial(nd.op(0)) || !polynomial(nd.op(1))) return c;
+        return GiNaC::factor(nd.op(0)) / GiNaC::factor(nd.op(1));
     } catch (const std::exception&) {
         return c;
     }
@@ -226,8 +218,8 @@ bool only_constants(const GiNaC::ex& f, const GiNaC::exset& constants) {
     return false;
 }
 
-/// Denominators rewritten like the whole (1/(m₁ + m₂ sin² θ + m₂ cos² θ) → 1/(m₁ + m₂)), before the terms
-/// are paired, so that terms over the same denominator meet.
+/// Denominators rewritten like the whole (1/(m₁ + m₂ sin² θ + m₂ cos² θ) → 1/(m₁ + m₂)) and their common
+/// factors pulled out, before the terms are paired and collected, so that terms over one denominator meet.
 struct TidyDenominators : GiNaC::map_function {
     const Hints& hints;
     std::size_t max_terms;
@@ -235,7 +227,9 @@ struct TidyDenominators : GiNaC::map_function {
     GiNaC::ex operator()(const GiNaC::ex& x) override {
         if (GiNaC::is_a<GiNaC::power>(x) && GiNaC::is_a<GiNaC::add>(x.op(0)) &&
             GiNaC::is_a<GiNaC::numeric>(x.op(1)) && GiNaC::ex_to<GiNaC::numeric>(x.op(1)).is_negative())
-            return GiNaC::pow(readable(x.op(0).map(*this), hints, max_terms), x.op(1));
+            // Common factors out, so that l₁ (m₁ l₂ + m₂ l₂ s²) and m₁ l₁ l₂ + m₂ l₁ l₂ s² meet.
+            return GiNaC::pow(GiNaC::collect_common_factors(readable(x.op(0).map(*this), hints, max_terms)),
+                              x.op(1));
         return x.map(*this);
     }
 };

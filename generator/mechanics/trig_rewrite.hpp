@@ -33,8 +33,8 @@ GiNaC::ex pythagoras(const GiNaC::ex& e);
 
 /// Like terms collected: terms that differ only in a factor made of `constants` (parameters) and numbers are
 /// summed into one, whose coefficient is factored: m₁ l₁² θ̈₁ + m₂ l₁² θ̈₁ becomes (m₁ + m₂) l₁² θ̈₁.
-/// Coefficients over one shared denominator are factored over it ((I₃ − I)/I); a sum of parameters alone with
-/// denominators stays as written (2 g/l − √2 g/l). Terms are those of e expanded; the result is not expanded
+/// Coefficients with denominators are factored over a common one ((I₃ − I)/I); a sum of parameters alone
+/// with denominators stays as written (2 g/l − √2 g/l, k/m + 2 k/M). Terms are those of e expanded; the result is not expanded
 /// again (expand() undoes it).
 GiNaC::ex collect_like_terms(const GiNaC::ex& e, const GiNaC::exset& constants);
 

@@ -174,3 +174,26 @@ TEST_CASE("readable never changes the value: random trigonometric polynomials at
         }
     }
 }
+
+TEST_CASE("readable: terms over equal denominators written two ways meet, over a common denominator",
+          "[trig]") {
+    Syms s;
+    eomgen::trig::Hints hints;
+    hints.constants = s.constants();
+    const ex s2 = pow(sin(s.a - s.b), 2);
+    // The double pendulum's H: l1 (m1 l2 + m2 l2 s²) and m1 l1 l2 + m2 l1 l2 s² are one denominator.
+    const ex e = s.d1 / (s.l1 * (s.m1 * s.l2 + s.m2 * s.l2 * s2)) +
+                 s.d1 / (s.m1 * s.l1 * s.l2 + s.m2 * s.l1 * s.l2 * s2);
+    const ex r = eomgen::trig::readable(e, hints);
+    CHECK_FALSE(GiNaC::is_a<GiNaC::add>(r));  // one term
+    CHECK(same(GiNaC::normal(r - 2 * s.d1 / (s.l1 * s.l2 * (s.m1 + s.m2 * s2))), 0));
+    // A coefficient with denominators goes over a common one: (m1/(m2 l2²) + 1/l2²) d2 = (m1 + m2) d2/(m2
+    // l2²).
+    const ex c = eomgen::trig::collect_like_terms(s.m1 * s.d2 / (s.m2 * pow(s.l2, 2)) + s.d2 / pow(s.l2, 2),
+                                                  s.constants());
+    CHECK_FALSE(GiNaC::is_a<GiNaC::add>(c));
+    CHECK(same(GiNaC::normal(c - (s.m1 + s.m2) * s.d2 / (s.m2 * pow(s.l2, 2))), 0));
+    // Parameters alone over different denominators stay as written (k/m + 2 k/M).
+    const ex k = s.R / s.m1 + 2 * s.R / s.m2;
+    CHECK(eomgen::trig::collect_like_terms(k, s.constants()).is_equal(k));
+}
