@@ -18,6 +18,7 @@
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/results.hpp"
+#include "mechanics/trig_rewrite.hpp"
 
 #include <Eigen/Dense>
 
@@ -311,7 +312,10 @@ class Checker : public Comparisons {
           algebra_(model, d, ctx_, [this](const Side& s, std::size_t base) {
               const Prepared p = prepare(PSide{&s, base});
               return ScalarReading{p.ok, p.value, p.problem, p.has_truth_label};
-          }) {}
+          }) {
+        hints_.other_angles = false;  // only the sines and cosines the author or the model wrote
+        for (const Parameter& p : model.parameters) hints_.constants.insert(p.symbol);
+    }
 
     CheckReport run();
 
@@ -465,6 +469,7 @@ class Checker : public Comparisons {
     LatexContext ctx_;
     Numbers numbers_;
     codegen::SymbolTable printer_table_;
+    trig::Hints hints_;  ///< what is printed is rewritten towards: the author's angle sums (set per link)
     ExMap<GiNaC::ex> truth_;          ///< label symbol → eomgen's value
     ExMap<std::string> label_what_;   ///< label symbol → what it is, for the report
     ExSet bare_only_;                 ///< labels that count only as a whole side (h, H)
@@ -898,13 +903,10 @@ Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* onl
         // The factor, symbolically when it is simple: the ratio of the q̈_i coefficients.
         const GiNaC::symbol& qi = model_.coordinates[std::size_t(*only)].qdd;
         try {
-            const GiNaC::ex c =
-                GiNaC::normal(GiNaC::diff(r, qi) / GiNaC::diff(motion_[std::size_t(*only)], qi));
-            if (!c.is_equal(1)) {
-                std::ostringstream os;
-                os << GiNaC::latex << c;
-                *factor = os.str();
-            }
+            // sin² + cos² = 1 first: (m₁ + m₂)/(m₁ + m₂ sin² θ₁ + m₂ cos² θ₁) is 1, not a factor.
+            const GiNaC::ex c = trig::readable_ratio(GiNaC::diff(r, qi),
+                                                     GiNaC::diff(motion_[std::size_t(*only)], qi), hints_);
+            if (!c.is_equal(1)) *factor = latex(c);
         } catch (...) {
         }
     }
@@ -1036,7 +1038,8 @@ std::string Checker::latex(const GiNaC::ex& e) {
                   [](const auto& a, const auto& b) { return a.first < b.first; });
         for (const auto& [name, sym] : others) add(sym, name);
         codegen::MathPrinter printer(table);
-        return printer.print(shown.expand(), codegen::MathStyle::Latex);
+        printer.prefer_angles(hints_.angles);
+        return printer.print(trig::readable(shown, hints_), codegen::MathStyle::Latex);
     } catch (...) {
     }
     std::ostringstream os;
@@ -1176,7 +1179,12 @@ std::string Checker::pair_kind(const GiNaC::ex& t, const GiNaC::ex& u, double to
     return "";
 }
 
-Diagnosis Checker::compare_to(const GiNaC::ex& text, const GiNaC::ex& truth, double tol) {
+Diagnosis Checker::compare_to(const GiNaC::ex& text_as_read, const GiNaC::ex& truth_as_derived, double tol) {
+    // Term by term in the author's sines and cosines: k sin(θ₁ − θ₂) where k cos(θ₁ − θ₂) belongs.
+    trig::Hints terms_hints = hints_;
+    terms_hints.collect = false;
+    const GiNaC::ex text = trig::readable(text_as_read, terms_hints);
+    const GiNaC::ex truth = trig::readable(truth_as_derived, terms_hints);
     Diagnosis d;
     const GiNaC::ex diff = (text - truth).expand();
     d.difference = latex(diff);
@@ -1379,6 +1387,7 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     const PSide& R = c.sides[j];
     const std::size_t rel_at = c.relation_offsets[j - 1];
     r.where = d_.position(bridge ? c.relation_offsets[i] : rel_at);
+    hints_.angles = trig::angle_sums((L.side->ok ? L.side->value : 0) + (R.side->ok ? R.side->value : 0));
     if (c.section >= 0) r.section = d_.sections[std::size_t(c.section)].title;
     Relation rel = Relation::Equal;
     for (std::size_t q = i; q < j; ++q)

@@ -4,6 +4,7 @@
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/bodies.hpp"
+#include "mechanics/trig_rewrite.hpp"
 #include "text/escape.hpp"
 
 #include <algorithm>
@@ -43,7 +44,11 @@ std::vector<LatexBlock> latex_equations(const Model& model, const Equations& eq)
     const Hamiltonian ham = derive_hamiltonian(model, eq);
     MultiplierTable mt = multiplier_table(model, eq, &ham);
     codegen::MathPrinter pr(mt.table);
-    auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), codegen::MathStyle::Latex); };
+    const trig::Hints hints = trig::model_hints(model);
+    pr.prefer_angles(hints.angles);
+    auto P = [&pr, &hints](const GiNaC::ex& e) {
+        return pr.print(trig::readable(e, hints), codegen::MathStyle::Latex);
+    };
     const std::size_t n = model.dof();
     std::vector<LatexBlock> blocks;
 

@@ -7,6 +7,7 @@
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/lagrangian.hpp"
+#include "mechanics/trig_rewrite.hpp"
 #include "model/families.hpp"
 #include "model/model_file.hpp"
 #include "model/names.hpp"
@@ -90,7 +91,11 @@ std::string rule(const std::string& title) { return "\n" + title + "\n" + std::s
 void show_constraints(const eomgen::Model& model, const eomgen::Equations& eq, eomgen::codegen::MathPrinter& pr,
                       const std::vector<GiNaC::symbol>& lambda, std::ostream& os) {
     using eomgen::codegen::MathStyle;
-    auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), MathStyle::Text); };
+    const eomgen::trig::Hints hints = eomgen::trig::model_hints(model);
+    pr.prefer_angles(hints.angles);
+    auto P = [&pr, &hints](const GiNaC::ex& e) {
+        return pr.print(eomgen::trig::readable(e, hints), MathStyle::Text);
+    };
     os << rule("Constraints  M q'' = f + A^T lambda,  A q'' = gamma  (c = A q' + b = 0)");
     for (const eomgen::ConstraintEquations& c : eq.constraints) {
         const bool holonomic = c.kind == eomgen::ConstraintKind::Holonomic;
@@ -118,7 +123,11 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     const eomgen::Hamiltonian ham = eomgen::derive_hamiltonian(model, eq);
     eomgen::cli::MultiplierTable mt = eomgen::cli::multiplier_table(model, eq, &ham);
     eomgen::codegen::MathPrinter pr(mt.table);
-    auto P = [&pr](const GiNaC::ex& e) { return pr.print(e.expand(), MathStyle::Text); };
+    const eomgen::trig::Hints hints = eomgen::trig::model_hints(model);
+    pr.prefer_angles(hints.angles);
+    auto P = [&pr, &hints](const GiNaC::ex& e) {
+        return pr.print(eomgen::trig::readable(e, hints), MathStyle::Text);
+    };
     os << model.name << ": " << model.title;
     if (!model.source.empty()) os << " (" << model.source << ")";
     os << "\n";

@@ -1,6 +1,7 @@
 /** @file math_printer.cpp  Plain-text and LaTeX rendering of the canonical DAG. */
 #include "codegen/math_printer.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 namespace eomgen::codegen {
@@ -25,6 +26,43 @@ MathPrinter::MathPrinter(const SymbolTable& table) : dag_(table.info, table.expr
 
 std::string MathPrinter::print(const GiNaC::ex& e, MathStyle style) { return term(dag_.add(e), style); }
 
+void MathPrinter::prefer_angles(const std::vector<GiNaC::ex>& angles) {
+    for (const GiNaC::ex& u : angles) {
+        const Term t = dag_.add(u);  // φ − θ is stored as −1·(θ − φ) when θ sorts first
+        if (t.coeff.is_equal(-1) && t.node != kOne && dag_.node(t.node).op == Op::Add &&
+            dag_.node(t.node).args.size() == 2 && dag_.node(t.node).value.is_zero())
+            reversed_.insert(t.node);
+    }
+}
+
+bool MathPrinter::parameters_only(NodeId id) const {
+    if (id == kOne) return true;
+    const Node& n = dag_.node(id);
+    if (n.op == Op::Symbol) return dag_.symbol(n.symbol).kind == SymbolKind::Parameter;
+    return std::all_of(n.args.begin(), n.args.end(), [this](NodeId a) { return parameters_only(a); });
+}
+
+bool MathPrinter::reversed(NodeId func) const {
+    const Node& n = dag_.node(func);
+    return in_term_ && n.op == Op::Func && (n.name == "sin" || n.name == "cos") && n.args.size() == 1 &&
+           reversed_.count(n.args[0]) > 0;
+}
+
+int MathPrinter::flipped_sines(NodeId id) const {
+    if (id == kOne || reversed_.empty()) return 0;
+    const Node& n = dag_.node(id);
+    auto sine = [&](NodeId f) {
+        const Node& x = dag_.node(f);
+        return x.op == Op::Func && x.name == "sin" && x.args.size() == 1 && reversed_.count(x.args[0]) > 0;
+    };
+    if (n.op == Op::Func) return sine(id) ? 1 : 0;
+    int count = 0;
+    if (n.op == Op::Mul)
+        for (std::size_t i = 0; i < n.args.size(); ++i)
+            if (sine(n.args[i]) && n.coeffs[i].is_integer() && n.coeffs[i].is_odd()) ++count;
+    return count;
+}
+
 std::string MathPrinter::sum(const Node& n, const GiNaC::numeric& factor, MathStyle style) {
     std::string out;
     for (std::size_t i = 0; i < n.args.size(); ++i) {
@@ -43,8 +81,16 @@ std::string MathPrinter::sum(const Node& n, const GiNaC::numeric& factor, MathSt
     return out;
 }
 
-std::string MathPrinter::term(const Term& t, MathStyle style) {
-    if (t.node == kOne) return numeric_string(t.coeff);
+std::string MathPrinter::term(const Term& given, MathStyle style) {
+    if (given.node == kOne) return numeric_string(given.coeff);
+    // A sine printed with its angle reversed carries a sign: −k sin(θ − φ) reads k sin(φ − θ).
+    const Term t{flipped_sines(given.node) % 2 ? GiNaC::numeric(-given.coeff) : given.coeff, given.node};
+    struct Scope {
+        bool& flag;
+        bool saved;
+        Scope(bool& f, bool v) : flag(f), saved(f) { flag = v; }
+        ~Scope() { flag = saved; }
+    } scope(in_term_, true);
     // −(a + b) reads better as −a − b.
     if (t.coeff.is_equal(-1) && dag_.node(t.node).op == Op::Add && dag_.node(t.node).args.size() > 1)
         return sum(dag_.node(t.node), t.coeff, style);
@@ -79,8 +125,19 @@ std::string MathPrinter::node(NodeId id, MathStyle style, int context) {
             break;
         }
         case Op::Func: {
+            const bool flip = reversed(id);
+            bool& flag = in_term_;
+            const bool saved = flag;
+            flag = false;  // inside a function's arguments, signs are the arguments' own
             std::vector<std::string> args;
             for (NodeId a : n.args) args.push_back(node(a, style, kSum));
+            flag = saved;
+            if (flip) {  // θ − φ printed as φ − θ: the two terms swapped, their signs flipped
+                const Node& a = dag_.node(n.args[0]);
+                args[0] = term(Term{-a.coeffs[1], a.args[1]}, style);
+                const std::string second = term(Term{-a.coeffs[0], a.args[0]}, style);
+                args[0] += second[0] == '-' ? " - " + second.substr(1) : " + " + second;
+            }
             if (latex && n.name == "sqrt") {
                 out = "\\sqrt{" + args[0] + "}";
             } else if (latex && n.name == "pow") {
@@ -98,13 +155,18 @@ std::string MathPrinter::node(NodeId id, MathStyle style, int context) {
         case Op::Pow:  // only in lowered DAGs, which this printer does not build
         case Op::Mul: {
             std::vector<std::string> num, den;
-            std::size_t n_den = 0;
+            std::size_t n_den = 0, num_sums = 0, den_sums = 0;
             for (const GiNaC::numeric& k : n.coeffs) n_den += k.is_negative() ? 1 : 0;
+            const std::size_t n_num = n.coeffs.size() - n_den;
             for (std::size_t i = 0; i < n.args.size(); ++i) {
                 const GiNaC::numeric k = GiNaC::abs(n.coeffs[i]);
+                // flipped_sines() counts integer powers only: a root of a sine keeps the canonical angle.
+                const bool saved = in_term_;
+                in_term_ = in_term_ && n.coeffs[i].is_integer();
                 std::string f;
                 if (k.is_equal(1)) {
-                    const bool alone_in_frac = latex && n.coeffs[i].is_negative() && n_den == 1;
+                    const bool alone_in_frac =
+                        latex && n_den > 0 && (n.coeffs[i].is_negative() ? n_den == 1 : n_num == 1);
                     f = node(n.args[i], style, alone_in_frac ? kSum : kProduct + 1);
                 } else {
                     const Node& b = dag_.node(n.args[i]);
@@ -115,7 +177,13 @@ std::string MathPrinter::node(NodeId id, MathStyle style, int context) {
                         f = latex ? node(n.args[i], style, kAtom) + "^{" + numeric_string(k) + "}"
                                   : node(n.args[i], style, kAtom) + "^" + numeric_string(k);
                 }
-                (n.coeffs[i].is_negative() ? den : num).push_back(f);
+                in_term_ = saved;
+                // A sum of parameters leads its product, as people write it: (m + 3 M) l^2, not
+                // l^2 (m + 3 M); a sum in the coordinates stays last: m g (w sin θ sin ψ + h cos θ).
+                std::vector<std::string>& side = n.coeffs[i].is_negative() ? den : num;
+                std::size_t& sums = n.coeffs[i].is_negative() ? den_sums : num_sums;
+                const bool sum_factor = dag_.node(n.args[i]).op == Op::Add && parameters_only(n.args[i]);
+                side.insert(sum_factor ? side.begin() + long(sums++) : side.end(), f);
             }
             auto join = [&](const std::vector<std::string>& v) {
                 std::string s;

@@ -5,7 +5,9 @@
 
 #include <ginac/ginac.h>
 
+#include <set>
 #include <string>
+#include <vector>
 
 namespace eomgen::codegen {
 
@@ -18,11 +20,21 @@ public:
     explicit MathPrinter(const SymbolTable& table);
     std::string print(const GiNaC::ex& e, MathStyle style);
 
+    /// Angle differences to print as given: sin(φ − θ) and cos(φ − θ) rather than the canonical −sin(θ − φ)
+    /// and cos(θ − φ), the sign of a sine moved into its term's coefficient. For the author's own angles.
+    void prefer_angles(const std::vector<GiNaC::ex>& angles);
+
 private:
+    /// How many sines of a reversed angle (to odd integer powers) a term's node holds.
+    int flipped_sines(NodeId id) const;
+    bool reversed(NodeId func) const;
+    bool parameters_only(NodeId id) const;  ///< no symbol but parameters below id
     std::string term(const Term& t, MathStyle style);
     std::string sum(const Node& n, const GiNaC::numeric& factor, MathStyle style);
     std::string node(NodeId id, MathStyle style, int context);
     ExprDag dag_;
+    std::set<NodeId> reversed_;  ///< canonical angle nodes (θ − φ) the author writes the other way round
+    bool in_term_ = false;       ///< printing a term's factors: reversed sines' signs are in its coefficient
 };
 
 }  // namespace eomgen::codegen

@@ -117,6 +117,7 @@ TEST_CASE("corrections check themselves: every fixture", "[checker][corrections]
         {"models/rolling_cone.toml", "tests/checker/fixtures/cone_planted.md", "", ""},
         {"models/pendulum.toml", "tests/checker/fixtures/pendulum_web_page.md", "", ""},
         {"examples/double_pendulum.toml", "tests/checker/fixtures/double_pendulum_textbook.md", "", ""},
+        {"tests/checker/models/double_pendulum_cartesian.toml", "tests/checker/fixtures/double_pendulum_author_form.md", "", ""},
         {"tests/checker/models/plane_pendulum.toml", "tests/checker/fixtures/hamilton_pendulum_planted.md", "", ""},
         {"tests/checker/models/spherical_pendulum.toml", "tests/checker/fixtures/hamilton_spherical_pendulum_planted.md", "", ""},
         {"models/heavy_symmetric_top.toml", "tests/checker/fixtures/hamilton_heavy_top_planted.md", "", "",
