@@ -3,6 +3,8 @@
  * ("not comparable: too large to compare within the budget") instead of running for minutes. */
 #pragma once
 
+#include "mechanics/expansion_bound.hpp"
+
 #include <ginac/ginac.h>
 
 #include <cstddef>
@@ -13,12 +15,7 @@ namespace eomgen::checker {
 /// at this size is compared (expanded, normalized, squared) in well under a second.
 constexpr double kMaxExpandedTerms = 2000;
 
-/**
- * An upper bound on the number of terms of e.expand() and of GiNaC::normal(e)'s numerator and denominator
- * (and of any expansion inside a function's argument, which expand() also does), computed without expanding:
- * sums add (over a common denominator: a/b + c/d = (ad + cb)/(bd)), products multiply, a sum of k terms to
- * an integer power ±n gives at most C(k + n − 1, n). Saturates at 1e18.
- */
-double expanded_terms(const GiNaC::ex& e);
+/// The bound itself lives with the mechanics (mechanics/expansion_bound.hpp), which uses it too.
+using eomgen::expanded_terms;
 
 }  // namespace eomgen::checker

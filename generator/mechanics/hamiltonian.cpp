@@ -1,6 +1,8 @@
 /** @file hamiltonian.cpp  Legendre transform L(q, q̇, t) → H(q, p, t), block by block of the mass matrix. */
 #include "mechanics/hamiltonian.hpp"
 
+#include "mechanics/expansion_bound.hpp"
+
 #include <algorithm>
 #include <sstream>
 
@@ -30,6 +32,25 @@ std::vector<std::vector<unsigned>> coupled_blocks(const GiNaC::matrix& M, const 
         std::sort(out.back().begin(), out.back().end());
     }
     return out;
+}
+
+/// The most terms det of a block of M may expand to for its inverse to be formed symbolically (as for det M's
+/// factorization in lagrangian.cpp): beyond it normal() on the inverse runs for minutes.
+constexpr double kMaxInverseDetTerms = 4000;
+
+/// An upper bound on the terms of det(sub) expanded: Σ over permutations of Π expanded_terms(entries).
+double det_terms(const GiNaC::matrix& sub) {
+    const unsigned k = sub.rows();
+    std::vector<unsigned> perm(k);
+    for (unsigned i = 0; i < k; ++i) perm[i] = i;
+    double total = 0;
+    do {
+        double product = 1;
+        for (unsigned r = 0; r < k && product > 0; ++r)
+            product = sub(r, perm[r]).is_zero() ? 0 : product * expanded_terms(sub(r, perm[r]));
+        total += product;
+    } while (std::next_permutation(perm.begin(), perm.end()));
+    return total;
 }
 
 }  // namespace
@@ -76,13 +97,29 @@ Hamiltonian derive_hamiltonian(const Model& model, const Equations& eq) {
                                  "): its inverse is not formed symbolically";
             return h;
         }
-    h.Minv = GiNaC::matrix(n, n);
+    std::vector<GiNaC::matrix> subs;
     for (const std::vector<unsigned>& blk : blocks) {
         const unsigned k = unsigned(blk.size());
         GiNaC::matrix sub(k, k);
         for (unsigned r = 0; r < k; ++r)
             for (unsigned c = 0; c < k; ++c) sub(r, c) = h.M(blk[r], blk[c]);
-        const GiNaC::matrix inv = sub.inverse();
+        if (const double terms = det_terms(sub); terms > kMaxInverseDetTerms) {
+            std::string names;
+            for (unsigned i : blk) names += (names.empty() ? "" : ", ") + model.coordinates[i].name;
+            std::ostringstream why;
+            why << "the mass matrix's entries are too large to invert symbolically within the budget (the determinant"
+                << " of the block of " << names << " expands to up to " << terms << " terms, more than "
+                << kMaxInverseDetTerms << ")";
+            h.why_not_symbolic = why.str();
+            return h;
+        }
+        subs.push_back(sub);
+    }
+    h.Minv = GiNaC::matrix(n, n);
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+        const std::vector<unsigned>& blk = blocks[b];
+        const unsigned k = unsigned(blk.size());
+        const GiNaC::matrix inv = subs[b].inverse();
         for (unsigned r = 0; r < k; ++r)
             for (unsigned c = 0; c < k; ++c) h.Minv(blk[r], blk[c]) = shorter_trig(GiNaC::normal(inv(r, c)));
     }

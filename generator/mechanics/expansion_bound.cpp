@@ -1,10 +1,10 @@
-/** @file budget.cpp  The expansion-size bound of budget.hpp. */
-#include "checker/budget.hpp"
+/** @file expansion_bound.cpp  The expansion-size bound of expansion_bound.hpp. */
+#include "mechanics/expansion_bound.hpp"
 
 #include <algorithm>
 #include <vector>
 
-namespace eomgen::checker {
+namespace eomgen {
 namespace {
 
 constexpr double kSaturated = 1e18;
@@ -74,4 +74,4 @@ double expanded_terms(const GiNaC::ex& e) {
     return size_of(e).most;
 }
 
-}  // namespace eomgen::checker
+}  // namespace eomgen
