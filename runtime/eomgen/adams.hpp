@@ -22,7 +22,7 @@ template <class Scalar>
 struct AdamsOptions {
     Scalar rtol = Scalar(1e-6);      ///< relative tolerance, per component
     Scalar atol = Scalar(1e-9);      ///< absolute tolerance, per component; must be positive
-    Scalar h0 = Scalar(0);           ///< first step size; 0: STEP's choice, 0.25·sqrt(1/‖f(t0, x0)‖)
+    Scalar h0 = Scalar(0);           ///< first step size; 0: STEP's, min(hmax, 0.25/sqrt(‖f(t0, x0)‖))
     Scalar hmin = Scalar(0);         ///< smallest |h| before StepSizeUnderflow; never below 16 ulp of t
     Scalar hmax = Scalar(0);         ///< largest |h|; 0: |t_end - t0|
     std::size_t max_steps = 100000;  ///< attempted steps (accepted + rejected) before TooManySteps
@@ -50,7 +50,7 @@ struct AdamsOptions {
  * (STEP with eps = 1 and weights sc·sqrt(n), so the norm is the one of the Runge–Kutta steppers). The errors
  * that orders k − 2, k − 1, k + 1 would have made at constant steps choose the next order (lower when they are
  * no larger, higher only after steps of constant size), and the step size follows the chosen order's error
- * estimate: doubled when it is below 2^−(k+1)/2, kept when below 1/2, else h·clamp((0.5/err)^(1/(k+1)), 0.5,
+ * estimate: doubled when it is below 2^−(k+2), kept when below 1/2, else h·clamp((0.5/err)^(1/(k+1)), 0.5,
  * 0.9). The start is order 1 with STEP's first step; while every step succeeds ("phase 1") the order rises
  * by one and the step doubles each step, up to max_order and hmax. A rejected step halves h; the third
  * consecutive rejection drops to order 1, later ones take the step STEP estimates. A trial with a non-finite
@@ -66,9 +66,8 @@ struct AdamsOptions {
  * of the step's order, free (no evaluation of f); dense() returns x() and x_prev() exactly at the ends.
  *
  * Errors: NonFiniteState when x0 or f(t0, x0) is not finite, or when every trial down to hmin produced
- * non-finite values; StepSizeUnderflow when the step must shrink below max(hmin, 16 ulp(t)) (a tolerance
- * below what the precision can give ends so too); TooManySteps after max_steps attempted steps. Messages
- * carry t and the state.
+ * non-finite values; StepSizeUnderflow when the step must shrink below max(hmin, 16 ulp(t)); TooManySteps
+ * after max_steps attempted steps. Messages carry t and the state.
  */
 template <class State>
 class Adams {
