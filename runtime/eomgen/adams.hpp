@@ -48,11 +48,11 @@ struct AdamsOptions {
  * estimate; a step is accepted when it is at most 1 in the norm
  *   ‖e‖ = sqrt( (1/n) Σ (e_i / sc_i)² ),  sc_i = atol + rtol·|x_i| at the start of the step
  * (STEP with eps = 1 and weights sc·sqrt(n), so the norm is the one of the Runge–Kutta steppers). The errors
- * that orders k − 2, k − 1, k + 1 would have made at constant steps choose the next order (lower when they are
- * no larger, higher only after steps of constant size), and the step size follows the chosen order's error
- * estimate: doubled when it is below 2^−(k+2), kept when below 1/2, else h·clamp((0.5/err)^(1/(k+1)), 0.5,
- * 0.9). The start is order 1 with STEP's first step; while every step succeeds ("phase 1") the order rises
- * by one and the step doubles each step, up to max_order and hmax. A rejected step halves h; the third
+ * that orders k − 2, k − 1, k + 1 would have made at constant steps choose the next order (lower when they
+ * are no larger, higher only after steps of constant size), and the step size follows the chosen order's
+ * error estimate: doubled when it is below 2^−(k+2), kept when below 1/2, else h·clamp((0.5/err)^(1/(k+1)),
+ * 0.5, 0.9). The start is order 1 with STEP's first step; while every step succeeds ("phase 1") the order
+ * rises by one and the step doubles each step, up to max_order and hmax. A rejected step halves h; the third
  * consecutive rejection drops to order 1, later ones take the step STEP estimates. A trial with a non-finite
  * predicted or corrected state or f is rejected with h/4 at order 1, so a model undefined past some point is
  * approached rather than stepped over. Sums are compensated (STEP's φ_15, φ_16) against round-off at tight
@@ -61,9 +61,9 @@ struct AdamsOptions {
  *
  * Costs: 2 evaluations of f per accepted step, 1 per rejected one, 1 at the start.
  *
- * Dense output on the last step [t_prev, t]: the corrector's interpolating polynomial of degree k + 1 (intrp),
- *   u(s) = x_{n+1} + (s − t_{n+1}) Σ_{i=1..k+1} g_i(s) φ_i(n+1),
- * of the step's order, free (no evaluation of f); dense() returns x() and x_prev() exactly at the ends.
+ * Dense output on the last step [t_prev, t]: the corrector's interpolating polynomial of degree k + 1
+ * (intrp), u(s) = x_{n+1} + (s − t_{n+1}) Σ_{i=1..k+1} g_i(s) φ_i(n+1), of the step's order, free (no
+ * evaluation of f); dense() returns x() and x_prev() exactly at the ends.
  *
  * Errors: NonFiniteState when x0 or f(t0, x0) is not finite, or when every trial down to hmin produced
  * non-finite values; StepSizeUnderflow when the step must shrink below max(hmin, 16 ulp(t)); TooManySteps
@@ -133,8 +133,9 @@ class Adams {
         int ifail = 0;
         bool last_nonfinite = false;
         for (;;) {
-            const bool last = detail::bound_trial_step(h_, t_, x_, t_end_, dir_, opts_.hmin,
-                                                       n_accepted_ + n_rejected_, opts_.max_steps, last_nonfinite);
+            const bool last =
+                detail::bound_trial_step(h_, t_, x_, t_end_, dir_, opts_.hmin, n_accepted_ + n_rejected_,
+                                         opts_.max_steps, last_nonfinite);
             const Scalar h = h_, absh = abs(h);
             const int k = k_;
             coefficients(h);
@@ -287,7 +288,7 @@ class Adams {
 
     /// STEP's gstr: |γ*_k|, the error constants of the constant-step Adams–Moulton formulas of order k.
     static Scalar gstr(int k) {
-        static constexpr double table[] = {0.5,    0.0833, 0.0417,  0.0264,  0.0188,  0.0143, 0.0114,
+        static constexpr double table[] = {0.5,     0.0833,  0.0417,  0.0264,  0.0188,  0.0143, 0.0114,
                                            0.00936, 0.00789, 0.00679, 0.00592, 0.00524, 0.00468};
         return Scalar(table[k - 1]);
     }

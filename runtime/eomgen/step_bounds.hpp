@@ -33,7 +33,8 @@ bool bound_trial_step(Scalar& h, const Scalar& t, const State& x, const Scalar& 
         h = t_end - t;
         return true;
     }
-    const Scalar ulp16 = Scalar(16) * abs(std::nextafter(t, dir * std::numeric_limits<Scalar>::infinity()) - t);
+    const Scalar ulp16 =
+        Scalar(16) * abs(std::nextafter(t, dir * std::numeric_limits<Scalar>::infinity()) - t);
     const Scalar smallest = std::max(hmin, ulp16);
     if (abs(h) >= smallest) return false;
     std::ostringstream why;

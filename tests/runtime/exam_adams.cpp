@@ -47,7 +47,9 @@ eomgen::AdamsOptions<double> tolerances(double rtol, double atol) {
 double kepler_energy(const State4& x) {
     return 0.5 * (x(2) * x(2) + x(3) * x(3)) - 1 / std::hypot(x(0), x(1));
 }
-double kepler_momentum(const State4& x) { return x(0) * x(3) - x(1) * x(2); }
+double kepler_momentum(const State4& x) {
+    return x(0) * x(3) - x(1) * x(2);
+}
 
 }  // namespace
 
@@ -105,8 +107,8 @@ TEST_CASE("Adams: the error falls in proportion to the tolerance on the oscillat
         tols.push_back(tol);
         osc_errs.push_back((r.x - osc.exact(50.0, y0)).lpNorm<Eigen::Infinity>());
         kep_errs.push_back((k.x - x0).lpNorm<Eigen::Infinity>());
-        INFO("tol " << tol << ": oscillator " << osc_errs.back() << " (" << r.rhs_evaluations << " f), Kepler "
-                    << kep_errs.back() << " (" << k.rhs_evaluations << " f)");
+        INFO("tol " << tol << ": oscillator " << osc_errs.back() << " (" << r.rhs_evaluations
+                    << " f), Kepler " << kep_errs.back() << " (" << k.rhs_evaluations << " f)");
         CHECK(osc_errs.back() < 300 * tol);
         CHECK(kep_errs.back() < 3000 * tol);
         CHECK(r.rhs_evaluations == 2 * r.accepted_steps + r.rejected_steps + 1);
@@ -125,13 +127,13 @@ TEST_CASE("Adams keeps Kepler's energy and angular momentum along the trajectory
     const State4 x0 = kepler_exact(0.0, e);
     double drift_h = 0, drift_l = 0;
     std::size_t seen = 0;
-    const auto r = eomgen::integrate_adams(kepler<State4>, 0.0, x0, 5 * period, tolerances(1e-12, 1e-14), {}, {},
-                                           [&](const double&, const State4& x) {
-                                               drift_h = std::max(drift_h, std::abs(kepler_energy(x) + 0.5));
-                                               drift_l = std::max(drift_l, std::abs(kepler_momentum(x) -
-                                                                                    std::sqrt(1 - e * e)));
-                                               ++seen;
-                                           });
+    const auto r = eomgen::integrate_adams(
+        kepler<State4>, 0.0, x0, 5 * period, tolerances(1e-12, 1e-14), {}, {},
+        [&](const double&, const State4& x) {
+            drift_h = std::max(drift_h, std::abs(kepler_energy(x) + 0.5));
+            drift_l = std::max(drift_l, std::abs(kepler_momentum(x) - std::sqrt(1 - e * e)));
+            ++seen;
+        });
     INFO("drift of h " << drift_h << ", of L " << drift_l << " over " << r.accepted_steps << " steps");
     CHECK(seen == r.accepted_steps + 1);  // t0 and every step's end
     CHECK(drift_h < 1e-9);
@@ -161,7 +163,8 @@ TEST_CASE("Adams dense output and events agree with the closed form and with DOP
     for (const auto& s : r.samples)
         sample_err = std::max(sample_err, (s.x - osc.exact(s.t, y0)).lpNorm<Eigen::Infinity>());
     const double end_err = (r.x - osc.exact(10.0, y0)).lpNorm<Eigen::Infinity>();
-    INFO("sample error " << sample_err << ", end error " << end_err << " in " << r.accepted_steps << " steps");
+    INFO("sample error " << sample_err << ", end error " << end_err << " in " << r.accepted_steps
+                         << " steps");
     CHECK(sample_err < 3 * end_err + 1e-11);
     CHECK(r.rhs_evaluations == plain.rhs_evaluations);
     CHECK(r.accepted_steps == plain.accepted_steps);
@@ -181,7 +184,8 @@ TEST_CASE("Adams dense output and events agree with the closed form and with DOP
     double inside = 0;
     for (double th : {0.01, 0.1, 0.37, 0.5, 0.81, 0.99}) {
         stepper.dense(ta + th * hs, x);
-        inside = std::max(inside, (x - osc.exact(ta + th * hs - stepper.t(), stepper.x())).lpNorm<Eigen::Infinity>());
+        inside = std::max(inside,
+                          (x - osc.exact(ta + th * hs - stepper.t(), stepper.x())).lpNorm<Eigen::Infinity>());
     }
     INFO("interpolant against the local flow: " << inside << " on a step of " << hs);
     CHECK(inside < 1e-10);
@@ -196,7 +200,8 @@ TEST_CASE("Adams dense output and events agree with the closed form and with DOP
          eomgen::EventAction::Record},
         {"x = 0", [](const double&, const State4& s) { return s(0); }, eomgen::EventDirection::Both,
          eomgen::EventAction::Record}};
-    const auto a = eomgen::integrate_adams(kepler<State4>, 0.0, x0, 3 * period, tolerances(1e-12, 1e-14), events);
+    const auto a =
+        eomgen::integrate_adams(kepler<State4>, 0.0, x0, 3 * period, tolerances(1e-12, 1e-14), events);
     eomgen::Dop853Options<double> d_opts;
     d_opts.rtol = 1e-12;
     d_opts.atol = 1e-14;
@@ -214,9 +219,10 @@ TEST_CASE("Adams dense output and events agree with the closed form and with DOP
     }
 
     // A terminal event ends the run there.
-    const std::vector<eomgen::Event<State4>> stop{{"apoapsis", events[0].g, eomgen::EventDirection::Falling,
-                                                    eomgen::EventAction::Stop}};
-    const auto s = eomgen::integrate_adams(kepler<State4>, 0.0, x0, 3 * period, tolerances(1e-12, 1e-14), stop);
+    const std::vector<eomgen::Event<State4>> stop{
+        {"apoapsis", events[0].g, eomgen::EventDirection::Falling, eomgen::EventAction::Stop}};
+    const auto s =
+        eomgen::integrate_adams(kepler<State4>, 0.0, x0, 3 * period, tolerances(1e-12, 1e-14), stop);
     CHECK(s.stop_reason == eomgen::StopReason::TerminalEvent);
     CHECK(std::abs(s.t - 0.5 * period) < 1e-9);
 }
@@ -263,14 +269,17 @@ TEST_CASE("Adams reports failures with t and the state", "[runtime][adams]") {
     auto few = tolerances(1e-12, 1e-12);
     few.max_steps = 10;
     const Oscillator<Eigen::Vector2d> osc{1.0};
-    CHECK_THROWS_AS(eomgen::integrate_adams(osc, 0.0, Eigen::Vector2d(1, 0), 100.0, few), eomgen::TooManySteps);
+    CHECK_THROWS_AS(eomgen::integrate_adams(osc, 0.0, Eigen::Vector2d(1, 0), 100.0, few),
+                    eomgen::TooManySteps);
     CHECK_THROWS_AS(eomgen::integrate_adams(osc, 0.0, Eigen::Vector2d(std::nan(""), 0), 1.0, few),
                     eomgen::NonFiniteState);
     auto bad = tolerances(1e-8, 0.0);
-    CHECK_THROWS_AS(eomgen::integrate_adams(osc, 0.0, Eigen::Vector2d(1, 0), 1.0, bad), std::invalid_argument);
+    CHECK_THROWS_AS(eomgen::integrate_adams(osc, 0.0, Eigen::Vector2d(1, 0), 1.0, bad),
+                    std::invalid_argument);
     bad = tolerances(1e-8, 1e-8);
     bad.max_order = 13;
-    CHECK_THROWS_AS(eomgen::integrate_adams(osc, 0.0, Eigen::Vector2d(1, 0), 1.0, bad), std::invalid_argument);
+    CHECK_THROWS_AS(eomgen::integrate_adams(osc, 0.0, Eigen::Vector2d(1, 0), 1.0, bad),
+                    std::invalid_argument);
     // t_end == t0: nothing to do, no evaluation.
     const auto none = eomgen::integrate_adams(osc, 1.0, Eigen::Vector2d(1, 0), 1.0, tolerances(1e-8, 1e-8));
     CHECK(none.rhs_evaluations == 0);

@@ -1,5 +1,5 @@
-/** @file exam_adams_models.cpp  The Adams stepper on a generated model: evaluations to a given accuracy on the
- * 5-20 pendulum against DOP853 (the door's closing time is in tests/physics/exam_door.cpp). */
+/** @file exam_adams_models.cpp  The Adams stepper on a generated model: evaluations to a given accuracy on
+ * the 5-20 pendulum against DOP853 (the door's closing time is in tests/physics/exam_door.cpp). */
 #include "eomgen/integrate.hpp"
 #include "eomgen/models/pendulum_5_20.hpp"
 
@@ -57,7 +57,8 @@ TEST_CASE("Adams reaches 1e-8 and 1e-10 on the 5-20 pendulum with fewer evaluati
     eomgen::Dop853Options<long double> ref_opt;
     ref_opt.rtol = 1e-18L;
     ref_opt.atol = 1e-20L;
-    const auto ref = eomgen::integrate_dop853(fl, 0.0L, PL::default_state(), static_cast<long double>(t_end), ref_opt);
+    const auto ref =
+        eomgen::integrate_dop853(fl, 0.0L, PL::default_state(), static_cast<long double>(t_end), ref_opt);
     const Pendulum<double>::State reference = ref.x.cast<double>();
 
     std::vector<Cost> adams, dop853;
@@ -65,8 +66,9 @@ TEST_CASE("Adams reaches 1e-8 and 1e-10 on the 5-20 pendulum with fewer evaluati
         const double rtol = std::pow(10.0, -0.5 * i);  // 1e-5 … 1e-14
         adams.push_back(pendulum_run<eomgen::Adams>(rtol, t_end, reference));
         dop853.push_back(pendulum_run<eomgen::Dop853>(rtol, t_end, reference));
-        INFO("rtol " << rtol << ": adams error " << adams.back().error << " in " << adams.back().rhs_evaluations
-                     << " f, dop853 " << dop853.back().error << " in " << dop853.back().rhs_evaluations << " f");
+        INFO("rtol " << rtol << ": adams error " << adams.back().error << " in "
+                     << adams.back().rhs_evaluations << " f, dop853 " << dop853.back().error << " in "
+                     << dop853.back().rhs_evaluations << " f");
         CHECK(adams.back().error < 1e4 * rtol);  // both converge with the tolerance
         CHECK(dop853.back().error < 1e4 * rtol);
     }
