@@ -73,7 +73,8 @@ struct Run {
 
 // ---- eomgen ------------------------------------------------------------------------------------------------
 
-/// eomgen::integrate_with<Stepper> (Dopri5: Dormand–Prince 5(4); Dop853: Dormand–Prince 8(5,3)).
+/// eomgen::integrate_with<Stepper> (Dopri5: Dormand–Prince 5(4); Dop853: Dormand–Prince 8(5,3); Adams:
+/// variable-order Adams–Bashforth–Moulton).
 template <class Model, template <class> class Stepper>
 Run<Model> eomgen_run(const Problem<Model>& pr, double rtol) {
     using State = typename Model::State;
@@ -105,6 +106,7 @@ template <class Model>
 const std::vector<std::pair<std::string, Method<Model>>> kEomgenMethods = {
     {"eomgen_dopri5", &eomgen_run<Model, eomgen::Dopri5>},
     {"eomgen_dop853", &eomgen_run<Model, eomgen::Dop853>},
+    {"eomgen_adams", &eomgen_run<Model, eomgen::Adams>},
 };
 
 // ---- Boost.Odeint --------------------------------------------------------------------------------------------

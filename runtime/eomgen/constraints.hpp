@@ -223,7 +223,7 @@ struct ConstrainedResult {
 };
 
 /**
- * Integrates a constrained Model with the adaptive stepper Method (Dopri5 by default, Dop853; see
+ * Integrates a constrained Model with the adaptive stepper Method (Dopri5 by default, Dop853, Adams; see
  * integrate_with) from sample time to sample time, projecting the
  * state onto the constraints after each segment (drift control on top of any Baumgarte terms). The
  * residuals reached before each projection are reported; `observer` sees each projected sample. x0 is checked first (check_consistent) unless

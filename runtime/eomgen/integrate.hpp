@@ -10,8 +10,11 @@
  *   integrate_dop853(f, t0, x0, t_end, options = {}, events = {}, sample_times = {}, observer = {})
  *       -> IntegrationResult<State>; adaptive Dormand–Prince 8(5,3), Hairer's DOP853 (dop853.hpp), options a
  *       Dop853Options<Scalar> (the fields of Dopri5Options, DOP853's defaults).
+ *   integrate_adams(f, t0, x0, t_end, options = {}, events = {}, sample_times = {}, observer = {})
+ *       -> IntegrationResult<State>; variable-step, variable-order Adams–Bashforth–Moulton (Shampine & Gordon's
+ *       STEP, adams.hpp), options an AdamsOptions<Scalar> {rtol, atol, h0, hmin, hmax, max_steps, max_order}.
  *   integrate_with<Method>(f, t0, x0, t_end, options = {}, ...)
- *       -> the same with any adaptive stepper template Method (Dopri5, Dop853), options
+ *       -> the same with any adaptive stepper template Method (Dopri5, Dop853, Adams), options
  * Method<State>::Options. integrate_rk4(f, t0, x0, t_end, dt, events = {}, sample_times = {}, observer = {})
  *       -> IntegrationResult<State>; classic RK4 on the fixed grid t0 + k·dt (rk4.hpp).
  *
@@ -28,6 +31,7 @@
  * with an observer and no sample_times, the observer sees t0 and the end of every accepted step.
  */
 
+#include "eomgen/adams.hpp"
 #include "eomgen/dop853.hpp"
 #include "eomgen/dopri5.hpp"
 #include "eomgen/errors.hpp"
@@ -227,7 +231,7 @@ IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State
 }  // namespace detail
 
 /**
- * As integrate(), with the adaptive stepper Method<State> (Dopri5, Dop853: any class with the steppers'
+ * As integrate(), with the adaptive stepper Method<State> (Dopri5, Dop853, Adams: any class with the steppers'
  * interface, constructed from (f, t0, x0, t_end, options)); what integrate_constrained and the simulation
  * driver use to take the method as a template argument.
  */
@@ -269,6 +273,20 @@ IntegrationResult<State> integrate_dop853(
     const std::vector<typename State::Scalar>& sample_times = {},
     const typename detail::NonDeduced<Observer<State>>::type& observer = {}) {
     return integrate_with<Dop853>(f, t0, x0, t_end, options, events, sample_times, observer);
+}
+
+/**
+ * As integrate(), with variable-step, variable-order Adams–Bashforth–Moulton (orders 1 … 12; see Adams): the
+ * fewest evaluations of f on smooth problems at tight tolerances (2 per step). Its dense output, the step's
+ * interpolating polynomial, is free.
+ */
+template <class System, class State>
+IntegrationResult<State> integrate_adams(
+    System&& f, const typename State::Scalar& t0, const State& x0, const typename State::Scalar& t_end,
+    const AdamsOptions<typename State::Scalar>& options = {}, const std::vector<Event<State>>& events = {},
+    const std::vector<typename State::Scalar>& sample_times = {},
+    const typename detail::NonDeduced<Observer<State>>::type& observer = {}) {
+    return integrate_with<Adams>(f, t0, x0, t_end, options, events, sample_times, observer);
 }
 
 /**

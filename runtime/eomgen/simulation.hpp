@@ -109,6 +109,7 @@ template <class Use>
 bool with_adaptive_method(const std::string& name, Use&& use) {
     if (name == "dopri5") return use(AdaptiveMethod<eomgen::Dopri5>{}), true;
     if (name == "dop853") return use(AdaptiveMethod<eomgen::Dop853>{}), true;
+    if (name == "adams") return use(AdaptiveMethod<eomgen::Adams>{}), true;
     return false;
 }
 
@@ -269,7 +270,7 @@ inline void check_options(const Options& o) {
 template <class M>
 void check_method_for(const Options& o) {
     if (o.method == "radau5" && constraint_count<M>() > 0)
-        throw UsageError("--method radau5 integrates unconstrained models; use dopri5 or dop853 for " +
+        throw UsageError("--method radau5 integrates unconstrained models; use dopri5, dop853 or adams for " +
                          std::string(M::name) + "'s constraints");
 }
 
@@ -299,7 +300,7 @@ std::vector<eomgen::Event<typename M::State>> until_events(const Options& o) {
     std::vector<eomgen::Event<State>> events;
     if (o.until.empty()) return events;
     if (o.method == "symplectic")
-        throw UsageError("--until needs --method dopri5, dop853, radau5 or rk4 (events use dense output)");
+        throw UsageError("--until needs --method dopri5, dop853, adams, radau5 or rk4 (events use dense output)");
     const auto [name, value] = parse_assignment(o.until, "--until");
     const int i = index_of(M::state_names, name);
     if (i < 0)
@@ -409,7 +410,7 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
     if (!done && o.method == "symplectic") {
         if (constraint_count<M>() > 0 || M::has_generalized_forces)
             throw UsageError(
-                "--method symplectic integrates unconstrained models without forces; use dopri5 or dop853");
+                "--method symplectic integrates unconstrained models without forces; use dopri5, dop853 or adams");
         eomgen::VariationalIntegrator<M> vi(params, o.dt);
         vi.set_state(0.0, positions<M::nq>(x0), velocities<M::nq>(x0));
         const auto steps = static_cast<std::size_t>(std::llround(o.t_end / o.dt));
@@ -459,7 +460,7 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
                                                                          events, sample_times, observer);
                        if (log) *log << "method:  " << o.method << ", rtol " << o.rtol << ", atol " << o.atol << "\n";
                    })) {
-            throw UsageError("--method " + o.method + ": expected dopri5, dop853, radau5, rk4 or symplectic");
+            throw UsageError("--method " + o.method + ": expected dopri5, dop853, adams, radau5, rk4 or symplectic");
         }
         finish(r);
         track(r.t, r.x);
