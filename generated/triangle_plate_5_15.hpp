@@ -436,39 +436,14 @@ struct Model {
     /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.
     template <class MatJ = StateJacobian>
     static void state_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJ& J_) {
-        const Config q_ = x_.template head<nq>();
-        const Config qd_ = x_.template tail<nq>();
-        MassMatrix M_;
-        Config f_;
-        dynamics(t, q_, qd_, p_, M_, f_);
-        Config qdd_;
-        Eigen::Matrix<Scalar, nq, nx> R_;
-        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {
-            jacobian_terms(t, q_, qd_, a_, p_, r_);
-        });
-        J_.resize(nx, nx);
-        J_.template topLeftCorner<nq, nq>().setZero();
-        J_.template topRightCorner<nq, nq>().setIdentity();
-        J_.template bottomRows<nq>() = R_;
+        eomgen::analytic_state_jacobian<Model>(t, x_, p_, J_);
     }
 
     /// Jp = dx'/dp = [[0], [M^-1 dr/dp]] at (t, x), columns in param_names order, analytic
     /// (parameter_jacobian_terms()), with one factorization of M. A member template: compiled only where called.
     template <class MatJp = ParameterJacobian>
     static void parameter_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJp& Jp_) {
-        const Config q_ = x_.template head<nq>();
-        const Config qd_ = x_.template tail<nq>();
-        MassMatrix M_;
-        Config f_;
-        dynamics(t, q_, qd_, p_, M_, f_);
-        Config qdd_;
-        Eigen::Matrix<Scalar, nq, n_params> R_;
-        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {
-            parameter_jacobian_terms(t, q_, qd_, a_, p_, r_);
-        });
-        Jp_.resize(nx, n_params);
-        Jp_.template topRows<nq>().setZero();
-        Jp_.template bottomRows<nq>() = R_;
+        eomgen::analytic_parameter_jacobian<Model>(t, x_, p_, Jp_);
     }
 
     /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward

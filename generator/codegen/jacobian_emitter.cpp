@@ -10,22 +10,15 @@
 namespace eomgen::codegen {
 namespace {
 
-/// The member template that solves for q'' and the columns `columns` of R_ (filled by `terms`), then writes `out`.
+/// The member template `name` that the runtime's `solver` computes from the header's terms.
 std::string combine(const std::string& doc, const std::string& name, const std::string& mat, const std::string& out,
-                    const std::string& columns, const std::string& terms, const std::string& write) {
+                    const std::string& solver) {
     std::ostringstream os;
     os << doc;
     os << "    template <class Mat" << out << " = " << mat << ">\n";
     os << "    static void " << name << "(const Scalar& t, const State& x_, const Params& p_, Mat" << out << "& " << out
        << "_) {\n";
-    os << "        const Config q_ = x_.template head<nq>();\n";
-    os << "        const Config qd_ = x_.template tail<nq>();\n";
-    os << "        MassMatrix M_;\n        Config f_;\n        dynamics(t, q_, qd_, p_, M_, f_);\n";
-    os << "        Config qdd_;\n        Eigen::Matrix<Scalar, nq, " << columns << "> R_;\n";
-    os << "        eomgen::solve_jacobian_columns(M_, f_, qdd_, R_, t, x_, [&](const Config& a_, auto& r_) {\n";
-    os << "            " << terms << "(t, q_, qd_, a_, p_, r_);\n        });\n";
-    os << "        " << out << "_.resize(nx, " << columns << ");\n";
-    os << write;
+    os << "        eomgen::" << solver << "<Model>(t, x_, p_, " << out << "_);\n";
     os << "    }\n";
     return os.str();
 }
@@ -58,16 +51,11 @@ std::string emit_analytic_jacobian(const Model& model, const Equations& eq, cons
     os << emit_function(state_terms, table) << "\n" << emit_function(param_terms, table) << "\n";
     os << combine("    /// J = dx'/dx = [[0, I], [M^-1 dr/dq, M^-1 dr/dq']] at (t, x), analytic (jacobian_terms()), with one\n"
                   "    /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.\n",
-                  "state_jacobian", "StateJacobian", "J", "nx", "jacobian_terms",
-                  "        J_.template topLeftCorner<nq, nq>().setZero();\n"
-                  "        J_.template topRightCorner<nq, nq>().setIdentity();\n"
-                  "        J_.template bottomRows<nq>() = R_;\n");
+                  "state_jacobian", "StateJacobian", "J", "analytic_state_jacobian");
     os << "\n";
     os << combine("    /// Jp = dx'/dp = [[0], [M^-1 dr/dp]] at (t, x), columns in param_names order, analytic\n"
                   "    /// (parameter_jacobian_terms()), with one factorization of M. A member template: compiled only where called.\n",
-                  "parameter_jacobian", "ParameterJacobian", "Jp", "n_params", "parameter_jacobian_terms",
-                  "        Jp_.template topRows<nq>().setZero();\n"
-                  "        Jp_.template bottomRows<nq>() = R_;\n");
+                  "parameter_jacobian", "ParameterJacobian", "Jp", "analytic_parameter_jacobian");
     return os.str();
 }
 
