@@ -51,30 +51,6 @@ double evaluate(const ex& e, const exmap& at) {
     }
 }
 
-/// The limit of e as the coordinates approach q0 (numbers substituted for everything else): the ε⁰ term of
-/// e(q0 + ε d) for a fixed direction d. For a removable singularity such as (1 − cos θ)²/sin²θ at θ = 0.
-double limit_at(const ex& e, const std::vector<symbol>& q, const std::vector<double>& q0, const exmap& params) {
-    static const double direction[] = {1.0, 0.7071, 0.5477, 0.4472, 0.3780, 0.3333, 0.3015, 0.2774};
-    const symbol eps("eps");
-    exmap at = params;
-    for (std::size_t i = 0; i < q.size(); ++i)
-        at[q[i]] = GiNaC::numeric(q0[i]) + eps * GiNaC::numeric(direction[i % 8]);
-    try {
-        const ex s = GiNaC::series_to_poly(e.subs(at, GiNaC::subs_options::no_pattern).series(eps == 0, 2));
-        return evaluate(s.coeff(eps, 0), {});
-    } catch (const std::exception&) {
-        return std::nan("");
-    }
-}
-
-/// e at q0: directly, or as a limit where e is 0/0 there.
-double value_at(const ex& e, const std::vector<symbol>& q, const std::vector<double>& q0, const exmap& params) {
-    exmap at = params;
-    for (std::size_t i = 0; i < q.size(); ++i) at[q[i]] = q0[i];
-    const double v = evaluate(e, at);
-    return std::isfinite(v) ? v : limit_at(e, q, q0, params);
-}
-
 /// x as an exact rational (m·2^e), so that an evaluation at many digits is not spoiled by x's rounding.
 GiNaC::numeric exact(double x) {
     if (x == 0 || !std::isfinite(x)) return 0;
@@ -84,25 +60,77 @@ GiNaC::numeric exact(double x) {
     return GiNaC::numeric(mantissa) * GiNaC::ex_to<GiNaC::numeric>(GiNaC::pow(GiNaC::numeric(2), e - 53));
 }
 
-/// max |g_i(x)| evaluated with 40 digits from exact inputs: Newton in doubles can stop where cancellation
-/// (a removable singularity nearby) makes g look like 0; this tells a root from such a point.
-double precise_residual(const std::vector<ex>& g, const std::vector<symbol>& q, const std::vector<double>& x,
-                        const exmap& params) {
-    const long digits = GiNaC::Digits;
-    GiNaC::Digits = 40;
+/// x exactly: the multiple of π/2, π/3, π/4 or π/6 that x rounds (within 1e-12), else the rational x is.
+ex exact_coordinate(double x) {
+    for (const int d : {1, 2, 3, 4, 6}) {
+        const double k = std::round(x * d / kPi);
+        if (std::abs(k) <= 64 * d && std::abs(x - k * kPi / d) <= 1e-12 * std::max(1.0, std::abs(x)))
+            return GiNaC::numeric(static_cast<long>(k), d) * GiNaC::Pi;
+    }
+    return exact(x);
+}
+
+/// The point (q0 and the parameters) in exact numbers. A removable singularity met there, such as the 0/0 of
+/// (1 − cos θ)/sin θ at θ = 0 or of terms in sin θ at θ = π, is then an exact 0/0 (a division by zero) and not
+/// rounding noise divided by rounding noise: in floating point the noise, and so the value, would depend on
+/// GiNaC's term order, which changes from process to process.
+exmap exact_point(const std::vector<symbol>& q, const std::vector<double>& q0, const exmap& params) {
     exmap at;
     for (const auto& [k, v] : params)
-        at[k] = GiNaC::is_a<GiNaC::numeric>(v) ? ex(exact(GiNaC::ex_to<GiNaC::numeric>(v).to_double())) : v;
-    exmap point = at;
-    for (std::size_t i = 0; i < q.size(); ++i) point[q[i]] = exact(x[i]);
+        at[k] = GiNaC::is_a<GiNaC::numeric>(v) && !GiNaC::ex_to<GiNaC::numeric>(v).is_rational()
+                    ? ex(exact(GiNaC::ex_to<GiNaC::numeric>(v).to_double()))
+                    : v;
+    for (std::size_t i = 0; i < q.size(); ++i) at[q[i]] = exact_coordinate(q0[i]);
+    return at;
+}
+
+/// Floating-point evaluations with 40 digits while it lives: near a removable singularity the terms that
+/// cancel lose digits, and 40 leave enough of them for doubles.
+class ManyDigits {
+public:
+    ManyDigits() : saved_(GiNaC::Digits) { GiNaC::Digits = 40; }
+    ~ManyDigits() { GiNaC::Digits = saved_; }
+    ManyDigits(const ManyDigits&) = delete;
+    ManyDigits& operator=(const ManyDigits&) = delete;
+
+private:
+    long saved_;
+};
+
+/// The limit of e at the exact point `at` along the coordinates: the ε⁰ term of e(q0 + ε d) for a fixed
+/// direction d, taken in exact arithmetic. For a removable singularity such as (1 − cos θ)²/sin²θ at θ = 0.
+double limit_at(const ex& e, const std::vector<symbol>& q, const exmap& at) {
+    static const int direction[][2] = {{1, 1},       {7071, 10000}, {5477, 10000}, {4472, 10000},
+                                       {3780, 10000}, {3333, 10000}, {3015, 10000}, {2774, 10000}};
+    const symbol eps("eps");
+    exmap shifted = at;
+    for (std::size_t i = 0; i < q.size(); ++i)
+        shifted[q[i]] = at.at(q[i]) + eps * GiNaC::numeric(direction[i % 8][0], direction[i % 8][1]);
+    try {
+        const ex s = GiNaC::series_to_poly(e.subs(shifted, GiNaC::subs_options::no_pattern).series(eps == 0, 2));
+        return evaluate(s.coeff(eps, 0), {});
+    } catch (const std::exception&) {
+        return std::nan("");
+    }
+}
+
+/// e at q0 with 40 digits from exact inputs: directly, or as a limit where e is 0/0 there. Newton in doubles
+/// can stop where cancellation makes g look like 0; this tells a root from such a point.
+double value_at(const ex& e, const std::vector<symbol>& q, const std::vector<double>& q0, const exmap& params) {
+    const ManyDigits digits;
+    const exmap at = exact_point(q, q0, params);
+    const double v = evaluate(e, at);
+    return std::isfinite(v) ? v : limit_at(e, q, at);
+}
+
+/// max |g_i(x)|, each as value_at gives it; infinity where one cannot be evaluated.
+double precise_residual(const std::vector<ex>& g, const std::vector<symbol>& q, const std::vector<double>& x,
+                        const exmap& params) {
     double worst = 0;
     for (const ex& gi : g) {
-        double v = evaluate(gi, point);
-        if (!std::isfinite(v)) v = limit_at(gi, q, x, at);
-        if (!std::isfinite(v)) v = std::numeric_limits<double>::infinity();
-        worst = std::max(worst, std::abs(v));
+        const double v = value_at(gi, q, x, params);
+        worst = std::max(worst, std::isfinite(v) ? std::abs(v) : std::numeric_limits<double>::infinity());
     }
-    GiNaC::Digits = digits;
     return worst;
 }
 
