@@ -34,6 +34,21 @@ inline std::string read(const fs::path& p) {
     return s.str();
 }
 
+/// Writes `text` to `dir`/`name` whole, by a rename: ctest -j runs a file's test cases side by side, and two of
+/// them may write the same model while the other's eomgen reads it.
+inline fs::path write_whole(const fs::path& dir, const std::string& name, const std::string& text) {
+    fs::create_directories(dir);
+    const fs::path p = dir / name;
+    const fs::path tmp = dir / (name + "." + std::to_string(::getpid()) + ".tmp");
+    {
+        std::ofstream out(tmp, std::ios::binary);
+        out << text;
+        REQUIRE(out.flush());
+    }
+    fs::rename(tmp, p);
+    return p;
+}
+
 /// Starts eomgen with `args` and extra environment variables; returns the pid (output to `log`).
 inline pid_t start(const std::vector<std::string>& args, const std::map<std::string, std::string>& env, const fs::path& log) {
     std::vector<std::string> argv = {EOMGEN_EXE};
@@ -70,8 +85,12 @@ inline Result run_eomgen(const fs::path& work, const std::vector<std::string>& a
                          std::map<std::string, std::string> env = {}) {
     fs::create_directories(work);
     if (!env.count("XDG_CACHE_HOME")) env["XDG_CACHE_HOME"] = (work / "cache").string();
-    const fs::path log = work / "last.log";
-    return finish(start(args, env, log), log);
+    // One log per test process: ctest -j runs a file's test cases side by side in the same `work`.
+    const fs::path log = work / ("last." + std::to_string(::getpid()) + ".log");
+    Result r = finish(start(args, env, log), log);
+    std::error_code ec;
+    fs::remove(log, ec);
+    return r;
 }
 
 inline std::vector<std::vector<std::string>> read_csv(const fs::path& p) {

@@ -24,12 +24,7 @@ Result eomgen(const std::vector<std::string>& args, std::map<std::string, std::s
     return run_eomgen(kWork, args, std::move(env));
 }
 
-fs::path write(const std::string& name, const std::string& text) {
-    fs::create_directories(kWork);
-    const fs::path p = kWork / name;
-    std::ofstream(p) << text;
-    return p;
-}
+fs::path write(const std::string& name, const std::string& text) { return write_whole(kWork, name, text); }
 
 // A bead on a hoop spun at a fixed rate: T has a velocity-free part, h is conserved, the energy is not.
 const std::string kBead = R"toml(name = "bead"

@@ -28,12 +28,7 @@ Result eomgen(const std::vector<std::string>& args, std::map<std::string, std::s
     return run_eomgen(kWork, args, std::move(env));
 }
 
-fs::path write_model(const std::string& name, const std::string& text) {
-    fs::create_directories(kWork);
-    const fs::path p = kWork / name;
-    std::ofstream(p) << text;
-    return p;
-}
+fs::path write_model(const std::string& name, const std::string& text) { return write_whole(kWork, name, text); }
 
 double max_relative_drift(const std::vector<std::vector<std::string>>& rows, const std::string& name) {
     const int c = column(rows[0], name);
@@ -250,6 +245,7 @@ TEST_CASE("eomgen run refuses a cache others can write and an entry that is a sy
     fs::rename(entry, kWork / "moved.so");
     fs::create_symlink(kWork / "moved.so", entry);
     const Result link = eomgen({"run", model.string(), "--quiet"}, {{"XDG_CACHE_HOME", cache.string()}});
+    INFO(link.output);
     CHECK(link.code == 3);
     CHECK(link.output.find("symbolic link") != std::string::npos);
 }
