@@ -4,6 +4,7 @@
 
 #include "eomgen/device.hpp"
 #include "eomgen/errors.hpp"
+#include "eomgen/step_bounds.hpp"
 
 #include <Eigen/Core>
 
@@ -193,27 +194,8 @@ class EmbeddedRk {
         const Scalar one(1);
         bool last_nonfinite = false;
         for (;;) {
-            if (n_accepted_ + n_rejected_ >= opts_.max_steps)
-                throw TooManySteps(describe_state("more than max_steps = " + std::to_string(opts_.max_steps) +
-                                                      " steps attempted",
-                                                  t_, x_),
-                                   value_of(t_));
-            const Scalar ulp16 =
-                Scalar(16) * abs(std::nextafter(t_, dir_ * std::numeric_limits<Scalar>::infinity()) - t_);
-            const Scalar hmin = max(opts_.hmin, ulp16);
-            bool last = false;
-            if ((t_ + Scalar(1.01) * h_ - t_end_) * dir_ >= Scalar(0)) {
-                h_ = t_end_ - t_;  // a forced final step may be shorter than hmin
-                last = true;
-            } else if (abs(h_) < hmin) {
-                std::ostringstream why;
-                why << (last_nonfinite ? "right-hand side or state not finite for every step size down to "
-                                       : "step size fell below hmin = ")
-                    << value_of(hmin);
-                const std::string msg = describe_state(why.str(), t_, x_);
-                if (last_nonfinite) throw NonFiniteState(msg, value_of(t_));
-                throw StepSizeUnderflow(msg, value_of(t_));
-            }
+            const bool last = detail::bound_trial_step(h_, t_, x_, t_end_, dir_, opts_.hmin,
+                                                       n_accepted_ + n_rejected_, opts_.max_steps, last_nonfinite);
             const Scalar h = h_;
             const Scalar err = self().attempt(f, h);
             if (!(err <= std::numeric_limits<Scalar>::max())) {  // NaN or inf somewhere in the trial

@@ -11,6 +11,7 @@
 
 #include "eomgen/errors.hpp"
 #include "eomgen/integrate.hpp"
+#include "eomgen/step_bounds.hpp"
 
 #include <Eigen/Core>
 #include <Eigen/LU>
@@ -142,21 +143,9 @@ class Radau5 {
         const Scalar one(1);
         const Scalar facr = one / opts_.max_factor, facl = one / opts_.min_factor;
         for (;;) {
-            if (n_accepted_ + n_rejected_ >= opts_.max_steps)
-                throw TooManySteps(describe_state("more than max_steps = " + std::to_string(opts_.max_steps) +
-                                                      " steps attempted",
-                                                  t_, x_),
-                                   value_of(t_));
-            const Scalar ulp16 =
-                Scalar(16) * abs(std::nextafter(t_, dir_ * std::numeric_limits<Scalar>::infinity()) - t_);
-            const Scalar hmin = max(opts_.hmin, ulp16);
-            bool last = false;
-            if ((t_ + Scalar(1.0001) * h_ - t_end_) * dir_ >= Scalar(0)) {
-                h_ = t_end_ - t_;  // a forced final step may be shorter than hmin
-                last = true;
-            } else if (abs(h_) < hmin) {
-                fail_below_hmin(hmin);
-            }
+            const bool last = detail::bound_trial_step(
+                h_, t_, x_, t_end_, dir_, opts_.hmin, n_accepted_ + n_rejected_, opts_.max_steps,
+                [this](const Scalar& hmin) { fail_below_hmin(hmin); }, Scalar(1.0001));
             if (need_jacobian_) {
                 jac_(t_, x_, J_);
                 ++n_jac_;
