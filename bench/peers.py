@@ -185,18 +185,18 @@ def render(res, command, date):
       (f", the recursion to {worst_rec:.0e}" if worst_rec is not None else "") + " (largest relative difference of "
       "q̈ over the states, every n).")
     a("")
-    have_prev = any(k.startswith("previous/") for k in med)
-    if have_prev:
-        a("The last two columns: the same `rhs` with the solve it had before issue 15's lean one (`dynamics`, then "
-          "`allFinite` over M and f, Eigen's `LLT` and the pivot test; `rhs_previous_solve` in "
-          "bench/chain_harness.hpp, checked against `rhs` like the peers), and how much faster `rhs` is now. Up to "
-          "n = 12 `rhs` runs the header's unrolled L D Lᵀ, above it the runtime's loop.")
+    have_dense = any(k.startswith("dense/") for k in med)
+    if have_dense:
+        a("The last two columns: the same model through the dense M (the header's `dynamics`, then the runtime's "
+          "`solve_mass_matrix`; `rhs_dense_solve` in bench/chain_harness.hpp, checked against `rhs` like the peers), "
+          "and how much faster `rhs` is. From n = 6 on `rhs` is the tree of point masses' O(n) recursion "
+          "(codegen/tree_emitter.hpp, runtime/eomgen/particle_tree.hpp); below, the header's unrolled L D Lᵀ of M.")
         a("")
     a("| n | eomgen `rhs` [ns] | MuJoCo `mj_forward` [ns] | O(n) recursion [ns] | rhs / mj_forward | "
-      "rhs / recursion |" + (" rhs with the previous solve [ns] | previous / rhs |" if have_prev else ""))
-    a("|---|---|---|---|---|---|" + ("---|---|" if have_prev else ""))
+      "rhs / recursion |" + (" rhs through the dense M [ns] | dense / rhs |" if have_dense else ""))
+    a("|---|---|---|---|---|---|" + ("---|---|" if have_dense else ""))
     for n in sizes:
-        e, m, r, p = med[f"eomgen/{n}"], med.get(f"mujoco/{n}"), med[f"recursion/{n}"], med.get(f"previous/{n}")
+        e, m, r, p = med[f"eomgen/{n}"], med.get(f"mujoco/{n}"), med[f"recursion/{n}"], med.get(f"dense/{n}")
         a(f"| {n} | {e:.0f} | {f'{m:.0f}' if m else '–'} | {r:.0f} | {f'**{e / m:.2f}**' if m else '–'} | "
           f"**{e / r:.2f}** |" + (f" {p:.0f} | **{p / e:.2f}×** |" if p else ""))
     a("")

@@ -2,6 +2,7 @@
 #include "codegen/cpp_emitter.hpp"
 
 #include "codegen/jacobian_emitter.hpp"
+#include "codegen/tree_emitter.hpp"
 #include "codegen/mass_solve_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/rest_linearization.hpp"
@@ -361,8 +362,11 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         os << "\n//   " << cpp_comment(o.name + " = " + printer.print(o.expr.expr, MathStyle::Text) +
                                      (o.unit.empty() ? "" : "  [" + o.unit + "]"));
     os << "\n#pragma once\n\n";
+    // A tree of point masses in T gets an O(n) rhs() (codegen/tree_emitter.hpp); every other model solves M.
+    const std::optional<std::string> tree_rhs = emit_tree_rhs(model, eq, table);
     os << (eq.constraints.empty() ? "#include \"eomgen/analytic_jacobian.hpp\"\n#include \"eomgen/linear_solve.hpp\"\n"
                                   : "#include \"eomgen/constraints.hpp\"\n");
+    if (tree_rhs) os << "#include \"eomgen/particle_tree.hpp\"\n";
     os << "#include \"eomgen/device.hpp\"\n#include \"eomgen/linearize.hpp\"\n\n";
     os << "#include <Eigen/Core>\n\n#include <array>\n#include <cmath>\n#include <string_view>\n#include <type_traits>\n\n";
     os << "namespace eomgen::models::" << model.name << " {\n\n";
@@ -573,7 +577,10 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     }
     for (const FunctionSpec& f : functions) os << emit_function(f, table) << "\n";
 
-    if (nc == 0) {
+    if (nc == 0 && tree_rhs) {
+        os << *tree_rhs;
+        os << emit_analytic_jacobian(model, eq, table);
+    } else if (nc == 0) {
         const bool unrolled = n <= kUnrolledSolveMaxN;
         if (unrolled) {
             std::vector<std::vector<bool>> zero(n, std::vector<bool>(n, false));
