@@ -1,6 +1,6 @@
 /** @file chain_harness.hpp  The n-link chain benchmark (bench/time_chain): eomgen's generated rhs against MuJoCo's
  * mj_forward on the same chain and against the O(n) recursion, each checked against eomgen before it is timed; and
- * against itself with the solve it had before issue 15 (Eigen's LLT). */
+ * against the same header's dense M (dynamics() and solve_mass_matrix), beside its tree recursion. */
 #pragma once
 
 #include "chain_recursion.hpp"
