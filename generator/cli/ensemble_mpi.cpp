@@ -65,6 +65,7 @@ class Reader {
   private:
     void take(void* out, std::size_t n) {
         if (std::size_t(end_ - p_) < n) throw std::runtime_error("a rank's results arrived truncated");
+        if (n == 0) return;  // an empty vector's data() may be null, and memcpy from or to null is undefined
         std::memcpy(out, p_, n);
         p_ += n;
     }
