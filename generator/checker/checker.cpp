@@ -17,6 +17,7 @@
 #include "checker/printed_numbers.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
+#include "mechanics/pole_free_subs.hpp"
 #include "mechanics/results.hpp"
 #include "mechanics/trig_rewrite.hpp"
 
@@ -54,30 +55,6 @@ int CheckReport::count(Verdict v) const {
 }
 
 namespace {
-
-/// Whether e.subs(m) divides by zero: a base of a negative power that the substitution makes zero (looked
-/// for innermost first, so that no substitution below divides by zero either).
-bool subs_divides_by_zero(const GiNaC::ex& e, const GiNaC::exmap& m) {
-    for (std::size_t i = 0; i < e.nops(); ++i)
-        if (subs_divides_by_zero(e.op(i), m)) return true;
-    if (!GiNaC::is_a<GiNaC::power>(e) || !e.op(1).info(GiNaC::info_flags::negative)) return false;
-    try {
-        return e.op(0).subs(m).expand().is_zero();
-    } catch (const std::exception&) {
-        return true;
-    }
-}
-
-/// e.subs(m), or nothing where that would divide by zero. GiNaC throws then from inside the product it is
-/// building and leaks it (found by LeakSanitizer), so the zero denominators are looked for first.
-std::optional<GiNaC::ex> subs_unless_pole(const GiNaC::ex& e, const GiNaC::exmap& m) {
-    if (subs_divides_by_zero(e, m)) return std::nullopt;
-    try {
-        return e.subs(m);
-    } catch (const std::exception&) {
-        return std::nullopt;
-    }
-}
 
 using Complex = std::complex<double>;
 using ExSet = std::set<GiNaC::ex, GiNaC::ex_is_less>;

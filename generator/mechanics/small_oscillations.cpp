@@ -2,12 +2,14 @@
 #include "mechanics/small_oscillations.hpp"
 
 #include "mechanics/constrained_equilibria.hpp"
+#include "mechanics/pole_free_subs.hpp"
 #include "mechanics/rest_linearization.hpp"
 
 #include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <set>
 
@@ -35,10 +37,13 @@ struct Values {
     exmap params;
 };
 
-/// e as a double at `at`; NaN where it cannot be evaluated (a pole, a complex value).
+/// e as a double at `at`; NaN where it cannot be evaluated (a pole, a complex value). A pole is found before
+/// substituting (subs_unless_pole): GiNaC would throw from inside the product it builds, and leak it.
 double evaluate(const ex& e, const exmap& at) {
     try {
-        const ex v = GiNaC::evalf(e.subs(at, GiNaC::subs_options::no_pattern));
+        const std::optional<ex> substituted = subs_unless_pole(e, at);
+        if (!substituted) return std::nan("");
+        const ex v = GiNaC::evalf(*substituted);
         if (!GiNaC::is_a<GiNaC::numeric>(v)) return std::nan("");
         const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(v);
         if (!n.is_real()) {
