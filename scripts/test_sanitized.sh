@@ -3,7 +3,8 @@
 # fails its test. Leaks inside CLN's caches (GiNaC's number library, not instrumented) are suppressed:
 # tests/fuzz/lsan.supp.
 #   scripts/test_sanitized.sh           everything, in build-sanitize/ (long: every model's header and
-#                                       eomgen-sim under ASan; one compile needs about 8 GB)
+#                                       eomgen-sim under ASan; its one compile took over 20 GB on
+#                                       2026-11-24: docs/reliability.md)
 #   scripts/test_sanitized.sh --quick   what reads text and does symbolic work: the generator's, the
 #                                       checker's and the escaping's tests, the CLI cases of eomgen, and the
 #                                       bounded fuzz runs, in build-sanitize-quick/ at -O1. CI runs this one.
