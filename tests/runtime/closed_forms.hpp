@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 
 #include <cmath>
+#include <vector>
 
 namespace eomgen::test {
 
@@ -46,6 +47,21 @@ inline Eigen::Vector4d kepler_exact(double t, double e) {
     for (int i = 0; i < 50; ++i) E -= (E - e * std::sin(E) - t) / (1 - e * std::cos(E));
     const double b = std::sqrt(1 - e * e), Edot = 1 / (1 - e * std::cos(E));
     return {std::cos(E) - e, b * std::sin(E), -std::sin(E) * Edot, b * std::cos(E) * Edot};
+}
+
+/// The least-squares slope of log(y) against log(x): an observed order of convergence (y the error, x the step
+/// or the tolerance).
+inline double fitted_slope(const std::vector<double>& xs, const std::vector<double>& ys) {
+    double mx = 0, my = 0;
+    for (std::size_t i = 0; i < xs.size(); ++i) mx += std::log(xs[i]), my += std::log(ys[i]);
+    mx /= double(xs.size());
+    my /= double(xs.size());
+    double sxy = 0, sxx = 0;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+        sxy += (std::log(xs[i]) - mx) * (std::log(ys[i]) - my);
+        sxx += (std::log(xs[i]) - mx) * (std::log(xs[i]) - mx);
+    }
+    return sxy / sxx;
 }
 
 }  // namespace eomgen::test

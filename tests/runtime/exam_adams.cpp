@@ -18,23 +18,10 @@
 namespace {
 
 using eomgen::test::kepler;
+using eomgen::test::fitted_slope;
 using eomgen::test::kepler_exact;
 using eomgen::test::Oscillator;
 using State4 = Eigen::Vector4d;
-
-/// The least-squares slope of log(y) against log(x).
-double fitted_slope(const std::vector<double>& xs, const std::vector<double>& ys) {
-    double mx = 0, my = 0;
-    for (std::size_t i = 0; i < xs.size(); ++i) mx += std::log(xs[i]), my += std::log(ys[i]);
-    mx /= double(xs.size());
-    my /= double(xs.size());
-    double sxy = 0, sxx = 0;
-    for (std::size_t i = 0; i < xs.size(); ++i) {
-        sxy += (std::log(xs[i]) - mx) * (std::log(ys[i]) - my);
-        sxx += (std::log(xs[i]) - mx) * (std::log(xs[i]) - mx);
-    }
-    return sxy / sxx;
-}
 
 eomgen::AdamsOptions<double> tolerances(double rtol, double atol) {
     eomgen::AdamsOptions<double> opts;

@@ -31,19 +31,6 @@ eomgen::Dop853Options<Scalar> fixed_step(const Scalar& h) {
     return opts;
 }
 
-/// The least-squares slope of log(err) against log(h): the observed order.
-double fitted_order(const std::vector<double>& hs, const std::vector<double>& errs) {
-    double mx = 0, my = 0;
-    for (std::size_t i = 0; i < hs.size(); ++i) mx += std::log(hs[i]), my += std::log(errs[i]);
-    mx /= double(hs.size());
-    my /= double(hs.size());
-    double sxy = 0, sxx = 0;
-    for (std::size_t i = 0; i < hs.size(); ++i) {
-        sxy += (std::log(hs[i]) - mx) * (std::log(errs[i]) - my);
-        sxx += (std::log(hs[i]) - mx) * (std::log(hs[i]) - mx);
-    }
-    return sxy / sxx;
-}
 
 }  // namespace
 
@@ -65,7 +52,7 @@ TEST_CASE("DOP853 converges with order 8 at fixed steps on a Kepler orbit (e = 0
         hs.push_back(h);
         errs.push_back((r.x - x0).lpNorm<Eigen::Infinity>());
     }
-    const double order = fitted_order(hs, errs);
+    const double order = eomgen::test::fitted_slope(hs, errs);
     INFO("errors " << errs[0] << " " << errs[1] << " " << errs[2] << " " << errs[3] << " " << errs[4]
                    << "; fitted order " << order);
     CHECK(order >= 7.5);
@@ -103,7 +90,7 @@ TEST_CASE("DOP853 dense output has order 7: local error O(h^8) inside a step", "
         hs.push_back(h);
         errs.push_back(err);
     }
-    const double order = fitted_order(hs, errs);
+    const double order = eomgen::test::fitted_slope(hs, errs);
     INFO("dense local errors " << errs[0] << " " << errs[1] << " " << errs[2] << " " << errs[3] << ", slope "
                                << order);
     CHECK(order >= 7.5);
@@ -245,7 +232,7 @@ TEST_CASE("long double: DOP853 reaches beyond double precision, order 8 at error
         hs.push_back(double(h));
         errs.push_back(double((ri.x - osc.exact(2.0L, x0)).lpNorm<Eigen::Infinity>()));
     }
-    const double order = fitted_order(hs, errs);
+    const double order = eomgen::test::fitted_slope(hs, errs);
     INFO("long double errors " << errs[0] << " " << errs[1] << " " << errs[2] << " " << errs[3] << ", order "
                                << order);
     CHECK(errs[3] < 1e-16);
