@@ -41,7 +41,7 @@ struct Values {
 /// substituting (subs_unless_pole): GiNaC would throw from inside the product it builds, and leak it.
 double evaluate(const ex& e, const exmap& at) {
     try {
-        const std::optional<ex> substituted = subs_unless_pole(e, at);
+        const std::optional<ex> substituted = subs_unless_pole(e, at, GiNaC::subs_options::no_pattern);
         if (!substituted) return std::nan("");
         const ex v = GiNaC::evalf(*substituted);
         if (!GiNaC::is_a<GiNaC::numeric>(v)) return std::nan("");
@@ -112,7 +112,9 @@ double limit_at(const ex& e, const std::vector<symbol>& q, const exmap& at) {
     for (std::size_t i = 0; i < q.size(); ++i)
         shifted[q[i]] = at.at(q[i]) + eps * GiNaC::numeric(direction[i % 8][0], direction[i % 8][1]);
     try {
-        const ex s = GiNaC::series_to_poly(e.subs(shifted, GiNaC::subs_options::no_pattern).series(eps == 0, 2));
+        const std::optional<ex> along = subs_unless_pole(e, shifted, GiNaC::subs_options::no_pattern);
+        if (!along) return std::nan("");  // a pole along the whole line, not a removable 0/0
+        const ex s = GiNaC::series_to_poly(along->series(eps == 0, 2));
         return evaluate(s.coeff(eps, 0), {});
     } catch (const std::exception&) {
         return std::nan("");
@@ -144,8 +146,8 @@ Reduced reduce(const Model& model, const Equations& eq, const ModesOptions& opti
                std::vector<std::pair<symbol, std::size_t>>& momentum_symbols, std::vector<std::string>& reduced) {
     const std::size_t n = model.dof();
     std::vector<std::size_t> cyclic;
-    for (const auto& [name, value] : options.momentum) {
-        static_cast<void>(value);
+    for (const auto& entry : options.momentum) {
+        const std::string& name = entry.first;  // not a structured binding: clang 14 refuses one in a lambda
         std::size_t i = 0;
         while (i < n && "p_" + model.coordinates[i].name != name) ++i;
         if (i == n) throw ModesError("--momentum " + name + ": no coordinate '" + name.substr(name.rfind('_') + 1) +
@@ -449,8 +451,8 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
     if (eq.L.has(t) || std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(),
                                    [&](const ex& Q) { return Q.has(t); }))
         throw ModesError("L or the forces depend on t explicitly: the system has no equilibria in these coordinates");
-    for (const auto& [name, v] : options.set) {
-        static_cast<void>(v);
+    for (const auto& entry : options.set) {
+        const std::string& name = entry.first;  // not a structured binding: clang 14 refuses one in a lambda
         if (std::none_of(model.parameters.begin(), model.parameters.end(),
                          [&](const Parameter& p) { return p.name == name; }))
             throw ModesError("--set " + name + ": no such parameter");
@@ -790,12 +792,16 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
         if (!e.damped && !e.gyroscopic && n <= 4 && m == 0) {
             try {
                 GiNaC::matrix Ke{static_cast<unsigned>(n), static_cast<unsigned>(n)}, Me{static_cast<unsigned>(n), static_cast<unsigned>(n)};
+                // At a removable 0/0 (the sleeping top) there is no exact entry: no exact ω² then.
+                const auto exact_entry = [&](const ex& e) {
+                    const std::optional<ex> v = subs_unless_pole(e, exact_at, GiNaC::subs_options::no_pattern);
+                    if (!v) throw std::runtime_error("0/0 at the exact equilibrium");
+                    return simplify_inverse_trig(v->expand());
+                };
                 for (std::size_t i = 0; i < n; ++i)
                     for (std::size_t j = 0; j < n; ++j) {
-                        Ke(unsigned(i), unsigned(j)) =
-                            simplify_inverse_trig(K[i][j].subs(exact_at, GiNaC::subs_options::no_pattern).expand());
-                        Me(unsigned(i), unsigned(j)) =
-                            simplify_inverse_trig(M[i][j].subs(exact_at, GiNaC::subs_options::no_pattern).expand());
+                        Ke(unsigned(i), unsigned(j)) = exact_entry(K[i][j]);
+                        Me(unsigned(i), unsigned(j)) = exact_entry(M[i][j]);
                     }
                 bool free = true;
                 for (const symbol& qi : r.q) free = free && !Ke.has(qi) && !Me.has(qi);
