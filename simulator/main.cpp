@@ -27,19 +27,14 @@ int main(int argc, char** argv) {
         return app.exit(e) == 0 ? kExitOk : kExitUsage;
     }
 
-    const std::vector<std::string> known = {
-#define EOMGEN_SIM_MODEL(m) #m,
-        EOMGEN_SIM_MODELS
-#undef EOMGEN_SIM_MODEL
-    };
+    std::vector<std::string> known;
+    for (const models::Entry& m : models::kAll) known.push_back(m.name);
     if (list_models) {
         for (const std::string& m : known) std::cout << m << "\n";
         return kExitOk;
     }
-#define EOMGEN_SIM_MODEL(m) \
-    if (o.model == #m) return run_reporting<eomgen::models::m::Model<double>>(o, "eomgen-sim");
-    EOMGEN_SIM_MODELS
-#undef EOMGEN_SIM_MODEL
+    for (const models::Entry& m : models::kAll)
+        if (o.model == m.name) return m.run(o);
     std::string all;
     for (const std::string& m : known) all += (all.empty() ? "" : ", ") + m;
     std::cerr << "eomgen-sim: "
