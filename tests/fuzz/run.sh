@@ -5,10 +5,18 @@
 # project's models and derivation fixtures, and what earlier runs found) with its dictionary. An input
 # slower than 1 s (2 s for check, 5 s for model_file: see below) is a finding, as is a crash or a sanitizer report; findings are written
 # to build-fuzz/findings/<harness>/. Prints one summary line per harness: executions, coverage, findings.
-# Usage: tests/fuzz/run.sh [SECONDS] [HARNESS...]      Figures: docs/reliability.md.
+# Usage: tests/fuzz/run.sh [--runs N] [SECONDS] [HARNESS...]      Figures: docs/reliability.md.
+#   --runs N   stop a harness after N executions (or SECONDS, whichever comes first)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
+runs=()
+if [[ "${1:-}" == "--runs" ]]; then
+  [[ "${2:-}" =~ ^[0-9]+$ ]] || { echo "tests/fuzz/run.sh: --runs needs a number of executions" >&2; exit 1; }
+  runs=(-runs="$2")
+  shift 2
+fi
 seconds="${1:-600}"
+[[ "$seconds" =~ ^[0-9]+$ ]] || { echo "tests/fuzz/run.sh: SECONDS must be a whole number, not '$seconds'" >&2; exit 1; }
 shift || true
 harnesses=("$@")
 ((${#harnesses[@]})) || harnesses=(text_fields expression model_file latex check sim_values)
@@ -50,15 +58,18 @@ for h in "${harnesses[@]}"; do
   [[ "$h" == check ]] && timeout=2
   [[ "$h" == model_file ]] && timeout=5
   log="build-fuzz/findings/$h.log"
+  started=$(date +%s)
   set +e
   LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp" \
-    "build-fuzz/tests/fuzz/libfuzzer/libfuzz_$h" -max_total_time="$seconds" -timeout="$timeout" -max_len=4096 \
+    "build-fuzz/tests/fuzz/libfuzzer/libfuzz_$h" -max_total_time="$seconds" "${runs[@]}" -timeout="$timeout" -max_len=4096 \
     -rss_limit_mb=4096 -print_final_stats=1 "${dict[@]}" -artifact_prefix="$findings/" "$corpus" >"$log" 2>&1
   rc=$?
   set -e
   execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
   cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*' || echo "?")
   found=$(find "$findings" -type f | wc -l)
-  summary+=("$h: ${seconds} s, ${execs} executions, coverage ${cov} edges, corpus $(ls "$corpus" | wc -l), exit $rc, findings ${found} (log $log)")
+  took=$(($(date +%s) - started))
+  rss=$(grep -o 'stat::peak_rss_mb: *[0-9]*' "$log" | grep -o '[0-9]*$' || echo "?")
+  summary+=("$h: ${took} s, ${execs} executions, coverage ${cov} edges, corpus $(ls "$corpus" | wc -l), peak RSS ${rss} MB, exit $rc, findings ${found} (log $log)")
 done
 printf '%s\n' "${summary[@]}"
