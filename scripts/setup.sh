@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what eomgen needs from Debian's packages (only what is missing), then configures and builds.
-# Usage: scripts/setup.sh [--no-build] [extra cmake -D options...]
-#        (build directory: $EOMGEN_BUILD_DIR, default build/; --no-build: install and configure only)
+# Usage: scripts/setup.sh [--no-build | --packages-only] [extra cmake -D options...]
+#        (build directory: $EOMGEN_BUILD_DIR, default build/; --no-build: install and configure only;
+#        --packages-only: install only)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -22,6 +23,7 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
+[[ "${1:-}" == "--packages-only" ]] && exit 0
 build="${EOMGEN_BUILD_DIR:-build}"
 no_build=0
 if [[ "${1:-}" == "--no-build" ]]; then  # configure only (the caller builds what it needs)

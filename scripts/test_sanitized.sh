@@ -1,13 +1,12 @@
 #!/usr/bin/env bash
-# The test suite built with AddressSanitizer and UndefinedBehaviorSanitizer (g++); any sanitizer report
-# fails its test. Leaks inside CLN's caches (GiNaC's number library, not instrumented) are suppressed:
-# tests/fuzz/lsan.supp.
-#   scripts/test_sanitized.sh           everything, in build-sanitize/ (long: every model's header and
-#                                       eomgen-sim under ASan; its one compile took over 20 GB on
-#                                       2026-11-24: docs/reliability.md)
+# The test suite built with AddressSanitizer and UndefinedBehaviorSanitizer (g++, -O1 -g); any sanitizer
+# report fails its test. Leaks inside CLN's caches (GiNaC's number library, not instrumented) and Open MPI's
+# own allocations are suppressed: tests/fuzz/lsan.supp.
+#   scripts/test_sanitized.sh           the whole suite, in build-sanitize/ (figures: docs/reliability.md)
 #   scripts/test_sanitized.sh --quick   what reads text and does symbolic work: the generator's, the
 #                                       checker's and the escaping's tests, the CLI cases of eomgen, and the
-#                                       bounded fuzz runs, in build-sanitize-quick/ at -O1. CI runs this one.
+#                                       bounded fuzz runs, in the same build directory. CI runs this one.
+# Both variants use one configuration, so the whole suite after --quick builds only what --quick did not.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 quick=0
@@ -16,18 +15,16 @@ quick=0
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0"
+build="${EOMGEN_SANITIZE_BUILD_DIR:-build-sanitize}"
+EOMGEN_BUILD_DIR="$build" bash scripts/setup.sh --no-build -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
+  -DEOMGEN_SANITIZE=address,undefined -DEOMGEN_BUILD_BENCH=OFF
 if ((quick)); then
-  build="${EOMGEN_SANITIZE_BUILD_DIR:-build-sanitize-quick}"
-  EOMGEN_BUILD_DIR="$build" bash scripts/setup.sh --no-build -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" \
-    -DEOMGEN_SANITIZE=address,undefined -DEOMGEN_BUILD_BENCH=OFF
   targets=(eomgen test_model test_escape test_atomic_file test_checker test_mechanics_codegen test_constraints
            fuzz_text_fields fuzz_expression fuzz_model_file fuzz_latex fuzz_check fuzz_sim_values)
   cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
   ctest --test-dir "$build" --output-on-failure -j "$(nproc)" \
     -R '^(test_model|test_escape|test_atomic_file|test_checker|test_mechanics_codegen|test_constraints):|^fuzz:.*_bounded$|^cli:(bad_|check_|missing_file|unknown_command|version)'
 else
-  build="${EOMGEN_SANITIZE_BUILD_DIR:-build-sanitize}"
-  EOMGEN_BUILD_DIR="$build" bash scripts/setup.sh -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-    -DEOMGEN_SANITIZE=address,undefined -DEOMGEN_BUILD_BENCH=OFF
+  cmake --build "$build" -j "$(nproc)"
   ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
 fi

@@ -26,7 +26,7 @@ for p in "${need[@]}"; do dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -
 if ((${#missing[@]})); then
   apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
-bash scripts/setup.sh >/dev/null   # the Debian packages eomgen itself needs
+bash scripts/setup.sh --packages-only   # the Debian packages eomgen itself needs
 flags="-fsanitize=address,undefined -fno-sanitize-recover=undefined -g -O1"
 cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
   -DCMAKE_CXX_FLAGS="$flags -fsanitize=fuzzer-no-link" -DEOMGEN_BUILD_TESTS=OFF -DEOMGEN_FUZZ=ON >/dev/null
