@@ -392,7 +392,9 @@ void normalize_rows(Derivation& d) {
                 std::string next = r.text;
                 // `a =` then `= b`: one relation, not two; `a +` then `+ b` (the sign repeated on the next
                 // line, as typesetters do) is one sign, and `a +` then `- b` is a - b.
-                const char last = trimmed(p.text).back(), first = trimmed(next).empty() ? ' ' : trimmed(next)[0];
+                // Either row may be blank: a row of only a sign continues an empty display (found by fuzz_latex).
+                const std::string p_trim = trimmed(p.text), next_trim = trimmed(next);
+                const char last = p_trim.empty() ? ' ' : p_trim.back(), first = next_trim.empty() ? ' ' : next_trim[0];
                 const bool sign_last = last == '+' || last == '-', sign_first = first == '+' || first == '-';
                 if ((last == '=' && first == '=') || (sign_last && sign_first && last == first))
                     next[next.find(first)] = ' ';

@@ -171,3 +171,17 @@ TEST_CASE("latex as published: a slip in the last piece of a continued display i
     CHECK(c.equations[0].verdict == Verdict::Agrees);
     CHECK(c.equations[1].verdict == Verdict::Disagrees);
 }
+
+TEST_CASE("latex as published: a blank display continued by a sign (fuzz_latex: back() of an empty row)",
+          "[checker][normalize]") {
+    // `~` is a space, so the first display is blank; the second starts with a sign and continued it. The join
+    // read the last character of the blank row (UBSan under fuzz_latex, 2026-11-25).
+    for (const std::string text : {"$$~$$$$+$$", "$$ $$\n$$- x$$", "$$~$$\n$$+$$\n$$+ b$$"}) {
+        INFO(text);
+        const auto d = eomgen::checker::parse_derivation(text, "x.md");
+        for (const auto& r : d.rows) {
+            CHECK(r.offset + r.text.size() <= text.size());
+            CHECK(r.text.find_first_not_of(" ~+-xb\n") == std::string::npos);
+        }
+    }
+}
