@@ -728,10 +728,13 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
         A.bottomLeftCorner(Eigen::Index(nr), Eigen::Index(nr)) = -llt.solve(Km);
         A.bottomRightCorner(Eigen::Index(nr), Eigen::Index(nr)) = -llt.solve(Dm);
         Eigen::MatrixXd B = Eigen::MatrixXd::Zero(Eigen::Index(2 * nr), Bq.cols());
-        B.bottomRows(Eigen::Index(nr)) = llt.solve(Bq);
+        // Without inputs B has no columns and no storage: a block of it would offset a null pointer (UBSan, clang).
+        if (Bq.cols() > 0) B.bottomRows(Eigen::Index(nr)) = llt.solve(Bq);
         Eigen::MatrixXd T = Eigen::MatrixXd::Zero(Eigen::Index(2 * n), Eigen::Index(2 * nr));
-        T.topLeftCorner(Eigen::Index(n), Eigen::Index(nr)) = N;
-        T.bottomRightCorner(Eigen::Index(n), Eigen::Index(nr)) = N;
+        if (nr > 0) {  // (no free direction: T has no storage, as B above)
+            T.topLeftCorner(Eigen::Index(n), Eigen::Index(nr)) = N;
+            T.bottomRightCorner(Eigen::Index(n), Eigen::Index(nr)) = N;
+        }
         e.A = rows_of(T * A * T.transpose());
         e.B = rows_of(T * B);
         const Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
