@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <sstream>
 
@@ -127,11 +128,43 @@ std::string result_target_name(const Result& result) {
 }
 
 namespace {
+
+/// Each body's inertia tensor about its centre of mass and about the origin, formed once for all the results
+/// that name it: the one about the origin goes through the rotation of the centre (trigonometric entries),
+/// and forming it for each of eleven results was most of `generate`'s time on the triangle plate.
+class BodyTensors {
+public:
+    const GiNaC::matrix& of(const Body& b, bool about_origin) {
+        const auto key = std::make_pair(b.name, about_origin);
+        auto it = done_.find(key);
+        if (it != done_.end()) return it->second;
+        GiNaC::matrix I = body_inertia(b);
+        if (about_origin) {
+            const GiNaC::matrix r{{b.centre[0]}, {b.centre[1]}, {b.centre[2]}};
+            I = parallel_axis(I, b.mass, euler_rotation(b.angles, b.sequence).mul(r));
+        }
+        return done_.emplace(key, I).first->second;
+    }
+
+private:
+    std::map<std::pair<std::string, bool>, GiNaC::matrix> done_;
+};
+
 /// The tensor a principal.<body> or principal_origin.<body> result is an eigenvalue of, minus expr·1.
-GiNaC::matrix shifted_tensor(const Model& model, const Result& result);
+GiNaC::matrix shifted_tensor(const Model& model, const Result& result, BodyTensors& tensors);
+
+GiNaC::ex residual_of(const Model& model, const Equations& eq, const Result& result, BodyTensors& tensors);
+
 }  // namespace
 
 GiNaC::ex result_residual(const Model& model, const Equations& eq, const Result& result) {
+    BodyTensors tensors;
+    return residual_of(model, eq, result, tensors);
+}
+
+namespace {
+
+GiNaC::ex residual_of(const Model& model, const Equations& eq, const Result& result, BodyTensors& tensors) {
     const std::string& t = result.equals;
     const GiNaC::ex& x = result.expr.expr;
     if (t == "T") return x - eq.T;
@@ -154,35 +187,23 @@ GiNaC::ex result_residual(const Model& model, const Equations& eq, const Result&
                                                         : space_angular_velocity(b.angles, model, b.sequence);
                 return x - w(component(rest.substr(rest.find('.') + 1)[0]), 0);
             }
-            GiNaC::matrix I = body_inertia(b);
-            if (head == "inertia_origin" || head == "principal_origin") {
-                const GiNaC::matrix A = euler_rotation(b.angles, b.sequence);
-                const GiNaC::matrix r{{b.centre[0]}, {b.centre[1]}, {b.centre[2]}};
-                const GiNaC::matrix c = A.mul(r);
-                I = parallel_axis(I, b.mass, c);
-            }
             if (component_form) {
+                const GiNaC::matrix& I = tensors.of(b, head == "inertia_origin");
                 const std::string ij = rest.substr(rest.find('.') + 1);
                 return x - I(component(ij[0]), component(ij[1]));
             }
-            return shifted_tensor(model, result).determinant(GiNaC::determinant_algo::laplace);
+            return shifted_tensor(model, result, tensors).determinant(GiNaC::determinant_algo::laplace);
         }
     }
     throw ModelError(result.equals_where, "'equals = \"" + t + "\"' names nothing eomgen derives");
 }
 
-namespace {
-
-GiNaC::matrix shifted_tensor(const Model& model, const Result& result) {
+GiNaC::matrix shifted_tensor(const Model& model, const Result& result, BodyTensors& tensors) {
     const std::string& t = result.equals;
     const std::string head = t.substr(0, t.find('.')), name = t.substr(t.find('.') + 1);
     for (const Body& b : model.bodies) {
         if (b.name != name) continue;
-        GiNaC::matrix I = body_inertia(b);
-        if (head == "principal_origin") {
-            const GiNaC::matrix r{{b.centre[0]}, {b.centre[1]}, {b.centre[2]}};
-            I = parallel_axis(I, b.mass, euler_rotation(b.angles, b.sequence).mul(r));
-        }
+        GiNaC::matrix I = tensors.of(b, head == "principal_origin");
         for (unsigned i = 0; i < 3; ++i) I(i, i) -= result.expr.expr;
         return I;
     }
@@ -213,14 +234,15 @@ std::optional<bool> singular_at_points(const GiNaC::matrix& m, const Model& mode
 }  // namespace
 
 void verify_results(const Model& model, const Equations& eq) {
+    BodyTensors tensors;
     for (const Result& r : model.results) {
         if (r.equals.empty()) continue;
         const bool principal = r.equals.rfind("principal", 0) == 0;
         if (principal && !r.on_constraints) {
-            const std::optional<bool> singular = singular_at_points(shifted_tensor(model, r), model);
+            const std::optional<bool> singular = singular_at_points(shifted_tensor(model, r, tensors), model);
             if (singular && *singular) continue;
         }
-        GiNaC::ex residual = result_residual(model, eq, r);
+        GiNaC::ex residual = residual_of(model, eq, r, tensors);
         std::string how;
         if (r.on_constraints) {
             const ConstraintReduction red = reduce_on_constraints(model, eq, r.expr.expr);
