@@ -23,7 +23,7 @@ if ((quick)); then
            fuzz_text_fields fuzz_expression fuzz_model_file fuzz_latex fuzz_check fuzz_sim_values)
   cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
   ctest --test-dir "$build" --output-on-failure -j "$(nproc)" \
-    -R '^(test_model|test_escape|test_atomic_file|test_checker|test_mechanics_codegen|test_constraints):|^fuzz:.*_bounded$|^cli:(bad_|check_|missing_file|unknown_command|version)'
+    -R '^(test_model|test_escape|test_atomic_file|test_checker|test_mechanics_codegen|test_constraints):|^fuzz:.*_bounded$|^cli:(bad_|check_|modes_|mpi_|missing_file|unknown_command|version)'
 else
   cmake --build "$build" -j "$(nproc)"
   ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
