@@ -4,9 +4,13 @@
 #include "mechanics/bodies.hpp"
 #include "mechanics/inertia.hpp"
 #include "mechanics/kinematics.hpp"
+#include "mechanics/pole_free_subs.hpp"
+
+#include <Eigen/Dense>
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -21,6 +25,12 @@ std::string text(const GiNaC::ex& e) {
     std::string s = os.str();
     if (s.size() > 400) s = s.substr(0, 400) + " ...";
     return s;
+}
+
+std::string fmt_number(double v) {
+    std::ostringstream os;
+    os << std::setprecision(6) << v;
+    return os.str();
 }
 
 /// Coordinates in the order they should be solved for: those `keep` does not use first, later ones first.
@@ -231,6 +241,44 @@ std::optional<bool> singular_at_points(const GiNaC::matrix& m, const Model& mode
     return true;
 }
 
+/// The principal moments the result could have been: the eigenvalues of the tensor `equals` names, with the
+/// parameters' values and the coordinates' initial values, and the result's own value there. For the message of
+/// a wrong principal moment, instead of det(I − expr·1) expanded (trigonometric entries: 0.5 s, and 400
+/// characters of polynomial). Empty where the tensor does not evaluate to numbers.
+std::string principal_moments_text(const Model& model, const Result& result, BodyTensors& tensors) {
+    const std::string& t = result.equals;
+    const std::string head = t.substr(0, t.find('.')), name = t.substr(t.find('.') + 1);
+    GiNaC::exmap at;
+    std::string where;
+    for (const Parameter& p : model.parameters) {
+        at[p.symbol] = GiNaC::numeric(p.value);
+        where += (where.empty() ? "" : ", ") + p.name + " = " + fmt_number(p.value);
+    }
+    for (const Coordinate& c : model.coordinates) at[c.q] = GiNaC::numeric(c.initial);
+    for (const Body& b : model.bodies) {
+        if (b.name != name) continue;
+        const GiNaC::matrix& I = tensors.of(b, head == "principal_origin");
+        Eigen::Matrix3d v;
+        for (unsigned i = 0; i < 3; ++i)
+            for (unsigned j = 0; j < 3; ++j) {
+                const std::optional<GiNaC::ex> x = subs_unless_pole(I(i, j), at);
+                if (!x) return "";
+                const GiNaC::ex n = GiNaC::evalf(*x);
+                if (!GiNaC::is_a<GiNaC::numeric>(n) || !GiNaC::ex_to<GiNaC::numeric>(n).is_real()) return "";
+                v(int(i), int(j)) = GiNaC::ex_to<GiNaC::numeric>(n).to_double();
+            }
+        const std::optional<GiNaC::ex> own = subs_unless_pole(result.expr.expr, at);
+        const GiNaC::ex own_value = own ? GiNaC::evalf(*own) : GiNaC::ex(0);
+        if (!own || !GiNaC::is_a<GiNaC::numeric>(own_value) || !GiNaC::ex_to<GiNaC::numeric>(own_value).is_real())
+            return "";
+        const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(v, Eigen::EigenvaluesOnly).eigenvalues();
+        return "with " + (where.empty() ? std::string("no parameters") : where) + " the principal moments are " +
+               fmt_number(moments(0)) + ", " + fmt_number(moments(1)) + " and " + fmt_number(moments(2)) + ", and " +
+               result.expr.text + " = " + fmt_number(GiNaC::ex_to<GiNaC::numeric>(own_value).to_double());
+    }
+    return "";
+}
+
 }  // namespace
 
 void verify_results(const Model& model, const Equations& eq) {
@@ -241,6 +289,14 @@ void verify_results(const Model& model, const Equations& eq) {
         if (principal && !r.on_constraints) {
             const std::optional<bool> singular = singular_at_points(shifted_tensor(model, r, tensors), model);
             if (singular && *singular) continue;
+            // Not singular at a random point (to 1e-10 of |I|³ in doubles): not a principal moment. Said with
+            // numbers, without expanding the determinant.
+            if (singular) {
+                const std::string moments = principal_moments_text(model, r, tensors);
+                if (!moments.empty())
+                    throw ModelError(r.expr.where, "result '" + r.name + "' = " + r.expr.text + " is not " +
+                                                       result_target_name(r) + ": " + moments);
+            }
         }
         GiNaC::ex residual = residual_of(model, eq, r, tensors);
         std::string how;
