@@ -272,9 +272,13 @@ std::string principal_moments_text(const Model& model, const Result& result, Bod
         if (!own || !GiNaC::is_a<GiNaC::numeric>(own_value) || !GiNaC::ex_to<GiNaC::numeric>(own_value).is_real())
             return "";
         const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(v, Eigen::EigenvaluesOnly).eigenvalues();
+        const double x = GiNaC::ex_to<GiNaC::numeric>(own_value).to_double();
+        bool matches = false;  // right at these values only (M a/24 for M a²/12 at a = 0.5): say so
+        for (int k = 0; k < 3; ++k) matches = matches || std::abs(x - moments(k)) <= 1e-9 * moments.cwiseAbs().maxCoeff();
         return "with " + (where.empty() ? std::string("no parameters") : where) + " the principal moments are " +
                fmt_number(moments(0)) + ", " + fmt_number(moments(1)) + " and " + fmt_number(moments(2)) + ", and " +
-               result.expr.text + " = " + fmt_number(GiNaC::ex_to<GiNaC::numeric>(own_value).to_double());
+               result.expr.text + " = " + fmt_number(x) +
+               (matches ? " (one of them at these values, but not for other values of the parameters)" : "");
     }
     return "";
 }
