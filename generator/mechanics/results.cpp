@@ -220,23 +220,35 @@ GiNaC::matrix shifted_tensor(const Model& model, const Result& result, BodyTenso
     throw ModelError(result.equals_where, "'equals = \"" + t + "\"': no such body");
 }
 
+/// e at `at` as a real double; nothing where it is not one there (a pole, a complex value, a symbol left).
+std::optional<double> real_at(const GiNaC::ex& e, const GiNaC::exmap& at) {
+    const std::optional<GiNaC::ex> x = subs_unless_pole(e, at);
+    if (!x) return std::nullopt;
+    const GiNaC::ex n = GiNaC::evalf(*x);
+    if (!GiNaC::is_a<GiNaC::numeric>(n) || !GiNaC::ex_to<GiNaC::numeric>(n).is_real()) return std::nullopt;
+    return GiNaC::ex_to<GiNaC::numeric>(n).to_double();
+}
+
+/// A 3×3 tensor at `at` in doubles; nothing where an entry is not a real number there.
+std::optional<Eigen::Matrix3d> numbers_of(const GiNaC::matrix& m, const GiNaC::exmap& at) {
+    Eigen::Matrix3d v;
+    for (unsigned i = 0; i < 3; ++i)
+        for (unsigned j = 0; j < 3; ++j) {
+            const std::optional<double> x = real_at(m(i, j), at);
+            if (!x) return std::nullopt;
+            v(int(i), int(j)) = *x;
+        }
+    return v;
+}
+
 /// det(I − λ1) = 0 at random points, the determinant taken of the numbers (the symbolic one of a tensor moved
 /// by rotations is large), relative to the size of the tensor.
 std::optional<bool> singular_at_points(const GiNaC::matrix& m, const Model& model) {
     for (unsigned seed = 1; seed <= 4; ++seed) {
-        const GiNaC::exmap at = random_point(model, seed);
-        double v[3][3], size = 1e-300;
-        for (unsigned i = 0; i < 3; ++i)
-            for (unsigned j = 0; j < 3; ++j) {
-                const GiNaC::ex x = GiNaC::evalf(m(i, j).subs(at));
-                if (!GiNaC::is_a<GiNaC::numeric>(x) || !GiNaC::ex_to<GiNaC::numeric>(x).is_real()) return std::nullopt;
-                v[i][j] = GiNaC::ex_to<GiNaC::numeric>(x).to_double();
-                size = std::max(size, std::abs(v[i][j]));
-            }
-        const double det = v[0][0] * (v[1][1] * v[2][2] - v[1][2] * v[2][1]) -
-                           v[0][1] * (v[1][0] * v[2][2] - v[1][2] * v[2][0]) +
-                           v[0][2] * (v[1][0] * v[2][1] - v[1][1] * v[2][0]);
-        if (!(std::abs(det) <= 1e-10 * size * size * size)) return false;
+        const std::optional<Eigen::Matrix3d> v = numbers_of(m, random_point(model, seed));
+        if (!v) return std::nullopt;
+        const double size = std::max(1e-300, v->cwiseAbs().maxCoeff());
+        if (!(std::abs(v->determinant()) <= 1e-10 * size * size * size)) return false;
     }
     return true;
 }
@@ -257,27 +269,16 @@ std::string principal_moments_text(const Model& model, const Result& result, Bod
     for (const Coordinate& c : model.coordinates) at[c.q] = GiNaC::numeric(c.initial);
     for (const Body& b : model.bodies) {
         if (b.name != name) continue;
-        const GiNaC::matrix& I = tensors.of(b, head == "principal_origin");
-        Eigen::Matrix3d v;
-        for (unsigned i = 0; i < 3; ++i)
-            for (unsigned j = 0; j < 3; ++j) {
-                const std::optional<GiNaC::ex> x = subs_unless_pole(I(i, j), at);
-                if (!x) return "";
-                const GiNaC::ex n = GiNaC::evalf(*x);
-                if (!GiNaC::is_a<GiNaC::numeric>(n) || !GiNaC::ex_to<GiNaC::numeric>(n).is_real()) return "";
-                v(int(i), int(j)) = GiNaC::ex_to<GiNaC::numeric>(n).to_double();
-            }
-        const std::optional<GiNaC::ex> own = subs_unless_pole(result.expr.expr, at);
-        const GiNaC::ex own_value = own ? GiNaC::evalf(*own) : GiNaC::ex(0);
-        if (!own || !GiNaC::is_a<GiNaC::numeric>(own_value) || !GiNaC::ex_to<GiNaC::numeric>(own_value).is_real())
-            return "";
-        const Eigen::Vector3d moments = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(v, Eigen::EigenvaluesOnly).eigenvalues();
-        const double x = GiNaC::ex_to<GiNaC::numeric>(own_value).to_double();
+        const std::optional<Eigen::Matrix3d> v = numbers_of(tensors.of(b, head == "principal_origin"), at);
+        const std::optional<double> x = real_at(result.expr.expr, at);
+        if (!v || !x) return "";
+        const Eigen::Vector3d moments =
+            Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(*v, Eigen::EigenvaluesOnly).eigenvalues();
         bool matches = false;  // right at these values only (M a/24 for M a²/12 at a = 0.5): say so
-        for (int k = 0; k < 3; ++k) matches = matches || std::abs(x - moments(k)) <= 1e-9 * moments.cwiseAbs().maxCoeff();
+        for (int k = 0; k < 3; ++k) matches = matches || std::abs(*x - moments(k)) <= 1e-9 * moments.cwiseAbs().maxCoeff();
         return "with " + (where.empty() ? std::string("no parameters") : where) + " the principal moments are " +
                fmt_number(moments(0)) + ", " + fmt_number(moments(1)) + " and " + fmt_number(moments(2)) + ", and " +
-               result.expr.text + " = " + fmt_number(x) +
+               result.expr.text + " = " + fmt_number(*x) +
                (matches ? " (one of them at these values, but not for other values of the parameters)" : "");
     }
     return "";
