@@ -5,9 +5,11 @@
 #        --packages-only: install only)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/ccache_env.sh
 
 packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2 libtomlplusplus-dev
           libcli11-dev libfmt-dev libbenchmark-dev libboost-dev gnuplot-nox
+          ccache                       # optional: recompiles only what changed, across checkouts (CMakeLists.txt)
           dpkg-dev file   # cpack -G DEB (dpkg-shlibdeps, and file to find the binaries)
           libopenmpi-dev openmpi-bin   # optional for eomgen: ensembles across MPI ranks (mpirun), and its test
           libhdf5-dev)                 # optional for eomgen: ensembles written as HDF5 (--out FILE.h5)

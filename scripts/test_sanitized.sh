@@ -9,6 +9,7 @@
 # Both variants use one configuration, so the whole suite after --quick builds only what --quick did not.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+source scripts/ccache_env.sh
 quick=0
 [[ "${1:-}" == "--quick" ]] && quick=1
 # Also for the build: it runs the sanitized eomgen (model headers) and the test programs (test discovery).

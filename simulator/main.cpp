@@ -1,5 +1,5 @@
 /** @file main.cpp  eomgen-sim: integrate a model compiled into this program (see `eomgen run` for any model). */
-#include "eomgen/simulation.hpp"
+#include "table_driver.hpp"  // the driver for TableModel, compiled once (eomgen_table_driver)
 #include "model_list.hpp"
 #include "options.hpp"
 #include "output/atomic_file.hpp"
@@ -34,7 +34,10 @@ int main(int argc, char** argv) {
         return kExitOk;
     }
     for (const models::Entry& m : models::kAll)
-        if (o.model == m.name) return m.run(o);
+        if (o.model == m.name) {
+            eomgen::TableModel::bind(m.table());
+            return run_reporting<eomgen::TableModel>(o, "eomgen-sim");
+        }
     std::string all;
     for (const std::string& m : known) all += (all.empty() ? "" : ", ") + m;
     std::cerr << "eomgen-sim: "

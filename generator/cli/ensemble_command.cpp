@@ -1,5 +1,6 @@
 /** @file ensemble_command.cpp  `eomgen run --sweep/--sample`: members → rows of a CSV table, and its plot. */
 #include "cli/ensemble_command.hpp"
+#include "table_driver.hpp"  // the driver for TableModel, compiled once
 
 #include "cli/plot.hpp"
 #include "cli/process.hpp"

@@ -1,5 +1,6 @@
 /** @file ensemble_mpi.cpp  Ensembles across MPI ranks: chunks handed out by rank 0, results gathered to it. */
 #include "cli/ensemble_mpi.hpp"
+#include "table_driver.hpp"  // the driver for TableModel, compiled once
 
 #include "output/atomic_file.hpp"
 
