@@ -12,7 +12,6 @@
 // Conserved: nothing found
 #pragma once
 
-#include "eomgen/analytic_jacobian.hpp"
 #include "eomgen/linear_solve.hpp"
 #include "eomgen/device.hpp"
 #include "eomgen/linearize.hpp"
@@ -207,47 +206,6 @@ struct Model {
         static_cast<void>(out_);
     }
 
-    /// Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq = 0 about an equilibrium.
-    EOMGEN_HD static void stiffness(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& K_) {
-        static_cast<void>(t);
-        using std::cos;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar g = p_.g;
-        const Scalar theta = q_(0);
-        const Scalar cos_theta = cos(theta);
-        K_(0, 0) = m*l*g*cos_theta;
-        K_(0, 1) = Scalar(0);
-        K_(1, 0) = Scalar(0);
-        K_(1, 1) = Scalar(0);
-    }
-
-    /// Damping about rest, C: the symmetric part of D = dbeta_i/dq_j - dbeta_j/dq_i - dQ_i/dq'_j at q' = 0 (beta = dL/dq' at q' = 0).
-    EOMGEN_HD static void damping(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& C_) {
-        static_cast<void>(t);
-        using std::sin;
-        const Scalar l = p_.l;
-        const Scalar c = p_.c;
-        const Scalar theta = q_(0);
-        const Scalar t0 = c*(l*l);
-        const Scalar sin_theta = sin(theta);
-        C_(0, 0) = t0;
-        C_(0, 1) = Scalar(0);
-        C_(1, 0) = Scalar(0);
-        C_(1, 1) = (sin_theta*sin_theta)*t0;
-    }
-
-    /// Gyroscopic matrix about rest, G: the skew part of D (does no work).
-    EOMGEN_HD static void gyroscopic(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& G_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        G_(0, 0) = Scalar(0);
-        G_(0, 1) = Scalar(0);
-        G_(1, 0) = Scalar(0);
-        G_(1, 1) = Scalar(0);
-    }
-
     /// q'' from M q'' = f by M = L D L^T, unrolled (L unit lower triangular; its entries that are zero for every q
     /// left out). The pivots D are tested as eomgen::solve_mass_matrix tests them: a singular M throws
     /// eomgen::SingularMassMatrix, a non-finite M, f or q'' eomgen::NonFiniteState, never a NaN.
@@ -279,82 +237,6 @@ struct Model {
         xdot_.template tail<nq>() = qdd_;
     }
 
-    /// R = [dr/dq, dr/dq'] of r = f - M q'' at fixed q'' (the solved accelerations): M dq''/dq = dr/dq, M dq''/dq' = dr/dq'.
-    /// R_ is nq x nx; a member template, compiled only where called.
-    template <class MatR>
-    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, MatR& R_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar g = p_.g;
-        const Scalar c = p_.c;
-        const Scalar theta = q_(0);
-        const Scalar theta_dot = qd_(0);
-        const Scalar phi_dot = qd_(1);
-        const Scalar phi_ddot = qdd_(1);
-        const Scalar cos_theta = cos(theta);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t0 = cos_theta*cos_theta - sin_theta*sin_theta;
-        const Scalar t1 = l*l;
-        const Scalar t2 = m*phi_dot*cos_theta*sin_theta*t1;
-        const Scalar t3 = c*sin_theta;
-        R_(0, 0) = m*l*(l*(phi_dot*phi_dot)*t0 - g*cos_theta);
-        R_(0, 1) = Scalar(0);
-        R_(0, 2) = -(c*t1);
-        R_(0, 3) = Scalar(2)*t2;
-        R_(1, 0) = -Scalar(2)*t1*(m*phi_ddot*cos_theta*sin_theta + phi_dot*(m*theta_dot*t0 + cos_theta*t3));
-        R_(1, 1) = Scalar(0);
-        R_(1, 2) = -Scalar(2)*t2;
-        R_(1, 3) = -(sin_theta*t1*(Scalar(2)*m*theta_dot*cos_theta + t3));
-    }
-
-    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp. Rp_ is
-    /// nq x n_params; a member template, compiled only where called.
-    template <class MatRp>
-    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, MatRp& Rp_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar g = p_.g;
-        const Scalar c = p_.c;
-        const Scalar theta = q_(0);
-        const Scalar theta_dot = qd_(0);
-        const Scalar theta_ddot = qdd_(0);
-        const Scalar phi_dot = qd_(1);
-        const Scalar phi_ddot = qdd_(1);
-        const Scalar t0 = l*theta_ddot;
-        const Scalar sin_theta = sin(theta);
-        const Scalar cos_theta = cos(theta);
-        const Scalar t1 = l*cos_theta*(phi_dot*phi_dot);
-        const Scalar t2 = l*l;
-        const Scalar t3 = phi_ddot*sin_theta;
-        Rp_(0, 0) = -(l*(t0 + sin_theta*(g - t1)));
-        Rp_(0, 1) = -Scalar(2)*(m*(t0 + sin_theta*(Scalar(1)/Scalar(2)*g - t1)) + l*c*theta_dot);
-        Rp_(0, 2) = -(m*l*sin_theta);
-        Rp_(0, 3) = -(theta_dot*t2);
-        Rp_(1, 0) = -(sin_theta*t2*(Scalar(2)*theta_dot*phi_dot*cos_theta + t3));
-        Rp_(1, 1) = -Scalar(2)*l*sin_theta*(m*t3 + phi_dot*(Scalar(2)*m*theta_dot*cos_theta + c*sin_theta));
-        Rp_(1, 2) = Scalar(0);
-        Rp_(1, 3) = -(phi_dot*t2*(sin_theta*sin_theta));
-    }
-
-    /// J = dx'/dx = [[0, I], [M^-1 dr/dq, M^-1 dr/dq']] at (t, x), analytic (jacobian_terms()), with one
-    /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.
-    template <class MatJ = StateJacobian>
-    static void state_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJ& J_) {
-        eomgen::analytic_state_jacobian<Model>(t, x_, p_, J_);
-    }
-
-    /// Jp = dx'/dp = [[0], [M^-1 dr/dp]] at (t, x), columns in param_names order, analytic
-    /// (parameter_jacobian_terms()), with one factorization of M. A member template: compiled only where called.
-    template <class MatJp = ParameterJacobian>
-    static void parameter_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJp& Jp_) {
-        eomgen::analytic_parameter_jacobian<Model>(t, x_, p_, Jp_);
-    }
 
     /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward
     /// differentiation through rhs (eomgen/linearize.hpp); for Scalar = double. A member template, so that

@@ -11,7 +11,6 @@
 // Conserved: h (L does not depend on t explicitly)
 #pragma once
 
-#include "eomgen/analytic_jacobian.hpp"
 #include "eomgen/linear_solve.hpp"
 #include "eomgen/device.hpp"
 #include "eomgen/linearize.hpp"
@@ -194,36 +193,6 @@ struct Model {
         static_cast<void>(out_);
     }
 
-    /// Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq = 0 about an equilibrium.
-    EOMGEN_HD static void stiffness(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& K_) {
-        static_cast<void>(t);
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar w = p_.w;
-        const Scalar g = p_.g;
-        const Scalar theta = p_.theta;
-        const Scalar psi = q_(0);
-        const Scalar sin_theta = sin(theta);
-        const Scalar sin_psi = sin(psi);
-        K_(0, 0) = -Scalar(1)/Scalar(2)*m*w*g*sin_theta*sin_psi;
-    }
-
-    /// Damping about rest, C: the symmetric part of D = dbeta_i/dq_j - dbeta_j/dq_i - dQ_i/dq'_j at q' = 0 (beta = dL/dq' at q' = 0).
-    EOMGEN_HD static void damping(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& C_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        C_(0, 0) = Scalar(0);
-    }
-
-    /// Gyroscopic matrix about rest, G: the skew part of D (does no work).
-    EOMGEN_HD static void gyroscopic(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& G_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        G_(0, 0) = Scalar(0);
-    }
-
     /// q'' from M q'' = f by M = L D L^T, unrolled (L unit lower triangular; its entries that are zero for every q
     /// left out). The pivots D are tested as eomgen::solve_mass_matrix tests them: a singular M throws
     /// eomgen::SingularMassMatrix, a non-finite M, f or q'' eomgen::NonFiniteState, never a NaN.
@@ -251,64 +220,6 @@ struct Model {
         xdot_.template tail<nq>() = qdd_;
     }
 
-    /// R = [dr/dq, dr/dq'] of r = f - M q'' at fixed q'' (the solved accelerations): M dq''/dq = dr/dq, M dq''/dq' = dr/dq'.
-    /// R_ is nq x nx; a member template, compiled only where called.
-    template <class MatR>
-    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, MatR& R_) {
-        static_cast<void>(t);
-        static_cast<void>(qd_);
-        static_cast<void>(qdd_);
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar w = p_.w;
-        const Scalar g = p_.g;
-        const Scalar theta = p_.theta;
-        const Scalar psi = q_(0);
-        const Scalar sin_theta = sin(theta);
-        const Scalar sin_psi = sin(psi);
-        R_(0, 0) = Scalar(1)/Scalar(2)*m*w*g*sin_theta*sin_psi;
-        R_(0, 1) = Scalar(0);
-    }
-
-    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp. Rp_ is
-    /// nq x n_params; a member template, compiled only where called.
-    template <class MatRp>
-    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, MatRp& Rp_) {
-        static_cast<void>(t);
-        static_cast<void>(qd_);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar w = p_.w;
-        const Scalar g = p_.g;
-        const Scalar theta = p_.theta;
-        const Scalar psi = q_(0);
-        const Scalar psi_ddot = qdd_(0);
-        const Scalar t0 = w*psi_ddot;
-        const Scalar cos_psi = cos(psi);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t1 = g*cos_psi*sin_theta;
-        const Scalar cos_theta = cos(theta);
-        Rp_(0, 0) = -(w*(Scalar(1)/Scalar(3)*t0 + Scalar(1)/Scalar(2)*t1));
-        Rp_(0, 1) = -(m*(Scalar(2)/Scalar(3)*t0 + Scalar(1)/Scalar(2)*t1));
-        Rp_(0, 2) = Scalar(0);
-        Rp_(0, 3) = -Scalar(1)/Scalar(2)*m*w*cos_psi*sin_theta;
-        Rp_(0, 4) = -Scalar(1)/Scalar(2)*m*w*g*cos_theta*cos_psi;
-    }
-
-    /// J = dx'/dx = [[0, I], [M^-1 dr/dq, M^-1 dr/dq']] at (t, x), analytic (jacobian_terms()), with one
-    /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.
-    template <class MatJ = StateJacobian>
-    static void state_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJ& J_) {
-        eomgen::analytic_state_jacobian<Model>(t, x_, p_, J_);
-    }
-
-    /// Jp = dx'/dp = [[0], [M^-1 dr/dp]] at (t, x), columns in param_names order, analytic
-    /// (parameter_jacobian_terms()), with one factorization of M. A member template: compiled only where called.
-    template <class MatJp = ParameterJacobian>
-    static void parameter_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJp& Jp_) {
-        eomgen::analytic_parameter_jacobian<Model>(t, x_, p_, Jp_);
-    }
 
     /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward
     /// differentiation through rhs (eomgen/linearize.hpp); for Scalar = double. A member template, so that

@@ -208,39 +208,6 @@ struct Model {
         static_cast<void>(out_);
     }
 
-    /// Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq = 0 about an equilibrium.
-    EOMGEN_HD static void stiffness(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& K_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        K_(0, 0) = Scalar(0);
-        K_(0, 1) = Scalar(0);
-        K_(1, 0) = Scalar(0);
-        K_(1, 1) = Scalar(0);
-    }
-
-    /// Damping about rest, C: the symmetric part of D = dbeta_i/dq_j - dbeta_j/dq_i - dQ_i/dq'_j at q' = 0 (beta = dL/dq' at q' = 0).
-    EOMGEN_HD static void damping(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& C_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        C_(0, 0) = Scalar(0);
-        C_(0, 1) = Scalar(0);
-        C_(1, 0) = Scalar(0);
-        C_(1, 1) = Scalar(0);
-    }
-
-    /// Gyroscopic matrix about rest, G: the skew part of D (does no work).
-    EOMGEN_HD static void gyroscopic(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& G_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        G_(0, 0) = Scalar(0);
-        G_(0, 1) = Scalar(0);
-        G_(1, 0) = Scalar(0);
-        G_(1, 1) = Scalar(0);
-    }
-
     /// Constraint Jacobian A (c = A q' + b) and acceleration level A q'' = gamma.
     EOMGEN_HD static void constraints(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, ConstraintJacobian& A_, ConstraintVector& gamma_) {
         static_cast<void>(t);

@@ -12,7 +12,6 @@
 // Conserved: h (L does not depend on t explicitly)
 #pragma once
 
-#include "eomgen/analytic_jacobian.hpp"
 #include "eomgen/linear_solve.hpp"
 #include "eomgen/device.hpp"
 #include "eomgen/linearize.hpp"
@@ -238,47 +237,6 @@ struct Model {
         static_cast<void>(out_);
     }
 
-    /// Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq = 0 about an equilibrium.
-    EOMGEN_HD static void stiffness(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& K_) {
-        static_cast<void>(t);
-        using std::cos;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar M = p_.M;
-        const Scalar a = p_.a;
-        const Scalar g = p_.g;
-        const Scalar theta = q_(0);
-        const Scalar phi = q_(1);
-        const Scalar cos_theta = cos(theta);
-        const Scalar cos_phi = cos(phi);
-        K_(0, 0) = l*g*cos_theta*(Scalar(1)/Scalar(2)*m + M);
-        K_(0, 1) = Scalar(0);
-        K_(1, 0) = Scalar(0);
-        K_(1, 1) = M*a*g*cos_phi;
-    }
-
-    /// Damping about rest, C: the symmetric part of D = dbeta_i/dq_j - dbeta_j/dq_i - dQ_i/dq'_j at q' = 0 (beta = dL/dq' at q' = 0).
-    EOMGEN_HD static void damping(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& C_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        C_(0, 0) = Scalar(0);
-        C_(0, 1) = Scalar(0);
-        C_(1, 0) = Scalar(0);
-        C_(1, 1) = Scalar(0);
-    }
-
-    /// Gyroscopic matrix about rest, G: the skew part of D (does no work).
-    EOMGEN_HD static void gyroscopic(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& G_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        G_(0, 0) = Scalar(0);
-        G_(0, 1) = Scalar(0);
-        G_(1, 0) = Scalar(0);
-        G_(1, 1) = Scalar(0);
-    }
-
     /// q'' from M q'' = f by M = L D L^T, unrolled (L unit lower triangular; its entries that are zero for every q
     /// left out). The pivots D are tested as eomgen::solve_mass_matrix tests them: a singular M throws
     /// eomgen::SingularMassMatrix, a non-finite M, f or q'' eomgen::NonFiniteState, never a NaN.
@@ -312,100 +270,6 @@ struct Model {
         xdot_.template tail<nq>() = qdd_;
     }
 
-    /// R = [dr/dq, dr/dq'] of r = f - M q'' at fixed q'' (the solved accelerations): M dq''/dq = dr/dq, M dq''/dq' = dr/dq'.
-    /// R_ is nq x nx; a member template, compiled only where called.
-    template <class MatR>
-    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, MatR& R_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar M = p_.M;
-        const Scalar a = p_.a;
-        const Scalar g = p_.g;
-        const Scalar theta = q_(0);
-        const Scalar theta_dot = qd_(0);
-        const Scalar theta_ddot = qdd_(0);
-        const Scalar phi = q_(1);
-        const Scalar phi_dot = qd_(1);
-        const Scalar phi_ddot = qdd_(1);
-        const Scalar cos_theta = cos(theta);
-        const Scalar t0 = g*cos_theta;
-        const Scalar sin_phi = sin(phi);
-        const Scalar cos_phi = cos(phi);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t1 = cos_theta*sin_phi - cos_phi*sin_theta;
-        const Scalar t2 = cos_theta*cos_phi + sin_theta*sin_phi;
-        const Scalar t3 = a*(phi_ddot*t1 + (phi_dot*phi_dot)*t2);
-        const Scalar t4 = l*(theta_ddot*t1 - (theta_dot*theta_dot)*t2);
-        R_(0, 0) = -(l*(Scalar(1)/Scalar(2)*m*t0 + M*(t3 + t0)));
-        R_(0, 1) = l*M*t3;
-        R_(0, 2) = Scalar(0);
-        R_(0, 3) = Scalar(2)*l*M*a*phi_dot*t1;
-        R_(1, 0) = -(M*a*t4);
-        R_(1, 1) = M*a*(t4 - g*cos_phi);
-        R_(1, 2) = -Scalar(2)*l*M*a*theta_dot*t1;
-        R_(1, 3) = Scalar(0);
-    }
-
-    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp. Rp_ is
-    /// nq x n_params; a member template, compiled only where called.
-    template <class MatRp>
-    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, MatRp& Rp_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar m = p_.m;
-        const Scalar l = p_.l;
-        const Scalar M = p_.M;
-        const Scalar a = p_.a;
-        const Scalar g = p_.g;
-        const Scalar theta = q_(0);
-        const Scalar theta_dot = qd_(0);
-        const Scalar theta_ddot = qdd_(0);
-        const Scalar phi = q_(1);
-        const Scalar phi_dot = qd_(1);
-        const Scalar phi_ddot = qdd_(1);
-        const Scalar t0 = l*theta_ddot;
-        const Scalar sin_theta = sin(theta);
-        const Scalar t1 = g*sin_theta;
-        const Scalar cos_theta = cos(theta);
-        const Scalar cos_phi = cos(phi);
-        const Scalar sin_phi = sin(phi);
-        const Scalar t2 = cos_theta*cos_phi + sin_theta*sin_phi;
-        const Scalar t3 = cos_theta*sin_phi - cos_phi*sin_theta;
-        const Scalar t4 = phi_ddot*t2 - (phi_dot*phi_dot)*t3;
-        const Scalar t5 = a*t4;
-        const Scalar t6 = theta_ddot*t2 + (theta_dot*theta_dot)*t3;
-        const Scalar t7 = l*t6;
-        const Scalar t8 = a*phi_ddot;
-        const Scalar t9 = g*sin_phi;
-        Rp_(0, 0) = -(l*(Scalar(1)/Scalar(3)*t0 + Scalar(1)/Scalar(2)*t1));
-        Rp_(0, 1) = -(m*(Scalar(2)/Scalar(3)*t0 + Scalar(1)/Scalar(2)*t1) + M*(Scalar(2)*t0 + t5 + t1));
-        Rp_(0, 2) = -(l*(t0 + t5 + t1));
-        Rp_(0, 3) = -(l*M*t4);
-        Rp_(0, 4) = -(l*sin_theta*(Scalar(1)/Scalar(2)*m + M));
-        Rp_(1, 0) = Scalar(0);
-        Rp_(1, 1) = -(M*a*t6);
-        Rp_(1, 2) = -(a*(t7 + Scalar(3)/Scalar(2)*t8 + t9));
-        Rp_(1, 3) = -(M*(t7 + Scalar(3)*t8 + t9));
-        Rp_(1, 4) = -(M*a*sin_phi);
-    }
-
-    /// J = dx'/dx = [[0, I], [M^-1 dr/dq, M^-1 dr/dq']] at (t, x), analytic (jacobian_terms()), with one
-    /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.
-    template <class MatJ = StateJacobian>
-    static void state_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJ& J_) {
-        eomgen::analytic_state_jacobian<Model>(t, x_, p_, J_);
-    }
-
-    /// Jp = dx'/dp = [[0], [M^-1 dr/dp]] at (t, x), columns in param_names order, analytic
-    /// (parameter_jacobian_terms()), with one factorization of M. A member template: compiled only where called.
-    template <class MatJp = ParameterJacobian>
-    static void parameter_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJp& Jp_) {
-        eomgen::analytic_parameter_jacobian<Model>(t, x_, p_, Jp_);
-    }
 
     /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward
     /// differentiation through rhs (eomgen/linearize.hpp); for Scalar = double. A member template, so that

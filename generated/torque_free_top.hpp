@@ -13,7 +13,6 @@
 // Conserved: h (L does not depend on t explicitly); p_phi (phi is cyclic (∂L/∂phi = 0)); p_psi (psi is cyclic (∂L/∂psi = 0))
 #pragma once
 
-#include "eomgen/analytic_jacobian.hpp"
 #include "eomgen/linear_solve.hpp"
 #include "eomgen/device.hpp"
 #include "eomgen/linearize.hpp"
@@ -212,54 +211,6 @@ struct Model {
         static_cast<void>(out_);
     }
 
-    /// Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq = 0 about an equilibrium.
-    EOMGEN_HD static void stiffness(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& K_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        K_(0, 0) = Scalar(0);
-        K_(0, 1) = Scalar(0);
-        K_(0, 2) = Scalar(0);
-        K_(1, 0) = Scalar(0);
-        K_(1, 1) = Scalar(0);
-        K_(1, 2) = Scalar(0);
-        K_(2, 0) = Scalar(0);
-        K_(2, 1) = Scalar(0);
-        K_(2, 2) = Scalar(0);
-    }
-
-    /// Damping about rest, C: the symmetric part of D = dbeta_i/dq_j - dbeta_j/dq_i - dQ_i/dq'_j at q' = 0 (beta = dL/dq' at q' = 0).
-    EOMGEN_HD static void damping(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& C_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        C_(0, 0) = Scalar(0);
-        C_(0, 1) = Scalar(0);
-        C_(0, 2) = Scalar(0);
-        C_(1, 0) = Scalar(0);
-        C_(1, 1) = Scalar(0);
-        C_(1, 2) = Scalar(0);
-        C_(2, 0) = Scalar(0);
-        C_(2, 1) = Scalar(0);
-        C_(2, 2) = Scalar(0);
-    }
-
-    /// Gyroscopic matrix about rest, G: the skew part of D (does no work).
-    EOMGEN_HD static void gyroscopic(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& G_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        G_(0, 0) = Scalar(0);
-        G_(0, 1) = Scalar(0);
-        G_(0, 2) = Scalar(0);
-        G_(1, 0) = Scalar(0);
-        G_(1, 1) = Scalar(0);
-        G_(1, 2) = Scalar(0);
-        G_(2, 0) = Scalar(0);
-        G_(2, 1) = Scalar(0);
-        G_(2, 2) = Scalar(0);
-    }
-
     /// q'' from M q'' = f by M = L D L^T, unrolled (L unit lower triangular; its entries that are zero for every q
     /// left out). The pivots D are tested as eomgen::solve_mass_matrix tests them: a singular M throws
     /// eomgen::SingularMassMatrix, a non-finite M, f or q'' eomgen::NonFiniteState, never a NaN.
@@ -297,93 +248,6 @@ struct Model {
         xdot_.template tail<nq>() = qdd_;
     }
 
-    /// R = [dr/dq, dr/dq'] of r = f - M q'' at fixed q'' (the solved accelerations): M dq''/dq = dr/dq, M dq''/dq' = dr/dq'.
-    /// R_ is nq x nx; a member template, compiled only where called.
-    template <class MatR>
-    EOMGEN_HD static void jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, MatR& R_) {
-        static_cast<void>(t);
-        using std::cos;
-        using std::sin;
-        const Scalar I1 = p_.I1;
-        const Scalar I3 = p_.I3;
-        const Scalar phi_dot = qd_(0);
-        const Scalar phi_ddot = qdd_(0);
-        const Scalar theta = q_(1);
-        const Scalar theta_dot = qd_(1);
-        const Scalar psi_dot = qd_(2);
-        const Scalar psi_ddot = qdd_(2);
-        const Scalar cos_theta = cos(theta);
-        const Scalar t0 = I3*psi_dot;
-        const Scalar t1 = cos_theta*t0;
-        const Scalar t2 = I1 - I3;
-        const Scalar sin_theta = sin(theta);
-        const Scalar t3 = phi_dot*t2*(cos_theta*cos_theta - sin_theta*sin_theta);
-        const Scalar t4 = sin_theta*(t0 - Scalar(2)*phi_dot*cos_theta*t2);
-        const Scalar t5 = I3*theta_dot*sin_theta;
-        const Scalar t6 = I3*phi_dot*sin_theta;
-        R_(0, 0) = Scalar(0);
-        R_(0, 1) = Scalar(2)*(theta_dot*(Scalar(1)/Scalar(2)*t1 - t3) + sin_theta*(Scalar(1)/Scalar(2)*I3*psi_ddot - phi_ddot*cos_theta*t2));
-        R_(0, 2) = Scalar(0);
-        R_(0, 3) = -Scalar(2)*theta_dot*cos_theta*sin_theta*t2;
-        R_(0, 4) = t4;
-        R_(0, 5) = t5;
-        R_(1, 0) = Scalar(0);
-        R_(1, 1) = -(phi_dot*(t1 - t3));
-        R_(1, 2) = Scalar(0);
-        R_(1, 3) = -t4;
-        R_(1, 4) = Scalar(0);
-        R_(1, 5) = -t6;
-        R_(2, 0) = Scalar(0);
-        R_(2, 1) = I3*(phi_dot*theta_dot*cos_theta + phi_ddot*sin_theta);
-        R_(2, 2) = Scalar(0);
-        R_(2, 3) = t5;
-        R_(2, 4) = t6;
-        R_(2, 5) = Scalar(0);
-    }
-
-    /// Rp = dr/dp of r = f - M q'' at fixed q'', columns in param_names order: M dq''/dp = dr/dp. Rp_ is
-    /// nq x n_params; a member template, compiled only where called.
-    template <class MatRp>
-    EOMGEN_HD static void parameter_jacobian_terms(const Scalar& t, const Config& q_, const Config& qd_, const Config& qdd_, const Params& p_, MatRp& Rp_) {
-        static_cast<void>(t);
-        static_cast<void>(p_);
-        using std::cos;
-        using std::sin;
-        const Scalar phi_dot = qd_(0);
-        const Scalar phi_ddot = qdd_(0);
-        const Scalar theta = q_(1);
-        const Scalar theta_dot = qd_(1);
-        const Scalar theta_ddot = qdd_(1);
-        const Scalar psi_dot = qd_(2);
-        const Scalar psi_ddot = qdd_(2);
-        const Scalar cos_theta = cos(theta);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t0 = phi_dot*theta_dot*sin_theta;
-        const Scalar t1 = phi_ddot*cos_theta;
-        Rp_(0, 0) = Scalar(0);
-        Rp_(0, 1) = -(Scalar(2)*cos_theta*t0 - phi_ddot*(cos_theta*cos_theta - Scalar(1)));
-        Rp_(0, 2) = theta_dot*psi_dot*sin_theta - cos_theta*(psi_ddot - Scalar(2)*t0 + t1);
-        Rp_(1, 0) = Scalar(0);
-        Rp_(1, 1) = -(theta_ddot - cos_theta*sin_theta*(phi_dot*phi_dot));
-        Rp_(1, 2) = -(phi_dot*sin_theta*(psi_dot + phi_dot*cos_theta));
-        Rp_(2, 0) = Scalar(0);
-        Rp_(2, 1) = Scalar(0);
-        Rp_(2, 2) = -(psi_ddot - t0 + t1);
-    }
-
-    /// J = dx'/dx = [[0, I], [M^-1 dr/dq, M^-1 dr/dq']] at (t, x), analytic (jacobian_terms()), with one
-    /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.
-    template <class MatJ = StateJacobian>
-    static void state_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJ& J_) {
-        eomgen::analytic_state_jacobian<Model>(t, x_, p_, J_);
-    }
-
-    /// Jp = dx'/dp = [[0], [M^-1 dr/dp]] at (t, x), columns in param_names order, analytic
-    /// (parameter_jacobian_terms()), with one factorization of M. A member template: compiled only where called.
-    template <class MatJp = ParameterJacobian>
-    static void parameter_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJp& Jp_) {
-        eomgen::analytic_parameter_jacobian<Model>(t, x_, p_, Jp_);
-    }
 
     /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward
     /// differentiation through rhs (eomgen/linearize.hpp); for Scalar = double. A member template, so that

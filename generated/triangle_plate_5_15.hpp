@@ -238,54 +238,6 @@ struct Model {
         static_cast<void>(out_);
     }
 
-    /// Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq = 0 about an equilibrium.
-    EOMGEN_HD static void stiffness(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& K_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        K_(0, 0) = Scalar(0);
-        K_(0, 1) = Scalar(0);
-        K_(0, 2) = Scalar(0);
-        K_(1, 0) = Scalar(0);
-        K_(1, 1) = Scalar(0);
-        K_(1, 2) = Scalar(0);
-        K_(2, 0) = Scalar(0);
-        K_(2, 1) = Scalar(0);
-        K_(2, 2) = Scalar(0);
-    }
-
-    /// Damping about rest, C: the symmetric part of D = dbeta_i/dq_j - dbeta_j/dq_i - dQ_i/dq'_j at q' = 0 (beta = dL/dq' at q' = 0).
-    EOMGEN_HD static void damping(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& C_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        C_(0, 0) = Scalar(0);
-        C_(0, 1) = Scalar(0);
-        C_(0, 2) = Scalar(0);
-        C_(1, 0) = Scalar(0);
-        C_(1, 1) = Scalar(0);
-        C_(1, 2) = Scalar(0);
-        C_(2, 0) = Scalar(0);
-        C_(2, 1) = Scalar(0);
-        C_(2, 2) = Scalar(0);
-    }
-
-    /// Gyroscopic matrix about rest, G: the skew part of D (does no work).
-    EOMGEN_HD static void gyroscopic(const Scalar& t, const Config& q_, const Params& p_, MassMatrix& G_) {
-        static_cast<void>(t);
-        static_cast<void>(q_);
-        static_cast<void>(p_);
-        G_(0, 0) = Scalar(0);
-        G_(0, 1) = Scalar(0);
-        G_(0, 2) = Scalar(0);
-        G_(1, 0) = Scalar(0);
-        G_(1, 1) = Scalar(0);
-        G_(1, 2) = Scalar(0);
-        G_(2, 0) = Scalar(0);
-        G_(2, 1) = Scalar(0);
-        G_(2, 2) = Scalar(0);
-    }
-
     /// q'' from M q'' = f by M = L D L^T, unrolled (L unit lower triangular; its entries that are zero for every q
     /// left out). The pivots D are tested as eomgen::solve_mass_matrix tests them: a singular M throws
     /// eomgen::SingularMassMatrix, a non-finite M, f or q'' eomgen::NonFiniteState, never a NaN.

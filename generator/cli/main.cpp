@@ -5,6 +5,7 @@
 #include "cli/report_command.hpp"
 #include "cli/run_command.hpp"
 #include "codegen/cpp_emitter.hpp"
+#include "codegen/generation_timings.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "mechanics/trig_rewrite.hpp"
@@ -20,6 +21,7 @@
 #include <ginac/version.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -52,8 +54,22 @@ void write_atomically(const std::filesystem::path& path, const std::string& text
     }
 }
 
+/// `--with` of generate: the optional functions asked for on the command line, added to each model's [generate].
+struct WithFunctions {
+    bool jacobians = false, stiffness = false;
+};
+
+WithFunctions parse_with(const std::vector<std::string>& items) {
+    WithFunctions w;
+    for (const std::string& item : items) {
+        if (item == "jacobians" || item == "all") w.jacobians = true;
+        if (item == "stiffness" || item == "all") w.stiffness = true;
+    }
+    return w;
+}
+
 int generate(const std::vector<std::string>& models, const std::vector<std::string>& families,
-             const std::string& out_dir, const std::string& name) {
+             const std::string& out_dir, const std::string& name, const WithFunctions& with, bool timings) {
     // Derive everything first: one bad model writes nothing at all.
     std::vector<std::pair<std::filesystem::path, std::string>> outputs;
     std::vector<std::string> sources = models;
@@ -66,10 +82,20 @@ int generate(const std::vector<std::string>& models, const std::vector<std::stri
                                                            path)
                                      : eomgen::load_model(path);
         if (!name.empty()) model.name = name;
+        // Analytic Jacobians are for unconstrained models: asked for on the command line for several models, the
+        // constrained ones go without (eomgen::model_jacobian differentiates them by forward AD) and say so.
+        model.generate.stiffness = model.generate.stiffness || with.stiffness;
+        if (with.jacobians && !model.constraints.empty())
+            std::cerr << path << ": note: --with jacobians: none for a model with constraints (forward AD through rhs())\n";
+        model.generate.jacobians = model.generate.jacobians || (with.jacobians && model.constraints.empty());
+        eomgen::codegen::GenerationTimings phases;
+        const auto start = std::chrono::steady_clock::now();
         const eomgen::Equations eq = eomgen::derive_equations(model);
+        phases.add("derive", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         for (const std::string& w : eq.warnings) std::cerr << path << ": warning: " << w << "\n";
-        const std::string header =
-            eomgen::codegen::emit_model_header(model, eq, std::filesystem::path(path).filename().string());
+        const std::string header = eomgen::codegen::emit_model_header(
+            model, eq, std::filesystem::path(path).filename().string(), timings ? &phases : nullptr);
+        if (timings) std::cerr << phases.table(path);
         outputs.emplace_back(std::filesystem::path(out_dir) / (model.name + ".hpp"), header);
     }
     std::error_code ec;
@@ -263,6 +289,15 @@ int main(int argc, char** argv) {
     gen->add_option("-o,--output", out_dir, "Output directory")->capture_default_str();
     std::string gen_name;
     gen->add_option("--name", gen_name, "Model name (namespace, file name) instead of the file's; one model only");
+    std::vector<std::string> gen_with;
+    gen->add_option("--with", gen_with,
+                    "Optional functions besides the model files' [generate]: jacobians (analytic state_jacobian() and "
+                    "parameter_jacobian(), unconstrained models), stiffness (K, C, G about rest), all")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"jacobians", "stiffness", "all"}));
+    bool gen_timings = false;
+    gen->add_flag("--timings", gen_timings,
+                  "Print each phase's time and the peak memory so far on stderr (derive, each function's CSE and emission)");
 
     std::string show_model;
     bool latex = false;
@@ -313,7 +348,7 @@ int main(int argc, char** argv) {
                 std::cerr << "eomgen generate: --name " << gen_name << ": " << eomgen::name_problem(gen_name) << "\n";
                 return kExitUsage;
             }
-            return generate(gen_models, gen_families, out_dir, gen_name);
+            return generate(gen_models, gen_families, out_dir, gen_name, parse_with(gen_with), gen_timings);
         }
         if (*show) {
             if (standalone && !latex) {

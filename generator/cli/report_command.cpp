@@ -1,5 +1,6 @@
 /** @file report_command.cpp  `eomgen report`: model, equations, a simulation with its drift, checked derivations. */
 #include "cli/report_command.hpp"
+#include "table_driver.hpp"  // the driver for TableModel, compiled once
 
 #include "checker/checker.hpp"
 #include "checker/derivation.hpp"
@@ -423,7 +424,12 @@ int ReportCommand::run() {
     if (!no_simulation_) {
         try {
             CompileRequest request{text, model.name,
-                                   [&] { return codegen::emit_model_header(model, eq, fs::path(model_path_).filename().string()); },
+                                   [&] {
+                                       Model with = model;  // radau5: the analytic J where there are no constraints
+                                       with.generate.jacobians = with.generate.jacobians ||
+                                                                 (options_.method == "radau5" && with.constraints.empty());
+                                       return codegen::emit_model_header(with, eq, fs::path(model_path_).filename().string());
+                                   },
                                    !no_cache_, progress};
             request.jacobian = options_.method == "radau5";
             const CompiledModel compiled = compile_model(request);

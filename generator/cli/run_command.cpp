@@ -1,5 +1,6 @@
 /** @file run_command.cpp  `eomgen run`: model file → equations → compiled code → trajectory, CSV, plot. */
 #include "cli/run_command.hpp"
+#include "table_driver.hpp"  // the driver for TableModel, compiled once
 
 #include "cli/compiled_model.hpp"
 #include "cli/ensemble_command.hpp"
@@ -159,7 +160,10 @@ int RunCommand::run_model() {
         progress("deriving " + model_path_);
         const Equations eq = derive_equations(model);
         for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
-        return codegen::emit_model_header(model, eq, fs::path(model_path_).filename().string());
+        // radau5 asks for J = dx'/dx: the header's analytic one where the model has no constraints.
+        Model with = model;
+        with.generate.jacobians = with.generate.jacobians || (options_.method == "radau5" && with.constraints.empty());
+        return codegen::emit_model_header(with, eq, fs::path(model_path_).filename().string());
     };
     CompileRequest request{text, model.name, header, !no_cache_, progress};
     request.jacobian = options_.method == "radau5";

@@ -315,7 +315,9 @@ std::string double_literal(double v) {
 
 }  // namespace
 
-std::string emit_model_header(const Model& model, const Equations& eq, const std::string& model_file) {
+std::string emit_model_header(const Model& model, const Equations& eq, const std::string& model_file,
+                              GenerationTimings* timings) {
+    PhaseClock clock(timings);
     const SymbolTable table = symbol_table(model);
     MathPrinter printer(table);
     const std::size_t n = model.dof();
@@ -363,9 +365,15 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
                                      (o.unit.empty() ? "" : "  [" + o.unit + "]"));
     os << "\n#pragma once\n\n";
     // A tree of point masses in T gets an O(n) rhs() (codegen/tree_emitter.hpp); every other model solves M.
+    clock.lap("comments (T, V, equations)");
     const std::optional<std::string> tree_rhs = emit_tree_rhs(model, eq, table);
-    os << (eq.constraints.empty() ? "#include \"eomgen/analytic_jacobian.hpp\"\n#include \"eomgen/linear_solve.hpp\"\n"
-                                  : "#include \"eomgen/constraints.hpp\"\n");
+    clock.lap(tree_rhs ? "tree of point masses: rhs()" : "tree of point masses: none");
+    // The optional functions ([generate], `eomgen generate --with`): analytic Jacobians of unconstrained models
+    // (the model file refuses them with constraints), K, C and G about rest.
+    const bool jacobians = model.generate.jacobians && eq.constraints.empty();
+    const bool rest_matrices = model.generate.stiffness;
+    if (jacobians) os << "#include \"eomgen/analytic_jacobian.hpp\"\n";
+    os << (eq.constraints.empty() ? "#include \"eomgen/linear_solve.hpp\"\n" : "#include \"eomgen/constraints.hpp\"\n");
     if (tree_rhs) os << "#include \"eomgen/particle_tree.hpp\"\n";
     os << "#include \"eomgen/device.hpp\"\n#include \"eomgen/linearize.hpp\"\n\n";
     os << "#include <Eigen/Core>\n\n#include <array>\n#include <cmath>\n#include <string_view>\n#include <type_traits>\n\n";
@@ -502,13 +510,14 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     both.insert(both.end(), force.begin(), force.end());
     // About rest (q' = 0): K = d(dV_eff/dq - Q)/dq, and D's symmetric (damping) and skew (gyroscopic) parts.
     std::vector<Output> stiff, damp, gyro;
-    {
+    if (rest_matrices) {
         std::vector<GiNaC::symbol> qs, qds;
         for (const Coordinate& c : model.coordinates) {
             qs.push_back(c.q);
             qds.push_back(c.qd);
         }
         const RestLinearization lin = linearize_about_rest(eq.L, eq.generalized_forces, qs, qds);
+        clock.lap("stiffness: linearize about rest");
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = 0; j < n; ++j) {
                 stiff.push_back({fmt::format("K_({}, {})", i, j), lin.K[i][j]});
@@ -543,15 +552,19 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
          {{"Conserved", "out_"}}, cons, conserved_calls},
         {"Declared outputs ([outputs] of the model file), in the order of output_names.", "void", "outputs",
          {t_in, q_in, qd_in, p_in}, {{"Outputs", "out_"}}, recorded},
-        {"Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq "
-         "= 0 about an equilibrium.",
-         "void", "stiffness", {t_in, q_in, p_in}, {{"MassMatrix", "K_"}}, stiff},
-        {"Damping about rest, C: the symmetric part of D = dbeta_i/dq_j - dbeta_j/dq_i - dQ_i/dq'_j at q' = 0 "
-         "(beta = dL/dq' at q' = 0).",
-         "void", "damping", {t_in, q_in, p_in}, {{"MassMatrix", "C_"}}, damp},
-        {"Gyroscopic matrix about rest, G: the skew part of D (does no work).", "void", "gyroscopic", {t_in, q_in, p_in},
-         {{"MassMatrix", "G_"}}, gyro},
     };
+    if (rest_matrices) {
+        const std::vector<FunctionSpec> rest = {
+            {"Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq "
+             "= 0 about an equilibrium.",
+             "void", "stiffness", {t_in, q_in, p_in}, {{"MassMatrix", "K_"}}, stiff},
+            {"Damping about rest, C: the symmetric part of D = dbeta_i/dq_j - dbeta_j/dq_i - dQ_i/dq'_j at q' = 0 "
+             "(beta = dL/dq' at q' = 0).",
+             "void", "damping", {t_in, q_in, p_in}, {{"MassMatrix", "C_"}}, damp},
+            {"Gyroscopic matrix about rest, G: the skew part of D (does no work).", "void", "gyroscopic", {t_in, q_in, p_in},
+             {{"MassMatrix", "G_"}}, gyro}};
+        functions.insert(functions.end(), rest.begin(), rest.end());
+    }
     if (nc > 0) {
         std::vector<Output> jac_gamma, residuals, all = both;
         for (std::size_t k = 0; k < nc; ++k) {
@@ -575,11 +588,15 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
                              "constrained_dynamics", {t_in, q_in, qd_in, p_in},
                              {{"MassMatrix", "M_"}, {"Config", "f_"}, A_out, gamma_out, pos_out, vel_out}, all});
     }
-    for (const FunctionSpec& f : functions) os << emit_function(f, table) << "\n";
+    for (const FunctionSpec& f : functions) {
+        os << emit_function(f, table) << "\n";
+        clock.lap("function " + f.name + "()");
+    }
 
     if (nc == 0 && tree_rhs) {
         os << *tree_rhs;
-        os << emit_analytic_jacobian(model, eq, table);
+        if (jacobians) os << emit_analytic_jacobian(model, eq, table);
+        clock.lap(jacobians ? "jacobians: terms and emission" : "rhs()");
     } else if (nc == 0) {
         const bool unrolled = n <= kUnrolledSolveMaxN;
         if (unrolled) {
@@ -597,7 +614,8 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         os << (unrolled ? "        Config qdd_;\n        solve_for_accelerations(t, x_, M_, f_, qdd_);\n"
                         : "        Config qdd_;\n        eomgen::solve_mass_matrix(M_, f_, qdd_, t, x_);\n");
         os << "        xdot_.template head<nq>() = qd_;\n        xdot_.template tail<nq>() = qdd_;\n    }\n\n";
-        os << emit_analytic_jacobian(model, eq, table);
+        if (jacobians) os << emit_analytic_jacobian(model, eq, table);
+        clock.lap(jacobians ? "jacobians: terms and emission" : "rhs()");
     } else {
         os << "    /// q'' and the multipliers lambda of M q'' = f + A^T lambda, A q'' = gamma - 2 alpha c - beta^2 g,\n"
               "    /// by a Schur complement on M's Cholesky factor (eomgen::solve_constrained). lambda_k is the\n"
@@ -629,6 +647,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "        static_assert(std::is_same_v<Scalar, double>, \"linearization() is for Model<double>\");\n";
     os << "        eomgen::linearize<Model>(t, x_, p_, A_, B_);\n    }\n";
     os << "};\n\n}  // namespace eomgen::models::" << model.name << "\n";
+    clock.lap("the rest of the header");
     return os.str();
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "codegen/expr_dag.hpp"
+#include "codegen/generation_timings.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model.hpp"
 
@@ -61,8 +62,10 @@ struct FunctionSpec {
 std::string emit_function(const FunctionSpec& f, const SymbolTable& table);
 
 /// The whole generated header for a model (see docs/generated_code.md). Deterministic: the same model
-/// gives the same bytes in every process. `model_file` is the name printed in the header.
-std::string emit_model_header(const Model& model, const Equations& eq, const std::string& model_file);
+/// gives the same bytes in every process. `model_file` is the name printed in the header. The optional functions
+/// are those model.generate asks for. With `timings`, each phase's time and peak memory is added to it.
+std::string emit_model_header(const Model& model, const Equations& eq, const std::string& model_file,
+                              GenerationTimings* timings = nullptr);
 
 /// Shortest round-trip decimal for a double, as generated code and docs print defaults.
 std::string shortest_decimal(double v);

@@ -153,6 +153,18 @@ struct Motion {
     SourceLocation where;  ///< of the name
 };
 
+/// [generate]: the optional functions a generated header holds. The default header holds what integrating and
+/// checking need (M, f, the energies, momenta, conserved quantities, outputs, constraints, linearization() by
+/// forward differentiation); these cost generation time that grows fast with the number of coordinates
+/// (docs/benchmarks.md, section 9), so a model file or a command (`eomgen generate --with`) asks for them.
+struct GenerateRequest {
+    /// state_jacobian() and parameter_jacobian() from the symbolic equations (unconstrained models only; the
+    /// runtime differentiates any model by forward AD where a header has none: eomgen::model_jacobian).
+    bool jacobians = false;
+    /// stiffness(), damping() and gyroscopic(): K, C and G about rest (mechanics/rest_linearization.hpp).
+    bool stiffness = false;
+};
+
 struct Model {
     std::string name;         ///< identifier: namespace of the generated code, file name
     std::string title;        ///< human title
@@ -174,6 +186,7 @@ struct Model {
     std::vector<Result> results;                 ///< [[results]]: declared closed forms
     std::vector<DeclaredOutput> outputs;         ///< [outputs]: quantities recorded beside the state, in file order
     std::vector<Motion> motions;                 ///< [[motions]]: particular motions, for `eomgen check`
+    GenerateRequest generate;                    ///< [generate]: optional functions of the header
 
     /// Baumgarte stabilisation of the constraints, A q̈ = γ − 2α(A q̇ + b) − β² g (0, 0: none).
     double baumgarte_alpha = 0.0;

@@ -269,7 +269,7 @@ class Loader {
         check_keys(root,
                    {"name", "title", "source", "description", "coordinates", "parameters", "lagrangian",
                     "constraints", "forces", "stabilization", "bodies", "gravity", "springs", "results",
-                    "outputs", "motions"},
+                    "outputs", "motions", "generate"},
                    "at the top level");
 
         std::vector<Declaration> declarations;
@@ -354,6 +354,7 @@ class Loader {
         read_constraints(constraints, symbols, model);
         read_forces(root, symbols, model);
         read_stabilization(root, model);
+        read_generate(root, model);
         read_results(results, symbols, model);
         read_outputs(outputs, symbols, model);
         read_motions(motions, symbols, model);
@@ -1045,6 +1046,30 @@ class Loader {
         for (const char* key : {"alpha", "beta"})
             if (const toml::node* n = table->get(key); n && constant(*table, key, none, 0.0) < 0)
                 fail(src_.at(*n), std::string("'") + key + "' must not be negative");
+    }
+
+    /// [generate]: jacobians, stiffness (true or false, default false): the header's optional functions.
+    void read_generate(const toml::table& root, Model& model) const {
+        const toml::node* node = root.get("generate");
+        if (!node) return;
+        const toml::table* table = node->as_table();
+        if (!table)
+            fail(src_.at(*node), "'generate' must be a table with jacobians and stiffness (true or false), not " +
+                                     type_name(*node));
+        check_keys(*table, {"jacobians", "stiffness"}, "in [generate]");
+        auto flag = [&](const char* key, bool& out) {
+            const toml::node* n = table->get(key);
+            if (!n) return;
+            const auto* b = n->as_boolean();
+            if (!b) fail(src_.at(*n), std::string("'") + key + "' must be true or false, not " + type_name(*n));
+            out = b->get();
+        };
+        flag("jacobians", model.generate.jacobians);
+        flag("stiffness", model.generate.stiffness);
+        if (model.generate.jacobians && !model.constraints.empty())
+            fail(src_.at(*table->get("jacobians")),
+                 "'jacobians = true' is for unconstrained models: a model with [[constraints]] is differentiated by "
+                 "forward AD through its rhs() (eomgen::model_jacobian), which needs no generated Jacobian");
     }
 
     SourceText src_;
