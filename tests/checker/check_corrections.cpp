@@ -141,7 +141,7 @@ TEST_CASE("corrections check themselves: the seed's reports", "[checker][correct
     const char* env = std::getenv("EOMGEN_SEED");
     const std::string seed = env ? env : kSource + "/../shared/seed/000_e6b9f63eaa50a64e.txt";
     if (!std::filesystem::exists(seed)) {
-        WARN("seed text " << seed << " not found: skipped");
+        WARN("seed text " << seed << " not found [skipped]");
         return;
     }
     // The entries of tests/checker/CMakeLists.txt (cli:check_report_*).

@@ -217,7 +217,7 @@ std::string seed_path() {
 
 TEST_CASE("seed: every display equation of the whole text is parsed or given a reason", "[checker][parser]") {
     if (!std::filesystem::exists(seed_path())) {
-        WARN("seed text not found at " << seed_path() << " (set EOMGEN_SEED); skipped");
+        WARN("seed text not found at " << seed_path() << " (set EOMGEN_SEED) [skipped]");
         return;
     }
     const eomgen::checker::Derivation d = eomgen::checker::read_derivation(seed_path());
@@ -241,14 +241,15 @@ TEST_CASE("seed: every display equation of the whole text is parsed or given a r
                 }
             }
     }
-    CHECK(display_rows > 80);
-    CHECK(parsed > sides / 2);
+    // Measured: 109 display rows, 237 of 286 sides parsed (83 %). A fall below 80 % is a regression of the parser.
+    CHECK(display_rows >= 109);
+    CHECK(parsed * 100 >= sides * 80);
     WARN("seed: " << display_rows << " display rows, " << sides << " sides, " << parsed << " parsed");
 }
 
 TEST_CASE("seed: the slips of 5-20 and Ex. 30 are found", "[checker]") {
     if (!std::filesystem::exists(seed_path())) {
-        WARN("seed text not found at " << seed_path() << " (set EOMGEN_SEED); skipped");
+        WARN("seed text not found at " << seed_path() << " (set EOMGEN_SEED) [skipped]");
         return;
     }
     auto with_map = [](const std::string& section, const std::string& map) {

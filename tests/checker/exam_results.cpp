@@ -205,7 +205,7 @@ TEST_CASE("seed: the slips of 5-6, 5-15, 5-17, 5-18 and Ex. 25 are found where t
     const char* env = std::getenv("EOMGEN_SEED");
     const std::string seed = env && *env ? env : kSource + "/../shared/seed/000_e6b9f63eaa50a64e.txt";
     if (!std::filesystem::exists(seed)) {
-        WARN("seed text not found at " << seed << " (set EOMGEN_SEED); skipped");
+        WARN("seed text not found at " << seed << " (set EOMGEN_SEED) [skipped]");
         return;
     }
     struct Case {
