@@ -157,19 +157,21 @@ struct Model {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
-    /// Generalized momenta p = dL/dq'.
+    /// Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q').
     EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         using std::sin;
         const Scalar m = p_.m;
         const Scalar l = p_.l;
         const Scalar theta = q_(0);
-        const Scalar theta_dot = qd_(0);
-        const Scalar phi_dot = qd_(1);
-        const Scalar t0 = l*l;
+        MassMatrix M_;
+        const Scalar t0 = m*(l*l);
         const Scalar sin_theta = sin(theta);
-        out_(0) = m*theta_dot*t0;
-        out_(1) = m*phi_dot*t0*(sin_theta*sin_theta);
+        M_(0, 0) = t0;
+        M_(0, 1) = Scalar(0);
+        M_(1, 0) = Scalar(0);
+        M_(1, 1) = (sin_theta*sin_theta)*t0;
+        out_.noalias() = M_ * qd_;
     }
 
     /// dL/dq.

@@ -158,14 +158,15 @@ struct Model {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
-    /// Generalized momenta p = dL/dq'.
+    /// Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q').
     EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         static_cast<void>(q_);
         const Scalar m = p_.m;
         const Scalar w = p_.w;
-        const Scalar psi_dot = qd_(0);
-        out_(0) = Scalar(1)/Scalar(3)*m*psi_dot*(w*w);
+        MassMatrix M_;
+        M_(0, 0) = Scalar(1)/Scalar(3)*m*(w*w);
+        out_.noalias() = M_ * qd_;
     }
 
     /// dL/dq.

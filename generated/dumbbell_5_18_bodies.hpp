@@ -160,19 +160,21 @@ struct Model {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
-    /// Generalized momenta p = dL/dq'.
+    /// Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q').
     EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         using std::sin;
         const Scalar m = p_.m;
         const Scalar l = p_.l;
         const Scalar alpha = q_(0);
-        const Scalar alpha_dot = qd_(0);
-        const Scalar beta_dot = qd_(1);
-        const Scalar t0 = l*l;
+        MassMatrix M_;
+        const Scalar t0 = m*(l*l);
         const Scalar sin_alpha = sin(alpha);
-        out_(0) = Scalar(2)*m*alpha_dot*t0;
-        out_(1) = Scalar(2)*m*beta_dot*t0*(sin_alpha*sin_alpha);
+        M_(0, 0) = Scalar(2)*t0;
+        M_(0, 1) = Scalar(0);
+        M_(1, 0) = Scalar(0);
+        M_(1, 1) = Scalar(2)*(sin_alpha*sin_alpha)*t0;
+        out_.noalias() = M_ * qd_;
     }
 
     /// dL/dq.

@@ -178,7 +178,7 @@ struct Model {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
-    /// Generalized momenta p = dL/dq'.
+    /// Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q').
     EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         using std::cos;
@@ -187,16 +187,22 @@ struct Model {
         const Scalar l = p_.l;
         const Scalar I1 = p_.I1;
         const Scalar I3 = p_.I3;
-        const Scalar phi_dot = qd_(0);
         const Scalar theta = q_(1);
-        const Scalar theta_dot = qd_(1);
-        const Scalar psi_dot = qd_(2);
-        const Scalar cos_theta = cos(theta);
+        MassMatrix M_;
         const Scalar sin_theta = sin(theta);
         const Scalar t0 = I1 + M*(l*l);
-        out_(0) = I3*psi_dot*cos_theta + phi_dot*(I3 + (sin_theta*sin_theta)*(-I3 + t0));
-        out_(1) = theta_dot*t0;
-        out_(2) = I3*(psi_dot + phi_dot*cos_theta);
+        const Scalar cos_theta = cos(theta);
+        const Scalar t1 = I3*cos_theta;
+        M_(0, 0) = I3 + (sin_theta*sin_theta)*(-I3 + t0);
+        M_(0, 1) = Scalar(0);
+        M_(0, 2) = t1;
+        M_(1, 0) = Scalar(0);
+        M_(1, 1) = t0;
+        M_(1, 2) = Scalar(0);
+        M_(2, 0) = t1;
+        M_(2, 1) = Scalar(0);
+        M_(2, 2) = I3;
+        out_.noalias() = M_ * qd_;
     }
 
     /// dL/dq.

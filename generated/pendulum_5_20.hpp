@@ -118,17 +118,19 @@ struct Model {
         const Scalar theta_dot = qd_(0);
         const Scalar phi = q_(1);
         const Scalar phi_dot = qd_(1);
-        const Scalar t0 = theta - phi;
-        const Scalar t1 = l*M*a*cos(t0);
-        const Scalar sin_theta = sin(theta);
-        const Scalar t2 = sin(t0);
+        const Scalar t0 = l*M*a*cos(theta - phi);
+        const Scalar t1 = phi_dot*phi_dot;
+        const Scalar cos_theta = cos(theta);
         const Scalar sin_phi = sin(phi);
+        const Scalar t2 = cos_theta*sin_phi;
+        const Scalar sin_theta = sin(theta);
+        const Scalar cos_phi = cos(phi);
         M_(0, 0) = (l*l)*(Scalar(1)/Scalar(3)*m + M);
-        M_(0, 1) = t1;
-        M_(1, 0) = t1;
+        M_(0, 1) = t0;
+        M_(1, 0) = t0;
         M_(1, 1) = Scalar(3)/Scalar(2)*M*(a*a);
-        f_(0) = -(Scalar(1)/Scalar(2)*m*l*g*sin_theta + l*M*a*t2*(phi_dot*phi_dot) + l*M*g*sin_theta);
-        f_(1) = l*M*a*t2*(theta_dot*theta_dot) - M*a*g*sin_phi;
+        f_(0) = l*(M*a*t1*t2 - sin_theta*(Scalar(1)/Scalar(2)*m*g + M*(g + a*cos_phi*t1)));
+        f_(1) = -(M*a*(l*(theta_dot*theta_dot)*(t2 - cos_phi*sin_theta) + g*sin_phi));
     }
 
     /// Kinetic energy T.
@@ -173,7 +175,7 @@ struct Model {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
-    /// Generalized momenta p = dL/dq'.
+    /// Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q').
     EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         using std::cos;
@@ -182,13 +184,14 @@ struct Model {
         const Scalar M = p_.M;
         const Scalar a = p_.a;
         const Scalar theta = q_(0);
-        const Scalar theta_dot = qd_(0);
         const Scalar phi = q_(1);
-        const Scalar phi_dot = qd_(1);
-        const Scalar t0 = cos(theta - phi);
-        const Scalar t1 = a*phi_dot;
-        out_(0) = l*(l*theta_dot*(Scalar(1)/Scalar(3)*m + M) + M*t0*t1);
-        out_(1) = M*a*(l*theta_dot*t0 + Scalar(3)/Scalar(2)*t1);
+        MassMatrix M_;
+        const Scalar t0 = l*M*a*cos(theta - phi);
+        M_(0, 0) = (l*l)*(Scalar(1)/Scalar(3)*m + M);
+        M_(0, 1) = t0;
+        M_(1, 0) = t0;
+        M_(1, 1) = Scalar(3)/Scalar(2)*M*(a*a);
+        out_.noalias() = M_ * qd_;
     }
 
     /// dL/dq.

@@ -176,7 +176,7 @@ struct Model {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
-    /// Generalized momenta p = dL/dq'.
+    /// Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q').
     EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         using std::cos;
@@ -186,18 +186,18 @@ struct Model {
         const Scalar M = p_.M;
         const Scalar a = p_.a;
         const Scalar theta = q_(0);
-        const Scalar theta_dot = qd_(0);
         const Scalar phi = q_(1);
-        const Scalar phi_dot = qd_(1);
-        const Scalar t0 = l*theta_dot;
-        const Scalar t1 = a*phi_dot;
+        MassMatrix M_;
         const Scalar cos_theta = cos(theta);
         const Scalar cos_phi = cos(phi);
         const Scalar sin_theta = sin(theta);
         const Scalar sin_phi = sin(phi);
-        const Scalar t2 = cos_theta*cos_phi + sin_theta*sin_phi;
-        out_(0) = l*(Scalar(1)/Scalar(3)*m*t0 + M*(t0 + t1*t2));
-        out_(1) = M*a*(t0*t2 + Scalar(3)/Scalar(2)*t1);
+        const Scalar t0 = l*M*a*(cos_theta*cos_phi + sin_theta*sin_phi);
+        M_(0, 0) = (l*l)*(Scalar(1)/Scalar(3)*m + M);
+        M_(0, 1) = t0;
+        M_(1, 0) = t0;
+        M_(1, 1) = Scalar(3)/Scalar(2)*M*(a*a);
+        out_.noalias() = M_ * qd_;
     }
 
     /// dL/dq.

@@ -149,15 +149,17 @@ struct Model {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
-    /// Generalized momenta p = dL/dq'.
+    /// Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q').
     EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         static_cast<void>(q_);
         const Scalar m = p_.m;
-        const Scalar x_dot = qd_(0);
-        const Scalar y_dot = qd_(1);
-        out_(0) = m*x_dot;
-        out_(1) = m*y_dot;
+        MassMatrix M_;
+        M_(0, 0) = m;
+        M_(0, 1) = Scalar(0);
+        M_(1, 0) = Scalar(0);
+        M_(1, 1) = m;
+        out_.noalias() = M_ * qd_;
     }
 
     /// dL/dq.

@@ -189,7 +189,7 @@ struct Model {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
-    /// Generalized momenta p = dL/dq'.
+    /// Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q').
     EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         using std::cos;
@@ -198,18 +198,25 @@ struct Model {
         const Scalar M = p_.M;
         const Scalar h = p_.h;
         const Scalar alpha = p_.alpha;
-        const Scalar phi_dot = qd_(0);
         const Scalar theta = q_(1);
-        const Scalar theta_dot = qd_(1);
-        const Scalar psi_dot = qd_(2);
+        MassMatrix M_;
         const Scalar t0 = h*h;
         const Scalar t1 = tan(alpha);
         const Scalar t2 = t1*t1;
         const Scalar sin_theta = sin(theta);
         const Scalar cos_theta = cos(theta);
-        out_(0) = Scalar(3)/Scalar(10)*M*t0*(phi_dot*(t2 - (sin_theta*sin_theta)*(Scalar(1)/Scalar(2)*t2 - Scalar(2))) + psi_dot*cos_theta*t2);
-        out_(1) = M*theta_dot*t0*(Scalar(3)/Scalar(20)*t2 + Scalar(3)/Scalar(5));
-        out_(2) = Scalar(3)/Scalar(10)*M*t0*t2*(psi_dot + phi_dot*cos_theta);
+        const Scalar t3 = M*t0*t2;
+        const Scalar t4 = cos_theta*t3;
+        M_(0, 0) = M*t0*(Scalar(3)/Scalar(10)*t2 - (sin_theta*sin_theta)*(Scalar(3)/Scalar(20)*t2 - Scalar(3)/Scalar(5)));
+        M_(0, 1) = Scalar(0);
+        M_(0, 2) = Scalar(3)/Scalar(10)*t4;
+        M_(1, 0) = Scalar(0);
+        M_(1, 1) = M*t0*(Scalar(3)/Scalar(20)*t2 + Scalar(3)/Scalar(5));
+        M_(1, 2) = Scalar(0);
+        M_(2, 0) = Scalar(3)/Scalar(10)*t4;
+        M_(2, 1) = Scalar(0);
+        M_(2, 2) = Scalar(3)/Scalar(10)*t3;
+        out_.noalias() = M_ * qd_;
     }
 
     /// dL/dq.

@@ -213,30 +213,52 @@ struct Model {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
-    /// Generalized momenta p = dL/dq'.
+    /// Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q').
     EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         using std::cos;
         using std::sin;
         const Scalar m = p_.m;
         const Scalar R = p_.R;
-        const Scalar x_dot = qd_(0);
-        const Scalar y_dot = qd_(1);
         const Scalar phi = q_(2);
-        const Scalar phi_dot = qd_(2);
         const Scalar theta = q_(3);
-        const Scalar theta_dot = qd_(3);
-        const Scalar psi_dot = qd_(4);
+        MassMatrix M_;
         const Scalar cos_phi = cos(phi);
         const Scalar sin_theta = sin(theta);
-        const Scalar t0 = phi_dot*sin_theta;
+        const Scalar t0 = m*R*cos_phi*sin_theta;
         const Scalar cos_theta = cos(theta);
         const Scalar sin_phi = sin(phi);
-        out_(0) = m*(x_dot + R*(cos_phi*t0 + theta_dot*cos_theta*sin_phi));
-        out_(1) = m*(y_dot + R*(sin_phi*t0 - theta_dot*cos_phi*cos_theta));
-        out_(2) = m*R*(Scalar(1)/Scalar(4)*R*phi_dot*(cos_theta*cos_theta) - sin_theta*(R*(Scalar(1)/Scalar(2)*psi_dot - Scalar(3)/Scalar(2)*t0) - x_dot*cos_phi - y_dot*sin_phi));
-        out_(3) = m*R*(Scalar(5)/Scalar(4)*R*theta_dot + cos_theta*(x_dot*sin_phi - y_dot*cos_phi));
-        out_(4) = Scalar(1)/Scalar(2)*m*(R*R)*(psi_dot - t0);
+        const Scalar t1 = m*R*cos_theta*sin_phi;
+        const Scalar t2 = m*R*sin_phi*sin_theta;
+        const Scalar t3 = m*R*cos_phi*cos_theta;
+        const Scalar t4 = m*(R*R);
+        const Scalar t5 = sin_theta*t4;
+        M_(0, 0) = m;
+        M_(0, 1) = Scalar(0);
+        M_(0, 2) = t0;
+        M_(0, 3) = t1;
+        M_(0, 4) = Scalar(0);
+        M_(1, 0) = Scalar(0);
+        M_(1, 1) = m;
+        M_(1, 2) = t2;
+        M_(1, 3) = -t3;
+        M_(1, 4) = Scalar(0);
+        M_(2, 0) = t0;
+        M_(2, 1) = t2;
+        M_(2, 2) = t4*(Scalar(1)/Scalar(4)*cos_theta*cos_theta + Scalar(3)/Scalar(2)*sin_theta*sin_theta);
+        M_(2, 3) = Scalar(0);
+        M_(2, 4) = -Scalar(1)/Scalar(2)*t5;
+        M_(3, 0) = t1;
+        M_(3, 1) = -t3;
+        M_(3, 2) = Scalar(0);
+        M_(3, 3) = Scalar(5)/Scalar(4)*t4;
+        M_(3, 4) = Scalar(0);
+        M_(4, 0) = Scalar(0);
+        M_(4, 1) = Scalar(0);
+        M_(4, 2) = -Scalar(1)/Scalar(2)*t5;
+        M_(4, 3) = Scalar(0);
+        M_(4, 4) = Scalar(1)/Scalar(2)*t4;
+        out_.noalias() = M_ * qd_;
     }
 
     /// dL/dq.

@@ -189,24 +189,42 @@ struct Model {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
-    /// Generalized momenta p = dL/dq'.
+    /// Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q').
     EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         using std::cos;
         const Scalar m = p_.m;
         const Scalar I = p_.I;
-        const Scalar x_dot = qd_(0);
-        const Scalar y_dot = qd_(1);
         const Scalar theta = q_(2);
-        const Scalar theta_dot = qd_(2);
-        const Scalar phi_dot = qd_(3);
-        const Scalar psi_dot = qd_(4);
+        MassMatrix M_;
         const Scalar cos_theta = cos(theta);
-        out_(0) = m*x_dot;
-        out_(1) = m*y_dot;
-        out_(2) = I*theta_dot;
-        out_(3) = I*(phi_dot + psi_dot*cos_theta);
-        out_(4) = I*(psi_dot + phi_dot*cos_theta);
+        const Scalar t0 = I*cos_theta;
+        M_(0, 0) = m;
+        M_(0, 1) = Scalar(0);
+        M_(0, 2) = Scalar(0);
+        M_(0, 3) = Scalar(0);
+        M_(0, 4) = Scalar(0);
+        M_(1, 0) = Scalar(0);
+        M_(1, 1) = m;
+        M_(1, 2) = Scalar(0);
+        M_(1, 3) = Scalar(0);
+        M_(1, 4) = Scalar(0);
+        M_(2, 0) = Scalar(0);
+        M_(2, 1) = Scalar(0);
+        M_(2, 2) = I;
+        M_(2, 3) = Scalar(0);
+        M_(2, 4) = Scalar(0);
+        M_(3, 0) = Scalar(0);
+        M_(3, 1) = Scalar(0);
+        M_(3, 2) = Scalar(0);
+        M_(3, 3) = I;
+        M_(3, 4) = t0;
+        M_(4, 0) = Scalar(0);
+        M_(4, 1) = Scalar(0);
+        M_(4, 2) = Scalar(0);
+        M_(4, 3) = t0;
+        M_(4, 4) = I;
+        out_.noalias() = M_ * qd_;
     }
 
     /// dL/dq.

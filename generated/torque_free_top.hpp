@@ -160,20 +160,26 @@ struct Model {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
-    /// Generalized momenta p = dL/dq'.
+    /// Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q').
     EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         using std::cos;
         const Scalar I1 = p_.I1;
         const Scalar I3 = p_.I3;
-        const Scalar phi_dot = qd_(0);
         const Scalar theta = q_(1);
-        const Scalar theta_dot = qd_(1);
-        const Scalar psi_dot = qd_(2);
+        MassMatrix M_;
         const Scalar cos_theta = cos(theta);
-        out_(0) = I3*psi_dot*cos_theta + phi_dot*(I1 - (cos_theta*cos_theta)*(I1 - I3));
-        out_(1) = I1*theta_dot;
-        out_(2) = I3*(psi_dot + phi_dot*cos_theta);
+        const Scalar t0 = I3*cos_theta;
+        M_(0, 0) = I1 - (cos_theta*cos_theta)*(I1 - I3);
+        M_(0, 1) = Scalar(0);
+        M_(0, 2) = t0;
+        M_(1, 0) = Scalar(0);
+        M_(1, 1) = I1;
+        M_(1, 2) = Scalar(0);
+        M_(2, 0) = t0;
+        M_(2, 1) = Scalar(0);
+        M_(2, 2) = I3;
+        out_.noalias() = M_ * qd_;
     }
 
     /// dL/dq.

@@ -172,28 +172,34 @@ struct Model {
         return kinetic_energy(t, q_, qd_, p_) + potential_energy(t, q_, qd_, p_);
     }
 
-    /// Generalized momenta p = dL/dq'.
+    /// Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q').
     EOMGEN_HD static void momenta(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_, Config& out_) {
         static_cast<void>(t);
         using std::cos;
         using std::sin;
         const Scalar M = p_.M;
         const Scalar a = p_.a;
-        const Scalar phi_dot = qd_(0);
         const Scalar theta = q_(1);
-        const Scalar theta_dot = qd_(1);
         const Scalar psi = q_(2);
-        const Scalar psi_dot = qd_(2);
-        const Scalar t0 = a*a;
-        const Scalar cos_theta = cos(theta);
+        MassMatrix M_;
+        const Scalar t0 = M*(a*a);
         const Scalar sin_theta = sin(theta);
         const Scalar cos_psi = cos(psi);
         const Scalar sin_psi = sin(psi);
-        const Scalar t1 = cos_psi*sin_psi + Scalar(1);
-        const Scalar t2 = sin_psi*sin_psi - Scalar(1)/Scalar(2);
-        out_(0) = Scalar(1)/Scalar(6)*M*t0*(Scalar(2)*phi_dot + Scalar(2)*psi_dot*cos_theta - sin_theta*(phi_dot*sin_theta*t1 - theta_dot*t2));
-        out_(1) = Scalar(1)/Scalar(6)*M*t0*(phi_dot*sin_theta*t2 + theta_dot*t1);
-        out_(2) = Scalar(1)/Scalar(3)*M*t0*(psi_dot + phi_dot*cos_theta);
+        const Scalar t1 = cos_psi*sin_psi;
+        const Scalar t2 = sin_theta*t0*(Scalar(1)/Scalar(6)*sin_psi*sin_psi - Scalar(1)/Scalar(12));
+        const Scalar cos_theta = cos(theta);
+        const Scalar t3 = cos_theta*t0;
+        M_(0, 0) = -Scalar(1)/Scalar(6)*t0*((sin_theta*sin_theta)*(t1 + Scalar(1)) - Scalar(2));
+        M_(0, 1) = t2;
+        M_(0, 2) = Scalar(1)/Scalar(3)*t3;
+        M_(1, 0) = t2;
+        M_(1, 1) = t0*(Scalar(1)/Scalar(6)*t1 + Scalar(1)/Scalar(6));
+        M_(1, 2) = Scalar(0);
+        M_(2, 0) = Scalar(1)/Scalar(3)*t3;
+        M_(2, 1) = Scalar(0);
+        M_(2, 2) = Scalar(1)/Scalar(3)*t0;
+        out_.noalias() = M_ * qd_;
     }
 
     /// dL/dq.

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <functional>
 #include <set>
 #include <sstream>
@@ -282,19 +283,32 @@ std::string emit_function(const FunctionSpec& f, const SymbolTable& table) {
         read.insert(src.substr(0, src.find_first_of("(.")));
         locals.push_back("const Scalar " + info.name + " = " + src + ";");
     }
+    // A name the lines after the body use is used (momenta()'s M_ * qd_).
+    auto used_after = [&f](const std::string& name) {
+        auto word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+        for (const std::string& l : f.after)
+            for (std::size_t at = l.find(name); at != std::string::npos; at = l.find(name, at + 1))
+                if ((at == 0 || !word_char(l[at - 1])) &&
+                    (at + name.size() == l.size() || !word_char(l[at + name.size()])))
+                    return true;
+        return false;
+    };
     for (const auto& [type, name] : f.inputs)
-        if (!read.count(name)) os << "        static_cast<void>(" << name << ");\n";
+        if (!read.count(name) && !used_after(name)) os << "        static_cast<void>(" << name << ");\n";
     // An output with nothing to hold (e.g. no conserved quantity) is still a parameter.
     for (const auto& output : f.outputs) {
         const std::string& name = output.second;  // not a structured binding: C++17 lambdas cannot capture one
         if (std::none_of(f.values.begin(), f.values.end(),
-                         [&](const Output& o) { return o.target.rfind(name + "(", 0) == 0; }))
+                         [&](const Output& o) { return o.target.rfind(name + "(", 0) == 0; }) &&
+            !used_after(name))
             os << "        static_cast<void>(" << name << ");\n";
     }
     // using-declarations so that overloads for long double (and other scalars, by ADL) are found.
     for (const std::string& fn : body.functions) os << "        using std::" << fn << ";\n";
     for (const std::string& l : locals) os << "        " << l << "\n";
+    for (const std::string& l : f.before) os << "        " << l << "\n";
     for (const std::string& l : body.lines) os << "        " << l << "\n";
+    for (const std::string& l : f.after) os << "        " << l << "\n";
     os << "    }\n";
     return os.str();
 }
@@ -478,6 +492,18 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     for (const Coordinate& c : model.coordinates) natural = natural && !eq.V.has(c.qd);
     for (std::size_t i = 0; i < n && natural; ++i)
         natural = eq.momenta[i].subs(at_rest, GiNaC::subs_options::no_pattern).expand().is_zero();
+    // With T homogeneous quadratic in q̇ and V free of q̇, p = M q̇ (Euler's theorem): momenta() from M's entries,
+    // whose code is short, instead of the expanded p_i (the n-link pendulum's p_i has O(n²) terms; their CSE was
+    // as long as that of M and f at n = 60).
+    std::vector<std::string> momenta_before, momenta_after;
+    if (natural) {
+        momenta.clear();
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < n; ++j)
+                momenta.push_back({fmt::format("M_({}, {})", i, j), eq.M(static_cast<unsigned>(i), static_cast<unsigned>(j))});
+        momenta_before = {"MassMatrix M_;"};
+        momenta_after = {"out_.noalias() = M_ * qd_;"};
+    }
     const std::string args = "t, q_, qd_, p_";
     std::vector<std::string> lagrangian_call, energy_call, conserved_calls;
     if ((eq.L - (eq.T - eq.V)).is_zero())
@@ -546,7 +572,10 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         {natural ? "Energy function h = sum q' dL/dq' - L, here T + V (T quadratic in q', V free of q')."
                  : "Energy function h = sum q' dL/dq' - L.",
          "Scalar", "energy", {t_in, q_in, qd_in, p_in}, {}, {{"return", eq.energy}}, energy_call},
-        {"Generalized momenta p = dL/dq'.", "void", "momenta", {t_in, q_in, qd_in, p_in}, {{"Config", "out_"}}, momenta},
+        {natural ? "Generalized momenta p = dL/dq', here M q' (T quadratic in q', V free of q')."
+                 : "Generalized momenta p = dL/dq'.",
+         "void", "momenta", {t_in, q_in, qd_in, p_in}, {{"Config", "out_"}}, momenta, {}, {}, momenta_before,
+         momenta_after},
         {"dL/dq.", "void", "lagrangian_gradient", {t_in, q_in, qd_in, p_in}, {{"Config", "out_"}}, grad},
         {"Conserved quantities, in the order of conserved_names.", "void", "conserved", {t_in, q_in, qd_in, p_in},
          {{"Conserved", "out_"}}, cons, conserved_calls},

@@ -56,6 +56,8 @@ struct FunctionSpec {
     std::vector<Output> values;
     std::vector<std::string> delegate = {};  ///< when not empty: the whole body, calling another function
     std::string template_head = {};          ///< e.g. "template <class MatR>": a member template, compiled where called
+    std::vector<std::string> before = {};    ///< lines before the CSE'd assignments (locals that `values` assign)
+    std::vector<std::string> after = {};     ///< lines after them (e.g. a product of those locals)
 };
 
 /// The function as a member of the generated Model (4-space indented, EOMGEN_HD), its values CSE'd together.

@@ -950,21 +950,29 @@ NodeId ExprDag::rewrite_shared(NodeId id, std::unordered_map<NodeId, NodeId>& do
         std::unordered_map<NodeId, std::size_t> where;
         for (std::size_t i = 0; i < n.args.size(); ++i) where.emplace(n.args[i], i);
         std::vector<std::pair<NodeId, GiNaC::numeric>> parts;  // (sub-node, multiplier or exponent)
+        // hits[c]: how many of our unused terms (factors) candidate c holds, counted once and then decremented as
+        // terms are used, rather than recounted for every part taken (the same choices, byte-identical headers).
+        // Only a candidate holding all of its terms among ours can be taken, and the count only falls: those are
+        // kept.
+        std::unordered_map<NodeId, int> hits;
+        for (std::size_t i = 0; i < n.args.size(); ++i) {
+            auto h = holders.find(n.args[i]);
+            if (h == holders.end()) continue;
+            for (NodeId cand : h->second)
+                if (cand != id && node(cand).op == n.op) ++hits[cand];
+        }
+        std::vector<NodeId> whole;
+        for (const auto& [cand, k] : hits) {
+            const Node& c = node(cand);
+            if (static_cast<std::size_t>(k) == c.args.size() && c.args.size() < n.args.size()) whole.push_back(cand);
+        }
         for (;;) {
-            std::unordered_map<NodeId, int> hits;
-            for (std::size_t i = 0; i < n.args.size(); ++i) {
-                if (used[i]) continue;
-                auto h = holders.find(n.args[i]);
-                if (h == holders.end()) continue;
-                for (NodeId cand : h->second)
-                    if (cand != id && node(cand).op == n.op) ++hits[cand];
-            }
             NodeId best = kOne;
             GiNaC::numeric best_factor;
             std::size_t best_size = 1;
-            for (const auto& [cand, k] : hits) {
+            for (NodeId cand : whole) {
                 const Node& c = node(cand);
-                if (static_cast<std::size_t>(k) != c.args.size() || c.args.size() >= n.args.size()) continue;
+                if (static_cast<std::size_t>(hits.at(cand)) != c.args.size()) continue;
                 if (c.args.size() < best_size) continue;
                 if (c.args.size() == best_size && best != kOne && position.at(cand) > position.at(best)) continue;
                 GiNaC::numeric factor = n.op == Op::Add ? n.coeffs[where.at(c.args[0])] / c.coeffs[0] : 1;
@@ -979,7 +987,11 @@ NodeId ExprDag::rewrite_shared(NodeId id, std::unordered_map<NodeId, NodeId>& do
                 best_size = c.args.size();
             }
             if (best == kOne) break;
-            for (NodeId a : node(best).args) used[where.at(a)] = true;
+            for (NodeId a : node(best).args) {
+                used[where.at(a)] = true;
+                for (NodeId cand : holders.at(a))
+                    if (cand != id && node(cand).op == n.op) --hits[cand];
+            }
             parts.emplace_back(best, best_factor);
         }
         if (!parts.empty()) {
