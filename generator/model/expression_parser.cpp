@@ -502,8 +502,9 @@ class Parser {
             throw ExpressionError(
                 name.offset, "unknown function '" + id + "'" + did_you_mean(id, expression_function_names()));
         }
+        // The spellings people use for a velocity: x_dot, xdot, x_d, dx (the model language writes x' or dot(x)).
         for (const auto& c : symbols_.velocities) {
-            if (id == c.first + "_dot")
+            if (id == c.first + "_dot" || id == c.first + "dot" || id == c.first + "_d" || id == "d" + c.first)
                 throw ExpressionError(name.offset, "unknown symbol '" + id + "': write " + c.first +
                                                        "' or dot(" + c.first + ") for the velocity of " +
                                                        c.first);

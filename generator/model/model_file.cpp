@@ -260,7 +260,7 @@ class Loader {
         try {
             root = toml::parse(src_.text(), std::string_view(path_));
         } catch (const toml::parse_error& e) {
-            throw ModelError(src_.at(e.source().begin), "invalid TOML: " + std::string(e.description()));
+            throw ModelError(src_.at(e.source().begin), "invalid TOML: " + toml_problem(e));
         }
 
         Model model;
@@ -390,6 +390,20 @@ class Loader {
         return src_.at_offset(map[std::min(offset, map.size() - 1)]);
     }
 
+    /// toml++'s description, or what a person did where it describes the symptom: a string left open at the end
+    /// of its line is "unescaped control characters" to toml++ (the line break inside the string).
+    std::string toml_problem(const toml::parse_error& e) const {
+        const std::string description(e.description());
+        const toml::source_position at = e.source().begin;
+        if (description.find("control character") != std::string::npos && at.line >= 1) {
+            const std::size_t offset = src_.offset_of(at);
+            if (offset < src_.text().size() && (src_.text()[offset] == '\n' || src_.text()[offset] == '\r'))
+                return "a string is not closed on its line (end it with its quote; text of several lines goes in "
+                       "\"\"\"...\"\"\" or '''...''')";
+        }
+        return description;
+    }
+
     void check_keys(const toml::table& table, std::vector<std::string> allowed,
                     const std::string& context) const {
         for (auto&& [key, node] : table) {
@@ -397,7 +411,18 @@ class Loader {
             if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
             const std::string best = closest_name(k, allowed);
             std::string message = "unknown key '" + k + "' " + context;
-            if (!best.empty()) {
+            // Sections people look for at the top level that are keys of another table.
+            static const std::vector<std::pair<std::string, std::string>> elsewhere = {
+                {"dissipation", "the Rayleigh dissipation function is R under [lagrangian] (R = \"...\")"},
+                {"rayleigh", "the Rayleigh dissipation function is R under [lagrangian] (R = \"...\")"},
+                {"R", "the Rayleigh dissipation function goes under [lagrangian]"},
+                {"T", "T goes under [lagrangian]"},
+                {"V", "V goes under [lagrangian]"},
+                {"L", "write T and V under [lagrangian] (L = T - V)"}};
+            const auto hint = std::find_if(elsewhere.begin(), elsewhere.end(), [&](const auto& h) { return h.first == k; });
+            if (context == "at the top level" && hint != elsewhere.end()) {
+                message += ": " + hint->second;
+            } else if (!best.empty()) {
                 message += "; did you mean '" + best + "'?";
             } else {
                 message += " (expected one of:";
@@ -519,7 +544,8 @@ class Loader {
             const std::string what =
                 first.kind == "model" ? "the model's name" : "the name of " + with_article(first.kind);
             const std::string already = first.where.line == 0
-                                            ? what + " (taken from the file name)"
+                                            ? what + " (taken from the file name, as no name = \"...\" is given: add one "
+                                                     "to keep '" + d.name + "' for " + with_article(d.kind) + ")"
                                             : what + " on line " + std::to_string(first.where.line);
             fail(d.where, "duplicate name '" + d.name + "': already " + already);
         }

@@ -483,8 +483,10 @@ int run(const Options& o) {
     const auto events = until_events<M>(o);
 
     std::cout.precision(15);
-    std::cout << "model:   " << M::name << " (" << M::title << (std::string(M::source).empty() ? "" : "; ")
-              << M::source << ")\n";
+    // "model:   door (Closing tilted door; Goldstein ch. 5, Ex. 30)", with no empty parentheses when untitled.
+    const std::string title = M::title, source = M::source;
+    const std::string about = title + (!title.empty() && !source.empty() ? "; " : "") + source;
+    std::cout << "model:   " << M::name << (about.empty() ? "" : " (" + about + ")") << "\n";
     std::cout << "params: ";
     const auto values = M::param_values(params);
     for (std::size_t i = 0; i < values.size(); ++i) std::cout << " " << M::param_names[i] << "=" << values[i];
@@ -521,6 +523,10 @@ int run_reporting(const Options& o, const char* program) {
     } catch (const OutputError& e) {
         std::cerr << program << ": " << e.what() << "\n";
         return kExitOutput;
+    } catch (const eomgen::InconsistentInitialConditions& e) {
+        std::cerr << program << ": simulation failed: " << e.what()
+                  << "\n  (give a state on the constraints with --init, or --project-initial to project this one onto them)\n";
+        return kExitSimulation;
     } catch (const eomgen::SimulationError& e) {
         std::cerr << program << ": simulation failed: " << e.what() << "\n";
         return kExitSimulation;
