@@ -91,6 +91,8 @@ def machine(cfg):
         "python": platform.python_version(),
         "sympy": sh(f"{sys.executable} -c 'import sympy; print(sympy.__version__)'"),
         "load": os.getloadavg(),
+        "commit": sh(f"git -C {ROOT} rev-parse --short HEAD")
+        + (" (with uncommitted changes)" if sh(f"git -C {ROOT} status --porcelain --untracked-files=no -- generator runtime") not in ("", "?") else ""),
     }
 
 
@@ -845,7 +847,8 @@ def render(results, work, out_md, out_png):
 def render_scale(results, out_md):
     """Writes section 9 (generation at scale) between its own markers."""
     m = results["machine"]
-    line = (f"Machine: {m['cpu']}, {m['cores']} cores; {m['compiler']}; GiNaC {m['ginac']}; SymPy {m['sympy']}. "
+    line = (f"eomgen at commit {m.get('commit', '?')}. "
+            f"Machine: {m['cpu']}, {m['cores']} cores; {m['compiler']}; GiNaC {m['ginac']}; SymPy {m['sympy']}. "
             f"Load average (1 min) {m['load'][0]:.2f} at the start, {m.get('load_end', m['load'])[0]:.2f} at the end.")
     splice(out_md, BEGIN_SCALE, END_SCALE, scale.render(results["scale"], results["command"], results["date"], line))
     log(f"wrote section 9 of {out_md}")
