@@ -21,7 +21,6 @@
 #include <ginac/version.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -89,9 +88,9 @@ int generate(const std::vector<std::string>& models, const std::vector<std::stri
             std::cerr << path << ": note: --with jacobians: none for a model with constraints (forward AD through rhs())\n";
         model.generate.jacobians = model.generate.jacobians || (with.jacobians && model.constraints.empty());
         eomgen::codegen::GenerationTimings phases;
-        const auto start = std::chrono::steady_clock::now();
+        eomgen::codegen::PhaseClock clock(timings ? &phases : nullptr);
         const eomgen::Equations eq = eomgen::derive_equations(model);
-        phases.add("derive", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        clock.lap("derive");
         for (const std::string& w : eq.warnings) std::cerr << path << ": warning: " << w << "\n";
         const std::string header = eomgen::codegen::emit_model_header(
             model, eq, std::filesystem::path(path).filename().string(), timings ? &phases : nullptr);
