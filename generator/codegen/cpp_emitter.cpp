@@ -386,7 +386,8 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     // (the model file refuses them with constraints), K, C and G about rest.
     const bool jacobians = model.generate.jacobians && eq.constraints.empty();
     const bool rest_matrices = model.generate.stiffness;
-    if (jacobians) os << "#include \"eomgen/analytic_jacobian.hpp\"\n";
+    // A tree's Jacobians differentiate its recursion (model_jacobian.hpp); any other model's are symbolic.
+    if (jacobians) os << (tree_rhs ? "#include \"eomgen/model_jacobian.hpp\"\n" : "#include \"eomgen/analytic_jacobian.hpp\"\n");
     os << (eq.constraints.empty() ? "#include \"eomgen/linear_solve.hpp\"\n" : "#include \"eomgen/constraints.hpp\"\n");
     if (tree_rhs) os << "#include \"eomgen/particle_tree.hpp\"\n";
     os << "#include \"eomgen/device.hpp\"\n#include \"eomgen/linearize.hpp\"\n\n";
@@ -624,8 +625,8 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
 
     if (nc == 0 && tree_rhs) {
         os << *tree_rhs;
-        if (jacobians) os << emit_analytic_jacobian(model, eq, table);
-        clock.lap(jacobians ? "jacobians: terms and emission" : "rhs()");
+        if (jacobians) os << emit_recursion_jacobian();
+        clock.lap(jacobians ? "jacobians: through the recursion" : "rhs()");
     } else if (nc == 0) {
         const bool unrolled = n <= kUnrolledSolveMaxN;
         if (unrolled) {

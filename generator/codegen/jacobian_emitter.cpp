@@ -59,4 +59,23 @@ std::string emit_analytic_jacobian(const Model& model, const Equations& eq, cons
     return os.str();
 }
 
+std::string emit_recursion_jacobian() {
+    return "    /// J = dx'/dx at (t, x) by forward differentiation through rhs(), the tree's O(n) recursion\n"
+           "    /// (eomgen::state_jacobian); exact to round-off; for Model<double>. A member template: compiled only where\n"
+           "    /// called. A singular M throws as in rhs().\n"
+           "    template <class MatJ = StateJacobian>\n"
+           "    static void state_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJ& J_) {\n"
+           "        static_assert(std::is_same_v<Scalar, double>, \"state_jacobian() of a tree is for Model<double>\");\n"
+           "        eomgen::state_jacobian<Model>(t, x_, p_, J_);\n"
+           "    }\n\n"
+           "    /// Jp = dx'/dp at (t, x), columns in param_names order, by forward differentiation through rhs()\n"
+           "    /// (eomgen::linearize); for Model<double>. A member template: compiled only where called.\n"
+           "    template <class MatJp = ParameterJacobian>\n"
+           "    static void parameter_jacobian(const Scalar& t, const State& x_, const Params& p_, MatJp& Jp_) {\n"
+           "        static_assert(std::is_same_v<Scalar, double>, \"parameter_jacobian() of a tree is for Model<double>\");\n"
+           "        StateJacobian A_;\n"
+           "        eomgen::linearize<Model>(t, x_, p_, A_, Jp_);\n"
+           "    }\n\n";
+}
+
 }  // namespace eomgen::codegen

@@ -1,7 +1,6 @@
 /** @file check_tree_rhs.cpp  A header whose rhs() is the O(n) recursion of a tree of point masses (the 14-link
  * chain, codegen/tree_emitter.hpp) against the same header's dense M and f, in double and long double; its
- * linearization (forward differentiation through that rhs) against the analytic Jacobian from M and f; and its
- * failures. */
+ * Jacobians (forward differentiation through that rhs) against central differences of it; and its failures. */
 #include "../approx.hpp"
 
 #include "eomgen/models/pendulum_14.hpp"
@@ -9,6 +8,7 @@
 #include <Eigen/LU>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -57,21 +57,50 @@ TEST_CASE("tree rhs: the 14-link chain's recursion equals its dense M^-1 f, in d
     check_against_dense<long double>(1e-15);
 }
 
-TEST_CASE("tree rhs: linearization through the recursion equals the analytic Jacobian from M and f", "[generated]") {
+TEST_CASE("tree rhs: state_jacobian() and parameter_jacobian() through the recursion equal central differences of rhs",
+          "[generated]") {
+    // The tree's Jacobians are forward differentiation through its O(n) recursion (codegen/jacobian_emitter.hpp):
+    // checked against central differences of the same rhs in x and in p, which share no code with the AD.
     using M = Chain<double>;
     std::mt19937 rng(3);
     for (int trial = 0; trial < 5; ++trial) {
         M::State x;
         M::Params p;
         random_state<double>(rng, x, p);
-        M::StateJacobian analytic, A;
-        Eigen::Matrix<double, M::nx, M::n_params> B;
-        M::state_jacobian(0.0, x, p, analytic);
+        M::StateJacobian J;
+        M::ParameterJacobian Jp;
+        M::state_jacobian(0.0, x, p, J);
+        M::parameter_jacobian(0.0, x, p, Jp);
+        M::StateJacobian J_fd;
+        M::ParameterJacobian Jp_fd;
+        for (int k = 0; k < M::nx; ++k) {
+            const double h = 1e-6 * std::max(1.0, std::abs(x(k)));
+            M::State up = x, down = x, f_up, f_down;
+            up(k) += h;
+            down(k) -= h;
+            M::rhs(0.0, up, p, f_up);
+            M::rhs(0.0, down, p, f_down);
+            J_fd.col(k) = (f_up - f_down) / (2 * h);
+        }
+        const auto values = M::param_values(p);
+        for (int j = 0; j < M::n_params; ++j) {
+            const double h = 1e-6 * std::max(1.0, std::abs(values[std::size_t(j)]));
+            M::Params up = p, down = p;
+            REQUIRE(M::set_param(up, M::param_names[std::size_t(j)], values[std::size_t(j)] + h));
+            REQUIRE(M::set_param(down, M::param_names[std::size_t(j)], values[std::size_t(j)] - h));
+            M::State f_up, f_down;
+            M::rhs(0.0, x, up, f_up);
+            M::rhs(0.0, x, down, f_down);
+            Jp_fd.col(j) = (f_up - f_down) / (2 * h);
+        }
+        REQUIRE_THAT(Eigen::MatrixXd(J), AllClose(Eigen::MatrixXd(J_fd), 1e-5, 1e-6 * J_fd.cwiseAbs().maxCoeff()));
+        REQUIRE_THAT(Eigen::MatrixXd(Jp), AllClose(Eigen::MatrixXd(Jp_fd), 1e-5, 1e-6 * Jp_fd.cwiseAbs().maxCoeff()));
+        // And linearization(), the same differentiation seeded with x and p together.
+        M::StateJacobian A;
+        M::ParameterJacobian B;
         M::linearization(0.0, x, p, A, B);
-        REQUIRE_THAT(Eigen::MatrixXd(A), AllClose(Eigen::MatrixXd(analytic), 1e-10, 1e-10 * analytic.cwiseAbs().maxCoeff()));
-        M::ParameterJacobian dp;
-        M::parameter_jacobian(0.0, x, p, dp);
-        REQUIRE_THAT(Eigen::MatrixXd(B), AllClose(Eigen::MatrixXd(dp), 1e-10, 1e-10 * dp.cwiseAbs().maxCoeff()));
+        REQUIRE_THAT(Eigen::MatrixXd(A), AllClose(Eigen::MatrixXd(J), 1e-13, 1e-13 * J.cwiseAbs().maxCoeff()));
+        REQUIRE_THAT(Eigen::MatrixXd(B), AllClose(Eigen::MatrixXd(Jp), 1e-13, 1e-13 * Jp.cwiseAbs().maxCoeff()));
     }
 }
 
