@@ -425,10 +425,8 @@ int ReportCommand::run() {
         try {
             CompileRequest request{text, model.name,
                                    [&] {
-                                       Model with = model;  // radau5: the analytic J where there are no constraints
-                                       with.generate.jacobians = with.generate.jacobians ||
-                                                                 (options_.method == "radau5" && with.constraints.empty());
-                                       return codegen::emit_model_header(with, eq, fs::path(model_path_).filename().string());
+                                       return header_to_compile(model, eq, fs::path(model_path_).filename().string(),
+                                                                options_.method == "radau5");
                                    },
                                    !no_cache_, progress};
             request.jacobian = options_.method == "radau5";

@@ -68,6 +68,12 @@ PlotRequest default_plot(const Model& model, const std::string& csv, const std::
     return p;
 }
 
+std::string header_to_compile(const Model& model, const Equations& eq, const std::string& file_name, bool jacobian) {
+    Model with = model;
+    with.generate.jacobians = with.generate.jacobians || (jacobian && with.constraints.empty());
+    return codegen::emit_model_header(with, eq, file_name);
+}
+
 RunCommand::RunCommand(CLI::App& app) {
     run_ = app.add_subcommand("run", "Derive, compile (cached) and integrate any model file; CSV and plot");
     run_->add_option("model", model_path_, "Model file (.toml)")->required()->check(CLI::ExistingFile);
@@ -160,10 +166,7 @@ int RunCommand::run_model() {
         progress("deriving " + model_path_);
         const Equations eq = derive_equations(model);
         for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
-        // radau5 asks for J = dx'/dx: the header's analytic one where the model has no constraints.
-        Model with = model;
-        with.generate.jacobians = with.generate.jacobians || (options_.method == "radau5" && with.constraints.empty());
-        return codegen::emit_model_header(with, eq, fs::path(model_path_).filename().string());
+        return header_to_compile(model, eq, fs::path(model_path_).filename().string(), options_.method == "radau5");
     };
     CompileRequest request{text, model.name, header, !no_cache_, progress};
     request.jacobian = options_.method == "radau5";

@@ -4,6 +4,7 @@
 #include "cli/ensemble_design.hpp"
 #include "cli/plot.hpp"
 #include "eomgen/simulation.hpp"
+#include "mechanics/lagrangian.hpp"
 #include "model/model.hpp"
 
 #include <string>
@@ -55,5 +56,9 @@ class RunCommand {
     unsigned threads_ = 0;
     std::string out_;
 };
+
+/// The header `eomgen run` and `eomgen report` compile: the model's, with its analytic Jacobians where the
+/// integration needs J (`jacobian`: --method radau5) and the model has no constraints (which have none).
+std::string header_to_compile(const Model& model, const Equations& eq, const std::string& file_name, bool jacobian);
 
 }  // namespace eomgen::cli
