@@ -88,7 +88,7 @@ std::string format_text(const Model& model, const ModesResult& r, Printer& p) {
         for (const std::string& c : r.constraints) os << " " << c << " = 0;";
         os << " the modes are those of the motion on them\n";
     }
-    if (r.equilibria.empty()) os << "\nno equilibrium found\n";
+    if (r.equilibria.empty()) os << "\nno equilibrium\n";
     for (std::size_t k = 0; k < r.equilibria.size(); ++k) {
         const Equilibrium& e = r.equilibria[k];
         os << "\nequilibrium " << k + 1 << ":";

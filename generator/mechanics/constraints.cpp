@@ -1,6 +1,8 @@
 /** @file constraints.cpp  Constraints at position, velocity and acceleration level; Frobenius on Pfaffian forms. */
 #include "mechanics/constraints.hpp"
 
+#include "mechanics/time_dependence.hpp"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -49,6 +51,61 @@ double magnitude(const Form& f) {
 struct PointForms {
     Form omega, d_omega;
 };
+
+/// As many independent constraints as coordinates, none of them moving with t, leave no motion: every q is
+/// held still and nothing is derived. (Moving ones prescribe the motion, and their multipliers are the forces
+/// the drive must supply: the dumbbell of Goldstein's Exercise 5-18 turned about a tilted axis.)
+void check_freedom_left(const Model& model, const std::vector<ConstraintEquations>& out) {
+    const std::size_t n = model.dof();
+    if (out.size() < n) return;  // redundant rows were refused before: out.size() is the rank
+    if (std::any_of(out.begin(), out.end(), [&](const ConstraintEquations& c) {
+            return !is_zero(c.bias, model) || depends_on_time(c.position, model) || depends_on_time(c.velocity, model);
+        }))
+        return;
+    std::string names, coordinates;
+    for (const ConstraintEquations& c : out) names += (names.empty() ? "" : ", ") + c.name;
+    for (const Coordinate& c : model.coordinates) coordinates += (coordinates.empty() ? "" : ", ") + c.name;
+    const std::string what = n == 1 ? "the constraint " + names + " on the only coordinate (" + coordinates + ") leaves"
+                                    : std::to_string(n) + " independent constraints (" + names + ") on " +
+                                          std::to_string(n) + " coordinates (" + coordinates + ") leave";
+    throw ModelError(model.constraints.back().where,
+                     what + " no motion: every coordinate is fixed, and there is nothing to integrate (remove a "
+                            "constraint, or add a coordinate)");
+}
+
+/// Constraints that are independent at generic q can be dependent at the model's initial state (two surfaces
+/// that touch there): the multipliers are not determined, and a run cannot start.
+void check_initial_rank(const Model& model, const std::vector<ConstraintEquations>& out) {
+    GiNaC::exmap at;
+    std::ostringstream state;
+    for (const Coordinate& c : model.coordinates) {
+        at[c.q] = GiNaC::numeric(c.initial);
+        at[c.qd] = GiNaC::numeric(c.rate);
+        state << (state.tellp() > 0 ? ", " : "") << c.name << " = " << c.initial;
+    }
+    for (const Parameter& p : model.parameters) at[p.symbol] = GiNaC::numeric(p.value);
+    at[model.t] = 0;
+    const auto n = static_cast<Eigen::Index>(model.dof());
+    Eigen::MatrixXd A(static_cast<Eigen::Index>(out.size()), n);
+    for (std::size_t k = 0; k < out.size(); ++k)
+        for (Eigen::Index i = 0; i < n; ++i) A(Eigen::Index(k), i) = number(out[k].jacobian[std::size_t(i)], at);
+    if (!A.allFinite()) return;  // a singular configuration: derive_equations warns of those
+    const double scale = std::max(1.0, A.cwiseAbs().maxCoeff());
+    for (Eigen::Index k = 0; k < A.rows(); ++k) {
+        Eigen::JacobiSVD<Eigen::MatrixXd> svd(A.topRows(k + 1));
+        const Eigen::VectorXd s = svd.singularValues();
+        if (s(s.size() - 1) > 1e-10 * scale) continue;
+        const std::string& name = out[std::size_t(k)].name;
+        throw ModelError(model.constraints[std::size_t(k)].where,
+                         k == 0 ? "constraint '" + name + "' has a zero gradient at the initial state (" + state.str() +
+                                      "): its multiplier is not determined there, and a run cannot start; give "
+                                      "initial values where it is regular"
+                                : "constraint '" + name + "' is dependent on the constraints before it at the initial "
+                                  "state (" + state.str() + "): their gradients are not independent there, so the "
+                                  "multipliers are not determined and a run cannot start; give initial values where "
+                                  "they are independent");
+    }
+}
 
 }  // namespace
 
@@ -116,6 +173,8 @@ std::vector<ConstraintEquations> derive_constraints(const Model& model) {
                 throw ModelError(model.constraints[k].where,
                                  "constraint '" + out[k].name + "' is redundant: its Jacobian row is a combination of "
                                  "the constraints before it at every q, so its multiplier is not determined");
+        check_freedom_left(model, out);
+        check_initial_rank(model, out);
     }
     return out;
 }

@@ -3,6 +3,8 @@
 #include "mechanics/results.hpp"
 
 #include "mechanics/constraints.hpp"
+#include "mechanics/noether.hpp"
+#include "mechanics/time_dependence.hpp"
 
 #include <Eigen/Dense>
 
@@ -452,6 +454,20 @@ Equations derive_equations(const Model& model) {
     eq.constraints = derive_constraints(model);
     eq.frobenius = analyse_integrability(model, eq.constraints);
 
+    // A coordinate nothing depends on has the equation 0 = 0 (and a singular M): named, at its place.
+    for (std::size_t i = 0; i < n; ++i) {
+        const Coordinate& c = model.coordinates[i];
+        auto involves = [&](const GiNaC::ex& e) { return e.has(c.q) || e.has(c.qd); };
+        if (involves(eq.L) ||
+            std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(), involves) ||
+            std::any_of(model.constraints.begin(), model.constraints.end(),
+                        [&](const Constraint& k) { return involves(k.expr.expr); }))
+            continue;
+        throw ModelError(c.where, "coordinate '" + c.name + "' appears nowhere: not in T, V, the forces or the "
+                                  "constraints, so its equation of motion is 0 = 0 (remove it, or write the "
+                                  "energy it carries)");
+    }
+
     // M must be invertible somewhere; positive definite wherever T is a proper kinetic energy.
     bool singular_everywhere = true;
     Eigen::MatrixXd last;
@@ -508,13 +524,14 @@ Equations derive_equations(const Model& model) {
     for (std::size_t i = 0; i < n; ++i) eq.energy += model.coordinates[i].qd * eq.momenta[i];
     // Expanded, the T₁ terms cancel and h reads T₂ − T₀ + V, as a person would write it.
     eq.energy = eq.energy.expand();
-    eq.explicit_time = !GiNaC::diff(eq.L, model.t).expand().is_zero();
+    eq.explicit_time = depends_on_time(eq.L, model);  // after sin² + cos² = 1 (mechanics/time_dependence.hpp)
     // dh/dt = −∂L/∂t + q̇·(Q − ∂R/∂q̇) − λ·b (constraint forces do work only through b = ∂g/∂t).
     const bool forced = std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(),
                                     [&](const GiNaC::ex& q) { return !is_zero(q, model); });
     const bool moving_constraints = std::any_of(eq.constraints.begin(), eq.constraints.end(), [&](const auto& c) {
         return !is_zero(c.bias, model) ||
-               std::any_of(c.jacobian.begin(), c.jacobian.end(), [&](const GiNaC::ex& a) { return a.has(model.t); });
+               std::any_of(c.jacobian.begin(), c.jacobian.end(),
+                           [&](const GiNaC::ex& a) { return depends_on_time(a, model); });
     });
     if (!eq.explicit_time && !forced && !moving_constraints)
         eq.conserved.push_back({"h", "h",
@@ -536,6 +553,8 @@ Equations derive_equations(const Model& model) {
                                     eq.momenta[i]});
         }
     }
+    // Symmetries beyond cyclic coordinates: rotations and translations of the configuration (mechanics/noether.hpp).
+    for (ConservedQuantity& c : noether_symmetries(model, eq)) eq.conserved.push_back(std::move(c));
     verify_results(model, eq);  // [[results]] with `equals` (mechanics/results.hpp)
     return eq;
 }

@@ -3,6 +3,7 @@
 
 #include "mechanics/constrained_equilibria.hpp"
 #include "mechanics/pole_free_subs.hpp"
+#include "mechanics/time_dependence.hpp"
 #include "mechanics/rest_linearization.hpp"
 
 #include <Eigen/Dense>
@@ -115,6 +116,10 @@ double limit_at(const ex& e, const std::vector<symbol>& q, const exmap& at) {
         const std::optional<ex> along = subs_unless_pole(e, shifted, GiNaC::subs_options::no_pattern);
         if (!along) return std::nan("");  // a pole along the whole line, not a removable 0/0
         const ex s = GiNaC::series_to_poly(along->series(eps == 0, 2));
+        // A term in a negative power of ε is a pole, not a removable 0/0: e has no limit there (the ε⁰ term
+        // alone would be the regular part of a Laurent series, a finite number that is no value of e).
+        for (int k = s.ldegree(eps); k < 0; ++k)
+            if (!(std::abs(evaluate(s.coeff(eps, k), {})) <= 1e-25)) return std::nan("");
         return evaluate(s.coeff(eps, 0), {});
     } catch (const std::exception&) {
         return std::nan("");
@@ -139,6 +144,25 @@ double precise_residual(const std::vector<ex>& g, const std::vector<symbol>& q, 
         worst = std::max(worst, std::isfinite(v) ? std::abs(v) : std::numeric_limits<double>::infinity());
     }
     return worst;
+}
+
+/// `eq` with t taken out of L, the momenta and the forces, which do not depend on it at the values in `fixed`;
+/// ModesError, naming what does, otherwise.
+Equations steady_equations(const Model& model, const Equations& eq, const exmap& fixed) {
+    Equations out = eq;
+    auto steady = [&](ex& e, const std::string& what) {
+        const std::optional<ex> free = without_time(e, model, fixed);
+        if (!free) throw ModesError(what + " depends on t explicitly: the system has no equilibria in these coordinates");
+        e = *free;
+    };
+    steady(out.L, "L");
+    for (std::size_t i = 0; i < out.generalized_forces.size(); ++i)
+        steady(out.generalized_forces[i], "the force on " + model.coordinates[i].name +
+                                              (fixed.empty() ? "" : " (at the --set values)"));
+    for (ex& p : out.momenta) steady(p, "L");
+    for (ConstraintEquations& k : out.constraints)
+        if (const std::optional<ex> free = without_time(k.position, model, fixed)) k.position = *free;
+    return out;
 }
 
 /// The remaining coordinates' Lagrangian: L itself, or Routh's L − p_c·q̇_c with q̇_c from p_c = ∂L/∂q̇_c.
@@ -436,6 +460,57 @@ std::vector<ex> exact_roots(const ex& p, const symbol& w) {
 
 }  // namespace
 
+namespace {
+
+/// Where a factor of a denominator of the gradient, in one coordinate, vanishes and the gradient has a pole (not a
+/// removable 0/0): a singular point of the reduced system (V_eff of a spherical pendulum with p_φ ≠ 0 at θ = 0),
+/// never an equilibrium. One note per coordinate value.
+std::vector<std::string> singular_points(const std::vector<ex>& g, const std::vector<symbol>& q,
+                                         const std::vector<bool>& angle, const exmap& params,
+                                         const std::vector<std::string>& names) {
+    std::vector<std::string> out;
+    std::vector<std::pair<std::size_t, double>> seen;
+    for (const ex& gi : g) {
+        std::vector<ex> fs;
+        try {
+            factors_of(factor_through_functions(gi.normal().denom()), fs);
+        } catch (const std::exception&) {
+            continue;
+        }
+        for (const ex& f : fs) {
+            std::size_t which = q.size();
+            int count = 0;
+            for (std::size_t j = 0; j < q.size(); ++j)
+                if (f.has(q[j])) {
+                    which = j;
+                    ++count;
+                }
+            if (count != 1) continue;
+            for (const ex& root : solve_factor(f, q[which])) {
+                double v = evaluate(root, params);
+                if (!std::isfinite(v)) continue;
+                if (angle[which]) v = wrap(v);
+                if (std::any_of(seen.begin(), seen.end(), [&](const auto& s) {
+                        return s.first == which && std::abs(s.second - v) < 1e-9;
+                    }))
+                    continue;
+                // The other coordinates at generic values: the pole is where this one takes v, whatever they are.
+                std::vector<double> x(q.size(), 0.7);
+                x[which] = v;
+                if (std::isfinite(value_at(gi, q, x, params))) continue;  // removable there
+                seen.emplace_back(which, v);
+                std::ostringstream os;
+                os << names[which] << " = " << (std::abs(v) < 1e-13 ? 0.0 : v)
+                   << ": a singular point (V_eff or the forces have a pole there), not an equilibrium";
+                out.push_back(os.str());
+            }
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
 const char* stability_name(Stability s) {
     switch (s) {
     case Stability::Stable: return "stable";
@@ -446,17 +521,18 @@ const char* stability_name(Stability s) {
     return "?";
 }
 
-ModesResult small_oscillations(const Model& model, const Equations& eq, const ModesOptions& options) {
-    const symbol& t = model.t;
-    if (eq.L.has(t) || std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(),
-                                   [&](const ex& Q) { return Q.has(t); }))
-        throw ModesError("L or the forces depend on t explicitly: the system has no equilibria in these coordinates");
+ModesResult small_oscillations(const Model& model, const Equations& eq_in, const ModesOptions& options) {
+    exmap fixed;  // the parameters --set gives: a term that vanishes at their values does not count
     for (const auto& entry : options.set) {
         const std::string& name = entry.first;  // not a structured binding: clang 14 refuses one in a lambda
-        if (std::none_of(model.parameters.begin(), model.parameters.end(),
-                         [&](const Parameter& p) { return p.name == name; }))
-            throw ModesError("--set " + name + ": no such parameter");
+        const auto it = std::find_if(model.parameters.begin(), model.parameters.end(),
+                                     [&](const Parameter& p) { return p.name == name; });
+        if (it == model.parameters.end()) throw ModesError("--set " + name + ": no such parameter");
+        fixed[it->symbol] = GiNaC::numeric(exact(entry.second));
     }
+    // Explicit time, decided as every command decides it (mechanics/time_dependence.hpp); the equations are then
+    // taken at t = 0, which is every t.
+    const Equations eq = steady_equations(model, eq_in, fixed);
 
     std::vector<symbol> inputs;
     for (const std::string& name : options.inputs) {
@@ -628,7 +704,7 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
         const Eigen::MatrixXd N = tangent_at(at);
         const Eigen::MatrixXd Kx = N.transpose() * numeric_matrix(rest_jac, n, n, at) * N;
         Found f{x, lambda, Eigen::MatrixXd(static_cast<Eigen::Index>(n), 0)};
-        if (Kx.allFinite()) {
+        if (Kx.size() > 0 && Kx.allFinite()) {  // 0×0 where the constraints leave no freedom at this point
             const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es((Kx + Kx.transpose()) / 2);
             const double big = es.eigenvalues().cwiseAbs().maxCoeff();
             std::vector<Eigen::Index> zero;
@@ -832,9 +908,29 @@ ModesResult small_oscillations(const Model& model, const Equations& eq, const Mo
         }
         result.equilibria.push_back(std::move(e));
     }
-    if (result.equilibria.empty())
-        result.notes.push_back("no equilibrium found from " + std::to_string(starts.size()) +
-                               " starting points (give guesses with --at)");
+    if (result.equilibria.empty()) {
+        // A gradient that no coordinate enters (V linear in q: a block on an incline) is never 0, or always.
+        bool constant = m == 0;
+        double largest = 0;
+        for (std::size_t i = 0; i < n && constant; ++i) {
+            constant = std::none_of(r.q.begin(), r.q.end(), [&](const symbol& x) { return g[i].has(x); });
+            if (constant) largest = std::max(largest, std::abs(evaluate(g[i], values.params)));
+        }
+        std::ostringstream os;
+        if (constant && largest > 0) {
+            os << "∂V_eff/∂q − Q is the same at every q and not 0 (";
+            for (std::size_t i = 0; i < n; ++i) os << (i ? ", " : "") << g[i];
+            os << "): nothing balances it, so there is no equilibrium";
+        } else if (constant) {
+            os << "∂V_eff/∂q − Q vanishes at every q with these parameter values: every configuration is at rest, "
+                  "none is an isolated equilibrium";
+        } else if (found.empty()) {
+            os << "the search from " << starts.size() << " starting points found none (give guesses with --at)";
+        }
+        if (os.tellp() > 0) result.notes.push_back(os.str());
+    }
+    for (const std::string& pole : singular_points(g, r.q, angle, values.params, result.coordinates))
+        result.notes.push_back(pole);
     std::sort(result.notes.begin(), result.notes.end());
     result.notes.erase(std::unique(result.notes.begin(), result.notes.end()), result.notes.end());
     return result;

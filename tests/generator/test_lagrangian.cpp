@@ -83,10 +83,11 @@ TEST_CASE("T that is not quadratic in the velocities is an error at T", "[mechan
 }
 
 TEST_CASE("an identically singular mass matrix is an error that names the missing velocity", "[mechanics][errors]") {
-    // T does not involve y' at all; and a T in (x' + y')² only has rank 1.
+    // T does not involve y' at all (y is in V: a coordinate in nothing at all is another error); and a T in
+    // (x' + y')² only has rank 1.
     for (const std::string& T : {std::string("1/2*m*x'^2"), std::string("1/2*m*(x' + y')^2")}) {
         try {
-            derive(model_text({"x", "y"}, T, "0"));
+            derive(model_text({"x", "y"}, T, "m*y"));
             FAIL("no error for T = " << T);
         } catch (const eomgen::ModelError& e) {
             INFO(e.what());
