@@ -32,7 +32,8 @@ MultiplierTable multiplier_table(const Model& model, const Equations& eq, const 
     }
     for (std::size_t k = 0; k < eq.constraints.size(); ++k) {
         const std::string& name = eq.constraints[k].name;
-        m.lambda.emplace_back("lambda_" + name);
+        // The Hamiltonian's own multipliers where it is given: its equations hold them (ṗ = −∂H/∂q + Aᵀλ).
+        m.lambda.push_back(h && k < h->lambda.size() ? h->lambda[k] : GiNaC::symbol("lambda_" + name));
         m.table.info.push_back({codegen::SymbolKind::Constant, int(k + 1), "lambda_" + name, "lambda_" + name,
                                 "\\lambda_{\\text{" + latex_text(name) + "}}", ""});
         m.table.exprs.push_back(m.lambda.back());
@@ -119,7 +120,8 @@ std::vector<LatexBlock> latex_equations(const Model& model, const Equations& eq)
         for (std::size_t i = 0; i < n; ++i) {
             const std::string& q = model.coordinates[i].latex;
             add(hamilton, "\\dot{" + q + "} &= \\frac{\\partial H}{\\partial p_{" + q + "}} = " + P(ham.qdot[i]));
-            add(hamilton, "\\dot{p}_{" + q + "} &= -\\frac{\\partial H}{\\partial " + q + "} = " + P(ham.pdot[i]));
+            add(hamilton, "\\dot{p}_{" + q + "} &= -\\frac{\\partial H}{\\partial " + q + "}" +
+                              (eq.constraints.empty() ? "" : " + (A^T \\lambda)_{" + q + "}") + " = " + P(ham.pdot[i]));
         }
     } else {
         add(hamilton, "H &= h, \\quad \\dot q = M^{-1}(p - b)", latex_text(ham.why_not_symbolic));

@@ -218,7 +218,8 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
         for (std::size_t i = 0; i < model.dof(); ++i) {
             const std::string& q = model.coordinates[i].name;
             os << "  " << q << "' = dH/dp_" << q << " = " << P(ham.qdot[i]) << "\n";
-            os << "  p_" << q << "' = -dH/d" << q << " = " << P(ham.pdot[i]) << "\n";
+            os << "  p_" << q << "' = -dH/d" << q << (eq.constraints.empty() ? "" : " + (A^T lambda)_" + q) << " = "
+               << P(ham.pdot[i]) << "\n";
         }
     } else {
         os << "  H = h with q' = M^-1 (p - b): " << ham.why_not_symbolic << "\n";

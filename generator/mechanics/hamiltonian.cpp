@@ -83,6 +83,7 @@ Hamiltonian derive_hamiltonian(const Model& model, const Equations& eq) {
     for (const Coordinate& c : model.coordinates) rest[c.qd] = 0;
     for (const Coordinate& c : model.coordinates)
         h.p.emplace_back("p_" + c.name, "p_{" + c.latex + "}");
+    for (const ConstraintEquations& k : eq.constraints) h.lambda.emplace_back("lambda_" + k.name);
     h.momenta = eq.momenta;
     h.M = eq.M;
     for (unsigned i = 0; i < n; ++i) h.b.push_back(eq.momenta[i].subs(rest).expand());
@@ -140,6 +141,9 @@ Hamiltonian derive_hamiltonian(const Model& model, const Equations& eq) {
         h.qdot.push_back(GiNaC::diff(H, h.p[i]));
         GiNaC::ex pdot = -GiNaC::diff(H, model.coordinates[i].q);
         if (i < eq.generalized_forces.size()) pdot += eq.generalized_forces[i].subs(qdot_of_p);
+        // The constraint forces: without them a particle held on a sphere would have ṗ_x = −∂H/∂x = 0.
+        for (std::size_t k = 0; k < eq.constraints.size(); ++k)
+            pdot += eq.constraints[k].jacobian[i].subs(qdot_of_p) * h.lambda[k];
         h.pdot.push_back(pdot);
     }
     h.symbolic = true;

@@ -16,8 +16,10 @@ namespace eomgen {
  * With L = ½ q̇ᵀ M(q,t) q̇ + b(q,t)ᵀ q̇ + L₀(q,t) (L₀ = T₀ − V, T₀ the part of T without velocities):
  * \f[ p = \frac{\partial L}{\partial \dot q} = M\dot q + b, \qquad
  *     H(q,p,t) = \tfrac12 (p-b)^T M^{-1} (p-b) - L_0, \f]
- * and Hamilton's equations \f$\dot q_i = \partial H/\partial p_i\f$, \f$\dot p_i = -\partial H/\partial q_i + Q_i\f$
- * (Q the generalized and dissipative forces, written in q and p), the partial derivatives at fixed p.
+ * and Hamilton's equations \f$\dot q_i = \partial H/\partial p_i\f$,
+ * \f$\dot p_i = -\partial H/\partial q_i + Q_i + \sum_k A_{ki}\lambda_k\f$ (Q the generalized and dissipative
+ * forces, A the constraints' Jacobian, λ their multipliers with the sign of M q̈ = f + Aᵀλ; all written in q
+ * and p), the partial derivatives at fixed p. The constraints themselves, A q̇ + b = 0, hold beside them.
  *
  * M⁻¹ is formed symbolically block by block (the blocks of coordinates M couples), when every block has at
  * most 3 coordinates: diagonal M, the heavy top's 3×3, two coupled pendulums. Otherwise `symbolic` is false
@@ -26,6 +28,7 @@ namespace eomgen {
  */
 struct Hamiltonian {
     std::vector<GiNaC::symbol> p;       ///< one momentum symbol per coordinate: name p_<name>, LaTeX p_{<latex>}
+    std::vector<GiNaC::symbol> lambda;  ///< one multiplier per constraint: name lambda_<constraint>
     std::vector<GiNaC::ex> momenta;     ///< p_i(q, q̇, t) = ∂L/∂q̇_i
     GiNaC::matrix M;                    ///< n×n, = Equations::M
     std::vector<GiNaC::ex> b;           ///< n, ∂L/∂q̇ at q̇ = 0
@@ -36,7 +39,7 @@ struct Hamiltonian {
     GiNaC::ex H;                        ///< H(q, p, t)
     std::vector<GiNaC::ex> velocities;  ///< q̇_i(q, p, t) = (M⁻¹ (p − b))_i
     std::vector<GiNaC::ex> qdot;        ///< Hamilton's equations: q̇_i = ∂H/∂p_i (in q, p, t)
-    std::vector<GiNaC::ex> pdot;        ///< ṗ_i = −∂H/∂q_i + Q_i (in q, p, t)
+    std::vector<GiNaC::ex> pdot;        ///< ṗ_i = −∂H/∂q_i + Q_i + Σ_k A_ki λ_k (in q, p, t, λ)
 };
 
 /// Forms the Hamiltonian of a model whose equations `eq` are derived (derive_equations).

@@ -470,6 +470,32 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
     return out;
 }
 
+/// Each conserved quantity other than h (a cyclic momentum, a Noether symmetry's L_z) at the first and last
+/// sample, and its largest change between, relative to its start unless that is 0.
+template <class M>
+void report_conserved(const typename M::Params& params, const std::vector<eomgen::Sample<typename M::State>>& samples,
+                      std::ostream& os) {
+    if (samples.empty()) return;
+    std::vector<std::vector<double>> values;  // [sample][quantity]
+    for (const auto& s : samples) {
+        typename M::Conserved c;
+        M::conserved(s.t, positions<M::nq>(s.x), velocities<M::nq>(s.x), params, c);
+        values.emplace_back(c.data(), c.data() + c.size());
+    }
+    for (int k = 0; k < M::n_conserved; ++k) {
+        const std::string name = M::conserved_names[std::size_t(k)];
+        if (name == "h") continue;
+        const double first = values.front()[std::size_t(k)], last = values.back()[std::size_t(k)];
+        const bool absolute = std::abs(first) < 1e-12;
+        double drift = 0;
+        for (const auto& v : values) drift = std::max(drift, std::abs(v[std::size_t(k)] - first));
+        if (!absolute) drift /= std::abs(first);
+        os << "conserved " << name << ": " << first << " at t = " << samples.front().t << ", " << last
+           << " at the end; " << (absolute ? "max |d" + name + "| = " : "max |d" + name + "|/|" + name + "0| = ")
+           << drift << (absolute ? "  (absolute: it starts at 0)" : "") << "\n";
+    }
+}
+
 /// One run as eomgen-sim and `eomgen run` make it: the settings, the integration, its report on stdout
 /// and the CSV of its samples.
 template <class M>
@@ -502,6 +528,7 @@ int run(const Options& o) {
               << (std::abs(r.h0) < 1e-12 ? "max |dh| = " : "max |dh|/|h0| = ") << r.max_drift
               << (std::abs(r.h0) < 1e-12 ? "  (absolute: h0 is 0)" : "")
               << (M::explicit_time ? "  (L depends on t: h need not be conserved)" : "") << "\n";
+    report_conserved<M>(params, r.samples, std::cout);
     try {
         write_samples<M>(o, params, r.samples);
     } catch (const std::runtime_error& e) {
