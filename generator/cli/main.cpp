@@ -293,6 +293,7 @@ int main(int argc, char** argv) {
     gen->add_option("--with", gen_with,
                     "Optional functions besides the model files' [generate]: jacobians (analytic state_jacobian() and "
                     "parameter_jacobian(), unconstrained models), stiffness (K, C, G about rest), all")
+        ->allow_extra_args(false)  // one value per --with (a list with commas): a model file after it is not one
         ->delimiter(',')
         ->check(CLI::IsMember({"jacobians", "stiffness", "all"}));
     bool gen_timings = false;

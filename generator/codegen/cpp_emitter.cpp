@@ -543,7 +543,13 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
             qs.push_back(c.q);
             qds.push_back(c.qd);
         }
-        const RestLinearization lin = linearize_about_rest(eq.L, eq.generalized_forces, qs, qds);
+        RestLinearization lin;
+        try {
+            lin = linearize_about_rest(eq.L, eq.generalized_forces, qs, qds);
+        } catch (const NoValueAtRest& e) {  // asked for by [generate] stiffness or --with: said where the forces are
+            const SourceLocation where = model.forces.empty() ? model.T.where : model.forces.front().where;
+            throw ModelError(where, std::string("the stiffness and damping about rest cannot be generated: ") + e.what());
+        }
         clock.lap("stiffness: linearize about rest");
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = 0; j < n; ++j) {

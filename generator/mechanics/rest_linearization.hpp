@@ -16,6 +16,7 @@
 
 #include <ginac/ginac.h>
 
+#include <stdexcept>
 #include <vector>
 
 namespace eomgen {
@@ -29,7 +30,15 @@ struct RestLinearization {
     std::vector<std::vector<GiNaC::ex>> D;     ///< damping (symmetric part) + gyroscopic (skew part)
 };
 
-/// The coefficients for L(q, q̇) and the forces Q(q, q̇) (one per coordinate), in the symbols q and qd.
+/// A coefficient that has no value at rest: a force whose derivative in a velocity has no limit as it goes to 0
+/// (a dry friction sign(q̇)); the message names the expression and the velocity.
+struct NoValueAtRest : std::runtime_error {
+    NoValueAtRest(const GiNaC::ex& e, const GiNaC::symbol& velocity);
+};
+
+/// The coefficients for L(q, q̇) and the forces Q(q, q̇) (one per coordinate), in the symbols q and qd. Where
+/// substituting q̇ = 0 divides by zero (∂/∂θ' of θ' sqrt(θ'²), 0/0), the two-sided limit is taken; throws
+/// NoValueAtRest where there is none.
 RestLinearization linearize_about_rest(const GiNaC::ex& L, const std::vector<GiNaC::ex>& Q,
                                        const std::vector<GiNaC::symbol>& q, const std::vector<GiNaC::symbol>& qd);
 

@@ -568,7 +568,12 @@ ModesResult small_oscillations(const Model& model, const Equations& eq_in, const
             values.params[c.q] = GiNaC::numeric(0);  // a cyclic coordinate does not appear; 0 if it did
 
     // L = ½ q̇ᵀ M q̇ + βᵀ q̇ + L₀ (L is at most quadratic in the velocities: derive_equations checked T).
-    const RestLinearization lin = linearize_about_rest(r.L, r.Q, r.q, r.qd);
+    RestLinearization lin;
+    try {
+        lin = linearize_about_rest(r.L, r.Q, r.q, r.qd);
+    } catch (const NoValueAtRest& e) {
+        throw ModesError(std::string("the linearization about rest is not defined: ") + e.what());
+    }
     result.V_eff = lin.V_eff;
     const std::vector<ex>& g = lin.gradient;
     const std::vector<std::vector<ex>>&M = lin.M, &K = lin.K, &D = lin.D;

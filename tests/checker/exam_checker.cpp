@@ -203,6 +203,28 @@ TEST_CASE("checker: text, Markdown and JSON reports", "[checker]") {
     CHECK(json.find("\"line\": 18") != std::string::npos);
 }
 
+// shared/repro/check_json_invalid_utf8.md: bytes 0xff, 0xfe and a truncated sequence in the text were copied into
+// the JSON strings, and the output was not JSON. Every string of it must be valid UTF-8 now.
+TEST_CASE("checker: invalid UTF-8 in a derivation gives valid UTF-8 JSON", "[checker]") {
+    const std::string json = eomgen::checker::format_json(check("door", fixture("repro/json_invalid_utf8_door.md")));
+    REQUIRE(json.size() > 2);
+    CHECK(json.front() == '{');
+    std::size_t i = 0;
+    while (i < json.size()) {
+        const auto c = static_cast<unsigned char>(json[i]);
+        const int extra = c < 0x80 ? 0 : (c >> 5) == 0x6 ? 1 : (c >> 4) == 0xe ? 2 : (c >> 3) == 0x1e ? 3 : -1;
+        INFO("byte " << i << ": " << int(c));
+        REQUIRE(extra >= 0);
+        REQUIRE((c >= 0x20 || c == '\n'));  // no raw control character but the line breaks
+        for (int k = 1; k <= extra; ++k) {
+            REQUIRE(i + std::size_t(k) < json.size());
+            REQUIRE((static_cast<unsigned char>(json[i + std::size_t(k)]) >> 6) == 0x2);
+        }
+        i += std::size_t(extra) + 1;
+    }
+    CHECK(json.find("\"summary\"") != std::string::npos);
+}
+
 // ------------------------------------------------------------------------------------------------ the seed
 
 namespace {
