@@ -162,8 +162,11 @@ class Numbers {
             at[c.qd] = value(sr);
             at[c.qdd] = value(sr);
         }
+        for (const GiNaC::symbol& s : state_symbols_) at[s] = value(sr);
         return at;
     }
+    /// A symbol that takes a value per state, as the coordinates do (a constraint's multiplier λ).
+    void add_state_symbol(const GiNaC::symbol& s) { state_symbols_.push_back(s); }
     GiNaC::exmap point(unsigned seed) const { return point(seed, seed); }
 
     std::optional<Complex> value(const GiNaC::ex& e, const GiNaC::exmap& at) {
@@ -194,6 +197,7 @@ class Numbers {
     }
 
   private:
+    std::vector<GiNaC::symbol> state_symbols_;
     GiNaC::ex integrals(const GiNaC::ex& e) {
         if (!has_integral(e)) return e;
         if (GiNaC::is_a<GiNaC::integral>(e)) {
@@ -371,8 +375,11 @@ class Checker : public Comparisons {
     std::vector<std::string> factor_analysis(const GiNaC::ex& a, const GiNaC::ex& b, double tol,
                                              std::string* ratio);
     /// r = Σ c_i EL_i with c from the acceleration coefficients: a consequence of the equations of motion.
+    /// With `multipliers` (+1 or −1: the text's λ with eomgen's sign or the other), EL_i holds the constraint
+    /// forces ± Σ_k A_ki λ_k, the text's λ being the constraints' multipliers.
     Tri euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor,
-                                   std::vector<std::string>* acting = nullptr, std::vector<bool>* terms = nullptr);
+                                   std::vector<std::string>* acting = nullptr, std::vector<bool>* terms = nullptr,
+                                   int multipliers = 0);
     /// The constraints solved for some coordinates and velocities (those `keep` does not use first), with
     /// the substitutions in LaTeX.
     ConstraintReduction reduction(const GiNaC::ex& keep, std::string* shown);
@@ -478,6 +485,7 @@ class Checker : public Comparisons {
     ExMap<GiNaC::ex> part_value_;     ///< part symbol → its value in the text
     ExMap<std::string> part_origin_;  ///< part symbol → "line N"
     std::vector<GiNaC::ex> motion_;   ///< the equations of motion, = 0
+    std::vector<GiNaC::symbol> multipliers_;  ///< λ_k per constraint, as a text names them (\lambda, \lambda_{1})
     std::vector<std::pair<GiNaC::ex, std::string>> integrals_of_motion_;
     ExMap<std::vector<Complex>> signatures_;
     TextDefinitions definitions_;   ///< K = ..., used where the text differentiates K
@@ -550,6 +558,12 @@ void Checker::setup_names() {
         add_label(key, eq_.momenta[i], "p_{" + c + "}");
         momentum_labels.push_back(ctx_.names.at(key));
     }
+    // The conserved quantities of symmetries (mechanics/noether.hpp): L_z of a particle on a sphere written in x, y, z.
+    for (const ConservedQuantity& c : eq_.conserved) {
+        if (c.name == "h" || c.name.rfind("p_", 0) == 0) continue;
+        std::string key = canonical_name(c.latex);
+        add_label(key.empty() ? c.latex : key, c.value, c.latex);
+    }
     hamilton_.set_labels(momentum_labels, truth_.count(ctx_.names.at("H")) ? ctx_.names.at("H") : GiNaC::ex(0));
     // Declared results ([[results]]): their LaTeX stands for their closed form, before eomgen's own labels
     // (a result written 'T' is the closed form), after the model's coordinates and parameters.
@@ -579,6 +593,18 @@ void Checker::setup_names() {
         integrals_of_motion_.push_back(
             {c.value - c.value.subs(init),
              "the conservation of " + m(c.latex) + " with the model's initial state (" + c.reason + ")"});
+    // The constraints' multipliers: \lambda where there is one constraint, \lambda_{k} and \lambda_{name} (the model's
+    // own names first); each takes a value per state, as it is a function of the state.
+    for (std::size_t k = 0; k < eq_.constraints.size(); ++k) {
+        const std::string& name = eq_.constraints[k].name;
+        const GiNaC::symbol s("lambda_" + name, "\\lambda_{" + name + "}");
+        multipliers_.push_back(s);
+        numbers_.add_state_symbol(s);
+        if (eq_.constraints.size() == 1) add_name("\\lambda", s);
+        add_name("\\lambda_{" + std::to_string(k + 1) + "}", s);
+        add_name("\\lambda_{" + name + "}", s);
+        add_name("\\lambda_{\\text{" + name + "}}", s);
+    }
     // The equations of motion: d/dt(∂L/∂q̇) − ∂L/∂q − Q = 0 (Q: generalized and dissipative forces).
     for (std::size_t i = 0; i < model_.dof(); ++i)
         motion_.push_back(i < eq_.generalized_forces.size()
@@ -829,8 +855,16 @@ Tri Checker::equal(const GiNaC::ex& a, const GiNaC::ex& b, double tol) {
 }
 
 Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor,
-                                            std::vector<std::string>* acting, std::vector<bool>* terms) {
+                                            std::vector<std::string>* acting, std::vector<bool>* terms,
+                                            int multipliers) {
     const std::size_t n = model_.dof();
+    std::vector<GiNaC::ex> motion = motion_;  // = 0; with the multipliers, EL − Q − (±Aᵀλ)
+    if (multipliers != 0) {
+        acting = nullptr;  // the constraint forces are in the equations: none is missing
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t k = 0; k < eq_.constraints.size(); ++k)
+                motion[i] -= multipliers * eq_.constraints[k].jacobian[i] * multipliers_[k];
+    }
     std::vector<GiNaC::ex> a(n);
     for (std::size_t j = 0; j < n; ++j) {
         a[j] = GiNaC::diff(r, model_.coordinates[j].qdd);
@@ -864,13 +898,13 @@ Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* onl
         double scale = numbers_.scale(r, at);
         bool ok2 = true;
         for (std::size_t i = 0; i < n; ++i) {
-            auto ev = numbers_.value(motion_[i], at);
+            auto ev = numbers_.value(motion[i], at);
             if (!ev) {
                 ok2 = false;
                 break;
             }
             res -= c(Eigen::Index(i)) * *ev;
-            scale += std::abs(c(Eigen::Index(i))) * numbers_.scale(motion_[i], at);
+            scale += std::abs(c(Eigen::Index(i))) * numbers_.scale(motion[i], at);
         }
         if (!ok2) continue;
         if (std::abs(res) > tol * scale + 1e-300) return Tri::No;
@@ -906,7 +940,7 @@ Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* onl
         try {
             // sin² + cos² = 1 first: (m₁ + m₂)/(m₁ + m₂ sin² θ₁ + m₂ cos² θ₁) is 1, not a factor.
             const GiNaC::ex c = trig::readable_ratio(GiNaC::diff(r, qi),
-                                                     GiNaC::diff(motion_[std::size_t(*only)], qi), hints_);
+                                                     GiNaC::diff(motion[std::size_t(*only)], qi), hints_);
             if (!c.is_equal(1)) *factor = latex(c);
         } catch (...) {
         }
@@ -1773,6 +1807,27 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         int only = -1;
         std::string factor;
         std::vector<std::string> acting;
+        // With the multipliers written (m ẍ = 2 x λ): the equations with the constraint forces, λ with eomgen's sign
+        // (M q̈ = f + Aᵀλ, A from the constraint as the model writes it) or the opposite one.
+        const bool with_lambda = std::any_of(multipliers_.begin(), multipliers_.end(),
+                                             [&](const GiNaC::symbol& l) { return r_ex.has(l); });
+        for (int sign : {1, -1}) {
+            if (!with_lambda) break;
+            if (euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor, nullptr, nullptr, sign) !=
+                Tri::Yes)
+                continue;
+            r.verdict = Verdict::Agrees;
+            r.compared_with = (only >= 0 ? "the Euler–Lagrange equation for " +
+                                               m(model_.coordinates[std::size_t(only)].latex)
+                                         : std::string("the Euler–Lagrange equations")) +
+                              " with the constraint forces";
+            r.reason = (factor.empty() ? std::string(only >= 0 ? "the same equation" : "a combination of them")
+                                       : "the same equation times " + m(factor)) +
+                       (sign < 0 ? ", the multiplier taken with the opposite sign to eomgen's (M q'' = f + A^T λ)"
+                                 : "") +
+                       within;
+            return;
+        }
         if (euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor, &acting) == Tri::Yes) {
             if (!acting.empty()) {
                 std::string names;
@@ -1781,9 +1836,17 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
                                                   m(model_.coordinates[std::size_t(only)].latex)
                                             : "the Euler–Lagrange equations";
                 r.reason = "it is that equation without the forces of the constraint" +
-                           std::string(acting.size() > 1 ? "s " : " ") + names +
-                           ", which act along it: the true equation has their multipliers, which the checker "
-                           "does not compare";
+                           std::string(acting.size() > 1 ? "s " : " ") + names + ", which act along it";
+                if (only >= 0) {
+                    GiNaC::ex force = 0;
+                    for (std::size_t k = 0; k < eq_.constraints.size(); ++k)
+                        force += eq_.constraints[k].jacobian[std::size_t(only)] * multipliers_[k];
+                    r.verdict = Verdict::Disagrees;
+                    r.reason += ": the constraint force " + m(latex(force)) + " is missing (" +
+                                m("\\lambda") + " with eomgen's sign, M q'' = f + A^T λ)";
+                } else {
+                    r.reason += ": the true equations hold their multipliers";
+                }
                 return;
             }
             r.verdict = Verdict::Agrees;
