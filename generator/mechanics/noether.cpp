@@ -1,6 +1,8 @@
 /** @file noether.cpp  Affine symmetries of L by linear algebra at random states, verified symbolically. */
 #include "mechanics/noether.hpp"
 
+#include "mechanics/double_evaluator.hpp"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -11,16 +13,6 @@
 
 namespace eomgen {
 namespace {
-
-double value(const GiNaC::ex& e, const GiNaC::exmap& at) {
-    try {
-        const GiNaC::ex v = GiNaC::evalf(e.subs(at, GiNaC::subs_options::no_pattern));
-        if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return std::nan("");
-        return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
-    } catch (const std::exception&) {
-        return std::nan("");  // a pole at this point: the point is skipped
-    }
-}
 
 /// x as p/d with d ≤ 12 when it is one within 1e-7; nothing otherwise.
 std::optional<GiNaC::numeric> small_rational(double x) {
@@ -130,23 +122,24 @@ std::vector<ConservedQuantity> noether_symmetries(const Model& model, const Equa
     };
     const std::size_t points = unknowns + 8;
     for (unsigned seed = 0; rows.size() < points && seed < 3 * points; ++seed) {
-        const GiNaC::exmap at = random_point(model, 7001 + seed);
+        DoubleEvaluator value = DoubleEvaluator::at(random_point(model, 7001 + seed));
+        auto number = [&value](const GiNaC::ex& e) { return value(e).value_or(std::nan("")); };
         std::vector<double> state(2 * n), dLdq(n), p(n);
         for (std::size_t i = 0; i < n; ++i) {
-            state[i] = value(model.coordinates[i].q, at);
-            state[n + i] = value(model.coordinates[i].qd, at);
-            dLdq[i] = value(eq.dLdq[i], at);
-            p[i] = value(eq.momenta[i], at);
+            state[i] = number(model.coordinates[i].q);
+            state[n + i] = number(model.coordinates[i].qd);
+            dLdq[i] = number(eq.dLdq[i]);
+            p[i] = number(eq.momenta[i]);
         }
         add_row(dLdq, p, state);
         if (forced) {
             std::vector<double> Q(n);
-            for (std::size_t i = 0; i < n; ++i) Q[i] = value(eq.generalized_forces[i], at);
+            for (std::size_t i = 0; i < n; ++i) Q[i] = number(eq.generalized_forces[i]);
             add_row(Q, {}, state);
         }
         for (const ConstraintEquations& k : eq.constraints) {
             std::vector<double> A(n);
-            for (std::size_t i = 0; i < n; ++i) A[i] = value(k.jacobian[i], at);
+            for (std::size_t i = 0; i < n; ++i) A[i] = number(k.jacobian[i]);
             add_row(A, {}, state);
         }
     }

@@ -2,6 +2,7 @@
  * L, the forces and the constraints have the symmetry, with their closed forms, constant along the equations of
  * motion at random states; nothing reported where there is no symmetry. And Hamilton's equations of a constrained
  * model carrying the multipliers. */
+#include "mechanics/double_evaluator.hpp"
 #include "mechanics/hamiltonian.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "mechanics/noether.hpp"
@@ -165,4 +166,21 @@ TEST_CASE("noether: nothing is reported where there is no symmetry", "[noether]"
             CHECK(names(eq) == std::vector<std::string>{"h"});
         }
     }
+}
+
+TEST_CASE("double evaluator: the value evalf gives, shared nodes and temporaries included", "[noether]") {
+    const GiNaC::symbol x("x"), y("y");
+    const GiNaC::exmap at{{x, GiNaC::numeric(3, 10)}, {y, GiNaC::numeric(-7, 5)}};
+    eomgen::DoubleEvaluator v = eomgen::DoubleEvaluator::at(at);
+    const GiNaC::ex shared = GiNaC::sin(x) * GiNaC::exp(y);
+    for (const GiNaC::ex& e : {shared + GiNaC::pow(shared, 2) / (1 + x * x), GiNaC::sqrt(x * x + y * y) - GiNaC::Pi * y,
+                               GiNaC::atan(y) * GiNaC::cosh(x) + GiNaC::log(x) / GiNaC::pow(y, 3)}) {
+        const double expected = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(at))).to_double();
+        REQUIRE(v(e).has_value());
+        CHECK(*v(e) == Approx(expected).epsilon(1e-14));
+    }
+    // Temporaries made and freed one after another must not read each other's values.
+    for (int k = 1; k <= 5; ++k) CHECK(*v(GiNaC::ex(x) * k) == Approx(0.3 * k).epsilon(1e-15));
+    CHECK_FALSE(v(GiNaC::log(y)).has_value());             // not a real number
+    CHECK_FALSE(v(GiNaC::symbol("z") + 1).has_value());   // no value for z
 }
