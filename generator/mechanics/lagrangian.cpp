@@ -38,6 +38,13 @@ Eigen::MatrixXd evaluate(const GiNaC::matrix& m, const GiNaC::exmap& at) {
     return out;
 }
 
+/// Where a problem of T is reported: T's text, or, in a model of bodies alone (no [lagrangian] T), the first
+/// body, whose mass and inertia make T (found by tests/fuzz/fuzz_structure.cpp: the place was the bare file name).
+SourceLocation kinetic_energy_place(const Model& model) {
+    if (model.T.where.line > 0 || model.bodies.empty()) return model.T.where;
+    return model.bodies.front().where;
+}
+
 /// The velocity-dependence check: every entry of ∂²T/∂q̇² must be free of velocities.
 void check_quadratic_in_velocities(const Model& model, const GiNaC::matrix& M) {
     // One walk of each entry for all the velocities (entry.has(q̇_k) for each k walked it n times: n³ walks, a
@@ -55,7 +62,7 @@ void check_quadratic_in_velocities(const Model& model, const GiNaC::matrix& M) {
             for (const Coordinate& c : model.coordinates) {
                 if (!M(i, j).has(c.qd)) continue;
                 if (GiNaC::diff(M(i, j), c.qd).expand().is_zero()) continue;
-                throw ModelError(model.T.where,
+                throw ModelError(kinetic_energy_place(model),
                                  "T is not quadratic + linear + zero order in the velocities: ∂²T/∂" +
                                      model.coordinates[i].name + "'∂" + model.coordinates[j].name +
                                      "' still depends on " + c.name + "'");
@@ -489,7 +496,7 @@ Equations derive_equations(const Model& model) {
                 for (std::size_t i = 0; i < n; ++i)
                     os << (i ? ", " : "") << model.coordinates[i].name << "' = " << v(Eigen::Index(i));
                 os << "): check the signs in T";
-                throw ModelError(model.T.where, os.str());
+                throw ModelError(kinetic_energy_place(model), os.str());
             }
         }
     }
@@ -514,7 +521,7 @@ Equations derive_equations(const Model& model) {
             ++terms;
         }
         os << (terms == 1 ? "T does not involve " : "T does not involve the combination ") << combination;
-        throw ModelError(model.T.where, os.str());
+        throw ModelError(kinetic_energy_place(model), os.str());
     }
 
     warn_singular_configurations(model, eq);
