@@ -157,12 +157,17 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     if (!model.source.empty()) os << " (" << model.source << ")";
     os << "\n";
     os << rule("Coordinates");
-    for (const eomgen::Coordinate& c : model.coordinates)
-        os << "  " << c.name << "  (q(0) = " << eomgen::codegen::shortest_decimal(c.initial)
-           << ", q'(0) = " << eomgen::codegen::shortest_decimal(c.rate) << ")\n";
+    for (const eomgen::Coordinate& c : model.coordinates) {
+        const std::string unit = c.unit.empty() ? "" : " " + c.unit;
+        const std::string rate_unit = c.unit.empty() ? "" : c.unit == "1" ? " 1/s" : " " + c.unit + "/s";
+        os << "  " << c.name << "  (q(0) = " << eomgen::codegen::shortest_decimal(c.initial) << unit
+           << ", q'(0) = " << eomgen::codegen::shortest_decimal(c.rate) << rate_unit << ")"
+           << (c.description.empty() ? "" : "  " + c.description) << "\n";
+    }
     os << rule("Parameters");
     for (const eomgen::Parameter& p : model.parameters)
         os << "  " << p.name << " = " << eomgen::codegen::shortest_decimal(p.value) << (p.unit.empty() ? "" : " " + p.unit)
+           << (p.given.empty() ? "" : "  (given as " + p.given + ")")
            << (p.description.empty() ? "" : "  (" + p.description + ")") << "\n";
     if (!eq.bodies.empty()) {
         os << rule("Bodies  T_b = m v_c^2/2 + w'.I.w'/2,  V_b = -m g.r_c");

@@ -737,8 +737,10 @@ ModesResult small_oscillations(const Model& model, const Equations& eq_in, const
     if (unsearched > 0)
         result.notes.push_back("the search for equilibria stopped at its budget of " + std::to_string(kNewtonBudget) +
                                " evaluations: " + std::to_string(unsearched) + " of " + std::to_string(starts.size()) +
-                               " starting points were not tried (none of the others converged quickly: is the "
-                               "constraint manifold empty?)");
+                               " starting points were not tried" +
+                               (found.empty() ? std::string(" (none of the others converged quickly: is the constraint "
+                                                            "manifold empty?)")
+                                              : std::string()));
     std::sort(found.begin(), found.end(), [](const Found& a, const Found& b) { return a.x < b.x; });
 
     for (const Found& family : found) {

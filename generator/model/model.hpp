@@ -38,8 +38,10 @@ struct Coordinate {
     std::string name;   ///< identifier used in expressions and in generated code
     std::string latex;  ///< LaTeX name, e.g. "\\psi"
     GiNaC::symbol q, qd, qdd;
-    double initial = 0.0;  ///< default q(0)
-    double rate = 0.0;     ///< default q̇(0)
+    double initial = 0.0;  ///< default q(0), in SI (rad for an angle)
+    double rate = 0.0;     ///< default q̇(0), in SI
+    std::string unit;      ///< the SI unit q is in ("m", "rad"); "" when the file gives none
+    std::string description;
     SourceLocation where;
 };
 
@@ -47,10 +49,11 @@ struct Coordinate {
 struct Parameter {
     std::string name;
     std::string latex;
-    std::string unit;
+    std::string unit;         ///< the SI unit `value` is in ("N/m", "rad", "kg m^2"); "" when the file gives none
+    std::string given;        ///< the value as the file gives it, where it was converted ("30 deg"); else ""
     std::string description;
     GiNaC::symbol symbol;
-    double value = 0.0;
+    double value = 0.0;       ///< in SI: a file's `value = 30` with `unit = "deg"` is 0.5236 (rad)
     SourceLocation where;
 };
 

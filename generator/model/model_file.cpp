@@ -1,5 +1,6 @@
 /** @file model_file.cpp  Model files: TOML via toml++, every problem located at file:line:col. */
 #include "model/model_file.hpp"
+#include "model/units.hpp"
 
 #include "model/latex_name.hpp"
 #include "text/escape.hpp"
@@ -13,6 +14,7 @@
 #ifndef TOML_ASSERT
 #define TOML_ASSERT(expr) static_assert(true)
 #endif
+#include <fmt/format.h>
 #include <toml++/toml.h>
 
 #include <algorithm>
@@ -287,7 +289,7 @@ class Loader {
             model.description = string_value(*n, "description");
 
         const std::vector<Entry> coordinates =
-            entries(root, "coordinates", {"name", "latex", "initial", "rate"}, true);
+            entries(root, "coordinates", {"name", "latex", "initial", "rate", "unit", "description"}, true);
         const std::vector<Entry> parameters =
             entries(root, "parameters", {"name", "value", "unit", "latex", "description"}, false);
         const std::vector<Entry> constraints = entries(root, "constraints", {"name", "kind", "expr"}, false);
@@ -331,7 +333,7 @@ class Loader {
             Parameter parameter;
             parameter.name = p.name;
             parameter.latex = latex_field(*p.table).value_or(default_latex(p.name));
-            parameter.unit = optional_string(*p.table, "unit").value_or("");
+            parameter.unit = optional_string(*p.table, "unit").value_or("");  // its SI form below, with the value
             parameter.description = optional_string(*p.table, "description").value_or("");
             parameter.symbol = GiNaC::symbol(p.name, parameter.latex);
             parameter.where = p.where;
@@ -339,13 +341,30 @@ class Loader {
             model.parameters.push_back(std::move(parameter));
         }
 
-        // Numbers after all names exist, so that "pi/4" can say "'m' is not a constant" about a name.
+        // Numbers after all names exist, so that "pi/4" can say "'m' is not a constant" about a name. A number in a
+        // declared unit, or a value with its own ("30 deg", "5 cm"), is converted to SI (model/units.hpp).
         for (std::size_t i = 0; i < coordinates.size(); ++i) {
-            model.coordinates[i].initial = constant(*coordinates[i].table, "initial", symbols, 0.0);
-            model.coordinates[i].rate = constant(*coordinates[i].table, "rate", symbols, 0.0);
+            Coordinate& c = model.coordinates[i];
+            c.description = optional_string(*coordinates[i].table, "description").value_or("");
+            const std::optional<Unit> unit = unit_field(*coordinates[i].table);
+            std::optional<Unit> per_second;
+            if (unit) {
+                per_second = *unit;
+                per_second->text = "(" + unit->text + ")/s";
+                per_second->dimension.exponent[2] -= 1;
+                c.unit = unit->si();
+            }
+            c.initial = constant(*coordinates[i].table, "initial", symbols, 0.0, unit ? &*unit : nullptr);
+            c.rate = constant(*coordinates[i].table, "rate", symbols, 0.0, per_second ? &*per_second : nullptr);
         }
-        for (std::size_t i = 0; i < parameters.size(); ++i)
-            model.parameters[i].value = constant(*parameters[i].table, "value", symbols, 0.0);
+        for (std::size_t i = 0; i < parameters.size(); ++i) {
+            Parameter& p = model.parameters[i];
+            const std::optional<Unit> unit = unit_field(*parameters[i].table);
+            if (unit) p.unit = unit->to_si == 1.0 ? unit->text : unit->si();
+            std::optional<Unit> own;  // "40 N/m" without a `unit`: the value's own
+            p.value = constant(*parameters[i].table, "value", symbols, 0.0, unit ? &*unit : nullptr, &p.given, &own);
+            if (!unit && own) p.unit = own->to_si == 1.0 ? own->text : own->si();
+        }
 
         read_lagrangian(root, symbols, !bodies.empty(), model);
         read_bodies(bodies, symbols, model);
@@ -551,23 +570,77 @@ class Loader {
         }
     }
 
-    /// A number, or a string with a constant expression such as "pi/4".
-    double constant(const toml::table& table, const std::string& key, const SymbolTable& symbols,
-                    double fallback) const {
+    /// The `unit` of an entry, read by UDUNITS-2; nothing when absent or "".
+    std::optional<Unit> unit_field(const toml::table& table) const {
+        const toml::node* node = table.get("unit");
+        if (!node) return std::nullopt;
+        const std::string text = string_value(*node, "unit");
+        if (text.find_first_not_of(' ') == std::string::npos) return std::nullopt;
+        try {
+            return parse_unit(text);
+        } catch (const UnitError& e) {
+            fail(src_.at(*node), std::string("unit: ") + e.what());
+        }
+    }
+
+    /// A number, or a string with a constant expression such as "pi/4", or a value with its unit ("30 deg"). With
+    /// `unit` (the entry's declared unit) a bare number is in that unit; the result is in SI either way, and a value
+    /// with a unit of another dimension is an error. `given` receives the text of a value that was converted.
+    double constant(const toml::table& table, const std::string& key, const SymbolTable& symbols, double fallback,
+                    const Unit* unit = nullptr, std::string* given = nullptr, std::optional<Unit>* own_unit = nullptr) const {
         const toml::node* node = table.get(key);
         if (!node) return fallback;
         double value = 0.0;
+        const double scale = unit ? unit->to_si : 1.0;
+        auto record = [&](const std::string& text) {
+            if (given && scale != 1.0) *given = text;
+        };
         if (const auto* i = node->as_integer()) {
-            value = static_cast<double>(i->get());
+            value = static_cast<double>(i->get()) * scale;
+            record(std::to_string(i->get()) + " " + (unit ? unit->text : ""));
         } else if (const auto* f = node->as_floating_point()) {
-            value = f->get();
+            value = f->get() * scale;
             if (!std::isfinite(value)) fail(src_.at(*node), "'" + key + "' must be a finite number");
+            record(fmt::format("{} {}", f->get(), unit ? unit->text : ""));
         } else if (const auto* s = node->as_string()) {
             try {
-                value = evaluate_constant(s->get(), symbols);
+                value = evaluate_constant(s->get(), symbols) * scale;
+                record(s->get() + " " + (unit ? unit->text : ""));
             } catch (const ExpressionError& e) {
-                fail(inside_string(*node, e.offset()), e.message());
+                // "30 deg", "40 N/m": a constant expression and a unit after it.
+                const auto with_unit = split_value_with_unit(
+                    s->get(), [&](const std::string& number) { return evaluate_constant(number, symbols); });
+                if (!with_unit) {
+                    // "40 bananas": a number, then a word that is no unit; say so rather than "write 40*bananas".
+                    const std::string& text = s->get();
+                    const std::size_t cut = text.find_last_of(' ');
+                    if (cut != std::string::npos && cut + 1 < text.size() && std::isalpha(static_cast<unsigned char>(text[cut + 1]))) {
+                        bool number = true;
+                        try {
+                            evaluate_constant(text.substr(0, cut), symbols);
+                        } catch (const ExpressionError&) {
+                            number = false;
+                        }
+                        if (number) {
+                            try {
+                                parse_unit(text.substr(cut + 1));
+                            } catch (const UnitError& u) {
+                                fail(inside_string(*node, cut + 1), u.what());
+                            }
+                        }
+                    }
+                    fail(inside_string(*node, e.offset()), e.message());
+                }
+                const Unit& own = with_unit->second;
+                if (unit && own.dimension != unit->dimension)
+                    fail(src_.at(*node), "'" + key + "' is \"" + s->get() + "\", in " + own.dimension.str() +
+                                             ", but the unit declared here, " + unit->text + ", is " +
+                                             unit->dimension.str());
+                value = with_unit->first * own.to_si;
+                if (given && own.to_si != 1.0) *given = s->get();
+                if (own_unit) *own_unit = own;
             }
+            if (!std::isfinite(value)) fail(src_.at(*node), "'" + key + "' must be a finite number");
         } else {
             fail(src_.at(*node), "'" + key +
                                      "' must be a number or a string with a constant expression such as "

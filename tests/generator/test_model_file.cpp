@@ -317,10 +317,11 @@ TEST_CASE("expression errors point at the character inside the string", "[model]
                             "+ zz\"\"\"\r\n"),
                    StartsWith("test.toml:6:4: unknown symbol 'zz'"));
         // toml++ counts columns in code points; the column reported counts bytes (ψ is two).
-        // (A unit, not a LaTeX name, holds the non-ASCII text: LaTeX names are ASCII, see docs/security.md.)
-        CHECK_THAT(error_of("parameters = [{name = \"k\", unit = \"ψψ\", value = \"1 + m\"}]\n"
+        // (A description, not a LaTeX name or a unit, holds the non-ASCII text: LaTeX names are ASCII, see
+        // docs/security.md, and units are read by UDUNITS-2.)
+        CHECK_THAT(error_of("parameters = [{name = \"k\", description = \"ψψ\", value = \"1 + m\"}]\n"
                             "coordinates = [{name = \"psi\"}]\nlagrangian.T = \"psi'^2\"\n"),
-                   StartsWith("test.toml:1:56: unknown symbol 'm'"));
+                   StartsWith("test.toml:1:63: unknown symbol 'm'"));
     }
 }
 
