@@ -1,5 +1,6 @@
 /** @file modes_command.cpp  `eomgen modes`: the equilibria and their normal modes as text, Markdown or JSON. */
 #include "cli/modes_command.hpp"
+#include "cli/unit_values.hpp"
 
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
@@ -304,7 +305,13 @@ int ModesCommand::run() const {
     ModesOptions options;
     ModesResult result;
     try {
-        for (const std::string& s : set_) options.set.insert(assignment(s, "--set"));
+        for (const std::string& s : set_) {
+            try {  // a bare number in the parameter's declared unit, or with its own ("45 deg")
+                options.set.insert(assignment(assignment_in_si(model, s, false, "--set"), "--set"));
+            } catch (const std::invalid_argument& e) {
+                throw ModesError(e.what());
+            }
+        }
         for (const std::string& s : momentum_) options.momentum.insert(assignment(s, "--momentum"));
         for (const std::string& guess : at_) {
             std::map<std::string, double> g;

@@ -9,6 +9,7 @@
 #include "cli/latex_equations.hpp"
 #include "cli/modes_command.hpp"
 #include "cli/plot.hpp"
+#include "cli/unit_values.hpp"
 #include "cli/process.hpp"
 #include "cli/run_command.hpp"
 #include "codegen/cpp_emitter.hpp"
@@ -163,7 +164,8 @@ Modes small_oscillations_of(const Model& model, const Equations& eq, const sim::
     Modes m;
     try {
         ModesOptions options;
-        for (const std::string& s : o.set) options.set.insert(sim::parse_assignment(s, "--set"));
+        for (const std::string& s : o.set)
+            options.set.insert(sim::parse_assignment(assignment_in_si(model, s, false, "--set"), "--set"));
         m.result = small_oscillations(model, eq, options);
     } catch (const std::exception& e) {
         m.why_not = e.what();
@@ -442,6 +444,13 @@ int ReportCommand::run() {
         if (!make_directory()) return 3;
         eomgen::sim::Options o = options_;
         o.model = model.name;
+        try {  // a bare number in the parameter's declared unit, or with its own ("45 deg"); SI for the driver
+            assignments_in_si(model, o.set, false, "--set");
+            assignments_in_si(model, o.init, true, "--init");
+        } catch (const std::invalid_argument& e) {
+            std::cerr << "eomgen report: " << e.what() << "\n";
+            return 2;
+        }
         sim.csv = model.name + ".csv";
         o.csv = (dir / sim.csv).string();
         progress("integrating");

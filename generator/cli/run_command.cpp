@@ -1,6 +1,7 @@
 /** @file run_command.cpp  `eomgen run`: model file → equations → compiled code → trajectory, CSV, plot. */
 #include "cli/run_command.hpp"
 #include "table_driver.hpp"  // the driver for TableModel, compiled once
+#include "cli/unit_values.hpp"
 
 #include "cli/compiled_model.hpp"
 #include "cli/ensemble_command.hpp"
@@ -197,6 +198,13 @@ int RunCommand::run_model() {
     // A plot needs the samples: into a private temporary CSV unless --csv names one.
     eomgen::sim::Options o = options_;
     o.model = model.name;
+    try {  // a bare number in the parameter's declared unit, or with its own ("45 deg"); SI for the driver
+        assignments_in_si(model, o.set, false, "--set");
+        assignments_in_si(model, o.init, true, "--init");
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "eomgen run: " << e.what() << "\n";
+        return 2;
+    }
     if (show_progress)
         o.progress = ::isatty(STDERR_FILENO) ? eomgen::ProgressStyle::Terminal : eomgen::ProgressStyle::Lines;
     std::optional<TempDir> samples_dir;

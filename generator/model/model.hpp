@@ -1,9 +1,12 @@
 /** @file model.hpp  The in-memory model: coordinates, parameters, T and V as GiNaC expressions. */
 #pragma once
 
+#include "model/units.hpp"
+
 #include <ginac/ginac.h>
 
 #include <array>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -41,6 +44,7 @@ struct Coordinate {
     double initial = 0.0;  ///< default q(0), in SI (rad for an angle)
     double rate = 0.0;     ///< default q̇(0), in SI
     std::string unit;      ///< the SI unit q is in ("m", "rad"); "" when the file gives none
+    std::optional<Unit> declared_unit;  ///< the file's `unit` ("deg"): bare numbers on command lines are in it
     std::string description;
     SourceLocation where;
 };
@@ -51,6 +55,7 @@ struct Parameter {
     std::string latex;
     std::string unit;         ///< the SI unit `value` is in ("N/m", "rad", "kg m^2"); "" when the file gives none
     std::string given;        ///< the value as the file gives it, where it was converted ("30 deg"); else ""
+    std::optional<Unit> declared_unit;  ///< the file's `unit` ("deg"): bare numbers on command lines are in it
     std::string description;
     GiNaC::symbol symbol;
     double value = 0.0;       ///< in SI: a file's `value = 30` with `unit = "deg"` is 0.5236 (rad)

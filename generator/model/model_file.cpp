@@ -353,6 +353,7 @@ class Loader {
                 per_second->text = "(" + unit->text + ")/s";
                 per_second->dimension.exponent[2] -= 1;
                 c.unit = unit->si();
+                c.declared_unit = unit;
             }
             c.initial = constant(*coordinates[i].table, "initial", symbols, 0.0, unit ? &*unit : nullptr);
             c.rate = constant(*coordinates[i].table, "rate", symbols, 0.0, per_second ? &*per_second : nullptr);
@@ -361,6 +362,7 @@ class Loader {
             Parameter& p = model.parameters[i];
             const std::optional<Unit> unit = unit_field(*parameters[i].table);
             if (unit) p.unit = unit->to_si == 1.0 ? unit->text : unit->si();
+            p.declared_unit = unit;
             std::optional<Unit> own;  // "40 N/m" without a `unit`: the value's own
             p.value = constant(*parameters[i].table, "value", symbols, 0.0, unit ? &*unit : nullptr, &p.given, &own);
             if (!unit && own) p.unit = own->to_si == 1.0 ? own->text : own->si();
