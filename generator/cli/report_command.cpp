@@ -444,13 +444,8 @@ int ReportCommand::run() {
         if (!make_directory()) return 3;
         eomgen::sim::Options o = options_;
         o.model = model.name;
-        try {  // a bare number in the parameter's declared unit, or with its own ("45 deg"); SI for the driver
-            assignments_in_si(model, o.set, false, "--set");
-            assignments_in_si(model, o.init, true, "--init");
-        } catch (const std::invalid_argument& e) {
-            std::cerr << "eomgen report: " << e.what() << "\n";
-            return 2;
-        }
+        // A bare number in the parameter's declared unit, or with its own ("45 deg"); SI for the driver.
+        if (!options_in_si(model, o.set, o.init, "eomgen report")) return 2;
         sim.csv = model.name + ".csv";
         o.csv = (dir / sim.csv).string();
         progress("integrating");

@@ -198,13 +198,8 @@ int RunCommand::run_model() {
     // A plot needs the samples: into a private temporary CSV unless --csv names one.
     eomgen::sim::Options o = options_;
     o.model = model.name;
-    try {  // a bare number in the parameter's declared unit, or with its own ("45 deg"); SI for the driver
-        assignments_in_si(model, o.set, false, "--set");
-        assignments_in_si(model, o.init, true, "--init");
-    } catch (const std::invalid_argument& e) {
-        std::cerr << "eomgen run: " << e.what() << "\n";
-        return 2;
-    }
+    // A bare number in the parameter's declared unit, or with its own ("45 deg"); SI for the driver.
+    if (!options_in_si(model, o.set, o.init, "eomgen run")) return 2;
     if (show_progress)
         o.progress = ::isatty(STDERR_FILENO) ? eomgen::ProgressStyle::Terminal : eomgen::ProgressStyle::Lines;
     std::optional<TempDir> samples_dir;

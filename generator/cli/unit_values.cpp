@@ -6,6 +6,7 @@
 #include <eomgen/simulation.hpp>
 
 #include <cctype>
+#include <iostream>
 #include <optional>
 #include <sstream>
 
@@ -90,6 +91,18 @@ std::string assignment_in_si(const Model& model, const std::string& text, bool s
 
 void assignments_in_si(const Model& model, std::vector<std::string>& assignments, bool state, const char* option) {
     for (std::string& a : assignments) a = assignment_in_si(model, a, state, option);
+}
+
+bool options_in_si(const Model& model, std::vector<std::string>& set, std::vector<std::string>& init,
+                   const char* program) {
+    try {
+        assignments_in_si(model, set, false, "--set");
+        assignments_in_si(model, init, true, "--init");
+        return true;
+    } catch (const std::invalid_argument& e) {
+        std::cerr << program << ": " << e.what() << "\n";
+        return false;
+    }
 }
 
 }  // namespace eomgen::cli

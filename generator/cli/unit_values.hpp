@@ -18,4 +18,9 @@ std::string assignment_in_si(const Model& model, const std::string& text, bool s
 /// Each of `assignments` through assignment_in_si.
 void assignments_in_si(const Model& model, std::vector<std::string>& assignments, bool state, const char* option);
 
+/// --set (`set`) and --init (`init`) through assignment_in_si; false, with "<program>: reason" on stderr, for a
+/// value eomgen cannot take.
+bool options_in_si(const Model& model, std::vector<std::string>& set, std::vector<std::string>& init,
+                   const char* program);
+
 }  // namespace eomgen::cli
