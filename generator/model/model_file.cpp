@@ -1,5 +1,6 @@
 /** @file model_file.cpp  Model files: TOML via toml++, every problem located at file:line:col. */
 #include "model/model_file.hpp"
+#include "model/dimensions.hpp"
 #include "model/units.hpp"
 
 #include "model/latex_name.hpp"
@@ -367,6 +368,17 @@ class Loader {
             p.value = constant(*parameters[i].table, "value", symbols, 0.0, unit ? &*unit : nullptr, &p.given, &own);
             if (!unit && own) p.unit = own->to_si == 1.0 ? own->text : own->si();
         }
+        dims_[model.t] = Dims{{0, 0, 1, 0, 0, 0, 0}};
+        for (const Parameter& p : model.parameters)
+            if (p.declared_unit) dims_[p.symbol] = Dims::of(p.declared_unit->dimension);
+        for (const Coordinate& c : model.coordinates)
+            if (c.declared_unit) {
+                const Dims q = Dims::of(c.declared_unit->dimension), per_second{{0, 0, -1, 0, 0, 0, 0}};
+                dims_[c.q] = q;
+                dims_[c.qd] = q + per_second;
+                dims_[c.qdd] = q + per_second + per_second;
+                for (const GiNaC::symbol& x : {c.q, c.qd, c.qdd}) coordinate_dims_.push_back(dims_[x]);
+            }
 
         read_lagrangian(root, symbols, !bodies.empty(), model);
         read_bodies(bodies, symbols, model);
@@ -652,6 +664,74 @@ class Loader {
         return value;
     }
 
+    /// Dimensional analysis of an expression term by term (model/dimensions.hpp): each top-level term of its text
+    /// is parsed alone and must have `expected` (an energy for T and V), or, without one, the first known term's
+    /// dimension; an inconsistency inside a term is an error too, at the term's place. Terms with a symbol of no
+    /// declared unit are not judged.
+    void check_dimensions(const toml::node& node, const SymbolTable& symbols, const ParseOptions& options,
+                          const std::optional<Dims>& expected, const std::string& what) const {
+        const auto* s = node.as_string();
+        if (!s || dims_.size() <= 1) return;  // only t: the file declares no unit
+        struct Term {
+            std::string text;
+            std::size_t offset;
+            Dims dims;
+        };
+        std::vector<Term> terms;
+        for (const auto& [text, offset] : top_level_terms(s->get())) {
+            const std::size_t lead = text.find_first_not_of(" \t\r\n+");
+            if (lead == std::string::npos) continue;
+            std::optional<Dims> d;
+            try {
+                d = dimension_of(parse_expression(text, symbols, options), dims_);
+            } catch (const DimensionError& e) {
+                fail(inside_string(node, offset + lead), what + ": " + e.what());
+            } catch (const ExpressionError&) {
+                continue;  // a term that does not stand alone; the whole expression was parsed already
+            }
+            if (!d) continue;
+            std::string term = text.substr(lead);
+            while (!term.empty() && std::isspace(static_cast<unsigned char>(term.back()))) term.pop_back();
+            terms.push_back({term, offset + lead, *d});
+        }
+        if (terms.empty()) return;
+        // The dimension the terms must have: the expected one; else the most frequent, a tie going to one that a
+        // coordinate or its velocity has (x' - R psi' cos(phi): m/s), then to the first.
+        Dims want;
+        if (expected) {
+            want = *expected;
+        } else {
+            int best = -1;
+            for (const Term& t : terms) {
+                int count = 0;
+                for (const Term& u : terms) count += u.dims == t.dims ? 2 : 0;
+                if (std::find(coordinate_dims_.begin(), coordinate_dims_.end(), t.dims) != coordinate_dims_.end()) ++count;
+                if (count > best) {
+                    best = count;
+                    want = t.dims;
+                }
+            }
+        }
+        const auto reference = std::find_if(terms.begin(), terms.end(), [&](const Term& t) { return t.dims == want; });
+        for (const Term& t : terms) {
+            if (t.dims == want) continue;
+            const Dims extra = t.dims - want;
+            bool more = false, fewer = false;
+            for (double x : extra.e) {
+                more = more || x > 1e-9;
+                fewer = fewer || x < -1e-9;
+            }
+            const std::string off = more && !fewer ? "a factor " + extra.str() + " too many"
+                                    : fewer && !more ? "a factor " + (extra * -1.0).str() + " missing"
+                                                     : "off by a factor " + extra.str();
+            fail(inside_string(node, t.offset),
+                 what + ": the term " + t.text + " is " + t.dims.str() + ", but " +
+                     (expected ? std::string("it must be ") + want.str()
+                               : "the term " + reference->text + " is " + want.str()) +
+                     " (" + off + ")");
+        }
+    }
+
     GiNaC::ex expression(const toml::node& node, const std::string& key, const SymbolTable& symbols,
                          const ParseOptions& options) const {
         const auto* s = node.as_string();
@@ -684,6 +764,7 @@ class Loader {
         if (!T && !has_bodies) fail(src_.at(*table), "missing key 'T' in [lagrangian] (the kinetic energy)");
         if (T) {
             model.T.expr = expression(*T, "T", symbols, {});
+            check_dimensions(*T, symbols, {}, energy_dims(), "T is an energy");
             model.T.text = T->as_string()->get();
             model.T.where = string_start(*T);
         } else {
@@ -694,6 +775,7 @@ class Loader {
             ParseOptions options;
             options.forbid_velocities = "the potential energy V(q, t) must not depend on velocities";
             model.V.expr = expression(*V, "V", symbols, options);
+            check_dimensions(*V, symbols, options, energy_dims(), "V is an energy");
             model.V.text = V->as_string()->get();
             model.V.where = string_start(*V);
         } else {
@@ -706,6 +788,8 @@ class Loader {
         model.R.where = src_.at(*table);
         if (const toml::node* R = table->get("R")) {
             model.R.expr = expression(*R, "R", symbols, {});
+            check_dimensions(*R, symbols, {}, energy_dims() - Dims{{0, 0, 1, 0, 0, 0, 0}},
+                             "R (Rayleigh's dissipation function) is a power");
             model.R.text = R->as_string()->get();
             model.R.where = string_start(*R);
         }
@@ -894,6 +978,7 @@ class Loader {
                 options.forbid_velocities =
                     "a holonomic constraint g(q, t) = 0 has no velocities (declare kind = \"nonholonomic\")";
             c.expr.expr = expression(*expr, "expr", symbols, options);
+            check_dimensions(*expr, symbols, options, std::nullopt, "constraint '" + c.name + "' is homogeneous");
             c.expr.text = expr->as_string()->get();
             c.expr.where = string_start(*expr);
             model.constraints.push_back(std::move(c));
@@ -1129,6 +1214,10 @@ class Loader {
         for (std::size_t i = 0; i < names.size(); ++i)
             if (const toml::node* q = table->get(names[i])) {
                 model.forces[i].expr = expression(*q, names[i], symbols, {});
+                // Q_i does the work Q_i δq_i: an energy per unit of the coordinate.
+                if (const auto qd = dims_.find(model.coordinates[i].q); qd != dims_.end())
+                    check_dimensions(*q, symbols, {}, energy_dims() - qd->second,
+                                     "the force on " + names[i] + " is an energy per unit of " + names[i]);
                 model.forces[i].text = q->as_string()->get();
                 model.forces[i].where = string_start(*q);
             }
@@ -1174,6 +1263,9 @@ class Loader {
     }
 
     SourceText src_;
+    /// The dimension of each symbol whose entry declares a unit (model/dimensions.hpp), filled in with the values.
+    mutable std::map<GiNaC::ex, Dims, GiNaC::ex_is_less> dims_;
+    mutable std::vector<Dims> coordinate_dims_;  ///< of q, q̇ and q̈ of each coordinate with a unit
     std::string path_;
 };
 

@@ -1,0 +1,175 @@
+/** @file dimensions.cpp  The dimension of a GiNaC expression from its symbols' (dimensions.hpp). */
+#include "model/dimensions.hpp"
+
+#include <cctype>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+namespace eomgen {
+namespace {
+
+constexpr const char* kBase[7] = {"kg", "m", "s", "A", "K", "mol", "cd"};
+
+std::string shown(const GiNaC::ex& e) {
+    std::ostringstream os;
+    os << e;
+    std::string s = os.str();
+    // The velocity symbols print as x_dot: the model file writes x'.
+    for (std::size_t at = s.find("_dot"); at != std::string::npos; at = s.find("_dot", at)) s.replace(at, 4, "'");
+    return s.size() > 120 ? s.substr(0, 117) + "..." : s;
+}
+
+std::string power_text(double x) {
+    if (std::abs(x - std::round(x)) < 1e-9) return std::to_string(long(std::lround(x)));
+    std::ostringstream os;
+    os << x;
+    return os.str();
+}
+
+}  // namespace
+
+Dims Dims::of(const Dimension& d) {
+    Dims out;
+    for (std::size_t i = 0; i < 7; ++i) out.e[i] = d.exponent[i];
+    return out;
+}
+
+bool Dims::operator==(const Dims& o) const {
+    for (std::size_t i = 0; i < 7; ++i)
+        if (std::abs(e[i] - o.e[i]) > 1e-9) return false;
+    return true;
+}
+
+Dims Dims::operator+(const Dims& o) const {
+    Dims out;
+    for (std::size_t i = 0; i < 7; ++i) out.e[i] = e[i] + o.e[i];
+    return out;
+}
+
+Dims Dims::operator-(const Dims& o) const { return *this + o * -1.0; }
+
+Dims Dims::operator*(double k) const {
+    Dims out;
+    for (std::size_t i = 0; i < 7; ++i) out.e[i] = e[i] * k;
+    return out;
+}
+
+std::string Dims::str() const {
+    std::string num, den;
+    for (std::size_t i = 0; i < 7; ++i) {
+        const double x = e[i];
+        if (std::abs(x) < 1e-9) continue;
+        std::string& side = x > 0 ? num : den;
+        side += (side.empty() ? "" : " ") + std::string(kBase[i]) +
+                (std::abs(std::abs(x) - 1) < 1e-9 ? "" : "^" + power_text(std::abs(x)));
+    }
+    if (num.empty() && den.empty()) return "1 (dimensionless)";
+    if (den.empty()) return num;
+    return (num.empty() ? "1" : num) + "/" + (den.find(' ') == std::string::npos ? den : "(" + den + ")");
+}
+
+Dims energy_dims() {
+    Dims d;
+    d.e = {1, 2, -2, 0, 0, 0, 0};
+    return d;
+}
+
+std::optional<Dims> dimension_of(const GiNaC::ex& e, const std::map<GiNaC::ex, Dims, GiNaC::ex_is_less>& symbols) {
+    if (e.is_zero()) return std::nullopt;  // 0 has every dimension: "V = 0", a term that cancels
+    if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::constant>(e)) return Dims{};
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+        const auto it = symbols.find(e);
+        if (it == symbols.end()) return std::nullopt;
+        return it->second;
+    }
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+        std::optional<Dims> first;
+        GiNaC::ex first_term;
+        for (const GiNaC::ex& term : e) {
+            const std::optional<Dims> d = dimension_of(term, symbols);
+            if (!d) continue;  // unknown: not judged, the others still are
+            if (!first) {
+                first = d;
+                first_term = term;
+            } else if (*d != *first) {
+                throw DimensionError("the terms of " + shown(e) + " differ: " + shown(first_term) + " is " +
+                                     first->str() + ", " + shown(term) + " is " + d->str());
+            }
+        }
+        if (!first) return std::nullopt;
+        // A sum with a term of unknown dimension has the known terms' dimension only if all are known.
+        for (const GiNaC::ex& term : e)
+            if (!dimension_of(term, symbols)) return std::nullopt;
+        return first;
+    }
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+        Dims total;
+        bool known = true;
+        for (const GiNaC::ex& factor : e) {
+            const std::optional<Dims> d = dimension_of(factor, symbols);
+            if (!d) known = false;
+            else total = total + *d;
+        }
+        if (!known) return std::nullopt;
+        return total;
+    }
+    if (GiNaC::is_a<GiNaC::power>(e)) {
+        const std::optional<Dims> base = dimension_of(e.op(0), symbols);
+        const std::optional<Dims> exponent = dimension_of(e.op(1), symbols);
+        if (exponent && !exponent->dimensionless())
+            throw DimensionError("the exponent of " + shown(e) + " is " + exponent->str() + ", not a number");
+        if (!base) return std::nullopt;
+        if (base->dimensionless()) return Dims{};
+        if (!GiNaC::is_a<GiNaC::numeric>(e.op(1)) || !GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_real()) {
+            throw DimensionError(shown(e) + " raises " + base->str() + " to a power that is not a number");
+        }
+        return *base * GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_double();
+    }
+    if (GiNaC::is_a<GiNaC::function>(e)) {
+        const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+        if (name == "abs" && e.nops() == 1) return dimension_of(e.op(0), symbols);
+        if (name == "atan2" && e.nops() == 2) {
+            const std::optional<Dims> y = dimension_of(e.op(0), symbols), x = dimension_of(e.op(1), symbols);
+            if (y && x && *y != *x)
+                throw DimensionError("the arguments of " + shown(e) + " differ: " + y->str() + " and " + x->str());
+            return Dims{};
+        }
+        for (const GiNaC::ex& argument : e) {
+            const std::optional<Dims> d = dimension_of(argument, symbols);
+            if (d && !d->dimensionless())
+                throw DimensionError("the argument of " + name + " in " + shown(e) + " is " + d->str() +
+                                     ", not a number");
+        }
+        return Dims{};
+    }
+    return std::nullopt;
+}
+
+std::vector<std::pair<std::string, std::size_t>> top_level_terms(const std::string& text) {
+    std::vector<std::pair<std::string, std::size_t>> out;
+    int depth = 0;
+    std::size_t start = 0;
+    char previous = 0;  // the last character that is not a space
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '(') ++depth;
+        if (c == ')') --depth;
+        if ((c == '+' || c == '-') && depth == 0 && previous != 0) {
+            const bool operand_end = std::isalnum(static_cast<unsigned char>(previous)) || previous == ')' ||
+                                     previous == '\'' || previous == '.' || previous == '_';
+            // "1e-3": an exponent's sign, after a digit and an e.
+            const bool exponent = (previous == 'e' || previous == 'E') && i >= 2 &&
+                                  std::isdigit(static_cast<unsigned char>(text[i - 2]));
+            if (operand_end && !exponent) {
+                out.emplace_back(text.substr(start, i - start), start);
+                start = i;
+            }
+        }
+        if (c != ' ' && c != '\n' && c != '\t' && c != '\r') previous = c;
+    }
+    out.emplace_back(text.substr(start), start);
+    return out;
+}
+
+}  // namespace eomgen
