@@ -383,7 +383,7 @@ double wrap(double x) {
 }
 
 /// Damped Newton on g(q) = 0 with Jacobian K(q); true when |g| falls below tol.
-constexpr long kNewtonBudget = 12000;
+constexpr long kNewtonBudget = 8000;
 
 /// `budget`: evaluations of g left to the whole search (each at 40 digits); spent here, and the iteration stops
 /// when it is gone, so that a search where no start converges (an empty constraint manifold) ends in bounded time.
