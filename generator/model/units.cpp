@@ -21,9 +21,12 @@ ut_system* units() {
         ut_set_error_message_handler(ut_ignore);
         ut_system* s = ut_read_xml(nullptr);
         if (!s) return s;
-        if (ut_unit* degree = ut_parse(s, "arc_degree", UT_ASCII)) ut_map_symbol_to_unit("deg", UT_ASCII, degree);
-        if (ut_unit* radian = ut_parse(s, "rad", UT_ASCII))
-            if (ut_unit* turn = ut_scale(2 * M_PI, radian)) ut_map_symbol_to_unit("rev", UT_ASCII, turn);
+        // Each name for both encodings: a model file is UTF-8, and UDUNITS-2 keeps a map per encoding.
+        for (const ut_encoding encoding : {UT_ASCII, UT_UTF8}) {
+            if (ut_unit* degree = ut_parse(s, "arc_degree", UT_ASCII)) ut_map_symbol_to_unit("deg", encoding, degree);
+            if (ut_unit* radian = ut_parse(s, "rad", UT_ASCII))
+                if (ut_unit* turn = ut_scale(2 * M_PI, radian)) ut_map_symbol_to_unit("rev", encoding, turn);
+        }
         return s;
     }();
     return system;
@@ -74,10 +77,11 @@ Unit parse_unit(const std::string& text) {
     trimmed.erase(0, trimmed.find_first_not_of(' '));
     trimmed.erase(trimmed.find_last_not_of(' ') + 1);
     if (trimmed.empty()) throw UnitError("an empty unit");
-    UnitPtr unit(ut_parse(system, trimmed.c_str(), UT_ASCII));
+    // UTF-8: "N·m", "m²", "µm", "°" as well as "N m", "m^2" (ASCII is a part of it).
+    UnitPtr unit(ut_parse(system, trimmed.c_str(), UT_UTF8));
     if (!unit)
         throw UnitError("'" + trimmed + "' is not a unit UDUNITS-2 knows (SI units with prefixes and their products, "
-                        "quotients and powers: kg*m^2, N/m, m/s^2, deg, rpm)");
+                        "quotients and powers: kg*m^2, N/m, N·m, m/s^2, deg, rpm)");
     // Its definition in base units: "0.01 m", "m2.kg.s-2", "0.104719755119660 s-1.rad", "K @ 273.15".
     char buffer[512];
     const int length = ut_format(unit.get(), buffer, sizeof buffer, UT_ASCII | UT_DEFINITION);
