@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -74,6 +75,19 @@ std::string matrix_json(const std::vector<std::vector<double>>& m) {
     return s + "]";
 }
 
+/// Whether the model file declares units (model/units.hpp): then its numbers are SI, and ω is in rad/s.
+bool declares_units(const Model& model) {
+    return std::any_of(model.parameters.begin(), model.parameters.end(), [](const Parameter& p) { return p.declared_unit.has_value(); }) ||
+           std::any_of(model.coordinates.begin(), model.coordinates.end(), [](const Coordinate& c) { return c.declared_unit.has_value(); });
+}
+
+/// " rad" for a coordinate in rad, "" where it has no unit.
+std::string coordinate_unit(const Model& model, const std::string& name) {
+    for (const Coordinate& c : model.coordinates)
+        if (c.name == name && !c.unit.empty() && c.unit != "1") return " " + c.unit;
+    return "";
+}
+
 std::string format_text(const Model& model, const ModesResult& r, Printer& p) {
     std::ostringstream os;
     os << model.name << ": " << model.title << "\n";
@@ -94,7 +108,7 @@ std::string format_text(const Model& model, const ModesResult& r, Printer& p) {
         const Equilibrium& e = r.equilibria[k];
         os << "\nequilibrium " << k + 1 << ":";
         for (std::size_t i = 0; i < e.q.size(); ++i) {
-            os << (i ? "," : "") << " " << r.coordinates[i] << " = " << number(e.q[i]);
+            os << (i ? "," : "") << " " << r.coordinates[i] << " = " << number(e.q[i]) << coordinate_unit(model, r.coordinates[i]);
             if (e.exact[i] && !GiNaC::is_a<GiNaC::numeric>(*e.exact[i])) os << " (= " << p.text(*e.exact[i]) << ")";
         }
         os << "\n  " << stability_name(e.stability);
@@ -111,10 +125,14 @@ std::string format_text(const Model& model, const ModesResult& r, Printer& p) {
             for (std::size_t m = 0; m < e.modes.size(); ++m) {
                 const NormalMode& mode = e.modes[m];
                 os << "  mode " << m + 1 << ": ";
-                if (mode.omega2 >= 0)
+                const bool si = declares_units(model);
+                if (mode.omega2 > 0 && si)
+                    os << "omega = " << number(std::sqrt(mode.omega2)) << " rad/s, period "
+                       << number(2 * M_PI / std::sqrt(mode.omega2)) << " s";
+                else if (mode.omega2 >= 0)
                     os << "omega = " << number(std::sqrt(mode.omega2));
                 else
-                    os << "grows at rate " << number(std::sqrt(-mode.omega2));
+                    os << "grows at rate " << number(std::sqrt(-mode.omega2)) << (si ? " 1/s" : "");
                 os << "  (omega^2 = " << number(mode.omega2);
                 if (mode.omega2_exact && !GiNaC::is_a<GiNaC::numeric>(*mode.omega2_exact))
                     os << " = " << p.text(*mode.omega2_exact);
@@ -211,6 +229,7 @@ std::string format_json(const Model& model, const ModesResult& r, Printer& p, co
         for (std::size_t m = 0; m < e.modes.size(); ++m) {
             const NormalMode& mode = e.modes[m];
             js << (m ? ", " : "") << "{\"omega\": " << (mode.omega2 >= 0 ? json_number(std::sqrt(mode.omega2)) : "null")
+               << ", \"omega_unit\": " << (declares_units(model) ? "\"rad/s\"" : "null")
                << ", \"omega2\": " << json_number(mode.omega2) << ", \"omega2_exact\": "
                << (mode.omega2_exact ? json_string(p.latex(*mode.omega2_exact)) : "null") << ", \"shape\": {";
             for (std::size_t i = 0; i < mode.shape.size(); ++i)
