@@ -83,7 +83,7 @@ std::string family_model_text(const FamilySpec& spec) {
               "pivot.\n";
     os << "theta_i is link i's absolute angle from the downward vertical.\"\"\"\n";
     for (int i = 1; i <= n; ++i)
-        os << "\n[[coordinates]]\nname = \"theta" << i << "\"\ninitial = 0.5\nrate = 0.0\n";
+        os << "\n[[coordinates]]\nname = \"theta" << i << "\"\ninitial = 0.5\nrate = 0.0\nunit = \"rad\"\n";
     for (int i = 1; i <= n; ++i)
         os << "\n[[parameters]]\nname = \"m" << i
            << "\"\nvalue = 1.0\nunit = \"kg\"\ndescription = \"mass of " << (rods ? "rod " : "body ") << i
