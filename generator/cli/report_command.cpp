@@ -190,12 +190,15 @@ std::string markdown(const Model& model, const Equations& eq, const std::vector<
     md << "## Model\n\n| coordinate | | q(0) | q̇(0) |\n|---|---|---|---|\n";
     for (const Coordinate& c : model.coordinates)
         md << "| `" << c.name << "` | $" << markdown_math(c.latex) << "$ | " << codegen::shortest_decimal(c.initial)
-           << " | " << codegen::shortest_decimal(c.rate) << " |\n";
+           << (c.unit.empty() || c.unit == "1" ? "" : " " + markdown_text(c.unit)) << " | "
+           << codegen::shortest_decimal(c.rate)
+           << (c.unit.empty() ? "" : " " + markdown_text(c.unit == "1" ? "1/s" : c.unit + "/s")) << " |\n";
     if (!model.parameters.empty()) {
         md << "\n| parameter | | value | unit | description |\n|---|---|---|---|---|\n";
         for (const Parameter& p : model.parameters)
             md << "| `" << p.name << "` | $" << markdown_math(p.latex) << "$ | " << codegen::shortest_decimal(p.value)
-               << " | " << markdown_text(p.unit) << " | " << markdown_text(p.description) << " |\n";
+               << (p.given.empty() ? "" : " (given as " + markdown_text(p.given) + ")") << " | "
+               << markdown_text(p.unit) << " | " << markdown_text(p.description) << " |\n";
     }
     md << "\n## Equations\n\nDerived by eomgen (the same as `eomgen show --latex`).\n\n";
     for (const LatexBlock& b : blocks) {
@@ -272,7 +275,7 @@ std::string latex(const Model& model, const Equations& eq, const std::vector<Lat
         tex << "\\begin{tabular}{llrll}\nparameter & & value & unit & description \\\\ \\hline\n";
         for (const Parameter& p : model.parameters)
             tex << "\\texttt{" << latex_text(p.name) << "} & $" << p.latex << "$ & " << codegen::shortest_decimal(p.value)
-                << " & " << latex_text(p.unit) << " & " << latex_text(p.description) << " \\\\\n";
+                << (p.given.empty() ? "" : " (given as " + latex_text(p.given) + ")") << " & " << latex_text(p.unit) << " & " << latex_text(p.description) << " \\\\\n";
         tex << "\\end{tabular}\n";
     }
     tex << "\\section*{Equations}\n";
