@@ -254,6 +254,31 @@ struct Entry {
     SourceLocation where;
 };
 
+/// x as an exact number for an expression: a fraction p/q (q ≤ 10⁹) within 10⁻¹⁴ of it, or such a fraction of π
+/// (deg: π/180, rpm: π/30); nothing otherwise. The factor of a unit to SI, for an output recorded in that unit.
+std::optional<GiNaC::ex> exact_factor(double x) {
+    for (const bool pi : {false, true}) {
+        const double y = pi ? x / M_PI : x;
+        // Continued fraction of y.
+        long p0 = 0, q0 = 1, p1 = 1, q1 = 0;
+        double r = y;
+        for (int k = 0; k < 40; ++k) {
+            const double a = std::floor(r);
+            if (std::abs(a) > 1e12) break;
+            const long p2 = long(a) * p1 + p0, q2 = long(a) * q1 + q0;
+            if (q2 > 1000000000L) break;
+            p0 = p1, q0 = q1, p1 = p2, q1 = q2;
+            if (std::abs(double(p1) / double(q1) - y) <= 1e-14 * std::abs(y)) {
+                const GiNaC::ex f = GiNaC::numeric(p1, q1);
+                return pi ? f * GiNaC::Pi : f;
+            }
+            if (r - a == 0) break;
+            r = 1 / (r - a);
+        }
+    }
+    return std::nullopt;
+}
+
 class Loader {
   public:
     Loader(std::string_view text, const std::string& path) : src_(text, path), path_(path) {}
@@ -1149,6 +1174,28 @@ class Loader {
             o.expr.expr = expression(*expr, "expr", symbols, {});
             o.expr.text = expr->as_string()->get();
             o.expr.where = string_start(*expr);
+            // Its unit: read by UDUNITS-2, of the expression's dimension where that is known; the value recorded is
+            // in it (an output in cm is the SI value times 100).
+            if (const toml::table* t = e.value->as_table(); t && !o.unit.empty()) {
+                if (const std::optional<Unit> unit = unit_field(*t)) {
+                    std::optional<Dims> d;
+                    try {
+                        d = dimension_of(o.expr.expr, dims_);
+                    } catch (const DimensionError& error) {
+                        fail(string_start(*expr), "output '" + o.name + "': " + error.what());
+                    }
+                    if (d && *d != Dims::of(unit->dimension))
+                        fail(string_start(*expr), "output '" + o.name + "' is " + d->str() + ", but its unit " +
+                                                      unit->text + " is " + Dims::of(unit->dimension).str());
+                    if (unit->to_si != 1.0) {
+                        const std::optional<GiNaC::ex> factor = exact_factor(unit->to_si);
+                        if (!factor)
+                            fail(src_.at(*t->get("unit")), "output '" + o.name + "': the unit " + unit->text +
+                                                               " is not a simple fraction (or fraction of π) of its SI unit");
+                        o.expr.expr = o.expr.expr / *factor;
+                    }
+                }
+            }
             model.outputs.push_back(std::move(o));
         }
     }

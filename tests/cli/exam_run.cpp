@@ -278,7 +278,7 @@ TEST_CASE("eomgen run --plot writes a PNG and an SVG, a path with spaces and she
 
 TEST_CASE("eomgen run records a model's [outputs] in the CSV and plots them", "[run][outputs]") {
     const fs::path model = write_model("bob.toml", R"toml(name = "bob"
-title = "Pendulum with its bob's position recorded (written by exam_run)"
+title = "Pendulum with its bob's position recorded (written by exam_run)'); system('touch PWNED_TITLE'); print('"
 [[coordinates]]
 name = "theta"
 initial = 1.1
@@ -300,7 +300,7 @@ V = "-m*g*l*cos(theta)"
 x_bob = { expr = "l*sin(theta)", unit = "m" }
 y_bob = { expr = "-l*cos(theta)", unit = "m" }
 v_bob = { expr = "l*theta'", unit = "m/s" }
-w_bob = { expr = "theta'", unit = "rad/s'); system('touch PWNED_UNIT'); print('" }
+w_bob = { expr = "theta'", unit = "rad/s", description = "units are read by UDUNITS-2: the title carries the attack" }
 )toml");
     const fs::path csv = kWork / "bob.csv", png = kWork / "bob.png";
     fs::remove(png);
@@ -322,7 +322,7 @@ w_bob = { expr = "theta'", unit = "rad/s'); system('touch PWNED_UNIT'); print('"
         CHECK(std::stod(rows[i][6]) == Approx(l * theta_dot).epsilon(1e-14).margin(1e-15));
     }
     CHECK(read(png).substr(0, 8) == "\x89PNG\r\n\x1a\n");
-    CHECK_FALSE(fs::exists("PWNED_UNIT"));  // a unit is text in the gnuplot script, not a command
+    CHECK_FALSE(fs::exists("PWNED_TITLE"));  // the title is text in the gnuplot script, not a command
 
     // The SVG's text: the outputs panel names each output with its unit, the x-y panel its axes.
     const fs::path svg = kWork / "bob.svg";
