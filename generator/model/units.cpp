@@ -15,6 +15,11 @@ namespace {
 
 constexpr const char* kBase[7] = {"kg", "m", "s", "A", "K", "mol", "cd"};
 
+struct UnitDeleter {
+    void operator()(ut_unit* u) const { ut_free(u); }
+};
+using UnitPtr = std::unique_ptr<ut_unit, UnitDeleter>;
+
 /// The unit system, read once from UDUNITS-2's XML database, with "deg" and "rev" added.
 ut_system* units() {
     static ut_system* system = [] {
@@ -22,10 +27,12 @@ ut_system* units() {
         ut_system* s = ut_read_xml(nullptr);
         if (!s) return s;
         // Each name for both encodings: a model file is UTF-8, and UDUNITS-2 keeps a map per encoding.
+        // The maps hold their own copies: the units made here are freed (LeakSanitizer would count them).
+        UnitPtr degree(ut_parse(s, "arc_degree", UT_ASCII)), radian(ut_parse(s, "rad", UT_ASCII));
+        UnitPtr turn(radian ? ut_scale(2 * M_PI, radian.get()) : nullptr);
         for (const ut_encoding encoding : {UT_ASCII, UT_UTF8}) {
-            if (ut_unit* degree = ut_parse(s, "arc_degree", UT_ASCII)) ut_map_symbol_to_unit("deg", encoding, degree);
-            if (ut_unit* radian = ut_parse(s, "rad", UT_ASCII))
-                if (ut_unit* turn = ut_scale(2 * M_PI, radian)) ut_map_symbol_to_unit("rev", encoding, turn);
+            if (degree) ut_map_symbol_to_unit("deg", encoding, degree.get());
+            if (turn) ut_map_symbol_to_unit("rev", encoding, turn.get());
         }
         return s;
     }();
@@ -37,10 +44,6 @@ std::mutex& lock() {
     return m;
 }
 
-struct UnitDeleter {
-    void operator()(ut_unit* u) const { ut_free(u); }
-};
-using UnitPtr = std::unique_ptr<ut_unit, UnitDeleter>;
 
 std::string format(const std::vector<std::pair<std::string, int>>& factors) {
     std::string num, den;
