@@ -21,7 +21,7 @@ EOMGEN_BUILD_DIR="$build" bash scripts/setup.sh --no-build -DCMAKE_BUILD_TYPE=De
   -DEOMGEN_SANITIZE=address,undefined -DEOMGEN_BUILD_BENCH=OFF
 if ((quick)); then
   targets=(eomgen test_model test_escape test_atomic_file test_checker test_mechanics_codegen test_constraints
-           fuzz_text_fields fuzz_expression fuzz_model_file fuzz_latex fuzz_check fuzz_sim_values)
+           fuzz_text_fields fuzz_expression fuzz_model_file fuzz_latex fuzz_check fuzz_sim_values fuzz_structure)
   cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
   ctest --test-dir "$build" --output-on-failure -j "$(nproc)" \
     -R '^(test_model|test_escape|test_atomic_file|test_checker|test_mechanics_codegen|test_constraints):|^fuzz:.*_bounded$|^cli:(bad_|check_|modes_|mpi_|missing_file|unknown_command|version)'
