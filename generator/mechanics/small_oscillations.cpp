@@ -819,8 +819,20 @@ ModesResult small_oscillations(const Model& model, const Equations& eq_in, const
         }
         const Eigen::LLT<Eigen::MatrixXd> llt(Mm);
         if (llt.info() != Eigen::Success) {
-            result.notes.push_back("an equilibrium where the mass matrix is singular (the coordinates are singular "
-                                   "there) was left out; reduce the cyclic coordinates with --momentum");
+            // Singular here only (Euler angles at θ = 0: reduce the cyclic coordinates), or at every q with these
+            // parameter values (a mass or a length set to 0: nothing has inertia along some direction).
+            bool everywhere = true;
+            for (const double shift : {0.37, 1.21}) {
+                std::vector<double> elsewhere = at;
+                for (std::size_t i = 0; i < n; ++i) elsewhere[i] += shift * double(i + 1);
+                const Eigen::MatrixXd Me = N.transpose() * numeric_matrix(M, n, n, elsewhere) * N;
+                everywhere = everywhere && (!Me.allFinite() || Eigen::LLT<Eigen::MatrixXd>(Me).info() != Eigen::Success);
+            }
+            result.notes.push_back(everywhere ? "the mass matrix is singular at every q with these parameter values (a "
+                                                "mass, a length or an inertia set to 0?): nothing to linearize"
+                                              : "an equilibrium where the mass matrix is singular (the coordinates are "
+                                                "singular there) was left out; reduce the cyclic coordinates with "
+                                                "--momentum");
             continue;
         }
         // First-order system s' = A s, s = [δs, δṡ] on the tangent space; reported in x = [δq, δq̇] as T A Tᵀ,
