@@ -1,6 +1,7 @@
 /** @file dimensions.cpp  The dimension of a GiNaC expression from its symbols' (dimensions.hpp). */
 #include "model/dimensions.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <sstream>
@@ -170,6 +171,91 @@ std::vector<std::pair<std::string, std::size_t>> top_level_terms(const std::stri
     }
     out.emplace_back(text.substr(start), start);
     return out;
+}
+
+std::optional<TermProblem> term_dimension_problem(
+    const std::string& text, const std::function<GiNaC::ex(const std::string&)>& parse,
+    const std::map<GiNaC::ex, Dims, GiNaC::ex_is_less>& symbols, const std::vector<Dims>& coordinate_dims,
+    const std::optional<Dims>& expected, const std::string& what) {
+    struct Term {
+        std::string text;
+        std::size_t offset;
+        Dims dims;
+    };
+    std::vector<Term> terms;
+    for (const auto& [term_text, offset] : top_level_terms(text)) {
+        const std::size_t lead = term_text.find_first_not_of(" \t\r\n+");
+        if (lead == std::string::npos) continue;
+        std::optional<Dims> d;
+        try {
+            d = dimension_of(parse(term_text), symbols);
+        } catch (const DimensionError& e) {
+            return TermProblem{offset + lead, what + ": " + e.what()};
+        } catch (const std::exception&) {
+            continue;  // a term that does not stand alone; the whole expression was parsed already
+        }
+        if (!d) continue;
+        std::string term = term_text.substr(lead);
+        while (!term.empty() && std::isspace(static_cast<unsigned char>(term.back()))) term.pop_back();
+        terms.push_back({term, offset + lead, *d});
+    }
+    if (terms.empty()) return std::nullopt;
+    Dims want;
+    if (expected) {
+        want = *expected;
+    } else {
+        int best = -1;
+        for (const Term& t : terms) {
+            int count = 0;
+            for (const Term& u : terms) count += u.dims == t.dims ? 2 : 0;
+            if (std::find(coordinate_dims.begin(), coordinate_dims.end(), t.dims) != coordinate_dims.end()) ++count;
+            if (count > best) {
+                best = count;
+                want = t.dims;
+            }
+        }
+    }
+    const auto reference = std::find_if(terms.begin(), terms.end(), [&](const Term& t) { return t.dims == want; });
+    for (const Term& t : terms) {
+        if (t.dims == want) continue;
+        const Dims extra = t.dims - want;
+        bool more = false, fewer = false;
+        for (double x : extra.e) {
+            more = more || x > 1e-9;
+            fewer = fewer || x < -1e-9;
+        }
+        const std::string off = more && !fewer ? "a factor " + extra.str() + " too many"
+                                : fewer && !more ? "a factor " + (extra * -1.0).str() + " missing"
+                                                 : "off by a factor " + extra.str();
+        return TermProblem{t.offset, what + ": the term " + t.text + " is " + t.dims.str() + ", but " +
+                                         (expected ? std::string("it must be ") + want.str()
+                                                   : "the term " + reference->text + " is " + want.str()) +
+                                         " (" + off + ")"};
+    }
+    return std::nullopt;
+}
+
+std::optional<GiNaC::ex> exact_factor(double x) {
+    for (const bool pi : {false, true}) {
+        const double y = pi ? x / M_PI : x;
+        // The continued fraction of y, until a convergent is within 1e-14 of it.
+        long p0 = 0, q0 = 1, p1 = 1, q1 = 0;
+        double r = y;
+        for (int k = 0; k < 40; ++k) {
+            const double a = std::floor(r);
+            if (std::abs(a) > 1e12) break;
+            const long p2 = long(a) * p1 + p0, q2 = long(a) * q1 + q0;
+            if (q2 > 1000000000L) break;
+            p0 = p1, q0 = q1, p1 = p2, q1 = q2;
+            if (std::abs(double(p1) / double(q1) - y) <= 1e-14 * std::abs(y)) {
+                const GiNaC::ex f = GiNaC::numeric(p1, q1);
+                return pi ? f * GiNaC::Pi : f;
+            }
+            if (r - a == 0) break;
+            r = 1 / (r - a);
+        }
+    }
+    return std::nullopt;
 }
 
 }  // namespace eomgen

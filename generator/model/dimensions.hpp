@@ -14,10 +14,12 @@
 #include <ginac/ginac.h>
 
 #include <array>
+#include <functional>
 #include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace eomgen {
 
@@ -47,6 +49,26 @@ struct DimensionError : std::runtime_error {
 /// The dimension of `e` from its symbols' (a symbol missing from `symbols` has none: nothing then); throws
 /// DimensionError where e is inconsistent in itself. `print` writes a subexpression as the message shows it.
 std::optional<Dims> dimension_of(const GiNaC::ex& e, const std::map<GiNaC::ex, Dims, GiNaC::ex_is_less>& symbols);
+
+/// A term whose dimension is wrong: where it starts in the expression's text, and what is wrong.
+struct TermProblem {
+    std::size_t offset = 0;
+    std::string message;
+};
+
+/// Dimensional analysis of an expression's text term by term: each top-level term is parsed alone (`parse`, which
+/// may throw for a term that does not stand alone: it is then skipped) and must have `expected` (an energy for T
+/// and V), or, without one, the dimension most of the terms have (a tie going to one that a coordinate or its
+/// velocity has, `coordinate_dims`; x' - R psi' cos(phi) is in m/s), its inside consistent too. Terms with a symbol
+/// of no declared unit are not judged. The first problem, with `what` ("V is an energy") leading its message.
+std::optional<TermProblem> term_dimension_problem(
+    const std::string& text, const std::function<GiNaC::ex(const std::string&)>& parse,
+    const std::map<GiNaC::ex, Dims, GiNaC::ex_is_less>& symbols, const std::vector<Dims>& coordinate_dims,
+    const std::optional<Dims>& expected, const std::string& what);
+
+/// x as an exact number for an expression: a fraction p/q (q ≤ 10⁹) within 10⁻¹⁴ of it, or such a fraction of π
+/// (deg: π/180, rpm: π/30); nothing otherwise. The factor of a unit to SI, for an output recorded in that unit.
+std::optional<GiNaC::ex> exact_factor(double x);
 
 /// The top-level terms of an expression's text, with their byte offsets: "m/2*x'^2 - k*x" → ("m/2*x'^2", 0),
 /// ("- k*x", 9). A '+' or '−' splits where parentheses are balanced and it follows an operand (not an exponent's

@@ -254,31 +254,6 @@ struct Entry {
     SourceLocation where;
 };
 
-/// x as an exact number for an expression: a fraction p/q (q ≤ 10⁹) within 10⁻¹⁴ of it, or such a fraction of π
-/// (deg: π/180, rpm: π/30); nothing otherwise. The factor of a unit to SI, for an output recorded in that unit.
-std::optional<GiNaC::ex> exact_factor(double x) {
-    for (const bool pi : {false, true}) {
-        const double y = pi ? x / M_PI : x;
-        // Continued fraction of y.
-        long p0 = 0, q0 = 1, p1 = 1, q1 = 0;
-        double r = y;
-        for (int k = 0; k < 40; ++k) {
-            const double a = std::floor(r);
-            if (std::abs(a) > 1e12) break;
-            const long p2 = long(a) * p1 + p0, q2 = long(a) * q1 + q0;
-            if (q2 > 1000000000L) break;
-            p0 = p1, q0 = q1, p1 = p2, q1 = q2;
-            if (std::abs(double(p1) / double(q1) - y) <= 1e-14 * std::abs(y)) {
-                const GiNaC::ex f = GiNaC::numeric(p1, q1);
-                return pi ? f * GiNaC::Pi : f;
-            }
-            if (r - a == 0) break;
-            r = 1 / (r - a);
-        }
-    }
-    return std::nullopt;
-}
-
 class Loader {
   public:
     Loader(std::string_view text, const std::string& path) : src_(text, path), path_(path) {}
@@ -689,72 +664,14 @@ class Loader {
         return value;
     }
 
-    /// Dimensional analysis of an expression term by term (model/dimensions.hpp): each top-level term of its text
-    /// is parsed alone and must have `expected` (an energy for T and V), or, without one, the first known term's
-    /// dimension; an inconsistency inside a term is an error too, at the term's place. Terms with a symbol of no
-    /// declared unit are not judged.
+    /// Dimensional analysis of an expression term by term (model/dimensions.hpp): a problem fails at its term.
     void check_dimensions(const toml::node& node, const SymbolTable& symbols, const ParseOptions& options,
                           const std::optional<Dims>& expected, const std::string& what) const {
         const auto* s = node.as_string();
         if (!s || dims_.size() <= 1) return;  // only t: the file declares no unit
-        struct Term {
-            std::string text;
-            std::size_t offset;
-            Dims dims;
-        };
-        std::vector<Term> terms;
-        for (const auto& [text, offset] : top_level_terms(s->get())) {
-            const std::size_t lead = text.find_first_not_of(" \t\r\n+");
-            if (lead == std::string::npos) continue;
-            std::optional<Dims> d;
-            try {
-                d = dimension_of(parse_expression(text, symbols, options), dims_);
-            } catch (const DimensionError& e) {
-                fail(inside_string(node, offset + lead), what + ": " + e.what());
-            } catch (const ExpressionError&) {
-                continue;  // a term that does not stand alone; the whole expression was parsed already
-            }
-            if (!d) continue;
-            std::string term = text.substr(lead);
-            while (!term.empty() && std::isspace(static_cast<unsigned char>(term.back()))) term.pop_back();
-            terms.push_back({term, offset + lead, *d});
-        }
-        if (terms.empty()) return;
-        // The dimension the terms must have: the expected one; else the most frequent, a tie going to one that a
-        // coordinate or its velocity has (x' - R psi' cos(phi): m/s), then to the first.
-        Dims want;
-        if (expected) {
-            want = *expected;
-        } else {
-            int best = -1;
-            for (const Term& t : terms) {
-                int count = 0;
-                for (const Term& u : terms) count += u.dims == t.dims ? 2 : 0;
-                if (std::find(coordinate_dims_.begin(), coordinate_dims_.end(), t.dims) != coordinate_dims_.end()) ++count;
-                if (count > best) {
-                    best = count;
-                    want = t.dims;
-                }
-            }
-        }
-        const auto reference = std::find_if(terms.begin(), terms.end(), [&](const Term& t) { return t.dims == want; });
-        for (const Term& t : terms) {
-            if (t.dims == want) continue;
-            const Dims extra = t.dims - want;
-            bool more = false, fewer = false;
-            for (double x : extra.e) {
-                more = more || x > 1e-9;
-                fewer = fewer || x < -1e-9;
-            }
-            const std::string off = more && !fewer ? "a factor " + extra.str() + " too many"
-                                    : fewer && !more ? "a factor " + (extra * -1.0).str() + " missing"
-                                                     : "off by a factor " + extra.str();
-            fail(inside_string(node, t.offset),
-                 what + ": the term " + t.text + " is " + t.dims.str() + ", but " +
-                     (expected ? std::string("it must be ") + want.str()
-                               : "the term " + reference->text + " is " + want.str()) +
-                     " (" + off + ")");
-        }
+        const auto parse = [&](const std::string& term) { return parse_expression(term, symbols, options); };
+        if (const auto problem = term_dimension_problem(s->get(), parse, dims_, coordinate_dims_, expected, what))
+            fail(inside_string(node, problem->offset), problem->message);
     }
 
     GiNaC::ex expression(const toml::node& node, const std::string& key, const SymbolTable& symbols,
