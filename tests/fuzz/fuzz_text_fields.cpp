@@ -1,5 +1,5 @@
 // Fuzz property of issue 19: whatever text a model file puts in its free-text fields (title, source,
-// description, and each parameter's unit and description), the generated header's tokens outside
+// description, each parameter's, a coordinate's and an output's description), the generated header's tokens outside
 // comments and string literals are exactly those of the same model with empty text fields; a field
 // the loader refuses is refused with its file:line:col. libFuzzer entry point; tests/fuzz/standalone.cpp
 // drives it without libFuzzer (ctest's bounded run).
@@ -43,10 +43,13 @@ std::string model_text(const std::vector<std::string>& f, bool raw = false) {
     const auto toml_string = [raw](const std::string& b) { return ::toml_string(b, raw); };
     return "name = \"fuzzed\"\ntitle = " + toml_string(f[0]) + "\nsource = " + toml_string(f[1]) +
            "\ndescription = " + toml_string(f[2]) +
-           "\n\n[[coordinates]]\nname = \"x\"\ninitial = 0.5\n\n"
-           "[[parameters]]\nname = \"m\"\nvalue = 1\nunit = " + toml_string(f[3]) + "\ndescription = " +
-           toml_string(f[4]) + "\n\n[[parameters]]\nname = \"k\"\nvalue = 4\nunit = " + toml_string(f[5]) +
-           "\ndescription = " + toml_string(f[6]) + "\n\n[lagrangian]\nT = \"m/2*x'^2\"\nV = \"k/2*x^2\"\n";
+           // Units are read by UDUNITS-2 and refused unless they are units (tests/cli/bad/unit_code.toml): the
+           // fields that were units are a coordinate's and an output's descriptions, free text like the others.
+           "\n\n[[coordinates]]\nname = \"x\"\ninitial = 0.5\ndescription = " + toml_string(f[3]) + "\n\n"
+           "[[parameters]]\nname = \"m\"\nvalue = 1\nunit = \"kg\"\ndescription = " +
+           toml_string(f[4]) + "\n\n[[parameters]]\nname = \"k\"\nvalue = 4\nunit = \"N/m\"" +
+           "\ndescription = " + toml_string(f[6]) + "\n\n[lagrangian]\nT = \"m/2*x'^2\"\nV = \"k/2*x^2\"\n" +
+           "\n[outputs]\ny = { expr = \"2*x\", description = " + toml_string(f[5]) + " }\n";
 }
 
 /// The header's text outside comments and string and character literals, after line splicing (phase 2
