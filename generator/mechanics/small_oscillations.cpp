@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ctime>
 #include <optional>
 #include <random>
 #include <set>
@@ -384,14 +385,24 @@ double wrap(double x) {
 
 /// Damped Newton on g(q) = 0 with Jacobian K(q); true when |g| falls below tol.
 constexpr long kNewtonBudget = 8000;
+/// And of processor time: an evaluation of a large model's rest conditions can take milliseconds, so that 8 000 of
+/// them took 20 s (tests/fuzz/findings_structure/slow_modes_large_rest_conditions.toml). The search stops at
+/// whichever comes first; the shipped models use a fraction of a second.
+constexpr double kNewtonSeconds = 3.0;
+
+/// Processor seconds since `start`.
+double cpu_seconds_since(std::clock_t start) { return double(std::clock() - start) / CLOCKS_PER_SEC; }
 
 /// `budget`: evaluations of g left to the whole search (each at 40 digits); spent here, and the iteration stops
 /// when it is gone, so that a search where no start converges (an empty constraint manifold) ends in bounded time.
 bool newton(const std::vector<ex>& g, const std::vector<std::vector<ex>>& K, const std::vector<symbol>& q,
-            const exmap& params, std::vector<double>& x, long& budget) {
+            const exmap& params, std::vector<double>& x, long& budget, std::clock_t started) {
     const std::size_t n = q.size();
     auto residual = [&](const std::vector<double>& at, Eigen::VectorXd& r) {
-        if (--budget < 0) return std::numeric_limits<double>::infinity();
+        if (--budget < 0 || cpu_seconds_since(started) > kNewtonSeconds) {
+            budget = -1;
+            return std::numeric_limits<double>::infinity();
+        }
         r.resize(Eigen::Index(n));
         for (std::size_t i = 0; i < n; ++i) r(Eigen::Index(i)) = value_at(g[i], q, at, params);
         return r.allFinite() ? r.norm() : std::numeric_limits<double>::infinity();
@@ -691,6 +702,7 @@ ModesResult small_oscillations(const Model& model, const Equations& eq_in, const
     // and tests/cli/modes spend at most 1 874 of them; a constraint manifold that is empty (no start converges)
     // spent 75 000 in 19 s (tests/fuzz/findings_structure/slow_modes_unsatisfiable_constraint.toml).
     long budget = kNewtonBudget;
+    const std::clock_t search_started = std::clock();
     std::size_t unsearched = 0;
     auto same = [&](const Found& f, const std::vector<double>& x) {
         Eigen::VectorXd d(static_cast<Eigen::Index>(n));
@@ -708,7 +720,7 @@ ModesResult small_oscillations(const Model& model, const Equations& eq_in, const
             ++unsearched;
             continue;
         }
-        if (!newton(rest_eq, rest_jac, unknowns, values.params, x, budget) ||
+        if (!newton(rest_eq, rest_jac, unknowns, values.params, x, budget, search_started) ||
             !(precise_residual(rest_eq, unknowns, x, values.params) < 1e-9))
             continue;
         for (std::size_t i = 0; i < n; ++i)
@@ -735,8 +747,9 @@ ModesResult small_oscillations(const Model& model, const Equations& eq_in, const
         found.push_back(std::move(f));
     }
     if (unsearched > 0)
-        result.notes.push_back("the search for equilibria stopped at its budget of " + std::to_string(kNewtonBudget) +
-                               " evaluations: " + std::to_string(unsearched) + " of " + std::to_string(starts.size()) +
+        result.notes.push_back("the search for equilibria stopped at its budget (" + std::to_string(kNewtonBudget) +
+                               " evaluations or " + std::to_string(int(kNewtonSeconds)) + " s of processor time): " +
+                               std::to_string(unsearched) + " of " + std::to_string(starts.size()) +
                                " starting points were not tried" +
                                (found.empty() ? std::string(" (none of the others converged quickly: is the constraint "
                                                             "manifold empty?)")
