@@ -58,9 +58,7 @@ struct PointForms {
 void check_freedom_left(const Model& model, const std::vector<ConstraintEquations>& out) {
     const std::size_t n = model.dof();
     if (out.size() < n) return;  // redundant rows were refused before: out.size() is the rank
-    if (std::any_of(out.begin(), out.end(), [&](const ConstraintEquations& c) {
-            return !is_zero(c.bias, model) || depends_on_time(c.position, model) || depends_on_time(c.velocity, model);
-        }))
+    if (std::any_of(out.begin(), out.end(), [&](const ConstraintEquations& c) { return moves_with_time(c, model); }))
         return;
     std::string names, coordinates;
     for (const ConstraintEquations& c : out) names += (names.empty() ? "" : ", ") + c.name;
@@ -108,6 +106,11 @@ void check_initial_rank(const Model& model, const std::vector<ConstraintEquation
 }
 
 }  // namespace
+
+bool moves_with_time(const ConstraintEquations& c, const Model& model) {
+    return !is_zero(c.bias, model) ||
+           std::any_of(c.jacobian.begin(), c.jacobian.end(), [&](const GiNaC::ex& a) { return depends_on_time(a, model); });
+}
 
 std::vector<ConstraintEquations> derive_constraints(const Model& model) {
     const std::size_t n = model.dof();

@@ -550,11 +550,8 @@ Equations derive_equations(const Model& model) {
     // dh/dt = −∂L/∂t + q̇·(Q − ∂R/∂q̇) − λ·b (constraint forces do work only through b = ∂g/∂t).
     const bool forced = std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(),
                                     [&](const GiNaC::ex& q) { return !is_zero(q, model); });
-    const bool moving_constraints = std::any_of(eq.constraints.begin(), eq.constraints.end(), [&](const auto& c) {
-        return !is_zero(c.bias, model) ||
-               std::any_of(c.jacobian.begin(), c.jacobian.end(),
-                           [&](const GiNaC::ex& a) { return depends_on_time(a, model); });
-    });
+    const bool moving_constraints = std::any_of(eq.constraints.begin(), eq.constraints.end(),
+                                                [&](const ConstraintEquations& c) { return moves_with_time(c, model); });
     if (!eq.explicit_time && !forced && !moving_constraints)
         eq.conserved.push_back({"h", "h",
                                 eq.constraints.empty() ? "L does not depend on t explicitly"
