@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <sstream>
 #include <vector>
 
@@ -236,24 +238,42 @@ std::optional<TermProblem> term_dimension_problem(
 }
 
 std::optional<GiNaC::ex> exact_factor(double x) {
-    for (const bool pi : {false, true}) {
-        const double y = pi ? x / M_PI : x;
-        // The continued fraction of y, until a convergent is within 1e-14 of it.
+    if (!std::isfinite(x) || x == 0) return std::nullopt;
+    // A fraction of π with a small denominator (deg: π/180, rpm: π/30), from the continued fraction of x/π.
+    {
+        const double y = x / M_PI;
         long p0 = 0, q0 = 1, p1 = 1, q1 = 0;
         double r = y;
-        for (int k = 0; k < 40; ++k) {
+        for (int k = 0; k < 30; ++k) {
             const double a = std::floor(r);
-            if (std::abs(a) > 1e12) break;
+            if (std::abs(a) > 1e9) break;
             const long p2 = long(a) * p1 + p0, q2 = long(a) * q1 + q0;
-            if (q2 > 1000000000L) break;
+            if (q2 > 10000) break;
             p0 = p1, q0 = q1, p1 = p2, q1 = q2;
-            if (std::abs(double(p1) / double(q1) - y) <= 1e-14 * std::abs(y)) {
-                const GiNaC::ex f = GiNaC::numeric(p1, q1);
-                return pi ? f * GiNaC::Pi : f;
-            }
+            if (std::abs(double(p1) / double(q1) - y) <= 1e-14 * std::abs(y)) return GiNaC::numeric(p1, q1) * GiNaC::Pi;
             if (r - a == 0) break;
             r = 1 / (r - a);
         }
+    }
+    // A short decimal (cm: 1/100, mile: 1609.344, lbf: 4.4482216152605), as the definitions give them: the shortest
+    // decimal that reads back as x, if it has at most 15 significant digits (√2 needs 17).
+    for (int digits = 1; digits <= 15; ++digits) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.*e", digits - 1, x);
+        if (std::strtod(text, nullptr) != x) continue;
+        const std::string s(text);
+        const std::size_t e = s.find('e');
+        std::string mantissa = s.substr(0, e);
+        const int exponent = std::atoi(s.c_str() + e + 1);
+        const bool negative = mantissa[0] == '-';
+        if (negative) mantissa.erase(0, 1);
+        mantissa.erase(std::remove(mantissa.begin(), mantissa.end(), '.'), mantissa.end());
+        // value = mantissa × 10^(exponent − (digits − 1))
+        const int power = exponent - (digits - 1);
+        GiNaC::numeric value(mantissa.c_str());
+        if (negative) value = -value;
+        return power >= 0 ? GiNaC::ex(value * GiNaC::pow(GiNaC::numeric(10), power))
+                          : GiNaC::ex(value / GiNaC::pow(GiNaC::numeric(10), -power));
     }
     return std::nullopt;
 }

@@ -66,8 +66,9 @@ std::optional<TermProblem> term_dimension_problem(
     const std::map<GiNaC::ex, Dims, GiNaC::ex_is_less>& symbols, const std::vector<Dims>& coordinate_dims,
     const std::optional<Dims>& expected, const std::string& what);
 
-/// x as an exact number for an expression: a fraction p/q (q ≤ 10⁹) within 10⁻¹⁴ of it, or such a fraction of π
-/// (deg: π/180, rpm: π/30); nothing otherwise. The factor of a unit to SI, for an output recorded in that unit.
+/// x as an exact number for an expression: a fraction of π with a denominator up to 10⁴ (deg: π/180, rpm: π/30),
+/// or a decimal of up to 15 places (cm: 1/100, lbf: 4.4482216152605); nothing otherwise (√2). The factor of a unit
+/// to SI, for an output recorded in that unit.
 std::optional<GiNaC::ex> exact_factor(double x);
 
 /// The top-level terms of an expression's text, with their byte offsets: "m/2*x'^2 - k*x" → ("m/2*x'^2", 0),
