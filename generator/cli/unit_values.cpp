@@ -30,12 +30,7 @@ Declared declared(const Model& model, const std::string& name, bool state) {
         if (c.name == name) return {true, c.declared_unit};
         if (c.name + "_dot" == name) {
             d.known = true;
-            if (c.declared_unit) {
-                Unit u = *c.declared_unit;
-                u.text = "(" + u.text + ")/s";
-                u.dimension.exponent[2] -= 1;
-                d.unit = u;
-            }
+            if (c.declared_unit) d.unit = c.declared_unit->per_second();
             return d;
         }
     }

@@ -350,9 +350,7 @@ class Loader {
             const std::optional<Unit> unit = unit_field(*coordinates[i].table);
             std::optional<Unit> per_second;
             if (unit) {
-                per_second = *unit;
-                per_second->text = "(" + unit->text + ")/s";
-                per_second->dimension.exponent[2] -= 1;
+                per_second = unit->per_second();
                 c.unit = unit->si();
                 c.declared_unit = unit;
             }

@@ -35,6 +35,13 @@ struct Unit {
     int radians = 0;        ///< the power of rad in it (rpm: 1), for showing the SI unit
     /// The coherent SI unit it converts to, as shown: "rad", "m", "kg m^2", "rad/s"; "1" when dimensionless.
     std::string si() const;
+    /// This unit per second, "(deg)/s": a coordinate's rate.
+    Unit per_second() const {
+        Unit u = *this;
+        u.text = "(" + text + ")/s";
+        u.dimension.exponent[2] -= 1;
+        return u;
+    }
 };
 
 /// A unit text that UDUNITS-2 does not read, with its reason.
