@@ -53,6 +53,22 @@ double det_terms(const GiNaC::matrix& sub) {
     return total;
 }
 
+/// The most variables det of a block of M may hold, as a polynomial (every symbol, and every sin, cos or other
+/// function of the coordinates counted as one variable), for its inverse to be simplified by normal(): GiNaC's
+/// multivariate gcd is exponential in them. A 3×3 block of 65 terms in 18 variables (a fuzzed model) ran for
+/// 160 s in normal(); the shipped models' largest block, the triangle plate's, has 11.
+constexpr std::size_t kMaxSimplifyVariables = 12;
+
+/// The number of variables of e as a polynomial (GiNaC::to_polynomial's symbols and the symbols it introduces).
+std::size_t polynomial_variables(const GiNaC::ex& e) {
+    GiNaC::exmap introduced;
+    const GiNaC::ex poly = e.expand().to_polynomial(introduced);
+    GiNaC::exset symbols;
+    for (GiNaC::const_preorder_iterator it = poly.preorder_begin(); it != poly.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) symbols.insert(*it);
+    return symbols.size();
+}
+
 }  // namespace
 
 GiNaC::ex shorter_trig(const GiNaC::ex& e) {
@@ -113,6 +129,18 @@ Hamiltonian derive_hamiltonian(const Model& model, const Equations& eq) {
                 << kMaxInverseDetTerms << ")";
             h.why_not_symbolic = why.str();
             return h;
+        }
+        if (k > 1) {
+            const std::size_t vars = polynomial_variables(sub.determinant(GiNaC::determinant_algo::laplace));
+            if (vars > kMaxSimplifyVariables) {
+                std::string names;
+                for (unsigned i : blk) names += (names.empty() ? "" : ", ") + model.coordinates[i].name;
+                h.why_not_symbolic = "the determinant of the mass matrix's block of " + names + " is a polynomial in " +
+                                     std::to_string(vars) + " variables (symbols, sines, cosines), more than " +
+                                     std::to_string(kMaxSimplifyVariables) +
+                                     ": its inverse is not simplified within the budget";
+                return h;
+            }
         }
         subs.push_back(sub);
     }

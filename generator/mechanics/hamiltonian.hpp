@@ -22,7 +22,9 @@ namespace eomgen {
  * and p), the partial derivatives at fixed p. The constraints themselves, A q̇ + b = 0, hold beside them.
  *
  * M⁻¹ is formed symbolically block by block (the blocks of coordinates M couples), when every block has at
- * most 3 coordinates: diagonal M, the heavy top's 3×3, two coupled pendulums. Otherwise `symbolic` is false
+ * most 3 coordinates and a determinant GiNaC's gcd simplifies in bounded time (a polynomial in at most 12
+ * variables, sines and cosines counted as variables): diagonal M, the heavy top's 3×3, two coupled pendulums, the
+ * triangle plate (11). Otherwise `symbolic` is false
  * and only p(q, q̇) and the matrices are given: H is then compared through p = p(q, q̇), where
  * H(q, p(q, q̇)) = h(q, q̇), ∂H/∂p_i = q̇_i and ∂H/∂q_i|_p = −∂L/∂q_i|_q̇ hold without M⁻¹.
  */
@@ -34,7 +36,7 @@ struct Hamiltonian {
     std::vector<GiNaC::ex> b;           ///< n, ∂L/∂q̇ at q̇ = 0
     GiNaC::ex L0;                       ///< L at q̇ = 0
     bool symbolic = false;              ///< M⁻¹, H, q̇(q, p) and Hamilton's equations below are formed
-    std::string why_not_symbolic;       ///< when !symbolic: which block of M is larger than 3×3
+    std::string why_not_symbolic;       ///< when !symbolic: which block of M is too large (over 3×3, or its det too large to simplify)
     GiNaC::matrix Minv;                 ///< n×n, entries simplified by normal()
     GiNaC::ex H;                        ///< H(q, p, t)
     std::vector<GiNaC::ex> velocities;  ///< q̇_i(q, p, t) = (M⁻¹ (p − b))_i
