@@ -1,6 +1,7 @@
 /** @file checker.cpp  Equation by equation: labels, identities, Euler–Lagrange equations, integrals of
  * motion. */
 #include "checker/checker.hpp"
+#include "checker/coverage.hpp"
 
 #include "checker/additive_constant.hpp"
 #include "checker/approximation.hpp"
@@ -45,6 +46,8 @@ const char* verdict_name(Verdict v) {
             return "disagrees";
         case Verdict::NotComparable:
             return "not comparable";
+        case Verdict::NotRead:
+            return "not read";
     }
     return "";
 }
@@ -2222,6 +2225,11 @@ CheckReport Checker::run() {
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2) continue;  // an expression, not an equation
         check_chain(c, report.equations);
+    }
+    {  // never silent: a row with a relation that gave no equation is "not read", with the reason
+        std::vector<const MathRow*> read;
+        for (const Parsed& p : parsed) read.push_back(p.row);
+        for (EquationCheck& e : unread_rows(d_, read, report.equations)) report.equations.push_back(std::move(e));
     }
     std::stable_sort(report.equations.begin(), report.equations.end(),
                      [](const EquationCheck& x, const EquationCheck& y) {

@@ -16,9 +16,10 @@ enum class Verdict {
     Agrees,         ///< equal to eomgen's quantity, an identity, or a consequence of the equations of motion
     Disagrees,      ///< wrong: with the difference, the wrong terms and the corrected equation
     NotComparable,  ///< with the reason: unknown symbol, not an equation of this model, cannot be read
+    NotRead,        ///< a row of math with a relation from which no equation could be taken, with the reason
 };
 
-/// "agrees", "disagrees", "not comparable".
+/// "agrees", "disagrees", "not comparable", "not read".
 const char* verdict_name(Verdict v);
 
 /**

@@ -70,6 +70,36 @@ struct Block {
 };
 
 /// Splits the content of a display block into rows (file offsets), blanking what is not math.
+/// True when s[from, to) has a `\\` outside braces and environments (a row break of a display without one).
+bool has_top_level_row_break(const std::string& s, std::size_t from, std::size_t to) {
+    int brace = 0, envs = 0;
+    for (std::size_t k = from; k < to; ++k) {
+        std::size_t a = 0;
+        if (s[k] == '%') {
+            while (k < to && s[k] != '\n') ++k;
+            continue;
+        }
+        if (s[k] == '\\' && !environment_at(s, k, "\\begin", a).empty()) {
+            ++envs;
+            k = a - 1;
+            continue;
+        }
+        if (s[k] == '\\' && !environment_at(s, k, "\\end", a).empty()) {
+            if (envs > 0) --envs;
+            k = a - 1;
+            continue;
+        }
+        if (s[k] == '\\' && k + 1 < to) {
+            if (s[k + 1] == '\\' && brace == 0 && envs == 0) return true;
+            ++k;
+            continue;
+        }
+        if (s[k] == '{') ++brace;
+        if (s[k] == '}' && brace > 0) --brace;
+    }
+    return false;
+}
+
 void split_display(const std::string& file, const Block& b, int block, std::vector<MathRow>& rows) {
     std::string s = file.substr(b.begin, b.end - b.begin);
     // The outermost environment, if the block is one (text around it, like a final '.', is kept).
@@ -111,6 +141,8 @@ void split_display(const std::string& file, const Block& b, int block, std::vect
             rows_env = is_row_environment(env);
         }
     }
+    // `$$ a = b \\ c = d $$` without an environment: its rows all the same (MathJax breaks the line there).
+    if (env.empty()) rows_env = has_top_level_row_break(s, body_begin, body_end);
     // Split at top-level \\ (outside braces and nested environments) and blank top-level &.
     std::vector<std::pair<std::size_t, std::size_t>> pieces;
     std::size_t start = 0;
@@ -354,7 +386,12 @@ Derivation parse_derivation(std::string text, std::string path) {
                 i = from;
                 continue;
             }
-            blocks.push_back({from, e, false});
+            // `$\begin{align} … \end{align}$`, as notebooks write a display: its rows, as in a display.
+            std::size_t lead = from;
+            while (lead < e && std::isspace(static_cast<unsigned char>(s[lead]))) ++lead;
+            std::size_t env_after = 0;
+            const std::string inner = environment_at(s, lead, "\\begin", env_after);
+            blocks.push_back({from, e, !inner.empty() && is_display_environment(inner)});
             i = e + (dollar ? 1 : 2);
             continue;
         }

@@ -19,6 +19,7 @@ std::string summary_line(const CheckReport& r) {
     os << r.equations.size() << " equations: " << r.count(Verdict::Agrees) << " agree, "
        << r.count(Verdict::Disagrees) << " disagree, " << r.count(Verdict::NotComparable)
        << " not comparable";
+    if (const int n = r.count(Verdict::NotRead)) os << ", " << n << " not read";
     if (!r.problems.empty())
         os << "; " << r.problems.size() << (r.problems.size() == 1 ? " delimiter" : " delimiters")
            << " that do not pair up";
@@ -156,7 +157,7 @@ std::string format_json(const CheckReport& r) {
     os << "],\n  \"summary\": {\"equations\": " << r.equations.size()
        << ", \"agrees\": " << r.count(Verdict::Agrees) << ", \"disagrees\": " << r.count(Verdict::Disagrees)
        << ", \"not_comparable\": " << r.count(Verdict::NotComparable)
-       << "},\n  \"problems\": [";
+       << ", \"not_read\": " << r.count(Verdict::NotRead) << "},\n  \"problems\": [";
     for (std::size_t k = 0; k < r.problems.size(); ++k)
         os << (k ? ", " : "") << "{\"line\": " << r.problems[k].where.line
            << ", \"column\": " << r.problems[k].where.column

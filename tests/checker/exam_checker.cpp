@@ -198,7 +198,7 @@ TEST_CASE("checker: text, Markdown and JSON reports", "[checker]") {
     CHECK(md.find("| line | equation | verdict |") != std::string::npos);
     const std::string json = eomgen::checker::format_json(r);
     CHECK(json.find(
-              "\"summary\": {\"equations\": 7, \"agrees\": 2, \"disagrees\": 5, \"not_comparable\": 0}") !=
+              "\"summary\": {\"equations\": 7, \"agrees\": 2, \"disagrees\": 5, \"not_comparable\": 0, \"not_read\": 0}") !=
           std::string::npos);
     CHECK(json.find("\"line\": 18") != std::string::npos);
 }
@@ -308,4 +308,25 @@ TEST_CASE("seed: the slips of 5-20 and Ex. 30 are found", "[checker]") {
     CHECK(explanations(d, 560).find("opposite signs") != std::string::npos);
     // 1.51 sqrt(0.9/9.8) = 0.4576 s, which is 0.46 to two digits: the text prints 0.45.
     CHECK(explanations(d, 566).find("differs by 1.7 %: eomgen computes $0.4576$") != std::string::npos);
+}
+
+TEST_CASE("checker: never silent: a row with a relation that gives no equation is 'not read', with the reason",
+          "[checker]") {
+    const std::string text =
+        "# Never silent\n"                                                      // 1
+        "$$ (m l^2 \\ddot\\theta = -m g l \\sin\\theta $$\n"                    // 2: an unclosed (
+        "$$ \\left\\{ m l^2 \\ddot\\theta = -m g l \\sin\\theta \\right. $$\n"  // 3: inside a group
+        "$$ m l^2 \\ddot\\theta = -m g l \\sin\\theta $$\n";                    // 4: read
+    const eomgen::checker::CheckReport r = eomgen::test::check_text("tests/checker/models/plane_pendulum.toml", text);
+    REQUIRE(r.equations.size() == 3);
+    for (const auto& e : r.equations) INFO(eomgen::test::describe(e));
+    CHECK(r.equations[0].verdict == eomgen::checker::Verdict::NotRead);
+    CHECK(r.equations[0].where.line == 2);
+    CHECK(r.equations[0].reason.find("inside the '(' opened at 2:4, which is not closed") != std::string::npos);
+    CHECK(r.equations[1].verdict == eomgen::checker::Verdict::NotRead);
+    CHECK(r.equations[1].where.line == 3);
+    CHECK(r.equations[2].verdict == eomgen::checker::Verdict::Agrees);
+    CHECK(r.count(eomgen::checker::Verdict::NotRead) == 2);
+    CHECK(eomgen::checker::format_text(r).find("3 equations: 1 agree, 0 disagree, 0 not comparable, 2 not read") !=
+          std::string::npos);
 }

@@ -122,3 +122,22 @@ TEST_CASE("derivation: delimiters that do not pair up are reported at their plac
         }
     }
 }
+
+TEST_CASE("derivation: an environment inside single dollars and rows broken with \\\\ in $$ are rows", "[checker]") {
+    const char* const text =
+        "$\\begin{align} T &= a \\\\ V &= b \\end{align}$\n"  // 1: as Jupyter notebooks write a display
+        "\n"
+        "$$ x = 1 \\\\ y = 2 $$\n"                             // 3: MathJax breaks the line at \\ without an environment
+        "\n"
+        "$$ M = \\begin{pmatrix} a \\\\ b \\end{pmatrix} $$\n";  // 5: a \\ inside an environment is no row break
+    const eomgen::checker::Derivation d = eomgen::checker::parse_derivation(text, "x.md");
+    REQUIRE(d.rows.size() == 5);
+    CHECK(d.rows[0].display);
+    CHECK(d.rows[0].text.find("T") != std::string::npos);
+    CHECK(d.rows[0].text.find("V") == std::string::npos);
+    CHECK(d.rows[1].text.find("V") != std::string::npos);
+    CHECK(d.rows[2].text.find("x = 1") != std::string::npos);
+    CHECK(d.rows[3].text.find("y = 2") != std::string::npos);
+    CHECK(d.rows[3].row_in_block == 1);
+    CHECK(d.rows[4].text.find("pmatrix") != std::string::npos);
+}
