@@ -2,15 +2,18 @@
 """Scores `eomgen check` on the corpus of real derivations against their answer keys (README.md beside this).
 
 Usage: score.py [--eomgen PATH] [--entries NAME...] [--json OUT] [--write-docs | --check-docs] [--details]
+                [--rerun-keys]
 
-Runs each entry's key.py (SymPy) and `eomgen check MODEL derivation.md [--map-file map.toml] --format json`,
-matches them line by line and prints the table. --write-docs rewrites the table in docs/checker.md between
+Reads each entry's answer key from its key.json (what its key.py printed; --rerun-keys runs every key.py again,
+a few minutes of SymPy, and fails when one no longer prints its key.json), runs `eomgen check MODEL
+derivation.md [--map-file map.toml] --format json`, matches them line by line and prints the table. --write-docs rewrites the table in docs/checker.md between
 the CORPUS markers; --check-docs exits 1 when the table there differs from this run's (what CI runs).
 Exit 2 when an entry is broken (a key that does not run, a check that fails or takes over its limit).
 """
 import argparse
 import json
 import os
+import re
 import subprocess
 import sys
 import time
@@ -34,11 +37,22 @@ def entries(names):
     return out
 
 
-def run_key(d):
+def run_key(d, rerun):
+    stored = os.path.join(d, "key.json")
+    if not rerun:
+        if not os.path.isfile(stored):
+            raise RuntimeError("no key.json: run score.py --rerun-keys (or python3 key.py > key.json)")
+        with open(stored, encoding="utf-8") as f:
+            return json.load(f)
     r = subprocess.run([sys.executable, "key.py"], cwd=d, capture_output=True, text=True, timeout=600)
     if r.returncode != 0:
         raise RuntimeError(f"key.py exited {r.returncode}: {r.stderr.strip()[-500:]}")
-    return json.loads(r.stdout)
+    key = json.loads(r.stdout)
+    if os.path.isfile(stored):
+        with open(stored, encoding="utf-8") as f:
+            if json.load(f) != key:
+                raise RuntimeError("key.py no longer prints key.json (run python3 key.py > key.json and look at the change)")
+    return key
 
 
 def run_check(eomgen, d):
@@ -53,15 +67,41 @@ def run_check(eomgen, d):
     return json.loads(r.stdout), seconds
 
 
-def score_entry(key, report):
+RELATION = re.compile(r"=|<|>|\\(approx|simeq|equiv|leq?|geq?|neq?|cong|propto|sim)(?![A-Za-z])")
+
+
+def relation_line(lines, n):
+    """The line of the relation sign a key line means: n itself when it holds one, else the nearest line above
+    (up to 6) that does, the key having named a line the equation's side reaches rather than its sign."""
+    for k in range(n, max(n - 7, 0), -1):
+        if 0 < k <= len(lines) and RELATION.search(lines[k - 1]):
+            return k
+    return n
+
+
+def score_entry(key, report, text=""):
     """Per key line: slip / flagged / false alarm / silent drop / not comparable (README.md, "How the score is
     taken"). Returns the counts and the lines behind each."""
+    lines = text.split("\n")
     by_line = {}
     for e in key["lines"]:
-        by_line.setdefault(e["line"], []).append(e)
+        by_line.setdefault(relation_line(lines, e["line"]), []).append(e)
     verdicts = {}
     for e in report.get("equations", []):
         verdicts.setdefault(e["line"], []).append(e)
+    # A relation written across two displays (`… =$$` then `$$= …`) has two signs; the checker puts the link at
+    # the first, a key may name the second. A key line with no verdict takes the last verdict of a line up to 3
+    # above it that has more than one (or that is no key line).
+    for line in sorted(by_line):
+        if line in verdicts:
+            continue
+        for above in range(line - 1, max(line - 4, 0), -1):
+            vs = verdicts.get(above, [])
+            if vs and (len(vs) > 1 or above not in by_line):
+                verdicts[line] = [vs.pop()]
+                break
+            if above in by_line:
+                break
     problem_lines = {p.get("line") for p in report.get("problems", []) if isinstance(p, dict)}
     s = {"lines": len(by_line), "slips": [], "flagged": [], "missed": [], "false_alarms": [], "silent": [],
          "not_comparable": [], "corrections": [], "off_key_disagrees": []}
@@ -113,6 +153,7 @@ def main():
     ap.add_argument("--entries", nargs="*")
     ap.add_argument("--json")
     ap.add_argument("--details", action="store_true", help="print the lines behind each count")
+    ap.add_argument("--rerun-keys", action="store_true", help="run each key.py and compare it with its key.json")
     g = ap.add_mutually_exclusive_group()
     g.add_argument("--write-docs", action="store_true")
     g.add_argument("--check-docs", action="store_true")
@@ -124,12 +165,13 @@ def main():
     for name in entries(a.entries):
         d = os.path.join(HERE, name)
         try:
-            key = run_key(d)
+            key = run_key(d, a.rerun_keys)
             report, secs = run_check(a.eomgen, d)
         except (RuntimeError, subprocess.TimeoutExpired, json.JSONDecodeError) as e:
             broken.append(f"{name}: {e}")
             continue
-        s = score_entry(key, report)
+        with open(os.path.join(d, "derivation.md"), encoding="utf-8") as f:
+            s = score_entry(key, report, f.read())
         results.append((name, key, s, secs))
         if a.details:
             for k in ("missed", "false_alarms", "silent", "not_comparable", "off_key_disagrees"):
