@@ -1,9 +1,11 @@
 /** @file checker.cpp  Equation by equation: labels, identities, Euler–Lagrange equations, integrals of
  * motion. */
 #include "checker/checker.hpp"
+#include "checker/conditions.hpp"
 #include "checker/coverage.hpp"
 
 #include "checker/additive_constant.hpp"
+#include "checker/equivalent_lagrangian.hpp"
 #include "checker/approximation.hpp"
 #include "checker/budget.hpp"
 #include "checker/correction_check.hpp"
@@ -409,6 +411,20 @@ class Checker : public Comparisons {
     EquationCheck safe_check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
         try {
             EquationCheck r = check_link(c, i, j, bridge);
+            if (r.verdict == Verdict::Disagrees && !verifying_ && c.sides[i].side->ok && c.sides[j].side->ok &&
+                sets_a_value(c.sides[i].side->value, c.sides[j].side->value, model_)) {
+                // "started with θ̇ = 0", "with m₁ = m₂ = m": values set for what follows, not an equation of motion.
+                const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
+                if (!cue.empty()) {
+                    EquationCheck n;
+                    n.where = r.where;
+                    n.section = r.section;
+                    n.equation = r.equation;
+                    n.reason = "a condition or a given value (after “" + cue +
+                               "”): it sets a value for what follows, not an equation of motion, and is not judged";
+                    return n;
+                }
+            }
             if (!r.corrected.empty() && !verifying_) verify_correction(c, j, r);
             if (!verifying_ && c.display) check_prose_label(c, i, j, r);
             return r;
@@ -1477,6 +1493,17 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     const bool approx = rel == Relation::Approx;
     if (approx && approximation(rel_at, L.side->source, R.side->source, a, b, true, r)) return r;
     check_values(c, i, j, a, b, tol, r);
+    if (r.verdict == Verdict::Disagrees && r.compared_with == "$L$") {  // L + dF/dt: the same equations
+        EquationCheck alt;
+        alt.where = r.where;
+        alt.section = r.section;
+        alt.equation = r.equation;
+        alt.notes = r.notes;
+        if (check_equivalent_lagrangian(a.value, b.value, model_, *this, tol,
+                                        says_total_derivative_dropped(d_, rel_at), alt))
+            return alt;
+        r.notes = alt.notes;
+    }
     // ∂H/∂θ after the text wrote H in velocities: the reading it set up (at fixed θ̇) when Hamilton's disagrees.
     if (r.verdict == Verdict::Disagrees && velocity_h_line_ > 0 && rel_at > velocity_h_at_ &&
         (hamilton_.has_hamiltonian(L.side->value) || hamilton_.has_hamiltonian(R.side->value))) {

@@ -1200,6 +1200,7 @@ class Parser {
         if (t.kind == Tok::Word && (t.text == "\\mathrm" || t.text == "\\text") && trim(t.raw) == "d")
             return 1;
         if (t.kind == Tok::Word && t.text == "\\partial") return 2;
+        if (t.kind == Tok::Word && t.text == "\\delta") return 3;  // \frac{\delta L}{\delta q}: the text's ∂
         return 0;
     }
 
@@ -1238,7 +1239,13 @@ class Parser {
                     return 0;
                 },
                 "the denominator");
-            if (is_derivative) return derivative(at, num, var, order, kn == 2);
+            if (is_derivative) {
+                if (kn == 3 && std::none_of(side_.notes.begin(), side_.notes.end(), [](const std::string& n) {
+                        return n.rfind("reads \\delta", 0) == 0;
+                    }))
+                    side_.notes.push_back("reads \\delta in $\\frac{\\delta \\dots}{\\delta \\dots}$ as $\\partial$, as the text uses it");
+                return derivative(at, num, var, order, kn >= 2);
+            }
         }
         const GiNaC::ex n = expr_in(num, "the numerator");
         const GiNaC::ex d = expr_in(den, "the denominator");
