@@ -12,6 +12,7 @@
 #include "checker/definitions.hpp"
 #include "checker/hamiltonian_check.hpp"
 #include "checker/labels.hpp"
+#include "checker/meanings.hpp"
 #include "checker/latex_normalize.hpp"
 #include "checker/motions.hpp"
 #include "checker/latex_parser.hpp"
@@ -411,6 +412,20 @@ class Checker : public Comparisons {
     EquationCheck safe_check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
         try {
             EquationCheck r = check_link(c, i, j, bridge);
+            if (i == 0 && r.verdict == Verdict::Disagrees && !verifying_) {
+                const std::size_t at = c.relation_offsets[j - 1];
+                for (const TextMeaning& m : meanings_)
+                    if (at >= m.begin && at < m.end) {
+                        EquationCheck n;
+                        n.where = r.where;
+                        n.section = r.section;
+                        n.equation = r.equation;
+                        n.reason = "a definition: the text's $" + m.name + "$ is the " + m.noun +
+                                   " here (as its sentence says), not eomgen's $" + m.name + "$; read so from line " +
+                                   std::to_string(m.line + 1) + " to the end of its section";
+                        return n;
+                    }
+            }
             if (r.verdict == Verdict::Disagrees && !verifying_ && c.sides[i].side->ok && c.sides[j].side->ok &&
                 sets_a_value(c.sides[i].side->value, c.sides[j].side->value, model_)) {
                 // "started with θ̇ = 0", "with m₁ = m₂ = m": values set for what follows, not an equation of motion.
@@ -493,6 +508,10 @@ class Checker : public Comparisons {
     const Equations& eq_;
     const Derivation& d_;
     const CheckOptions& options_;
+    /// The text's own meanings of label letters (meanings.hpp), as map entries scoped to the lines after their
+    /// definition, and the rows that define them.
+    std::vector<MapEntry> meaning_map_;
+    std::vector<TextMeaning> meanings_;
     LatexContext ctx_;
     Numbers numbers_;
     codegen::SymbolTable printer_table_;
@@ -632,7 +651,17 @@ void Checker::setup_names() {
 }
 
 void Checker::apply_map(int line) {
-    for (const MapEntry& e : options_.map) {
+    std::vector<MapEntry> entries = options_.map;
+    const std::size_t given = entries.size();  // the user's entries; then the text's meanings (never an error)
+    entries.insert(entries.end(), meaning_map_.begin(), meaning_map_.end());
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+        const MapEntry& e = entries[k];
+        if (k >= given) {
+            if (line == 0 || line < e.first_line || line > e.last_line) continue;
+            const Side s = parse_expression(e.value, ctx_);
+            if (s.ok) ctx_.names[canonical_name(e.name)] = s.value;
+            continue;
+        }
         if (line == 0 ? e.first_line != 0 : (e.first_line == 0 || line < e.first_line || line > e.last_line))
             continue;
         std::string name = canonical_name(e.name);
@@ -2174,6 +2203,15 @@ CheckReport Checker::run() {
 
     setup_names();
     apply_map();
+    {  // "with L = m r² θ̇", in a sentence about the angular momentum: L is that from the next line on
+        std::vector<const MathRow*> rows;
+        for (const MathRow& row : d_.rows)
+            if (row_selected(d_, row, selected, whole)) rows.push_back(&row);
+        meanings_ = text_meanings(d_, rows);
+        for (const TextMeaning& m : meanings_)
+            meaning_map_.push_back({m.name, m.value, "the text, line " + std::to_string(m.line), m.line + 1,
+                                    std::max(m.line + 1, m.last_line)});
+    }
 
     // Pass 1: parse every selected row; rows that start with "=" continue the chain above them.
     struct Parsed {
@@ -2186,9 +2224,11 @@ CheckReport Checker::run() {
         // Entries scoped to some lines of the text apply while their rows are read.
         const std::size_t lead = std::min(row.text.find_first_not_of(" \t\r\n"), row.text.size());
         const int line = d_.position(row.offset + lead).line;
-        const bool scoped = std::any_of(options_.map.begin(), options_.map.end(), [&](const MapEntry& e) {
+        const auto in_scope = [&](const MapEntry& e) {
             return e.first_line != 0 && line >= e.first_line && line <= e.last_line;
-        });
+        };
+        const bool scoped = std::any_of(options_.map.begin(), options_.map.end(), in_scope) ||
+                            std::any_of(meaning_map_.begin(), meaning_map_.end(), in_scope);
         if (!scoped) {
             parsed.push_back({&row, parse_math(row.text, ctx_)});
             continue;

@@ -1,0 +1,92 @@
+/** @file meanings.cpp  A label letter that the sentence around its definition names as something else. */
+#include "checker/meanings.hpp"
+
+#include <cctype>
+#include <cstring>
+
+namespace eomgen::checker {
+namespace {
+
+struct Other {
+    const char* label;
+    const char* noun;
+};
+
+/// Nouns that give a label letter another meaning than eomgen's (L the Lagrangian, T the kinetic energy, h the
+/// energy function, H the Hamiltonian).
+constexpr Other kOthers[] = {{"L", "angular momentum"}, {"T", "period"},  {"T", "tension"},
+                             {"h", "height"},           {"H", "height"},  {"L", "length"},
+                             {"E", "electric field"},   {"T", "torque"}};
+
+std::string lower(std::string s) {
+    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+std::string trim(const std::string& s) {
+    const std::size_t a = s.find_first_not_of(" \t\r\n");
+    if (a == std::string::npos) return "";
+    const std::size_t b = s.find_last_not_of(" \t\r\n.,;");
+    return b < a ? "" : s.substr(a, b - a + 1);
+}
+
+/// The sentence that holds file[begin, end): from the sentence end before it to the one after it, in prose and
+/// math alike, lower case.
+std::string sentence_around(const std::string& s, std::size_t begin, std::size_t end) {
+    auto is_end = [&](std::size_t k) {
+        return (s[k] == '.' || s[k] == '?' || s[k] == '!') && k + 1 < s.size() &&
+               std::isspace(static_cast<unsigned char>(s[k + 1]));
+    };
+    std::size_t from = begin;
+    while (from > 0 && !is_end(from - 1) && !(from >= 2 && s[from - 1] == '\n' && s[from - 2] == '\n')) --from;
+    std::size_t to = end;
+    while (to < s.size() && !is_end(to) && !(to + 1 < s.size() && s[to] == '\n' && s[to + 1] == '\n')) ++to;
+    return lower(s.substr(from, to - from));
+}
+
+}  // namespace
+
+std::vector<TextMeaning> text_meanings(const Derivation& d, const std::vector<const MathRow*>& rows) {
+    std::vector<TextMeaning> out;
+    for (const MathRow* row : rows) {
+        std::string t = trim(row->text);
+        for (const char* arrow : {"\\longrightarrow", "\\Longrightarrow", "\\Rightarrow", "\\rightarrow", "\\implies"})
+            if (t.rfind(arrow, 0) == 0) t = trim(t.substr(std::strlen(arrow)));
+        const std::size_t eq = t.find('=');
+        if (eq == std::string::npos) continue;
+        const std::string name = trim(t.substr(0, eq));
+        std::string value = t.substr(eq + 1);
+        if (const std::size_t next = value.find('='); next != std::string::npos) value = value.substr(0, next);
+        value = trim(value);
+        // A value continued on the next row (ending in an operator) is not all of the definition.
+        if (value.empty() || std::strchr("+-*/=", value.back()) || value.size() > 400) continue;
+        const std::size_t begin = row->offset, end = row->offset + row->text.size();
+        // A text that writes its Lagrangian \mathscr{L} or \mathcal{L} and also defines a bare L means another
+        // quantity by it.
+        const bool script_lagrangian = name == "L" && (d.text.find("\\mathscr{L}") != std::string::npos ||
+                                                        d.text.find("\\mathcal{L}") != std::string::npos ||
+                                                        d.text.find("\\mathcal L") != std::string::npos);
+        std::string sentence;
+        for (const Other& o : kOthers) {
+            if (name != o.label) continue;
+            if (sentence.empty()) sentence = sentence_around(d.text, begin, end);
+            const bool other_noun = sentence.find(o.noun) != std::string::npos;
+            if (!other_noun && !script_lagrangian) continue;
+            TextMeaning m;
+            m.name = name;
+            m.value = value;
+            m.noun = other_noun ? o.noun : "quantity it names $L$ (its Lagrangian it writes $\\mathscr{L}$ or $\\mathcal{L}$)";
+            m.begin = begin;
+            m.end = end;
+            m.line = d.position(begin + std::min(row->text.find('='), row->text.size())).line;
+            const std::size_t section_end =
+                row->section >= 0 ? d.sections[std::size_t(row->section)].end : d.text.size();
+            m.last_line = d.position(section_end > 0 ? section_end - 1 : 0).line;
+            out.push_back(std::move(m));
+            break;
+        }
+    }
+    return out;
+}
+
+}  // namespace eomgen::checker

@@ -1,0 +1,31 @@
+/** @file meanings.hpp  The text's own meaning of a letter eomgen reads as a label: "the conservation of angular
+ * momentum, with L = m r² θ̇" makes L the angular momentum, not the Lagrangian, for the rest of the section
+ * (issue 28). */
+#pragma once
+
+#include "checker/derivation.hpp"
+
+#include <string>
+#include <vector>
+
+namespace eomgen::checker {
+
+/// A label letter the text gives another meaning, by the row that defines it.
+struct TextMeaning {
+    std::string name;     ///< the letter as written: "L", "T", "h"
+    std::string value;    ///< the LaTeX of its definition: "mr^2\dot{\theta}"
+    std::string noun;     ///< what the sentence calls it: "angular momentum"
+    std::size_t begin = 0, end = 0;  ///< the defining row's range in the file
+    int line = 0;         ///< of the defining row
+    int last_line = 0;    ///< the last line of its section (the meaning holds to there)
+};
+
+/**
+ * Rows `X = value` (one of the labels L, T, H, h, V, U, E; after an implication arrow, a chain's first link)
+ * whose sentence calls X something other than what eomgen's label is — the angular momentum (L), the period or
+ * a tension (T), a height (h, H) — or, for L, in a text that writes its Lagrangian \mathscr{L} or \mathcal{L}, as
+ * TextMeaning, in the order of the text.
+ */
+std::vector<TextMeaning> text_meanings(const Derivation& d, const std::vector<const MathRow*>& rows);
+
+}  // namespace eomgen::checker
