@@ -48,6 +48,15 @@ GiNaC::ex TextDefinitions::abbreviate(const GiNaC::ex& e, std::size_t at) const 
     return x;
 }
 
+const GiNaC::ex* TextDefinitions::value_at(const GiNaC::ex& symbol, std::size_t at, int* line) const {
+    const auto it = defs_.find(symbol);
+    if (it == defs_.end()) return nullptr;
+    const Definition* d = in_force(it->second, at, true);
+    if (!d) return nullptr;
+    if (line) *line = d->line;
+    return &d->value;
+}
+
 std::string TextDefinitions::defined_at(std::size_t head) const {
     for (const auto& [offset, shown] : heads_)
         if (offset == head) return shown;

@@ -71,6 +71,10 @@ class TextDefinitions {
     /// "uses $K$ as the text defines it at line 12", for each definition expand() used since the last call.
     std::vector<std::string> take_used() const;
 
+    /// The definition of `symbol` in force at file offset `at` in its section, with its line; nullptr when there
+    /// is none (for `\dot{x}` after `x = l \sin\theta`: the derivative of the definition).
+    const GiNaC::ex* value_at(const GiNaC::ex& symbol, std::size_t at, int* line = nullptr) const;
+
     bool empty() const { return defs_.empty(); }
 
   private:
