@@ -350,9 +350,6 @@ class Checker : public Comparisons {
 
     // ----- evaluation
     GiNaC::ex resolve_operators(const GiNaC::ex& e) const;
-    /// `\dot{x}`, `\ddot{x}` of a name the text defines (`x = l \sin\theta`): the time derivative of its
-    /// definition, noted in `notes`.
-    GiNaC::ex dotted_definitions(const GiNaC::ex& e, std::vector<std::string>& notes) const;
     Prepared prepare(const PSide& s, const GiNaC::ex* exclude_part = nullptr);
     std::string where(std::size_t file_offset) const {
         const SourcePos p = d_.position(file_offset);
@@ -686,49 +683,6 @@ void Checker::apply_map(int line) {
 
 // ------------------------------------------------------------------------------------------- evaluation
 
-GiNaC::ex Checker::dotted_definitions(const GiNaC::ex& e, std::vector<std::string>& notes) const {
-    if (definitions_.empty()) return e;
-    GiNaC::exmap subs;
-    std::vector<GiNaC::ex> stack{e};
-    while (!stack.empty()) {
-        const GiNaC::ex x = stack.back();
-        stack.pop_back();
-        for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
-        if (!GiNaC::is_a<GiNaC::symbol>(x) || subs.count(x)) continue;
-        const FreeName* f = ctx_.free_name_of(x);
-        if (!f || f->kind != NameKind::Unknown) continue;
-        int order = 0;
-        std::string inner;
-        for (const auto& [prefix, k] : {std::pair<const char*, int>{"\\ddot{", 2}, {"\\dot{", 1}})
-            if (f->name.rfind(prefix, 0) == 0 && f->name.back() == '}') {
-                order = k;
-                inner = f->name.substr(std::strlen(prefix), f->name.size() - std::strlen(prefix) - 1);
-                break;
-            }
-        if (order == 0) continue;
-        const auto named = ctx_.free_names.find(inner);
-        if (named == ctx_.free_names.end()) continue;
-        int line = 0;
-        const GiNaC::ex* def = definitions_.value_at(named->second.symbol, current_offset_, &line);
-        if (!def) continue;
-        GiNaC::ex value = definitions_.abbreviate(*def, current_offset_);
-        definitions_.take_abbreviations();
-        bool known = true;  // only a definition in the model's own quantities is differentiated
-        for (std::vector<GiNaC::ex> st{value}; !st.empty() && known;) {
-            const GiNaC::ex y = st.back();
-            st.pop_back();
-            if (GiNaC::is_a<GiNaC::symbol>(y) && ctx_.free_name_of(y)) known = false;
-            for (std::size_t i = 0; i < y.nops(); ++i) st.push_back(y.op(i));
-        }
-        if (!known) continue;
-        for (int k = 0; k < order; ++k) value = time_derivative(value, model_);
-        subs[x] = value;
-        notes.push_back("$" + f->name + "$ is the time derivative of $" + inner + "$ as the text defines it at line " +
-                        std::to_string(line));
-    }
-    return subs.empty() ? e : e.subs(subs);
-}
-
 GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
     // A name inside a derivative is its definition in the text, or the derivative cannot be evaluated.
     if (is_ex_the_function(e, ddt)) {
@@ -844,7 +798,7 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
         definitions_.take_abbreviations();
         v = definitions_.abbreviate(v, current_offset_);
         for (const std::string& n : definitions_.take_abbreviations()) p.notes.push_back(n);
-        v = dotted_definitions(v, p.notes);
+        v = dotted_definitions(definitions_, v, current_offset_, ctx_, model_, p.notes);
         if (H_inside && !hamilton_.has_hamiltonian(v)) p.has_truth_label = p.has_momenta = true;
         if (hamilton_.has_hamiltonian(v))  // H outside a derivative, inside an expression: a letter (a height)
             v = v.subs(ctx_.names.at("H") == ctx_.free_symbol("H", NameKind::Unknown));

@@ -2,8 +2,10 @@
 #include "checker/definitions.hpp"
 
 #include "checker/latex_normalize.hpp"
+#include "mechanics/lagrangian.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 namespace eomgen::checker {
 
@@ -127,5 +129,50 @@ std::vector<std::string> TextDefinitions::take_used() const {
     out.swap(used_);
     return out;
 }
+
+GiNaC::ex dotted_definitions(const TextDefinitions& definitions, const GiNaC::ex& e, std::size_t at,
+                             const LatexContext& ctx, const Model& model, std::vector<std::string>& notes) {
+    if (definitions.empty()) return e;
+    GiNaC::exmap subs;
+    std::vector<GiNaC::ex> stack{e};
+    while (!stack.empty()) {
+        const GiNaC::ex x = stack.back();
+        stack.pop_back();
+        for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
+        if (!GiNaC::is_a<GiNaC::symbol>(x) || subs.count(x)) continue;
+        const FreeName* f = ctx.free_name_of(x);
+        if (!f || f->kind != NameKind::Unknown) continue;
+        int order = 0;
+        std::string inner;
+        for (const auto& [prefix, k] : {std::pair<const char*, int>{"\\ddot{", 2}, {"\\dot{", 1}})
+            if (f->name.rfind(prefix, 0) == 0 && f->name.back() == '}') {
+                order = k;
+                inner = f->name.substr(std::strlen(prefix), f->name.size() - std::strlen(prefix) - 1);
+                break;
+            }
+        if (order == 0) continue;
+        const auto named = ctx.free_names.find(inner);
+        if (named == ctx.free_names.end()) continue;
+        int line = 0;
+        const GiNaC::ex* def = definitions.value_at(named->second.symbol, at, &line);
+        if (!def) continue;
+        GiNaC::ex value = definitions.abbreviate(*def, at);
+        definitions.take_abbreviations();
+        bool known = true;  // only a definition in the model's own quantities is differentiated
+        for (std::vector<GiNaC::ex> st{value}; !st.empty() && known;) {
+            const GiNaC::ex y = st.back();
+            st.pop_back();
+            if (GiNaC::is_a<GiNaC::symbol>(y) && ctx.free_name_of(y)) known = false;
+            for (std::size_t i = 0; i < y.nops(); ++i) st.push_back(y.op(i));
+        }
+        if (!known) continue;
+        for (int k = 0; k < order; ++k) value = time_derivative(value, model);
+        subs[x] = value;
+        notes.push_back("$" + f->name + "$ is the time derivative of $" + inner + "$ as the text defines it at line " +
+                        std::to_string(line));
+    }
+    return subs.empty() ? e : e.subs(subs);
+}
+
 
 }  // namespace eomgen::checker

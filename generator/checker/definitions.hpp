@@ -4,6 +4,7 @@
 #pragma once
 
 #include "checker/latex_parser.hpp"
+#include "model/model.hpp"
 
 #include <ginac/ginac.h>
 
@@ -94,5 +95,10 @@ class TextDefinitions {
     /// The defined names where they are defined (never abbreviated): file offset, "k = g/l".
     std::vector<std::pair<std::size_t, std::string>> heads_;
 };
+
+/// `\dot{x}`, `\ddot{x}` (free names) of a name the text defines (`x = l \sin\theta`) in the model's quantities:
+/// the time derivative of its definition in force at file offset `at`, each noted in `notes`.
+GiNaC::ex dotted_definitions(const TextDefinitions& definitions, const GiNaC::ex& e, std::size_t at,
+                             const LatexContext& ctx, const Model& model, std::vector<std::string>& notes);
 
 }  // namespace eomgen::checker
