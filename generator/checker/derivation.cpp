@@ -108,38 +108,60 @@ void split_display(const std::string& file, const Block& b, int block, std::vect
     std::size_t body_begin = 0, body_end = s.size();
     bool rows_env = false;
     std::size_t after = 0;
-    const std::string env = environment_at(s, i, "\\begin", after);
-    if (!env.empty() && is_display_environment(env)) {
+    std::string env;
+    // Descend through environments that only wrap another (`\begin{equation}\begin{aligned}…`) and through
+    // `\left\{ \begin{array}…\end{array} \right.` (a system of equations), to the one whose rows are equations.
+    for (int depth = 0; depth < 4; ++depth) {
+        std::size_t k = i;
+        for (const char* wrap : {"\\left\\{", "\\left\\lbrace", "\\left."})
+            if (starts_with(s, k, wrap)) {
+                std::size_t w = k + std::string_view(wrap).size();
+                while (w < body_end && std::isspace(static_cast<unsigned char>(s[w]))) ++w;
+                std::size_t a = 0;
+                const std::string inner = environment_at(s, w, "\\begin", a);
+                if (inner == "array" || inner == "cases" || inner == "aligned") {
+                    blank(s, k, w);
+                    k = w;
+                }
+                break;
+            }
+        env = environment_at(s, k, "\\begin", after);
+        if (env.empty() || !(is_display_environment(env) || env == "cases")) {
+            env = depth == 0 ? env : "";
+            break;
+        }
+        i = k;
         // Find the matching \end{env}, counting nested environments of the same name.
-        int depth = 0;
+        int level = 0;
         std::size_t end_at = std::string::npos, end_after = 0;
-        for (std::size_t k = i; k < s.size(); ++k) {
+        for (std::size_t q = i; q < body_end; ++q) {
             std::size_t a = 0;
-            if (environment_at(s, k, "\\begin", a) == env) ++depth;
-            if (environment_at(s, k, "\\end", a) == env && --depth == 0) {
-                end_at = k;
+            if (environment_at(s, q, "\\begin", a) == env) ++level;
+            if (environment_at(s, q, "\\end", a) == env && --level == 0) {
+                end_at = q;
                 end_after = a;
                 break;
             }
         }
-        if (end_at != std::string::npos) {
-            blank(s, i, after);
-            std::size_t body = after;
-            // Column specifications: \begin{array}{ccc}, \begin{alignat}{2}.
-            if ((env == "array" || env.rfind("alignat", 0) == 0 || env == "alignedat") && body < s.size()) {
-                std::size_t k = body;
-                while (k < s.size() && s[k] == ' ') ++k;
-                if (k < s.size() && s[k] == '{') {
-                    const std::size_t e = skip_group(s, k);
-                    blank(s, body, e);
-                    body = e;
-                }
+        if (end_at == std::string::npos) break;
+        blank(s, i, after);
+        std::size_t body = after;
+        if ((env == "array" || env.rfind("alignat", 0) == 0 || env == "alignedat") && body < s.size()) {
+            std::size_t q = body;
+            while (q < s.size() && s[q] == ' ') ++q;
+            if (q < s.size() && s[q] == '{') {
+                const std::size_t e = skip_group(s, q);
+                blank(s, body, e);
+                body = e;
             }
-            blank(s, end_at, end_after);
-            body_begin = body;
-            body_end = end_at;
-            rows_env = is_row_environment(env);
         }
+        blank(s, end_at, end_after);
+        body_begin = body;
+        body_end = end_at;
+        rows_env = is_row_environment(env) || env == "cases";
+        if (rows_env) break;
+        i = body;  // an environment that wraps another: look inside it
+        while (i < body_end && std::isspace(static_cast<unsigned char>(s[i]))) ++i;
     }
     // `$$ a = b \\ c = d $$` without an environment: its rows all the same (MathJax breaks the line there).
     if (env.empty()) rows_env = has_top_level_row_break(s, body_begin, body_end);
@@ -291,7 +313,7 @@ Derivation parse_derivation(std::string text, std::string path) {
                     std::size_t f = title.find_first_not_of(" \t");
                     title = f == std::string::npos ? "" : title.substr(f);
                     d.sections.push_back({title, level, d.position(i).line, i, s.size()});
-                    i = e;
+                    i = h;  // the heading's own math (`## The Lagrangian $L = T - V$`) is read too
                     continue;
                 }
             }
@@ -359,6 +381,45 @@ Derivation parse_derivation(std::string text, std::string path) {
             d.problems.push_back({i, "'\\begin{" + env + "}' is not closed: no '" + closing + "' after it"});
             i = after;
             continue;
+        }
+        // Forums' delimiters: `##…##` (inline, Physics Forums' MathJax), `[itex]…[/itex]`, `[tex]…[/tex]`,
+        // `[latex]…[/latex]` (a display, or inline for itex).
+        if (starts_with(s, i, "##") && !(i + 2 < s.size() && (s[i + 2] == ' ' || s[i + 2] == '#'))) {
+            const std::size_t e = s.find("##", i + 2);
+            const std::size_t para = s.find("\n\n", i + 2);
+            if (e != std::string::npos && e > i + 2 && (para == std::string::npos || e < para)) {
+                blocks.push_back({i + 2, e, false});
+                i = e + 2;
+                continue;
+            }
+        }
+        {
+            bool taken = false;
+            struct ForumDelimiter {
+                const char* open;
+                const char* close;
+                bool display;
+            };
+            static constexpr ForumDelimiter kForum[] = {
+                {"[itex]", "[/itex]", false}, {"[tex]", "[/tex]", true}, {"[latex]", "[/latex]", true}};
+            for (const ForumDelimiter& fd : kForum) {
+                const char* open = fd.open;
+                const char* close = fd.close;
+                const bool display = fd.display;
+                if (!starts_with(s, i, open)) continue;
+                const std::size_t from = i + std::string_view(open).size();
+                const std::size_t e = s.find(close, from);
+                if (e == std::string::npos) {
+                    d.problems.push_back(TextProblem{i, std::string("'") + open + "' is not closed: no '" + close + "' after it"});
+                    i = from;
+                } else {
+                    blocks.push_back({from, e, display});
+                    i = e + std::string_view(close).size();
+                }
+                taken = true;
+                break;
+            }
+            if (taken) continue;
         }
         if (c == '$' || starts_with(s, i, "\\(")) {
             const bool dollar = c == '$';

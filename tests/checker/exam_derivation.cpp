@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -140,4 +141,34 @@ TEST_CASE("derivation: an environment inside single dollars and rows broken with
     CHECK(d.rows[3].text.find("y = 2") != std::string::npos);
     CHECK(d.rows[3].row_in_block == 1);
     CHECK(d.rows[4].text.find("pmatrix") != std::string::npos);
+}
+
+TEST_CASE("derivation: forums' delimiters, math in headings, wrapped environments", "[checker]") {
+    const char* const text =
+        "## The Lagrangian $L = T - V$\n"                                                   // 1: a heading's math
+        "Given ##\\dot\\varphi=\\omega## and [itex]x = 1[/itex].\n"                        // 2: forum inline
+        "[tex]y = 2[/tex]\n"                                                                 // 3: forum display
+        "$$\\begin{equation}\\begin{aligned} a &= 1 \\\\ b &= 2 \\end{aligned}\\end{equation}$$\n"  // 4: nested
+        "$$ \\left\\{ \\begin{array}{l} x = l\\sin\\phi \\\\ y = -l\\cos\\phi \\end{array} \\right. $$\n"  // 5
+        "### not math: ## alone\n";                                                          // 6
+    const eomgen::checker::Derivation d = eomgen::checker::parse_derivation(text, "x.md");
+    std::vector<std::string> rows;
+    for (const auto& r : d.rows) {
+        std::string t = r.text;
+        t.erase(0, t.find_first_not_of(' '));
+        t.erase(t.find_last_not_of(' ') + 1);
+        rows.push_back(std::to_string(d.position(r.offset).line) + ": " + t);
+    }
+    INFO(Catch::Detail::stringify(rows));
+    REQUIRE(rows.size() == 8);
+    CHECK(rows[0] == "1: L = T - V");
+    CHECK(rows[1] == "2: \\dot\\varphi=\\omega");
+    CHECK(rows[2] == "2: x = 1");
+    CHECK(rows[3] == "3: y = 2");
+    CHECK(rows[4].find("a") != std::string::npos);
+    CHECK(rows[5].find("b") != std::string::npos);
+    CHECK(rows[6].find("x = l\\sin\\phi") != std::string::npos);
+    CHECK(rows[7].find("y = -l\\cos\\phi") != std::string::npos);
+    CHECK(d.sections.size() == 2);
+    CHECK(d.sections[0].title == "The Lagrangian $L = T - V$");
 }
