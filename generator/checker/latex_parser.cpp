@@ -613,7 +613,44 @@ class Parser {
         return v;
     }
 
+    /// `V(r)`, `L(\theta, \dot\theta, t)`: a label letter written as a function of the coordinates, velocities
+    /// or t. Returns true and moves past the `)` when the group at pos_ is such an argument list: the letter
+    /// then stands alone (the caller multiplies it by 1), not times r.
+    bool label_arguments() {
+        const std::size_t at = pos_;
+        if (at == 0 || t_[at].text != "(") return false;
+        const Token& before = t_[at - 1];
+        if (before.kind != Tok::Letter || before.offset + before.length != t_[at].offset) return false;
+        static const char* const kLabels[] = {"T", "V", "U", "L", "H", "E", "K"};
+        if (std::none_of(std::begin(kLabels), std::end(kLabels), [&](const char* l) { return before.text == l; }))
+            return false;
+        const std::size_t saved = pos_, saved_uses = side_.uses.size(), saved_notes = side_.notes.size();
+        const int saved_abs = abs_depth_;
+        try {
+            ++pos_;
+            while (true) {
+                const GiNaC::ex e = expr();
+                if (!GiNaC::is_a<GiNaC::symbol>(e) || ctx_.free_name_of(e) != nullptr) throw ParseFailure{0, ""};
+                const Token* t = peek();
+                if (is_char(t, ",")) {
+                    ++pos_;
+                    continue;
+                }
+                if (!is_char(t, ")")) throw ParseFailure{0, ""};
+                ++pos_;
+                return true;
+            }
+        } catch (const ParseFailure&) {
+            pos_ = saved;
+            abs_depth_ = saved_abs;
+            side_.uses.resize(saved_uses);
+            side_.notes.resize(saved_notes);
+            return false;
+        }
+    }
+
     GiNaC::ex bracket_group() {
+        if (label_arguments()) return 1;
         const std::size_t at = pos_;
         const std::string open = t_[pos_].text;
         const std::string close = open == "(" ? ")" : "]";
