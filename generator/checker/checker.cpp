@@ -2,6 +2,7 @@
  * motion. */
 #include "checker/checker.hpp"
 #include "checker/conditions.hpp"
+#include "checker/constrained_motion.hpp"
 #include "checker/coverage.hpp"
 
 #include "checker/additive_constant.hpp"
@@ -1919,6 +1920,19 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
                 r.compared_with = "the Euler–Lagrange equations";
                 r.reason = "a combination of them" + within;
             }
+            return;
+        }
+    }
+    // 2b. With constraints, no multipliers written: an equation that holds on every motion (a constraint
+    // differentiated twice, or the equations with the constraint forces eliminated).
+    if (has_acceleration(r_ex) && !eq_.constraints.empty() &&
+        std::none_of(multipliers_.begin(), multipliers_.end(), [&](const GiNaC::symbol& l) { return r_ex.has(l); })) {
+        if (const std::optional<bool> holds = holds_on_constrained_motion(r_ex, model_, eq_, tol); holds && *holds) {
+            r.verdict = Verdict::Agrees;
+            r.compared_with = "the equations of motion with the constraints";
+            r.reason = "it holds on every motion: q'' from M q'' = f + A^T λ and the constraints, the constraint "
+                       "forces eliminated (checked at sample states)" +
+                       within;
             return;
         }
     }
