@@ -126,9 +126,17 @@ private:
     Term add_terms(const Term& a, const Term& b);
     Term factor_common(const Term& sum);
     long cost(NodeId root) const;
-    NodeId rewrite_shared(NodeId id, std::unordered_map<NodeId, NodeId>& done,
-                          const std::unordered_map<NodeId, std::vector<NodeId>>& holders,
-                          const std::unordered_map<NodeId, int>& position);
+    /// share_partial()'s tables, indexed by the node ids that existed when it started (ids are dense): vectors,
+    /// not hash maps, which were a fifth of a 60-link chain's emission.
+    struct SharePlan {
+        std::vector<int> position;                 ///< preference order of reachable sums and products; -1 none
+        std::vector<std::vector<NodeId>> holders;  ///< per term (factor): the sums (products) holding it
+        std::vector<NodeId> done;                  ///< rewritten node per original node; kNone when not yet
+        std::vector<int> hits;                     ///< per candidate: scratch of rewrite_shared(), kept at 0
+        std::vector<NodeId> touched;               ///< candidates whose hits are not 0
+        static constexpr NodeId kNone = -2;
+    };
+    NodeId rewrite_shared(NodeId id, SharePlan& plan);
 
     struct NodeHash {
         std::size_t operator()(const Node& n) const;
