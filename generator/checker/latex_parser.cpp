@@ -5,6 +5,7 @@
 #include "checker/units.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <cctype>
 #include <cmath>
 #include <set>
@@ -172,6 +173,23 @@ std::vector<Token> tokenize(std::string_view s) {
             continue;
         }
         if (std::isalpha(c)) {
+            // A function written without its backslash (`mglsin\theta`, `cos(\phi)`, as pages pasted from a word
+            // processor write it): the function, when what follows cannot continue a word.
+            static const char* const kBare[] = {"arcsin", "arccos", "arctan", "sinh", "cosh", "tanh", "sin", "cos",
+                                                "tan",    "cot",    "sec",    "csc",  "exp",  "ln"};
+            bool bare = false;
+            for (const char* f : kBare) {
+                const std::size_t n = std::strlen(f);
+                if (s.compare(i, n, f) != 0 || i + n >= s.size()) continue;
+                const unsigned char next = static_cast<unsigned char>(s[i + n]);
+                const bool opens = next == '(' || next == '\\' || next == '{' || next == '^' || next == '_';
+                if (!(opens || ((next == ' ' || next >= 0x80) && std::strcmp(f, "ln") != 0))) continue;
+                out.push_back({Tok::Word, std::string("\\") + f, i, n, "", false});
+                i += n;
+                bare = true;
+                break;
+            }
+            if (bare) continue;
             out.push_back({Tok::Letter, std::string(1, char(c)), i, 1, "", false});
             ++i;
             continue;

@@ -223,3 +223,19 @@ TEST_CASE("latex: a full stop before a spaced number ends the parse instead of l
     CHECK(same(n.parse(".5 m"), n.m / 2));
     n.fail("m . 5");  // a spaced ". 5" is not 0.5
 }
+
+TEST_CASE("latex: functions written without their backslash", "[checker][parser]") {
+    Names n;
+    // As pages pasted from a word processor, and Q&A posts, write them.
+    CHECK(same(n.parse("mglsin\\theta"), n.m * n.g * n.l * GiNaC::sin(n.th)));
+    CHECK(same(n.parse("m l^2\\dot{\\phi}sin\\theta cos\\theta"),
+               n.m * n.l * n.l * n.phd * GiNaC::sin(n.th) * GiNaC::cos(n.th)));
+    CHECK(same(n.parse("cos(\\phi - \\theta) + tan^2\\theta"),
+               GiNaC::cos(n.ph - n.th) + GiNaC::pow(GiNaC::tan(n.th), 2)));
+    CHECK(same(n.parse("ln(l)"), GiNaC::log(n.l)));
+    // Letters that only begin like a function stay letters: "sine", "cost", and ln without a bracket (l n).
+    n.parse("a cost");
+    CHECK(n.ctx.free_names.count("c") == 1);
+    n.parse("ln a");
+    CHECK(n.ctx.free_names.count("n") == 1);
+}
