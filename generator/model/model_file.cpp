@@ -663,13 +663,32 @@ class Loader {
     }
 
     /// Dimensional analysis of an expression term by term (model/dimensions.hpp): a problem fails at its term.
+    /// With `numbers_in_si`, a term that is a number alone (a body's position "0", "0.5") is not judged: it is
+    /// read in the SI unit of what it gives.
     void check_dimensions(const toml::node& node, const SymbolTable& symbols, const ParseOptions& options,
-                          const std::optional<Dims>& expected, const std::string& what) const {
+                          const std::optional<Dims>& expected, const std::string& what,
+                          bool numbers_in_si = false) const {
         const auto* s = node.as_string();
         if (!s || dims_.size() <= 1) return;  // only t: the file declares no unit
-        const auto parse = [&](const std::string& term) { return parse_expression(term, symbols, options); };
+        const auto parse = [&](const std::string& term) {
+            GiNaC::ex e = parse_expression(term, symbols, options);
+            if (numbers_in_si && GiNaC::is_a<GiNaC::numeric>(e.evalf()))
+                throw std::invalid_argument("a number alone");  // skipped, as a term that does not stand alone
+            return e;
+        };
         if (const auto problem = term_dimension_problem(s->get(), parse, dims_, coordinate_dims_, expected, what))
             fail(inside_string(node, problem->offset), problem->message);
+    }
+
+    /// The entries of a [[bodies]] or [[springs]] vector or matrix (an array of strings, or of arrays of them),
+    /// each of dimension `expected` (numbers alone read in SI).
+    void check_entry_dimensions(const toml::node& node, const SymbolTable& symbols, const ParseOptions& options,
+                                const Dims& expected, const std::string& what) const {
+        if (const toml::array* a = node.as_array()) {
+            for (const toml::node& item : *a) check_entry_dimensions(item, symbols, options, expected, what);
+            return;
+        }
+        check_dimensions(node, symbols, options, expected, what, true);
     }
 
     GiNaC::ex expression(const toml::node& node, const std::string& key, const SymbolTable& symbols,
@@ -772,6 +791,8 @@ class Loader {
             const toml::node* mass = t.get("mass");
             if (!mass) fail(src_.at(t), "missing key 'mass' in [[bodies]]");
             body.mass = scalar(*mass, "mass", symbols, constant);
+            const Dims kg{{1, 0, 0, 0, 0, 0, 0}}, metre{{0, 1, 0, 0, 0, 0, 0}}, second{{0, 0, 1, 0, 0, 0, 0}};
+            check_entry_dimensions(*mass, symbols, constant, kg, "a body's mass is a mass");
             const toml::node* shape = t.get("shape");
             const toml::node* inertia = t.get("inertia");
             if (shape && inertia)
@@ -783,8 +804,11 @@ class Loader {
                 const toml::node* dims = t.get("dimensions");
                 if (!dims) fail(src_.at(*shape), "missing key 'dimensions' for shape '" + body.shape + "' in [[bodies]]");
                 body.dimensions = scalars(*dims, "dimensions", 0, symbols, constant);
+                check_entry_dimensions(*dims, symbols, constant, metre, "a body's dimensions are lengths");
             } else {
                 if (t.get("dimensions")) fail(src_.at(*t.get("dimensions")), "'dimensions' goes with 'shape', not 'inertia'");
+                check_entry_dimensions(*inertia, symbols, constant, kg + metre * 2,
+                                       "a body's inertia is a moment of inertia");
                 const toml::array* rows = inertia->as_array();
                 if (rows && rows->size() == 3 && (*rows)[0].as_array()) {
                     for (unsigned i = 0; i < 3; ++i) {
@@ -803,10 +827,12 @@ class Loader {
             const toml::node* position = t.get("position");
             if (!position) fail(src_.at(t), "missing key 'position' in [[bodies]] (the centre of mass, 3 expressions)");
             const std::vector<GiNaC::ex> r = scalars(*position, "position", 3, symbols, placement);
+            check_entry_dimensions(*position, symbols, placement, metre, "a body's position is a length");
             body.centre = {r[0], r[1], r[2]};
             body.angles = {0, 0, 0};
             if (const toml::node* orientation = t.get("orientation")) {
                 const std::vector<GiNaC::ex> a = scalars(*orientation, "orientation", 3, symbols, placement);
+                check_entry_dimensions(*orientation, symbols, placement, Dims{}, "a body's orientation is angles");
                 body.angles = {a[0], a[1], a[2]};
             }
             if (const toml::node* sequence = t.get("sequence")) {
@@ -823,10 +849,12 @@ class Loader {
             load.forbid_velocities.clear();
             if (const toml::node* force = t.get("force")) {
                 const std::vector<GiNaC::ex> f = scalars(*force, "force", 3, symbols, load);
+                check_entry_dimensions(*force, symbols, load, kg + metre - second * 2, "a body's force is a force");
                 body.force = {f[0], f[1], f[2]};
             }
             if (const toml::node* torque = t.get("torque")) {
                 const std::vector<GiNaC::ex> n = scalars(*torque, "torque", 3, symbols, load);
+                check_entry_dimensions(*torque, symbols, load, kg + metre * 2 - second * 2, "a body's torque is a torque");
                 body.torque = {n[0], n[1], n[2]};
             }
             model.bodies.push_back(std::move(body));
@@ -849,7 +877,12 @@ class Loader {
             const toml::node* k = t.get("stiffness");
             if (!k) fail(src_.at(t), "missing key 'stiffness' in [[springs]]");
             spring.stiffness = scalar(*k, "stiffness", symbols, constant);
-            if (const toml::node* l = t.get("length")) spring.rest_length = scalar(*l, "length", symbols, constant);
+            const Dims kg{{1, 0, 0, 0, 0, 0, 0}}, metre{{0, 1, 0, 0, 0, 0, 0}}, second{{0, 0, 1, 0, 0, 0, 0}};
+            check_entry_dimensions(*k, symbols, constant, kg - second * 2, "a spring's stiffness is a force per length");
+            if (const toml::node* l = t.get("length")) {
+                spring.rest_length = scalar(*l, "length", symbols, constant);
+                check_entry_dimensions(*l, symbols, constant, metre, "a spring's length is a length");
+            }
             auto end = [&](const char* key) {
                 const toml::node* node = t.get(key);
                 if (!node)
@@ -866,10 +899,12 @@ class Loader {
                         fail(string_start(*body), "no body named '" + out.body + "' in [[bodies]]");
                     if (const toml::node* point = table->get("point")) {
                         const std::vector<GiNaC::ex> p = scalars(*point, "point", 3, symbols, placement);
+                        check_entry_dimensions(*point, symbols, placement, metre, "a spring's end is a point");
                         out.point = {p[0], p[1], p[2]};
                     }
                 } else {
                     const std::vector<GiNaC::ex> p = scalars(*node, key, 3, symbols, placement);
+                    check_entry_dimensions(*node, symbols, placement, metre, "a spring's end is a point");
                     out.point = {p[0], p[1], p[2]};
                 }
                 return out;
@@ -892,6 +927,7 @@ class Loader {
         ParseOptions options;
         options.forbid_velocities = "gravity must not depend on velocities";
         const std::vector<GiNaC::ex> g = scalars(*vector, "vector", 3, symbols, options);
+        check_entry_dimensions(*vector, symbols, options, Dims{{0, 1, -2, 0, 0, 0, 0}}, "gravity is an acceleration");
         model.gravity = {g[0], g[1], g[2]};
     }
 
