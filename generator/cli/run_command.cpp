@@ -143,6 +143,8 @@ int RunCommand::run_model() {
     const Model model = parse_model(text, model_path_);
     std::vector<std::pair<PlotColumn, PlotColumn>> xy;
     const bool ensemble = EnsembleDesign::requested(design_);
+    // --sweep and --dist values in the declared units (or their own), SI for the ensemble.
+    if (ensemble && !ensemble_in_si(model, design_.sweeps, design_.dists, "eomgen run")) return 2;
     if (ensemble) {
         // The design's mistakes before the compiler runs (its columns and plot are checked after).
         EnsembleNames names;

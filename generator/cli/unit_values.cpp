@@ -5,6 +5,7 @@
 
 #include <eomgen/simulation.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <iostream>
 #include <optional>
@@ -93,6 +94,70 @@ bool options_in_si(const Model& model, std::vector<std::string>& set, std::vecto
     try {
         assignments_in_si(model, set, false, "--set");
         assignments_in_si(model, init, true, "--init");
+        return true;
+    } catch (const std::invalid_argument& e) {
+        std::cerr << program << ": " << e.what() << "\n";
+        return false;
+    }
+}
+
+namespace {
+
+/// One value of NAME (a parameter, else a state) in SI, through assignment_in_si; the text as given when it is no
+/// number (the design reports it).
+std::string value_in_si(const Model& model, const std::string& name, const std::string& value, const char* option) {
+    const bool parameter = std::any_of(model.parameters.begin(), model.parameters.end(),
+                                       [&](const Parameter& p) { return p.name == name; });
+    const std::string whole = assignment_in_si(model, name + "=" + value, !parameter, option);
+    return whole.substr(name.size() + 1);
+}
+
+std::vector<std::string> split_on(const std::string& s, char c) {
+    std::vector<std::string> out;
+    std::size_t from = 0;
+    for (std::size_t k = 0; k <= s.size(); ++k)
+        if (k == s.size() || s[k] == c) {
+            out.push_back(s.substr(from, k - from));
+            from = k + 1;
+        }
+    return out;
+}
+
+}  // namespace
+
+bool ensemble_in_si(const Model& model, std::vector<std::string>& sweeps, std::vector<std::string>& dists,
+                    const char* program) {
+    try {
+        for (std::string& s : sweeps) {
+            const auto eq = s.find('=');
+            if (eq == std::string::npos || eq == 0) continue;  // the design says what is expected
+            const std::string name = s.substr(0, eq), spec = s.substr(eq + 1);
+            std::string out;
+            if (spec.find(':') != std::string::npos) {
+                const std::vector<std::string> r = split_on(spec, ':');
+                if (r.size() != 3) continue;
+                const std::string start = value_in_si(model, name, r[0], "--sweep");  // in order: the first
+                const std::string stop = value_in_si(model, name, r[1], "--sweep");   // bad one is reported
+                out = start + ":" + stop + ":" + r[2];
+            } else {
+                for (const std::string& v : split_on(spec, ','))
+                    out += (out.empty() ? "" : ",") + (v.empty() ? v : value_in_si(model, name, v, "--sweep"));
+            }
+            s = name + "=" + out;
+        }
+        for (std::string& d : dists) {
+            const auto eq = d.find('=');
+            const auto open = d.find('(');
+            if (eq == std::string::npos || open == std::string::npos || d.back() != ')' || open < eq) continue;
+            const std::string name = d.substr(0, eq);
+            const std::vector<std::string> args = split_on(d.substr(open + 1, d.size() - open - 2), ',');
+            if (args.size() != 2) continue;
+            // uniform(a, b), normal(mu, sigma): the units have no offset (UDUNITS' degC is refused), so a spread
+            // converts by the same factor as a value.
+            const std::string a = value_in_si(model, name, args[0], "--dist");
+            const std::string b = value_in_si(model, name, args[1], "--dist");
+            d = d.substr(0, open + 1) + a + "," + b + ")";
+        }
         return true;
     } catch (const std::invalid_argument& e) {
         std::cerr << program << ": " << e.what() << "\n";

@@ -1,4 +1,4 @@
-/** @file unit_values.hpp  Command-line values (--set NAME=VALUE, --init NAME=VALUE) in the model's units. */
+/** @file unit_values.hpp  Command-line values (--set, --init, --sweep, --dist) in the model's units. */
 #pragma once
 
 #include "model/model.hpp"
@@ -22,5 +22,11 @@ void assignments_in_si(const Model& model, std::vector<std::string>& assignments
 /// value eomgen cannot take.
 bool options_in_si(const Model& model, std::vector<std::string>& set, std::vector<std::string>& init,
                    const char* program);
+
+/// --sweep NAME=START:STOP:COUNT or NAME=v1,v2,... and --dist NAME=uniform(a,b) or NAME=normal(mu,sigma), each number
+/// in NAME's declared unit (or with its own, "0deg:90deg:10"), rewritten in SI; false, with "<program>: reason" on
+/// stderr, for a value eomgen cannot take. What is not NAME=... of that form is left for the design to report.
+bool ensemble_in_si(const Model& model, std::vector<std::string>& sweeps, std::vector<std::string>& dists,
+                    const char* program);
 
 }  // namespace eomgen::cli
