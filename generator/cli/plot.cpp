@@ -38,6 +38,11 @@ std::string labelled(const PlotColumn& c) {
 
 }  // namespace
 
+std::string rate_unit(const std::string& unit) {
+    if (unit.empty()) return "";
+    return unit == "1" ? "1/s" : unit + "/s";
+}
+
 std::string gnuplot_string(const std::string& s) {
     std::string out = "'";
     for (const char c : s) {
@@ -77,12 +82,14 @@ void plot(const PlotRequest& r) {
     gp << "set output " << gnuplot_string(r.output) << "\n";
     gp << "set multiplot layout " << rows << ",1 title " << gnuplot_string(r.title) << "\n";
     gp << "set key outside right\nset grid\nset xlabel 't [s]'\n";
-    // Coordinates against t.
-    gp << "set ylabel 'q'\n";
-    gp << "plot ";
+    // Coordinates against t; the axis carries their unit when they share one, else each curve its own.
+    const bool q_one_unit = std::all_of(r.coordinates.begin(), r.coordinates.end(),
+                                        [&r](const PlotColumn& c) { return c.unit == r.coordinates[0].unit; });
+    gp << "set ylabel " << gnuplot_string(q_one_unit && !r.coordinates.empty() ? labelled({"q", r.coordinates[0].unit}) : "q")
+       << "\nplot ";
     for (std::size_t i = 0; i < r.coordinates.size(); ++i)
-        gp << (i ? ", " : "") << gnuplot_string(r.csv) << " every ::1 using 1:" << column(header, r.coordinates[i])
-           << " with lines title " << gnuplot_string(r.coordinates[i]);
+        gp << (i ? ", " : "") << gnuplot_string(r.csv) << " every ::1 using 1:" << column(header, r.coordinates[i].name)
+           << " with lines title " << gnuplot_string(q_one_unit ? r.coordinates[i].name : labelled(r.coordinates[i]));
     gp << "\n";
     // Declared outputs against t; the axis carries their unit when they share one.
     if (!r.outputs.empty()) {
@@ -118,7 +125,11 @@ void plot(const PlotRequest& r) {
     }
     gp << "unset logscale y\nset format y '% h'\n";
     if (!r.phase.empty()) {
-        gp << "set xlabel " << gnuplot_string(r.phase) << "\nset ylabel " << gnuplot_string(r.phase + "_dot") << "\n";
+        std::string unit;
+        for (const PlotColumn& c : r.coordinates)
+            if (c.name == r.phase) unit = c.unit;
+        gp << "set xlabel " << gnuplot_string(labelled({r.phase, unit})) << "\nset ylabel "
+           << gnuplot_string(labelled({r.phase + "_dot", rate_unit(unit)})) << "\n";
         gp << "plot " << gnuplot_string(r.csv) << " every ::1 using " << column(header, r.phase) << ":"
            << column(header, r.phase + "_dot") << " with lines title 'phase portrait'\n";
     }

@@ -7,6 +7,9 @@
 
 namespace eomgen::cli {
 
+/// The unit of q̇ for q in `unit`: "m/s", "rad/s", "1/s" for a dimensionless q; "" when q has none.
+std::string rate_unit(const std::string& unit);
+
 /// A column of the CSV with the unit its axis shows ("" when none is given).
 struct PlotColumn {
     std::string name;
@@ -17,7 +20,7 @@ struct PlotRequest {
     std::string csv;                     ///< the run's samples (eomgen::write_csv's format)
     std::string output;                  ///< FILE.png or FILE.svg
     std::string title;                   ///< the model's title (escaped for gnuplot here)
-    std::vector<std::string> coordinates;
+    std::vector<PlotColumn> coordinates;  ///< with their SI units (the CSV's values are in SI)
     std::string phase;                   ///< a coordinate for q' against q, or ""
     std::vector<PlotColumn> outputs;     ///< declared outputs: a panel of them against t
     std::vector<std::pair<PlotColumn, PlotColumn>> xy;  ///< (x, y): a panel of y against x for each

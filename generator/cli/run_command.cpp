@@ -35,8 +35,8 @@ namespace {
 std::string xy_problem(const Model& model, const std::string& spec,
                        std::vector<std::pair<PlotColumn, PlotColumn>>& xy) {
     std::vector<PlotColumn> columns;
-    for (const Coordinate& c : model.coordinates) columns.push_back({c.name, ""});
-    for (const Coordinate& c : model.coordinates) columns.push_back({c.name + "_dot", ""});
+    for (const Coordinate& c : model.coordinates) columns.push_back({c.name, c.unit});
+    for (const Coordinate& c : model.coordinates) columns.push_back({c.name + "_dot", rate_unit(c.unit)});
     for (const DeclaredOutput& o : model.outputs) columns.push_back({o.name, o.unit});
     const std::size_t comma = spec.find(',');
     if (comma == std::string::npos) return "expected X,Y, e.g. x_bob,y_bob";
@@ -64,7 +64,7 @@ PlotRequest default_plot(const Model& model, const std::string& csv, const std::
     p.csv = csv;
     p.output = output;
     p.title = model.title.empty() ? model.name : model.title;
-    for (const Coordinate& c : model.coordinates) p.coordinates.push_back(c.name);
+    for (const Coordinate& c : model.coordinates) p.coordinates.push_back({c.name, c.unit});
     for (const DeclaredOutput& o : model.outputs) p.outputs.push_back({o.name, o.unit});
     return p;
 }

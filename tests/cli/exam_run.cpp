@@ -429,3 +429,46 @@ TEST_CASE("eomgen run --method radau5: the stiff example's event where dopri5 fi
     CHECK(std::abs(t_radau - t_dopri) < 1e-6);
     CHECK(rhs_dopri > 20 * rhs_radau);
 }
+
+TEST_CASE("eomgen run --plot: axes and curves carry the coordinates' units (issue 29)", "[run][plot]") {
+    const fs::path model = write_model("cart_units.toml", R"toml(name = "cart_units"
+[[coordinates]]
+name = "x"
+unit = "cm"
+initial = 10
+[[coordinates]]
+name = "theta"
+unit = "deg"
+initial = 30
+[[parameters]]
+name = "M"
+value = 1
+unit = "kg"
+[[parameters]]
+name = "m"
+value = 0.2
+unit = "kg"
+[[parameters]]
+name = "l"
+value = 0.5
+unit = "m"
+[[parameters]]
+name = "g"
+value = 9.81
+unit = "m/s^2"
+[lagrangian]
+T = "(M + m)/2*x'^2 + m*l*x'*theta'*cos(theta) + m/2*l^2*theta'^2"
+V = "-m*g*l*cos(theta)"
+)toml");
+    const fs::path svg = kWork / "cart_units.svg";
+    fs::remove(svg);
+    const Result r = eomgen({"run", "--quiet", "--t-end", "1", "--plot", svg.string(), "--plot-phase", "theta", "--",
+                             model.string()});
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const std::string text = read(svg);
+    // Two units: each curve has its own (the CSV is in SI); the phase portrait's axes have q's and q̇'s.
+    CHECK(text.find("x [m]") != std::string::npos);
+    CHECK(text.find("theta [rad]") != std::string::npos);
+    CHECK(text.find("theta_dot [rad/s]") != std::string::npos);
+}
