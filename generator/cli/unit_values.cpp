@@ -55,7 +55,8 @@ std::string assignment_in_si(const Model& model, const std::string& text, bool s
     if (!d.known) return text;
     try {
         const double bare = sim::parse_value(value);  // a number: in the declared unit
-        return name + "=" + number(bare * (d.unit ? d.unit->to_si : 1.0));
+        if (!d.unit || d.unit->to_si == 1.0) return text;  // already SI: the text as the user wrote it
+        return name + "=" + number(bare * d.unit->to_si);
     } catch (const sim::UsageError&) {
     }
     // "45 deg", "45deg", "20 cm": the longest number in front, a unit after it.
