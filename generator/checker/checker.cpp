@@ -1408,6 +1408,11 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
         const FreeName* f = ctx_.free_name_of(head);
         if (!f || f->kind != NameKind::Unknown || is_part(head) || is_constant_name(f->name)) continue;
         for (std::size_t k = c.sides.size(); k-- > 1;) {
+            // `\ell := m r^2 \dot\theta \equiv \mathrm{const}`: the constant says that it is conserved, it is
+            // not the definition.
+            if (c.sides[k].side->ok && GiNaC::is_a<GiNaC::symbol>(c.sides[k].side->value))
+                if (const FreeName* g = ctx_.free_name_of(c.sides[k].side->value); g && is_constant_name(g->name))
+                    continue;
             const Prepared p = prepare(c.sides[k]);
             if (!p.comparable() || !p.units.empty() || p.value.has(head)) continue;
             const std::size_t at = c.sides[k].base + c.sides[k].side->begin;
