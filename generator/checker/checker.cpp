@@ -1853,6 +1853,25 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     const GiNaC::ex r_ex = a.value - b.value;
     // 1. An identity: equal as they stand (a label and its value, two steps of a chain, T = T_{1} + T_{2}).
     const Tri same = equal(a.value, b.value, tol);
+    if (same == Tri::Yes && (has_root(a.value) || has_root(b.value))) {
+        // ṙ = √(2/m (E − V)): equal where the sampled velocities are positive, but a root has no sign. With every
+        // velocity reversed the sides must still agree, or a ± is missing.
+        GiNaC::exmap reversed;
+        std::string names;
+        for (const Coordinate& q : model_.coordinates)
+            if (r_ex.has(q.qd)) {
+                reversed[q.qd] = -q.qd;
+                names += (names.empty() ? "" : ", ") + m(latex(q.qd));
+            }
+        if (!reversed.empty() && equal(a.value.subs(reversed), b.value.subs(reversed), tol) == Tri::No) {
+            r.verdict = Verdict::Disagrees;
+            r.compared_with = "the same line with the velocities reversed";
+            r.reason = "the sides are equal only while " + names +
+                       " has the sign of the square root: a root is never negative, so a ± (or the sign of the "
+                       "velocity) is missing";
+            return;
+        }
+    }
     if (same == Tri::Yes) {
         r.verdict = Verdict::Agrees;
         if (r.compared_with.empty()) r.compared_with = "an identity";
