@@ -1857,17 +1857,21 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         // ṙ = √(2/m (E − V)): equal where the sampled velocities are positive, but a root has no sign. With every
         // velocity reversed the sides must still agree, or a ± is missing.
         GiNaC::exmap reversed;
-        std::string names;
-        for (const Coordinate& q : model_.coordinates)
-            if (r_ex.has(q.qd)) {
-                reversed[q.qd] = -q.qd;
+        std::string names;  // the velocities of the side without the root (both sides' when both have one)
+        const GiNaC::ex& bare = !has_root(a.value) ? a.value : !has_root(b.value) ? b.value : r_ex;
+        int named = 0;
+        for (const Coordinate& q : model_.coordinates) {
+            if (r_ex.has(q.qd)) reversed[q.qd] = -q.qd;
+            if (bare.has(q.qd)) {
                 names += (names.empty() ? "" : ", ") + m(latex(q.qd));
+                ++named;
             }
+        }
         if (!reversed.empty() && equal(a.value.subs(reversed), b.value.subs(reversed), tol) == Tri::No) {
             r.verdict = Verdict::Disagrees;
             r.compared_with = "the same line with the velocities reversed";
-            r.reason = "the sides are equal only while " + names +
-                       " has the sign of the square root: a root is never negative, so a ± (or the sign of the "
+            r.reason = "the sides are equal only while " + names + (named > 1 ? " have" : " has") +
+                       " the sign of the square root: a root is never negative, so a ± (or the sign of the "
                        "velocity) is missing";
             return;
         }
