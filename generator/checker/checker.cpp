@@ -723,6 +723,8 @@ bool Checker::is_part(const GiNaC::ex& e, std::string* name, GiNaC::ex* whole) c
     if (!f || f->kind != NameKind::Unknown) return false;
     const std::string& n = f->name;
     if (n.size() < 4 || (n[0] != 'T' && n[0] != 'V') || n[1] != '_') return false;
+    // V_{eff}, V_{\text{eff}}: the effective potential of a reduced problem, a quantity of its own, not a part of V.
+    if (n.find("eff") != std::string::npos) return false;
     if (name) *name = n;
     if (whole) *whole = n[0] == 'T' ? eq_.T : eq_.V;
     return true;
