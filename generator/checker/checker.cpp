@@ -1580,6 +1580,20 @@ void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j
             if (s.value.is_equal(model_.coordinates[k].q)) return int(k);
         return -1;
     };
+    // A chain that names its quantity on the left (`T &= …` under "the kinetic energy T and the potential energy
+    // U are") is labelled by its own letter when the sentence names that quantity too, not by the last quantity
+    // the sentence names. (A sentence that names only another one still disagrees with it.)
+    static const std::pair<const char*, const char*> kSelfLabels[] = {
+        {"T", "kinetic energy"},   {"K", "kinetic energy"}, {"V", "potential"},      {"U", "potential"},
+        {"L", "lagrangian"},       {"H", "hamiltonian"},    {"E", "energy"},         {"\\mathcal{L}", "lagrangian"},
+        {"\\mathscr{L}", "lagrangian"}};
+    std::string head = c.sides[0].side->source;
+    head.erase(0, std::min(head.find_first_not_of(" \t"), head.size()));
+    head.erase(std::min(head.find_last_not_of(" \t") + 1, head.size()));
+    bool self_labelled = false;
+    for (const auto& [letter, noun] : kSelfLabels)
+        self_labelled = self_labelled ||
+                        (head == letter && lead_in(d_, c.relation_offsets[j - 1], 2).find(noun) != std::string::npos);
     try {  // what GiNaC throws on a strange input leaves the verdict as it is
         const auto label = label_before(d_, c.relation_offsets[j - 1], coordinate, model_);
         if (!label) return;
@@ -1591,6 +1605,7 @@ void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j
         const double tol = std::max(1e-9, c.sides[i].side->rounding + c.sides[j].side->rounding);
         EquationCheck labelled = r;
         check_label(*label, a.value.subs(zero), b.value.subs(zero), model_, eq_, *this, tol, labelled);
+        if (self_labelled && labelled.verdict == Verdict::Disagrees && r.verdict != Verdict::Disagrees) return;
         r = std::move(labelled);
     } catch (const std::exception&) {
     }
