@@ -421,9 +421,9 @@ class Checker : public Comparisons {
                         n.where = r.where;
                         n.section = r.section;
                         n.equation = r.equation;
-                        n.reason = "a definition: the text's $" + m.name + "$ is the " + m.noun +
-                                   " here (as its sentence says), not eomgen's $" + m.name + "$; read so from line " +
-                                   std::to_string(m.line + 1) + " to the end of its section";
+                        n.reason = "a definition: the text's $" + m.name + "$ is the " + m.noun + " here, not eomgen's $" +
+                                   m.name + "$; read so from line " + std::to_string(m.line + 1) +
+                                   " to the end of its section";
                         return n;
                     }
             }

@@ -66,16 +66,11 @@ std::vector<TextMeaning> text_meanings(const Derivation& d, const std::vector<co
         const bool script_lagrangian = name == "L" && (d.text.find("\\mathscr{L}") != std::string::npos ||
                                                         d.text.find("\\mathcal{L}") != std::string::npos ||
                                                         d.text.find("\\mathcal L") != std::string::npos);
-        std::string sentence;
-        for (const Other& o : kOthers) {
-            if (name != o.label) continue;
-            if (sentence.empty()) sentence = sentence_around(d.text, begin, end);
-            const bool other_noun = sentence.find(o.noun) != std::string::npos;
-            if (!other_noun && !script_lagrangian) continue;
+        const auto meaning = [&](const std::string& noun) {
             TextMeaning m;
             m.name = name;
             m.value = value;
-            m.noun = other_noun ? o.noun : "quantity it names $L$ (its Lagrangian it writes $\\mathscr{L}$ or $\\mathcal{L}$)";
+            m.noun = noun;
             m.begin = begin;
             m.end = end;
             m.line = d.position(begin + std::min(row->text.find('='), row->text.size())).line;
@@ -83,6 +78,23 @@ std::vector<TextMeaning> text_meanings(const Derivation& d, const std::vector<co
                 row->section >= 0 ? d.sections[std::size_t(row->section)].end : d.text.size();
             m.last_line = d.position(section_end > 0 ? section_end - 1 : 0).line;
             out.push_back(std::move(m));
+        };
+        // T = 2π/ω, T = 2π√(l/g): a period, whatever the sentence says.
+        std::string compact;
+        for (char ch : value)
+            if (!std::isspace(static_cast<unsigned char>(ch))) compact += ch;
+        if (name == "T" && (compact.rfind("\\frac{2\\pi}", 0) == 0 || compact.rfind("2\\pi", 0) == 0)) {
+            meaning("period (it is 2π over a frequency)");
+            continue;
+        }
+        std::string sentence;
+        for (const Other& o : kOthers) {
+            if (name != o.label) continue;
+            if (sentence.empty()) sentence = sentence_around(d.text, begin, end);
+            const bool other_noun = sentence.find(o.noun) != std::string::npos;
+            if (!other_noun && !script_lagrangian) continue;
+            meaning(other_noun ? std::string(o.noun) + " (as its sentence says)"
+                               : "quantity it names $L$ (its Lagrangian it writes $\\mathscr{L}$ or $\\mathcal{L}$)");
             break;
         }
     }

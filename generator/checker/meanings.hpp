@@ -14,7 +14,7 @@ namespace eomgen::checker {
 struct TextMeaning {
     std::string name;     ///< the letter as written: "L", "T", "h"
     std::string value;    ///< the LaTeX of its definition: "mr^2\dot{\theta}"
-    std::string noun;     ///< what the sentence calls it: "angular momentum"
+    std::string noun;     ///< what the text makes it: "angular momentum (as its sentence says)", "period (…)"
     std::size_t begin = 0, end = 0;  ///< the defining row's range in the file
     int line = 0;         ///< of the defining row
     int last_line = 0;    ///< the last line of its section (the meaning holds to there)
@@ -23,8 +23,8 @@ struct TextMeaning {
 /**
  * Rows `X = value` (one of the labels L, T, H, h, V, U, E; after an implication arrow, a chain's first link)
  * whose sentence calls X something other than what eomgen's label is — the angular momentum (L), the period or
- * a tension (T), a height (h, H) — or, for L, in a text that writes its Lagrangian \mathscr{L} or \mathcal{L}, as
- * TextMeaning, in the order of the text.
+ * a tension (T), a height (h, H) — or, for L, in a text that writes its Lagrangian \mathscr{L} or \mathcal{L};
+ * and T = 2π/ω or 2π√(…), a period whatever the sentence says. As TextMeaning, in the order of the text.
  */
 std::vector<TextMeaning> text_meanings(const Derivation& d, const std::vector<const MathRow*>& rows);
 
