@@ -87,6 +87,16 @@ std::vector<TextMeaning> text_meanings(const Derivation& d, const std::vector<co
             meaning("period (it is 2π over a frequency)");
             continue;
         }
+        // h in "U = mgh": a height, wherever the text writes m g h.
+        if (name == "h") {
+            std::string text;
+            for (char ch : d.text)
+                if (!std::isspace(static_cast<unsigned char>(ch))) text += ch;
+            if (text.find("mgh") != std::string::npos) {
+                meaning("height (the text writes m g h)");
+                continue;
+            }
+        }
         std::string sentence;
         for (const Other& o : kOthers) {
             if (name != o.label) continue;
