@@ -14,6 +14,7 @@
 #include "checker/hamiltonian_check.hpp"
 #include "checker/labels.hpp"
 #include "checker/meanings.hpp"
+#include "checker/prose.hpp"
 #include "checker/latex_normalize.hpp"
 #include "checker/motions.hpp"
 #include "checker/latex_parser.hpp"

@@ -18,11 +18,6 @@ namespace eomgen::checker {
  */
 std::string condition_cue(const Derivation& d, std::size_t offset);
 
-/**
- * The prose that leads into the math at `offset`, lower case: the paragraph's text before that math (its inline
- * math left out), from the start of its last `sentences` sentences.
- */
-std::string lead_in(const Derivation& d, std::size_t offset, int sentences);
 
 /**
  * True when `a = b` (as parsed, before labels are replaced) sets a value: one side is a single name (a

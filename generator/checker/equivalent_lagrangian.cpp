@@ -1,7 +1,7 @@
 /** @file equivalent_lagrangian.cpp  L' = L + dF/dt: the same equations of motion. */
 #include "checker/equivalent_lagrangian.hpp"
 
-#include "checker/conditions.hpp"
+#include "checker/prose.hpp"
 #include "mechanics/lagrangian.hpp"
 
 #include <cctype>

@@ -1,6 +1,8 @@
 /** @file meanings.cpp  A label letter that the sentence around its definition names as something else. */
 #include "checker/meanings.hpp"
 
+#include "checker/prose.hpp"
+
 #include <cctype>
 #include <cstring>
 
@@ -18,30 +20,11 @@ constexpr Other kOthers[] = {{"L", "angular momentum"}, {"T", "period"},  {"T", 
                              {"h", "height"},           {"H", "height"},  {"L", "length"},
                              {"E", "electric field"},   {"T", "torque"}};
 
-std::string lower(std::string s) {
-    for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
-    return s;
-}
-
 std::string trim(const std::string& s) {
     const std::size_t a = s.find_first_not_of(" \t\r\n");
     if (a == std::string::npos) return "";
     const std::size_t b = s.find_last_not_of(" \t\r\n.,;");
     return b < a ? "" : s.substr(a, b - a + 1);
-}
-
-/// The sentence that holds file[begin, end): from the sentence end before it to the one after it, in prose and
-/// math alike, lower case.
-std::string sentence_around(const std::string& s, std::size_t begin, std::size_t end) {
-    auto is_end = [&](std::size_t k) {
-        return (s[k] == '.' || s[k] == '?' || s[k] == '!') && k + 1 < s.size() &&
-               std::isspace(static_cast<unsigned char>(s[k + 1]));
-    };
-    std::size_t from = begin;
-    while (from > 0 && !is_end(from - 1) && !(from >= 2 && s[from - 1] == '\n' && s[from - 2] == '\n')) --from;
-    std::size_t to = end;
-    while (to < s.size() && !is_end(to) && !(to + 1 < s.size() && s[to] == '\n' && s[to + 1] == '\n')) ++to;
-    return lower(s.substr(from, to - from));
 }
 
 }  // namespace

@@ -1,0 +1,64 @@
+/** @file prose.cpp  The sentences around a derivation's math (prose.hpp). */
+#include "checker/prose.hpp"
+
+#include <cctype>
+
+namespace eomgen::checker {
+
+std::string lead_in(const Derivation& d, std::size_t offset, int sentences) {
+    const std::string& s = d.text;
+    if (offset > s.size()) return "";
+    // The prose from the paragraph start to the math that holds `offset`, inline math left out; a display set
+    // off by a blank line takes the paragraph before it (up to two back).
+    std::string prose;
+    std::size_t end = offset;
+    for (int back = 0; back < 3; ++back) {
+        const std::size_t para = end == 0 ? std::string::npos : s.rfind("\n\n", end - 1);
+        const std::size_t floor = para == std::string::npos ? 0 : para + 2;
+        prose.clear();
+        bool in_math = false;
+        std::size_t last_math_open = std::string::npos;
+        for (std::size_t i = floor; i < end; ++i) {
+            if (s[i] == '$' && (i == 0 || s[i - 1] != '\\')) {
+                in_math = !in_math;
+                if (in_math) last_math_open = prose.size();
+                if (i + 1 < end && s[i + 1] == '$') ++i;
+                continue;
+            }
+            if (!in_math) prose += s[i];
+        }
+        if (in_math && last_math_open != std::string::npos) prose.resize(last_math_open);
+        for (const char* open : {"\\[", "\\begin{"}) {  // the delimiter that opens the display
+            const std::size_t k = prose.rfind(open);
+            if (k != std::string::npos) prose.resize(k);
+        }
+        if (prose.find_first_not_of(" \t\r\n") != std::string::npos || para == std::string::npos) break;
+        end = para;
+    }
+    int seen = 0;
+    for (std::size_t k = prose.size(); k-- > 1;)
+        if ((prose[k - 1] == '.' || prose[k - 1] == ':' || prose[k - 1] == '?' || prose[k - 1] == '!') &&
+            std::isspace(static_cast<unsigned char>(prose[k])) && ++seen == sentences) {
+            prose = prose.substr(k);
+            break;
+        }
+    std::string lower;
+    for (char c : prose) lower += char(std::tolower(static_cast<unsigned char>(c)));
+    return lower;
+}
+
+std::string sentence_around(const std::string& s, std::size_t begin, std::size_t end) {
+    auto is_end = [&](std::size_t k) {
+        return (s[k] == '.' || s[k] == '?' || s[k] == '!') && k + 1 < s.size() &&
+               std::isspace(static_cast<unsigned char>(s[k + 1]));
+    };
+    std::size_t from = begin;
+    while (from > 0 && !is_end(from - 1) && !(from >= 2 && s[from - 1] == '\n' && s[from - 2] == '\n')) --from;
+    std::size_t to = end;
+    while (to < s.size() && !is_end(to) && !(to + 1 < s.size() && s[to] == '\n' && s[to + 1] == '\n')) ++to;
+    std::string out = s.substr(from, to - from);
+    for (char& c : out) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+}  // namespace eomgen::checker

@@ -1,0 +1,24 @@
+/** @file prose.hpp  The prose around a derivation's math, as the readings of its roles need it (conditions.hpp,
+ * meanings.hpp, equivalent_lagrangian.hpp, the labels): the sentences that lead into a display, the sentence
+ * that holds an inline formula. Lower case, for cue words. */
+#pragma once
+
+#include "checker/derivation.hpp"
+
+#include <cstddef>
+#include <string>
+
+namespace eomgen::checker {
+
+/**
+ * The prose that leads into the math at `offset`, lower case: the paragraph's text before that math (its inline
+ * math left out), from the start of its last `sentences` sentences; a display set off by a blank line takes the
+ * paragraph before it (up to two back).
+ */
+std::string lead_in(const Derivation& d, std::size_t offset, int sentences);
+
+/// The sentence that holds text[begin, end): from the sentence end (or blank line) before it to the one after it,
+/// prose and math alike, lower case.
+std::string sentence_around(const std::string& text, std::size_t begin, std::size_t end);
+
+}  // namespace eomgen::checker
