@@ -1593,8 +1593,10 @@ void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j
     head.erase(std::min(head.find_last_not_of(" \t") + 1, head.size()));
     bool self_labelled = false;
     for (const auto& [letter, noun] : kSelfLabels)
-        self_labelled = self_labelled ||
-                        (head == letter && lead_in(d_, c.relation_offsets[j - 1], 2).find(noun) != std::string::npos);
+        if (head == letter) {
+            self_labelled = lead_in(d_, c.relation_offsets[j - 1], 2).find(noun) != std::string::npos;
+            break;
+        }
     try {  // what GiNaC throws on a strange input leaves the verdict as it is
         const auto label = label_before(d_, c.relation_offsets[j - 1], coordinate, model_);
         if (!label) return;
