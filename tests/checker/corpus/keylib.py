@@ -41,6 +41,15 @@ def same(a, b):
     return _simplified_zero(sp.sympify(a) - sp.sympify(b))
 
 
+def line_of(lines, snippet, nth=1):
+    """1-based number of the nth of `lines` (derivation.md split at newlines) that contains snippet; stops the key
+    when there is none, so that a line number cannot silently drift."""
+    hits = [i + 1 for i, line in enumerate(lines) if snippet in line]
+    if len(hits) < nth:
+        raise SystemExit(f"key.py: {snippet!r} not found {nth} time(s) in derivation.md")
+    return hits[nth - 1]
+
+
 class Mechanics:
     """Euler-Lagrange equations d/dt dL/dq' - dL/dq = Q of L in the coordinates qs (functions of t)."""
 

@@ -10,11 +10,7 @@ TEXT = open(os.path.join(HERE, "derivation.md"), encoding="utf-8").read().split(
 
 
 def at(snippet, nth=1):
-    """1-based line of the nth line of derivation.md that contains snippet."""
-    hits = [i + 1 for i, line in enumerate(TEXT) if snippet in line]
-    if len(hits) < nth:
-        raise SystemExit(f"key.py: {snippet!r} not found {nth} time(s) in derivation.md")
-    return hits[nth - 1]
+    return line_of(TEXT, snippet, nth)
 
 
 x, th = coords("x", "theta")
