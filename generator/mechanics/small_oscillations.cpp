@@ -448,6 +448,53 @@ ex char_poly(const GiNaC::matrix& K, const GiNaC::matrix& M, const symbol& w) {
 /// Roots in w of the factors of degree 1 and 2 of the polynomial p(w).
 constexpr std::size_t kMaxFactorTerms = 60;
 
+/// The symbols of e other than w, in name order (a deterministic substitution below).
+void collect_symbols_except(const ex& e, const symbol& w, GiNaC::lst& out) {
+    std::vector<GiNaC::symbol> found;
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it) && !it->is_equal(w)) {
+            const auto& s = GiNaC::ex_to<GiNaC::symbol>(*it);
+            if (std::none_of(found.begin(), found.end(), [&](const GiNaC::symbol& f) { return f.is_equal(s); }))
+                found.push_back(s);
+        }
+    std::sort(found.begin(), found.end(),
+              [](const GiNaC::symbol& a, const GiNaC::symbol& b) { return a.get_name() < b.get_name(); });
+    for (const auto& s : found) out.append(s);
+}
+
+/// Whether p(w), a polynomial in w whose coefficients are polynomials in the parameters, may split into factors in w
+/// of which one has degree 1 or 2 (the only ones whose roots are written out). A factorisation p = A·B with both in w
+/// survives substituting integers for the parameters (where the leading coefficient stays nonzero), so when the
+/// univariate integer polynomial at two such points does not split so, neither does p, and the multivariate
+/// factorisation — seconds to a minute for a quadratic or quartic in eight parameters (the fuzzer's slow_modes
+/// findings) — is skipped.
+bool may_split(const ex& p, const symbol& w) {
+    const int degree = p.degree(w);
+    if (degree <= 1) return false;
+    GiNaC::lst others;
+    collect_symbols_except(p, w, others);
+    static constexpr int kPoints[2][12] = {{7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47},
+                                           {53, 59, 61, 67, 71, 73, 79, 83, 89, 97, 101, 103}};
+    for (const auto& point : kPoints) {
+        GiNaC::exmap at;
+        std::size_t k = 0;
+        for (const ex& s : others) {
+            at[s] = point[k % 12] + int(k / 12);
+            ++k;
+        }
+        const ex u = p.subs(at, GiNaC::subs_options::no_pattern).expand();
+        if (!u.is_polynomial(w) || u.degree(w) != degree) return true;  // a vanishing leading coefficient: no test
+        std::vector<ex> fs;
+        factors_of(GiNaC::factor(u), fs);
+        const bool splits = std::any_of(fs.begin(), fs.end(), [&](const ex& f) {
+            const int d = f.degree(w);
+            return d >= 1 && d <= 2 && d < degree;
+        });
+        if (!splits) return false;
+    }
+    return true;
+}
+
 std::vector<ex> exact_roots(const ex& p, const symbol& w) {
     std::vector<ex> roots;
     ex num = p.normal().numer().expand();
@@ -456,11 +503,13 @@ std::vector<ex> exact_roots(const ex& p, const symbol& w) {
     // tests/fuzz/findings_structure/slow_modes_factor_characteristic_polynomial.toml); the shipped models' and tests'
     // have at most 8 terms. Beyond kMaxFactorTerms the frequencies stay numbers.
     if (GiNaC::is_a<GiNaC::add>(num) && num.nops() > kMaxFactorTerms) return roots;
-    ex f;
-    try {
-        f = GiNaC::factor(num);
-    } catch (const std::exception&) {
-        f = num;
+    ex f = num;
+    if (may_split(num, w)) {
+        try {
+            f = GiNaC::factor(num);
+        } catch (const std::exception&) {
+            f = num;
+        }
     }
     std::vector<ex> fs;
     factors_of(f, fs);
@@ -476,6 +525,39 @@ std::vector<ex> exact_roots(const ex& p, const symbol& w) {
             roots.push_back(((-b - GiNaC::sqrt(disc)) / (2 * a)));
             roots.push_back(((-b + GiNaC::sqrt(disc)) / (2 * a)));
         }
+    }
+    return roots;
+}
+
+/// The exact roots of det(K − w M), block by block: coordinates that neither K nor M couples (a decoupled pendulum
+/// beside a top) give separate factors, found without factoring their product — GiNaC's multivariate factorisation
+/// of a quartic in eight parameters takes tens of seconds (tests/fuzz/findings_structure/slow_modes_*.toml).
+std::vector<ex> block_roots(const GiNaC::matrix& K, const GiNaC::matrix& M, const symbol& w) {
+    const unsigned n = K.rows();
+    std::vector<unsigned> block(n);
+    for (unsigned i = 0; i < n; ++i) block[i] = i;
+    const auto root = [&](unsigned i) {
+        while (block[i] != i) i = block[i];
+        return i;
+    };
+    for (unsigned i = 0; i < n; ++i)
+        for (unsigned j = 0; j < n; ++j)
+            if (!K(i, j).is_zero() || !M(i, j).is_zero()) block[root(i)] = root(j);
+    std::vector<ex> roots;
+    for (unsigned b = 0; b < n; ++b) {
+        if (root(b) != b) continue;
+        std::vector<unsigned> members;
+        for (unsigned i = 0; i < n; ++i)
+            if (root(i) == b) members.push_back(i);
+        const auto size = static_cast<unsigned>(members.size());
+        GiNaC::matrix Kb(size, size), Mb(size, size);
+        for (unsigned i = 0; i < size; ++i)
+            for (unsigned j = 0; j < size; ++j) {
+                Kb(i, j) = K(members[i], members[j]);
+                Mb(i, j) = M(members[i], members[j]);
+            }
+        const std::vector<ex> found = exact_roots(char_poly(Kb, Mb, w), w);
+        roots.insert(roots.end(), found.begin(), found.end());
     }
     return roots;
 }
@@ -950,7 +1032,7 @@ ModesResult small_oscillations(const Model& model, const Equations& eq_in, const
                         e.K_exact[i][j] = Ke(unsigned(i), unsigned(j));
                     }
                 const symbol w("w_");
-                std::vector<ex> roots = exact_roots(char_poly(Ke, Me, w), w);
+                std::vector<ex> roots = block_roots(Ke, Me, w);
                 for (NormalMode& mode : e.modes)
                     for (const ex& root : roots) {
                         const double v = evaluate(root, values.params);
