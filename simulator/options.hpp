@@ -28,6 +28,9 @@ inline void add_options(CLI::App& app, Options& o) {
     app.add_option("--max-steps", o.max_steps, "Largest number of steps (dopri5, dop853, adams, radau5)")->capture_default_str();
     app.add_flag("--project-initial", o.project_initial,
                  "Project inconsistent initial conditions onto the constraints instead of refusing them");
+    app.add_flag("--no-switch-events{false}", o.switch_events,
+                 "Step across the switching surfaces of abs, sign, heaviside, max and min instead of ending the "
+                 "steps of the adaptive methods there");
 }
 
 }  // namespace eomgen::sim

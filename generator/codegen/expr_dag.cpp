@@ -10,8 +10,8 @@
 namespace eomgen::codegen {
 namespace {
 
-const std::set<std::string> kOddFunctions = {"sin", "tan", "sinh", "tanh", "asin", "atan"};
-const std::set<std::string> kEvenFunctions = {"cos", "cosh"};
+const std::set<std::string> kOddFunctions = {"sin", "tan", "sinh", "tanh", "asin", "atan", "sign"};
+const std::set<std::string> kEvenFunctions = {"cos", "cosh", "abs"};
 
 int compare_numeric(const GiNaC::numeric& a, const GiNaC::numeric& b) {
     // Real rationals only reach here; compare() orders them numerically.
@@ -298,7 +298,8 @@ Term ExprDag::convert(const GiNaC::ex& e) {
     } else if (GiNaC::is_a<GiNaC::function>(e)) {
         const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
         static const std::set<std::string> known = {"sin",  "cos",  "tan",  "exp",  "log", "sinh", "cosh",
-                                                    "tanh", "asin", "acos", "atan", "atan2", "abs"};
+                                                    "tanh", "asin", "acos", "atan", "atan2", "abs",
+                                                    "sign", "heaviside", "max", "min"};
         if (!known.count(name)) throw std::runtime_error("function " + name + " cannot be emitted");
         std::vector<Term> args;
         for (const GiNaC::ex& op : e) args.push_back(convert(op));

@@ -17,6 +17,9 @@ std::string latex_function(const std::string& name) {
     if (name == "asin") return "\\arcsin";
     if (name == "acos") return "\\arccos";
     if (name == "atan") return "\\arctan";
+    if (name == "max" || name == "min") return "\\" + name;
+    if (name == "sign") return "\\operatorname{sgn}";
+    if (name == "heaviside") return "\\operatorname{H}";
     return "\\operatorname{" + name + "}";
 }
 
@@ -138,7 +141,9 @@ std::string MathPrinter::node(NodeId id, MathStyle style, int context) {
                 const std::string second = term(Term{-a.coeffs[0], a.args[0]}, style);
                 args[0] += second[0] == '-' ? " - " + second.substr(1) : " + " + second;
             }
-            if (latex && n.name == "sqrt") {
+            if (latex && n.name == "abs") {
+                out = "\\left|" + args[0] + "\\right|";
+            } else if (latex && n.name == "sqrt") {
                 out = "\\sqrt{" + args[0] + "}";
             } else if (latex && n.name == "pow") {
                 out = "{" + node(n.args[0], style, kAtom) + "}^{" + args[1] + "}";

@@ -1,6 +1,8 @@
 /** @file double_evaluator.cpp  A walk of the expression tree in doubles (double_evaluator.hpp). */
 #include "mechanics/double_evaluator.hpp"
 
+#include "model/nonsmooth.hpp"
+
 #include <cmath>
 #include <string>
 
@@ -48,6 +50,14 @@ std::optional<double> DoubleEvaluator::evaluate(const GiNaC::ex& e) {
     } else if (GiNaC::is_a<GiNaC::power>(e)) {
         const std::optional<double> b = evaluate(e.op(0)), x = evaluate(e.op(1));
         if (b && x) out = std::pow(*b, *x);
+    } else if (is_nonsmooth_function(e)) {
+        double args[2] = {0, 0}, value = 0;
+        for (std::size_t i = 0; i < e.nops() && i < 2; ++i) {
+            const std::optional<double> a = evaluate(e.op(i));
+            if (!a) return std::nullopt;
+            args[i] = *a;
+        }
+        if (nonsmooth_value(GiNaC::ex_to<GiNaC::function>(e).get_name(), args, e.nops(), value)) out = value;
     } else if (GiNaC::is_a<GiNaC::function>(e) && e.nops() == 1) {
         const std::optional<double> a = evaluate(e.op(0));
         if (!a) return std::nullopt;
@@ -64,7 +74,6 @@ std::optional<double> DoubleEvaluator::evaluate(const GiNaC::ex& e) {
         else if (name == "sinh") out = std::sinh(x);
         else if (name == "cosh") out = std::cosh(x);
         else if (name == "tanh") out = std::tanh(x);
-        else if (name == "abs") out = std::abs(x);
     }
     if (!out) return std::nullopt;
     cache_.emplace(node, std::make_pair(e, *out));

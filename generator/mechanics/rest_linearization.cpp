@@ -2,7 +2,9 @@
 #include "mechanics/rest_linearization.hpp"
 
 #include "mechanics/pole_free_subs.hpp"
+#include "model/nonsmooth.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <sstream>
 
@@ -30,6 +32,80 @@ GiNaC::ex at_rest(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& qd, cons
         value = *side[0];
     }
     return value;
+}
+
+/// e with each non-smooth function whose switching surface does not pass through rest (sign(v − x') with the belt's
+/// speed v) replaced by its first-order Taylor polynomial about rest, F(a₀) + Σ ∂F/∂a_i(a₀)·(a_i − a₀_i): smooth there,
+/// so the one-sided quotients below see only the surfaces that do pass through rest.
+GiNaC::ex linearize_off_surface(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& qd, const GiNaC::exmap& rest) {
+    if (is_nonsmooth_function(e) && nonsmooth_in(e, qd)) {
+        const GiNaC::ex s = switching_surfaces({e}).front().s;
+        if (!GiNaC::normal(at_rest(s, qd, rest)).is_zero()) {
+            const GiNaC::function& f = GiNaC::ex_to<GiNaC::function>(e);
+            GiNaC::exvector args, args0;
+            for (const GiNaC::ex& a : e) {
+                args.push_back(a);
+                args0.push_back(at_rest(a, qd, rest));
+            }
+            GiNaC::exvector dummies;
+            GiNaC::exmap at0;
+            for (std::size_t i = 0; i < args.size(); ++i) {
+                dummies.push_back(GiNaC::symbol());
+                at0[dummies[i]] = args0[i];
+            }
+            const GiNaC::ex generic = GiNaC::function(f.get_serial(), dummies);
+            GiNaC::ex out = generic.subs(at0, GiNaC::subs_options::no_pattern);
+            for (std::size_t i = 0; i < args.size(); ++i)
+                out += generic.diff(GiNaC::ex_to<GiNaC::symbol>(dummies[i])).subs(at0, GiNaC::subs_options::no_pattern) *
+                       (args[i] - args0[i]);
+            return out;
+        }
+    }
+    struct Recurse : GiNaC::map_function {
+        const std::vector<GiNaC::symbol>& qd;
+        const GiNaC::exmap& rest;
+        Recurse(const std::vector<GiNaC::symbol>& v, const GiNaC::exmap& r) : qd(v), rest(r) {}
+        GiNaC::ex operator()(const GiNaC::ex& x) override { return linearize_off_surface(x, qd, rest); }
+    } recurse(qd, rest);
+    if (GiNaC::is_exactly_a<GiNaC::add>(e) || GiNaC::is_exactly_a<GiNaC::mul>(e) ||
+        GiNaC::is_exactly_a<GiNaC::power>(e) || GiNaC::is_exactly_a<GiNaC::function>(e))
+        return e.map(recurse);
+    return e;
+}
+
+/// Whether e has a switching surface, in the velocities, that passes through rest (|v| or sign(v), not sign(v − x')).
+bool switches_at_rest(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& qd, const GiNaC::exmap& rest) {
+    for (const SwitchingSurface& w : switching_surfaces({e}))
+        if (std::any_of(qd.begin(), qd.end(), [&](const GiNaC::symbol& v) { return w.s.has(v); }) &&
+            GiNaC::normal(at_rest(w.s, qd, rest)).is_zero())
+            return true;
+    return false;
+}
+
+/// ∂e/∂v at q̇ = 0. Where a switching surface of e in the velocities passes through rest (abs, sign of a
+/// velocity), GiNaC's derivative is the one away from it (d sign/dx = 0), which at rest may be wrong: the
+/// one-sided difference quotients along v, (e(v = ±ε) − e(0))/(±ε) as ε → 0⁺, are taken instead, and must agree.
+/// Empty where they do not (dry friction: sign(v) jumps at rest) or do not exist.
+std::optional<GiNaC::ex> derivative_at_rest(const GiNaC::ex& e, const GiNaC::symbol& v,
+                                            const std::vector<GiNaC::symbol>& qd, const GiNaC::exmap& rest) {
+    if (!switches_at_rest(e, qd, rest)) return at_rest(e.diff(v), qd, rest);
+    const GiNaC::ex smooth_elsewhere = linearize_off_surface(e, qd, rest);
+    GiNaC::exmap others = rest;
+    others.erase(v);
+    const GiNaC::ex e0 = at_rest(smooth_elsewhere, qd, rest);
+    const GiNaC::possymbol eps("eps");
+    std::optional<GiNaC::ex> side[2];
+    for (int s = 0; s < 2; ++s) {
+        const GiNaC::ex step = (s == 0 ? 1 : -1) * eps;
+        GiNaC::exmap at = others;
+        at[v] = step;
+        const GiNaC::ex along = smooth_elsewhere.subs(at, GiNaC::subs_options::no_pattern);
+        side[s] = subs_unless_pole(GiNaC::normal((along - e0) / step), GiNaC::exmap{{eps, 0}},
+                                   GiNaC::subs_options::no_pattern);
+        if (side[s] && side[s]->has(eps)) side[s].reset();
+    }
+    if (!side[0] || !side[1] || !GiNaC::normal(*side[0] - *side[1]).is_zero()) return std::nullopt;
+    return *side[0];
 }
 
 }  // namespace
@@ -62,10 +138,20 @@ RestLinearization linearize_about_rest(const GiNaC::ex& L, const std::vector<GiN
         for (std::size_t j = 0; j < n; ++j) r.M[i][j] = at_rest(dL.diff(qd[j]));
         r.gradient[i] = -L0.diff(q[i]) - at_rest(Q[i]);
     }
+    r.D_defined.assign(n, std::vector<bool>(n, true));
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j) {
             r.K[i][j] = r.gradient[i].diff(q[j]);
-            r.D[i][j] = r.beta[i].diff(q[j]) - r.beta[j].diff(q[i]) - at_rest(Q[i].diff(qd[j]));
+            const std::optional<GiNaC::ex> dQ = derivative_at_rest(Q[i], qd[j], qd, rest);
+            if (!dQ) {
+                r.D_defined[i][j] = false;
+                // Named by coordinates, not printed: GiNaC's order of terms varies from run to run.
+                const std::string qi = q[i].get_name(), vj = q[j].get_name() + "'";
+                r.undefined.push_back("the generalized force on " + qi + " has no derivative in " + vj +
+                                      " at rest (its one-sided limits at " + vj +
+                                      " = 0 differ: a sign, or a kink, there)");
+            }
+            r.D[i][j] = r.beta[i].diff(q[j]) - r.beta[j].diff(q[i]) - (dQ ? *dQ : GiNaC::ex(0));
         }
     return r;
 }

@@ -17,6 +17,7 @@
 #include <ginac/ginac.h>
 
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace eomgen {
@@ -28,6 +29,9 @@ struct RestLinearization {
     std::vector<std::vector<GiNaC::ex>> M;     ///< ∂²L/∂q̇² (at q̇ = 0, on which it does not depend)
     std::vector<std::vector<GiNaC::ex>> K;     ///< ∂G/∂q
     std::vector<std::vector<GiNaC::ex>> D;     ///< damping (symmetric part) + gyroscopic (skew part)
+    /// False where ∂Q_i/∂q̇_j has no value at rest (dry friction, sign(q̇_j)): D_ij then holds the rest, without it.
+    std::vector<std::vector<bool>> D_defined;
+    std::vector<std::string> undefined;  ///< what is not defined and why, one line each (empty when all is)
 };
 
 /// A coefficient that has no value at rest: a force whose derivative in a velocity has no limit as it goes to 0

@@ -679,6 +679,10 @@ ModesResult small_oscillations(const Model& model, const Equations& eq_in, const
         throw ModesError(std::string("the linearization about rest is not defined: ") + e.what());
     }
     result.V_eff = lin.V_eff;
+    for (const std::string& why : lin.undefined)
+        result.notes.push_back("the damping about rest is not defined: " + why +
+                               "; the modes below leave that term out (dry friction holds a state of rest, or not, "
+                               "beyond any linearization)");
     const std::vector<ex>& g = lin.gradient;
     const std::vector<std::vector<ex>>&M = lin.M, &K = lin.K, &D = lin.D;
 

@@ -132,6 +132,19 @@ std::optional<Dims> dimension_of(const GiNaC::ex& e, const std::map<GiNaC::ex, D
     if (GiNaC::is_a<GiNaC::function>(e)) {
         const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
         if (name == "abs" && e.nops() == 1) return dimension_of(e.op(0), symbols);
+        if ((name == "sign" || name == "heaviside") && e.nops() == 1) {
+            dimension_of(e.op(0), symbols);  // any dimension; a mismatch inside is still an error
+            return Dims{};
+        }
+        if ((name == "max" || name == "min") && e.nops() == 2) {
+            // A bare number (max(x, 0)) takes the other argument's dimension, as numbers alone are read in SI.
+            if (GiNaC::is_a<GiNaC::numeric>(e.op(1))) return dimension_of(e.op(0), symbols);
+            if (GiNaC::is_a<GiNaC::numeric>(e.op(0))) return dimension_of(e.op(1), symbols);
+            const std::optional<Dims> a = dimension_of(e.op(0), symbols), b = dimension_of(e.op(1), symbols);
+            if (a && b && *a != *b)
+                throw DimensionError("the arguments of " + shown(e) + " differ: " + a->str() + " and " + b->str());
+            return a ? a : b;
+        }
         if (name == "atan2" && e.nops() == 2) {
             const std::optional<Dims> y = dimension_of(e.op(0), symbols), x = dimension_of(e.op(1), symbols);
             if (y && x && *y != *x)

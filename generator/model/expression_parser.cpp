@@ -2,6 +2,7 @@
 #include "model/expression_parser.hpp"
 
 #include "model/names.hpp"
+#include "model/nonsmooth.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -31,17 +32,23 @@ struct Function {
 
 // Sorted by name; expression_function_names() relies on it.
 const Function kFunctions[] = {
+    {"abs", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return real_abs(a[0]); }},
     {"acos", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::acos(a[0]); }},
     {"asin", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::asin(a[0]); }},
     {"atan", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::atan(a[0]); }},
     {"atan2", 2, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::atan2(a[0], a[1]); }},
+    {"clamp", 3, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return real_min(real_max(a[0], a[1]), a[2]); }},
     {"cos", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::cos(a[0]); }},
     {"cosh", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::cosh(a[0]); }},
     {"exp", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::exp(a[0]); }},
+    {"heaviside", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return heaviside(a[0]); }},
     {"log", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::log(a[0]); }},
+    {"max", 2, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return real_max(a[0], a[1]); }},
+    {"min", 2, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return real_min(a[0], a[1]); }},
+    {"sign", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return sign(a[0]); }},
     {"sin", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::sin(a[0]); }},
     {"sinh", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::sinh(a[0]); }},
-    {"sqrt", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::sqrt(a[0]); }},
+    {"sqrt", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return real_roots(GiNaC::sqrt(a[0])); }},
     {"tan", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::tan(a[0]); }},
     {"tanh", 1, [](const std::vector<GiNaC::ex>& a) -> GiNaC::ex { return GiNaC::tanh(a[0]); }},
 };
@@ -287,7 +294,7 @@ class Parser {
         advance();
         const GiNaC::ex exponent = parse_unary();  // right-associative, and a^-b is a^(-b)
         check_power_size(op.offset, base, exponent);
-        return guarded(op.offset, [&] { return GiNaC::pow(base, exponent); });
+        return guarded(op.offset, [&] { return real_roots(GiNaC::pow(base, exponent)); });
     }
 
     // A name that stood alone as a primary, so that a prime after it can refer to it.
@@ -604,6 +611,11 @@ double to_double(const GiNaC::ex& e) {
     if (GiNaC::is_a<GiNaC::function>(e)) {
         const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
         if (name == "atan2" && e.nops() == 2) return std::atan2(to_double(e.op(0)), to_double(e.op(1)));
+        if (is_nonsmooth_function(e)) {
+            double args[2] = {0, 0}, out = 0;
+            for (std::size_t i = 0; i < e.nops() && i < 2; ++i) args[i] = to_double(e.op(i));
+            if (nonsmooth_value(name, args, e.nops(), out)) return out;
+        }
         if (e.nops() == 1) {
             const double x = to_double(e.op(0));
             if (name == "sin") return std::sin(x);
@@ -629,7 +641,8 @@ double to_double(const GiNaC::ex& e) {
 
 GiNaC::ex parse_expression(std::string_view text, const SymbolTable& symbols, const ParseOptions& options) {
     try {
-        return Parser(text, symbols, options).parse();
+        // Read for real numbers: sqrt(x^2) is |x|, x/sqrt(x^2) is sign(x) (model_files.md, "Non-smooth functions").
+        return real_roots(Parser(text, symbols, options).parse());
     } catch (const ExpressionError&) {
         throw;
     } catch (const std::exception& e) {

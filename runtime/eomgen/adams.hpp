@@ -270,6 +270,37 @@ class Adams {
     }
 
     bool done() const { return t_ == t_end_; }
+
+    /// Starts afresh at (t, x), as the constructor does (order 1, the differences from f(t, x) alone), with the
+    /// next trial step h (0: the current one): the driver's move at a switching surface (EventAction::Switch),
+    /// where the history of f before the switch says nothing about f after it.
+    template <class System>
+    void restart(System&& f, const Scalar& t, const State& x, const Scalar& h = Scalar(0)) {
+        t_ = t;
+        t_prev_ = t;
+        x_ = x;
+        x_prev_ = x;
+        for (State& d : phi_) d = State::Zero(x.size());
+        psi_ = {};
+        alpha_ = {};
+        beta_ = {};
+        sig_ = {};
+        v_ = {};
+        w_ = {};
+        g_ = {};
+        k_ = 1;
+        kold_ = 0;
+        ns_ = 0;
+        hold_ = Scalar(0);
+        phase1_ = true;
+        evaluate(f, t_, x_, fx_);
+        if (!fx_.allFinite())
+            throw NonFiniteState(describe_state("right-hand side is not finite", t_, x_), value_of(t_));
+        phi_[1] = fx_;
+        if (h != Scalar(0)) h_ = h;
+    }
+    /// Where the steps end: t_end, or for a while a switch's time before it (the last step lands on it exactly).
+    void set_end(const Scalar& t) { t_end_ = t; }
     const Scalar& t() const { return t_; }
     const State& x() const { return x_; }
     const Scalar& t_prev() const { return t_prev_; }

@@ -215,6 +215,24 @@ class EmbeddedRk {
     }
 
     bool done() const { return t_ == t_end_; }
+
+    /// Starts afresh at (t, x): f is evaluated there (no first-same-as-last stage carried across a switch of f)
+    /// and the next trial step is h (0: the one the controller chose). The driver's move at a switching surface
+    /// (EventAction::Switch): back to the start of the step that crossed it, and on from the crossing.
+    template <class System>
+    void restart(System&& f, const Scalar& t, const State& x, const Scalar& h = Scalar(0)) {
+        t_ = t;
+        t_prev_ = t;
+        x_ = x;
+        x_prev_ = x;
+        evaluate(f, t_, x_, k1_);
+        if (!k1_.allFinite())
+            throw NonFiniteState(describe_state("right-hand side is not finite", t_, x_), value_of(t_));
+        if (h != Scalar(0)) h_ = h;
+    }
+    /// Where the steps end: t_end, or for a while a switch's time before it (the last step lands on it exactly).
+    void set_end(const Scalar& t) { t_end_ = t; }
+
     const Scalar& t() const { return t_; }
     const State& x() const { return x_; }
     const Scalar& t_prev() const { return t_prev_; }

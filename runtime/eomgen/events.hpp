@@ -14,8 +14,14 @@ namespace eomgen {
 /// Which sign changes of g count: rising (g goes from < 0 to ≥ 0), falling (> 0 to ≤ 0), or both.
 enum class EventDirection : int { Falling = -1, Both = 0, Rising = 1 };
 
-/// What the driver does at an event: stop the run there (terminal), or record it and go on.
-enum class EventAction { Stop, Record };
+/**
+ * What the driver does at an event: stop the run there (terminal), record it and go on, or treat it as a
+ * switching surface of f (a kink or a jump: the argument of abs, sign, max … in a model): the step that crossed it
+ * is retaken to end at the crossing and the stepper restarts there, so that no step straddles it and the method
+ * keeps its order. Switches are reported in IntegrationResult::switches. Steppers without restart() (rk4,
+ * radau5) record them and go on.
+ */
+enum class EventAction { Stop, Record, Switch };
 
 /**
  * An event: the time t* where g(t*, x(t*)) = 0 with the requested direction of crossing. `g` sees the
@@ -28,6 +34,10 @@ struct Event {
     std::function<Scalar(const Scalar& t, const State& x)> g;
     EventDirection direction = EventDirection::Both;
     EventAction action = EventAction::Record;
+    /// For a Switch event: asked at each crossing (t, x), true ends the run there as a terminal event — where the
+    /// field on both sides pushes into the surface and the motion slides along it (sliding.hpp), which a caller
+    /// integrates with another right-hand side. Empty: never.
+    std::function<bool(const Scalar& t, const State& x)> stop_at_switch = {};
 };
 
 /// One located event: which one, when, and the (dense-output) state there.

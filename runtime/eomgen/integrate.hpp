@@ -77,6 +77,7 @@ struct IntegrationResult {
     std::size_t rejected_steps = 0;
     std::size_t rhs_evaluations = 0;      ///< calls of f, including start-up and rejected trials
     std::vector<EventHit<State>> events;  ///< located events, in time order, up to the end of the run
+    std::vector<EventHit<State>> switches;  ///< where f switched (EventAction::Switch), in time order
     std::vector<Sample<State>> samples;   ///< at the requested times up to the end (empty with an observer)
     StopReason stop_reason = StopReason::ReachedEnd;
     std::string stopped_by;  ///< the terminal event's name; empty when t_end was reached
@@ -96,6 +97,18 @@ struct HasPrepareDense : std::false_type {};
 template <class Stepper, class System>
 struct HasPrepareDense<Stepper, System,
                        std::void_t<decltype(std::declval<Stepper&>().prepare_dense(std::declval<System&>()))>>
+    : std::true_type {};
+
+/// Steppers that can start afresh at a point and end their steps early (restart(f, t, x, h), set_end(t)): those
+/// that honour EventAction::Switch.
+template <class Stepper, class System, class State, class = void>
+struct HasRestart : std::false_type {};
+template <class Stepper, class System, class State>
+struct HasRestart<Stepper, System, State,
+                  std::void_t<decltype(std::declval<Stepper&>().restart(std::declval<System&>(),
+                                                                        std::declval<typename State::Scalar>(),
+                                                                        std::declval<const State&>())),
+                              decltype(std::declval<Stepper&>().set_end(std::declval<typename State::Scalar>()))>>
     : std::true_type {};
 
 /**
@@ -161,7 +174,35 @@ IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State
     State x_tmp = x0;
     const Scalar eps = std::numeric_limits<Scalar>::epsilon();
 
-    while (!stepper.done()) {
+    constexpr bool can_switch = HasRestart<Stepper, System, State>::value;
+    constexpr std::size_t none = static_cast<std::size_t>(-1);
+    std::size_t switching = none;  // the Switch event whose crossing the steps now end at
+    Scalar t_switch(0), h_switch(0);
+
+    for (;;) {
+        if (stepper.done()) {
+            if constexpr (can_switch) {
+                if (switching != none) {
+                    const State xs = stepper.x();
+                    // At the crossing: on afresh, with the step size the crossing step had.
+                    stepper.set_end(t_end);
+                    stepper.restart(f, t_switch, xs, h_switch);
+                    result.switches.push_back({events[switching].name, t_switch, xs});
+                    if (events[switching].stop_at_switch && events[switching].stop_at_switch(t_switch, xs)) {
+                        result.t = t_switch;
+                        result.x = xs;
+                        result.stop_reason = StopReason::TerminalEvent;
+                        result.stopped_by = events[switching].name;
+                        break;
+                    }
+                    for (std::size_t i = 0; i < events.size(); ++i) g_prev[i] = evaluate_g(events[i], t_switch, xs);
+                    g_prev[switching] = Scalar(0);  // crossed here: a start value of 0 never counts again
+                    switching = none;
+                    continue;
+                }
+            }
+            break;
+        }
         stepper.step(f);
         const Scalar ta = stepper.t_prev(), tb = stepper.t();
 
@@ -177,6 +218,8 @@ IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State
         crossings.clear();
         for (std::size_t i = 0; i < events.size(); ++i) {
             if (!crosses(g_prev[i], g_now[i], events[i].direction)) continue;
+            // While the steps end at one switch, the others wait: each is met after the restart there.
+            if (can_switch && switching != none && events[i].action == EventAction::Switch) continue;
             const auto g_dense = [&](const Scalar& s) {
                 stepper.dense(s, x_tmp);
                 return events[i].g(s, x_tmp);
@@ -187,6 +230,42 @@ IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State
         std::stable_sort(crossings.begin(), crossings.end(), [dir](const Crossing& a, const Crossing& b) {
             return (a.t - b.t) * dir < Scalar(0);
         });
+
+        if constexpr (can_switch) {
+            if (!crossings.empty() && events[crossings.front().index].action == EventAction::Switch &&
+                crossings.front().t != ta) {
+                // f switches inside this step: retake it from ta, to end at the crossing. The crossing was
+                // located on the step's dense output, which is less accurate than the steps: first, without
+                // reporting anything, secant steps on the retaken trajectory (a smooth function of where it
+                // ends) until g is round-off there, or just across, within [ta, tb].
+                const std::size_t k = crossings.front().index;
+                const State xa = stepper.x_prev();
+                const Scalar ga = g_prev[k], h0 = tb - ta;
+                Scalar tc = crossings.front().t, t_last = ta, g_last = ga;
+                for (int refinement = 0; refinement < 8; ++refinement) {
+                    stepper.restart(f, ta, xa, h0);
+                    stepper.set_end(tc);
+                    while (!stepper.done()) stepper.step(f);
+                    const Scalar gc = evaluate_g(events[k], tc, stepper.x());
+                    const bool across = gc == Scalar(0) || (gc > Scalar(0)) != (ga > Scalar(0));
+                    if ((across && abs(gc) <= Scalar(64) * eps * max(abs(ga), abs(g_now[k]))) || gc == g_last) break;
+                    Scalar t_next = tc - gc * (tc - t_last) / (gc - g_last);
+                    const Scalar lo = ta + (tb - ta) * Scalar(1e-3);
+                    if (!((t_next - lo) * dir > Scalar(0))) t_next = lo;
+                    if ((t_next - tb) * dir > Scalar(0)) t_next = tb;
+                    if (t_next == tc) break;
+                    t_last = tc;
+                    g_last = gc;
+                    tc = t_next;
+                }
+                switching = k;
+                t_switch = tc;
+                h_switch = h0;
+                stepper.restart(f, ta, xa, h0);
+                stepper.set_end(t_switch);
+                continue;  // g_prev keeps the values at ta
+            }
+        }
 
         Scalar t_stop = tb;
         const Crossing* terminal = nullptr;
@@ -199,7 +278,8 @@ IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State
         for (const auto& c : crossings) {
             if (!not_after(c.t, t_stop)) break;
             stepper.dense(c.t, x_tmp);
-            result.events.push_back({events[c.index].name, c.t, x_tmp});
+            (events[c.index].action == EventAction::Switch ? result.switches : result.events)
+                .push_back({events[c.index].name, c.t, x_tmp});
         }
         for (; next_sample < sample_times.size() && not_after(sample_times[next_sample], t_stop);
              ++next_sample) {

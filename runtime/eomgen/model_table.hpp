@@ -34,7 +34,7 @@
 namespace eomgen {
 
 /// Raised when ModelTable's layout changes: a table of another layout is refused.
-constexpr std::uint32_t kModelTableAbi = 2;
+constexpr std::uint32_t kModelTableAbi = 3;
 
 /// What a table function reports: success, or which of the runtime's errors it caught.
 enum TableStatus : int {
@@ -79,6 +79,10 @@ struct ModelTable {
     int (*jacobian)(double t, const double* x, const void* p, double* J);
     /// The message of the last error on this thread, and its time in *t.
     const char* (*error_message)(double* t);
+    /// The switching surfaces of rhs() (abs, sign, heaviside, max, min): n_switches values s_k, 0 and null when none.
+    int n_switches;
+    const char* const* switch_names;
+    int (*switching)(double t, const double* q, const double* qd, const void* p, double* out);
 };
 
 namespace table_detail {
@@ -170,6 +174,13 @@ struct Wrappers {
             typename M::Outputs o;
             M::outputs(t, read<Config>(q), read<Config>(qd), params(p), o);
             write(o, out);
+        });
+    }
+    static int switching(double t, const double* q, const double* qd, const void* p, double* out) {
+        return guarded([&] {
+            typename M::Switches s;
+            M::switching(t, read<Config>(q), read<Config>(qd), params(p), s);
+            write(s, out);
         });
     }
     static int mass_matrix(double t, const double* q, const void* p, double* out) {
@@ -284,6 +295,11 @@ const ModelTable& model_table() {
         t.lagrangian_gradient = &W::lagrangian_gradient;
         if constexpr (WithJacobian) t.jacobian = &W::jacobian;
         t.error_message = &W::error_message;
+        if constexpr (has_switching<M>::value) {
+            t.n_switches = M::n_switches;
+            t.switch_names = M::switch_names.data();
+            t.switching = &W::switching;
+        }
         return t;
     }();
     return table;
@@ -329,6 +345,10 @@ class TableModel {
     static inline std::vector<const char*> state_names, coordinate_names, param_names, conserved_names, output_names,
         constraint_names;
     static inline std::vector<bool> constraint_is_holonomic;
+    /// The switching surfaces (none when the model has no abs, sign, heaviside, max or min).
+    using Switches = Eigen::VectorXd;
+    static inline int n_switches = 0;
+    static inline std::vector<const char*> switch_names;
 
     /// Makes `t` the model of every TableModel call; throws std::invalid_argument for a table of another
     /// layout or one this program cannot use.
@@ -355,6 +375,8 @@ class TableModel {
         output_names.assign(t.output_names, t.output_names + t.n_outputs);
         constraint_names.assign(t.constraint_names, t.constraint_names + t.n_constraints);
         constraint_is_holonomic.assign(t.constraint_is_holonomic, t.constraint_is_holonomic + t.n_constraints);
+        n_switches = t.switching ? t.n_switches : 0;
+        switch_names.assign(t.switch_names, t.switch_names + n_switches);
     }
 
     static const ModelTable& table() {
@@ -393,6 +415,10 @@ class TableModel {
     static void outputs(double t, const Config& q, const Config& qd, const Params& p, Outputs& out) {
         out.resize(n_outputs);
         check(table().outputs(t, q.data(), qd.data(), p.data(), out.data()));
+    }
+    static void switching(double t, const Config& q, const Config& qd, const Params& p, Switches& out) {
+        out.resize(n_switches);
+        if (n_switches > 0) check(table().switching(t, q.data(), qd.data(), p.data(), out.data()));
     }
     static void mass_matrix(double t, const Config& q, const Params& p, MassMatrix& M) {
         M.resize(dof(), dof());

@@ -29,6 +29,14 @@ struct has_analytic_jacobian<M, std::void_t<decltype(M::state_jacobian(
                                     std::declval<const typename M::Params&>(), std::declval<Eigen::MatrixXd&>()))>>
     : std::true_type {};
 
+/// Models whose rhs() has kinks or jumps (abs, sign, heaviside, max, min in the model file) declare n_switches,
+/// switch_names and switching(t, q, q', p, s): the integrators stop their steps at each s_k = 0
+/// (EventAction::Switch).
+template <class M, class = void>
+struct has_switching : std::false_type {};
+template <class M>
+struct has_switching<M, std::void_t<decltype(M::n_switches)>> : std::true_type {};
+
 /// How many constraints a model has at run time (0 for a model without the constraint interface).
 template <class M>
 int constraint_count() {

@@ -7,6 +7,7 @@
 
 #include "eomgen/constraints.hpp"
 #include "eomgen/integrate.hpp"
+#include "eomgen/sliding.hpp"
 #include "eomgen/model_jacobian.hpp"
 #include "eomgen/model_traits.hpp"
 #include "eomgen/output.hpp"
@@ -82,6 +83,8 @@ struct Options {
     int samples = 200;
     std::size_t max_steps = 10000000;
     bool project_initial = false;
+    /// Stop the adaptive methods' steps at the model's switching surfaces (kinks and jumps of rhs()).
+    bool switch_events = true;
     /// How far a long integration has come, on stderr (progress.hpp): set by `eomgen run`, not an option here.
     eomgen::ProgressStyle progress = eomgen::ProgressStyle::None;
 };
@@ -312,6 +315,26 @@ std::vector<eomgen::Event<typename M::State>> until_events(const Options& o) {
     return events;
 }
 
+/// The model's switching surfaces (abs, sign, … in its file) as EventAction::Switch events of the adaptive
+/// methods, unless o.switch_events is off (--no-switch-events). `params` must outlive the events.
+template <class M>
+std::vector<eomgen::Event<typename M::State>> switch_events(const Options& o, const typename M::Params& params) {
+    using State = typename M::State;
+    std::vector<eomgen::Event<State>> events;
+    if constexpr (eomgen::has_switching<M>::value) {
+        if (!o.switch_events) return events;
+        for (int k = 0; k < M::n_switches; ++k)
+            events.push_back({M::switch_names[std::size_t(k)],
+                              [k, &params](const double& t, const State& x) {
+                                  typename M::Switches s;
+                                  M::switching(t, positions<M::nq>(x), velocities<M::nq>(x), params, s);
+                                  return s(k);
+                              },
+                              eomgen::EventDirection::Both, eomgen::EventAction::Switch});
+    }
+    return events;
+}
+
 /// What one integration gave: where and how it ended, the samples when asked for, the energy's drift.
 template <class M>
 struct Trajectory {
@@ -334,11 +357,13 @@ struct Trajectory {
  */
 template <class M>
 Trajectory<M> simulate(const Options& o, const typename M::Params& params, const typename M::State& x0,
-                       const std::vector<eomgen::Event<typename M::State>>& events, bool keep_samples,
+                       const std::vector<eomgen::Event<typename M::State>>& terminal_events, bool keep_samples,
                        std::ostream* log) {
     using State = typename M::State;
     using Config = typename M::Config;
     check_method_for<M>(o);
+    std::vector<eomgen::Event<State>> events = terminal_events;
+    for (auto& e : switch_events<M>(o, params)) events.push_back(std::move(e));
     auto h = [&params](double t, const State& x) {
         const Config q = positions<M::nq>(x), qd = velocities<M::nq>(x);
         return M::energy(t, q, qd, params);
@@ -370,6 +395,10 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
         *log << "steps:   " << r.accepted_steps << " accepted, " << r.rejected_steps << " rejected, "
              << r.rhs_evaluations << " right-hand sides\n";
         for (const auto& e : r.events) *log << "event:   " << e.name << " at t = " << e.t << "\n";
+        if (!r.switches.empty())
+            *log << "switches: " << r.switches.size() << " (steps ended where " << r.switches.front().name
+                 << (r.switches.size() > 1 ? " and the others" : "") << " switched; first at t = "
+                 << r.switches.front().t << ")\n";
         *log << "stopped: "
              << (r.stop_reason == eomgen::StopReason::TerminalEvent ? "at event " + r.stopped_by : "at t_end") << "\n";
     };
@@ -455,9 +484,10 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
                      << rr.jacobian_evaluations << " Jacobians, " << rr.lu_decompositions << " LU decompositions\n";
         } else if (!with_adaptive_method(o.method, [&](auto method) {
                        using Method = decltype(method);
-                       r = eomgen::integrate_with<Method::template type>(f, 0.0, x0, o.t_end,
-                                                                         Method::template options<State>(o),
-                                                                         events, sample_times, observer);
+                       // Sliding along a switching surface (sticking friction) where the model has them.
+                       r = eomgen::integrate_sliding<Method::template type>(f, 0.0, x0, o.t_end,
+                                                                           Method::template options<State>(o),
+                                                                           events, sample_times, observer);
                        if (log) *log << "method:  " << o.method << ", rtol " << o.rtol << ", atol " << o.atol << "\n";
                    })) {
             throw UsageError("--method " + o.method + ": expected dopri5, dop853, adams, radau5, rk4 or symplectic");

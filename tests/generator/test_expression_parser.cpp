@@ -1,5 +1,6 @@
 /** @file test_expression_parser.cpp  Expressions: exact numbers, precedence, velocities, errors. */
 #include "model/expression_parser.hpp"
+#include "model/nonsmooth.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -119,7 +120,32 @@ TEST_CASE("names, constants and functions", "[parser]") {
                GiNaC::tan(s.m) + GiNaC::sinh(s.m) + GiNaC::cosh(s.m) + GiNaC::tanh(s.m) + GiNaC::asin(s.m) +
                    GiNaC::acos(s.m) + GiNaC::atan(s.m)));
     CHECK(same(s.parse("sin(pi/6)"), GiNaC::numeric(1, 2)));
-    CHECK(eomgen::expression_function_names().size() == 13);
+    CHECK(eomgen::expression_function_names().size() == 19);
+}
+
+TEST_CASE("non-smooth functions: abs, sign, heaviside, max, min, clamp, and roots of squares read for reals",
+          "[parser][nonsmooth]") {
+    const Symbols s;
+    CHECK(same(s.parse("abs(-2*m)"), 2 * eomgen::real_abs(s.m)));
+    CHECK(same(s.parse("abs(m^2)"), GiNaC::pow(s.m, 2)));
+    CHECK(same(s.parse("abs(-3)"), 3));
+    CHECK(same(s.parse("sign(-2*m)"), -eomgen::sign(s.m)));
+    CHECK(same(s.parse("sign(-0.5) + heaviside(0) + heaviside(2)"), GiNaC::numeric(1, 2)));
+    CHECK(same(s.parse("max(1, 2) + min(1, 2) + max(m, m)"), 3 + s.m));
+    CHECK(same(s.parse("max(m, l) - max(l, m)"), 0));
+    CHECK(same(s.parse("clamp(m, 0, 1)"), eomgen::real_min(eomgen::real_max(s.m, 0), 1)));
+    // For real numbers sqrt(x^2) = |x|, (x^2)^(3/2) = |x|^3, x/sqrt(x^2) = sign(x); a root of a sum stays.
+    CHECK(same(s.parse("sqrt(m^2)"), eomgen::real_abs(s.m)));
+    CHECK(same(s.parse("(m^2)^(3/2)"), GiNaC::pow(eomgen::real_abs(s.m), 3)));
+    CHECK(same(s.parse("sqrt(m^2*l^2)"), eomgen::real_abs(s.m) * eomgen::real_abs(s.l)));
+    CHECK(same(s.parse("m/sqrt(m^2)"), eomgen::sign(s.m)));
+    CHECK(same(s.parse("sqrt(m^2 + l^2)"), GiNaC::sqrt(GiNaC::pow(s.m, 2) + GiNaC::pow(s.l, 2))));
+    // Derivatives where they exist: d|x| = sign x, d sign x = 0 away from 0, d max(a, b)/da = heaviside(a - b).
+    CHECK(same(s.parse("abs(m)").diff(s.m), eomgen::sign(s.m)));
+    CHECK(same(s.parse("sign(m)").diff(s.m), 0));
+    CHECK(same(s.parse("max(m, l)").diff(s.m), eomgen::heaviside(s.m - s.l)));
+    CHECK(same(s.parse("min(m, l)").diff(s.m), eomgen::heaviside(s.l - s.m)));
+    CHECK_THROWS_WITH(s.parse("max(m)"), Catch::Contains("2 arguments"));
 }
 
 TEST_CASE("velocities: primes and dot()", "[parser]") {

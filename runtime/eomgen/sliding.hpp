@@ -1,0 +1,210 @@
+/**
+ * @file sliding.hpp  Sliding along a switching surface (Filippov): what a jump of f does when both sides push into
+ * the surface, as Coulomb friction holds a block to a belt (sticking).
+ *
+ * f(t, x) jumps across s(t, x) = 0 (sign(s) in the model). With f⁻ and f⁺ the fields on either side at a point of
+ * the surface and ṡ± = ∇s·f± + ∂s/∂t, the motion crosses where ṡ⁻ and ṡ⁺ have one sign, and slides where ṡ⁻ > 0 > ṡ⁺:
+ * then it follows the convex combination that keeps s = 0 (A. F. Filippov, "Differential Equations with
+ * Discontinuous Righthand Sides", 1988, §2.4),
+ *
+ *     f_s = α f⁺ + (1 − α) f⁻,   α = ṡ⁻ / (ṡ⁻ − ṡ⁺) ∈ (0, 1),
+ *
+ * until ṡ⁺ rises to 0 (it leaves into s > 0) or ṡ⁻ falls to 0 (into s < 0). For Coulomb friction with
+ * s = v_belt − ẋ, α sets the friction the contact needs, and the exit is where that exceeds its bound.
+ *
+ * The model computes sign(s) from the state, so the one-sided fields are read just off the surface, at
+ * x ± δ n and x ± 2δ n with n = ∇s/|∇s|² (s moves by ±δ, ±2δ) and extrapolated to the surface,
+ * f±(x) ≈ 2 f(x ± δ n) − f(x ± 2δ n), which leaves an error O(δ²) where f is smooth on each side; ∇s by central
+ * differences. Four evaluations of f per evaluation of f_s.
+ */
+#pragma once
+
+#include "eomgen/events.hpp"
+#include "eomgen/integrate.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace eomgen {
+
+/// One switching surface s of a right-hand side f, with what sliding along it needs.
+template <class State>
+class SlidingSurface {
+  public:
+    using Scalar = typename State::Scalar;
+    using Field = std::function<void(const Scalar& t, const State& x, State& xdot)>;
+    using Surface = std::function<Scalar(const Scalar& t, const State& x)>;
+
+    SlidingSurface(Field f, Surface s) : f_(std::move(f)), s_(std::move(s)) {}
+
+    /// The fields on either side at (t, x), f⁻ and f⁺, and ṡ on either side.
+    struct Sides {
+        State minus, plus;
+        Scalar sdot_minus, sdot_plus;
+    };
+
+    Sides sides(const Scalar& t, const State& x) const {
+        using std::abs;
+        using std::sqrt;
+        const Scalar eps = std::numeric_limits<Scalar>::epsilon();
+        // ∇s and ∂s/∂t by central differences.
+        State grad = x;
+        State y = x;
+        for (Eigen::Index i = 0; i < x.size(); ++i) {
+            const Scalar h = sqrt(eps) * (Scalar(1) + abs(x(i)));
+            y(i) = x(i) + h;
+            const Scalar up = s_(t, y);
+            y(i) = x(i) - h;
+            const Scalar down = s_(t, y);
+            y(i) = x(i);
+            grad(i) = (up - down) / (Scalar(2) * h);
+        }
+        const Scalar ht = sqrt(eps) * (Scalar(1) + abs(t));
+        const Scalar dsdt = (s_(t + ht, x) - s_(t - ht, x)) / (Scalar(2) * ht);
+        const Scalar norm2 = grad.squaredNorm();
+        Sides out{x, x, Scalar(0), Scalar(0)};
+        if (!(norm2 > Scalar(0))) return out;
+        const State n = grad / norm2;
+        const Scalar delta = sqrt(eps) * (Scalar(1) + x.cwiseAbs().maxCoeff() * sqrt(norm2));
+        State a = x, b = x;
+        for (int side = -1; side <= 1; side += 2) {
+            f_(t, x + Scalar(side) * delta * n, a);
+            f_(t, x + Scalar(2 * side) * delta * n, b);
+            State& g = side < 0 ? out.minus : out.plus;
+            g = Scalar(2) * a - b;
+            (side < 0 ? out.sdot_minus : out.sdot_plus) = grad.dot(g) + dsdt;
+        }
+        return out;
+    }
+
+    /// Whether the motion slides at (t, x): both sides push into the surface by more than round-off.
+    bool attracting(const Scalar& t, const State& x) const {
+        using std::abs;
+        const Sides s = sides(t, x);
+        const Scalar margin = Scalar(1e-9) * (abs(s.sdot_minus) + abs(s.sdot_plus));
+        return s.sdot_minus > margin && s.sdot_plus < -margin;
+    }
+
+    /// Filippov's field f_s at (t, x) (see the file comment).
+    void sliding_field(const Scalar& t, const State& x, State& xdot) const {
+        const Sides s = sides(t, x);
+        const Scalar alpha = s.sdot_minus / (s.sdot_minus - s.sdot_plus);
+        xdot = alpha * s.plus + (Scalar(1) - alpha) * s.minus;
+    }
+
+    /// The terminal events that end sliding: ṡ⁺ rising to 0 (the motion leaves into s > 0), ṡ⁻ falling to 0.
+    std::vector<Event<State>> exits(const std::string& name) const {
+        const SlidingSurface self = *this;
+        return {{name + ": leaves to s > 0", [self](const Scalar& t, const State& x) { return self.sides(t, x).sdot_plus; },
+                 EventDirection::Rising, EventAction::Stop},
+                {name + ": leaves to s < 0", [self](const Scalar& t, const State& x) { return self.sides(t, x).sdot_minus; },
+                 EventDirection::Falling, EventAction::Stop}};
+    }
+
+  private:
+    Field f_;
+    Surface s_;
+};
+
+/**
+ * As integrate_with<Method>, where the Switch events of `events` may also be where the motion slides: at each
+ * crossing of one, if both sides push into it (SlidingSurface::attracting), the run goes on with Filippov's field
+ * until the motion leaves the surface, then with f again. The result holds the whole run; its events include, for
+ * each sliding interval, "<switch>: slides" where it starts and "<switch>: leaves to s > 0" (or s < 0) where it
+ * ends, and its counters add up the segments'. A Switch event with a stop_at_switch of its own is left as it is.
+ */
+template <template <class> class Method, class System, class State>
+IntegrationResult<State> integrate_sliding(
+    System&& f, const typename State::Scalar& t0, const State& x0, const typename State::Scalar& t_end,
+    const typename detail::NonDeduced<typename Method<State>::Options>::type& options,
+    std::vector<Event<State>> events, const std::vector<typename State::Scalar>& sample_times = {},
+    const typename detail::NonDeduced<Observer<State>>::type& observer = {}) {
+    using Scalar = typename State::Scalar;
+    const typename SlidingSurface<State>::Field field = [&f](const Scalar& t, const State& x, State& xdot) {
+        f(t, x, xdot);
+    };
+    std::vector<std::shared_ptr<SlidingSurface<State>>> surfaces(events.size());
+    for (std::size_t i = 0; i < events.size(); ++i)
+        if (events[i].action == EventAction::Switch && !events[i].stop_at_switch) {
+            surfaces[i] = std::make_shared<SlidingSurface<State>>(field, events[i].g);
+            const auto surface = surfaces[i];
+            events[i].stop_at_switch = [surface](const Scalar& t, const State& x) { return surface->attracting(t, x); };
+        }
+
+    IntegrationResult<State> total;
+    total.t = t0;
+    total.x = x0;
+    Scalar t = t0;
+    State x = x0;
+    constexpr std::size_t none = static_cast<std::size_t>(-1);
+    std::size_t sliding = none;
+    const Scalar dir = t_end >= t0 ? Scalar(1) : Scalar(-1);
+    for (bool first = true;; first = false) {
+        // Samples after this segment's start (at it, for the first); the observer sees each point once.
+        std::vector<Scalar> times;
+        for (const Scalar& s : sample_times)
+            if ((s - t) * dir > Scalar(0) || (first && s == t)) times.push_back(s);
+        Observer<State> watch = observer;
+        if (observer && sample_times.empty() && !first) {
+            bool skip = true;
+            watch = [&observer, skip](const Scalar& tt, const State& xx) mutable {
+                if (skip) {
+                    skip = false;
+                    return;
+                }
+                observer(tt, xx);
+            };
+        }
+        IntegrationResult<State> r;
+        if (sliding == none) {
+            r = integrate_with<Method>(f, t, x, t_end, options, events, times, watch);
+        } else {
+            const auto surface = surfaces[sliding];
+            const auto slide = [surface](const Scalar& tt, const State& xx, State& xdot) {
+                surface->sliding_field(tt, xx, xdot);
+            };
+            std::vector<Event<State>> during;
+            for (const Event<State>& e : events)
+                if (e.action != EventAction::Switch) during.push_back(e);
+            for (Event<State>& e : surface->exits(events[sliding].name)) during.push_back(std::move(e));
+            r = integrate_with<Method>(slide, t, x, t_end, options, during, times, watch);
+        }
+        total.accepted_steps += r.accepted_steps;
+        total.rejected_steps += r.rejected_steps;
+        total.rhs_evaluations += r.rhs_evaluations;
+        total.events.insert(total.events.end(), r.events.begin(), r.events.end());
+        total.switches.insert(total.switches.end(), r.switches.begin(), r.switches.end());
+        total.samples.insert(total.samples.end(), r.samples.begin(), r.samples.end());
+        t = r.t;
+        x = r.x;
+        total.t = t;
+        total.x = x;
+        if (r.stop_reason == StopReason::ReachedEnd) break;
+        std::size_t which = none;
+        for (std::size_t i = 0; i < events.size() && which == none; ++i)
+            if (events[i].name == r.stopped_by) which = i;
+        if (sliding == none && which != none && surfaces[which]) {
+            sliding = which;  // both sides push in: on along the surface
+            total.events.push_back({events[which].name + ": slides", t, x});
+            continue;
+        }
+        if (sliding != none && r.stopped_by.rfind(events[sliding].name + ": leaves", 0) == 0) {
+            sliding = none;  // (the exit is among r.events already)
+            continue;
+        }
+        total.stop_reason = StopReason::TerminalEvent;
+        total.stopped_by = r.stopped_by;
+        break;
+    }
+    return total;
+}
+
+}  // namespace eomgen
