@@ -159,22 +159,29 @@ class Numbers {
     /// `state_seed`; each a rational in (0.5, 1.5).
     GiNaC::exmap point(unsigned param_seed, unsigned state_seed) const {
         GiNaC::exmap at;
-        std::mt19937 pr(param_seed * 7919u + 17u), sr(state_seed * 104729u + 5u);
+        std::mt19937 pr(param_seed * 7919u + 17u), sr(state_seed * 104729u + 5u), flip(state_seed * 31u + 7u);
         std::uniform_int_distribution<int> pick(500, 1500);
         auto value = [&](std::mt19937& r) { return GiNaC::numeric(pick(r), 1000); };
+        // Where abs, sign, max … of the state are compared, every other point gives the state values either sign:
+        // at positive values alone θ'|θ'| and θ'² are one function.
+        const bool signs = signed_state_ && state_seed % 2 == 0;
+        auto state_value = [&] { return (signs && (flip() & 1u)) ? -value(sr) : value(sr); };
         for (const Parameter& p : model_.parameters) at[p.symbol] = value(pr);
         for (const auto& [name, f] : ctx_.free_names) at[f.symbol] = value(pr);
         at[model_.t] = value(sr);
         for (const Coordinate& c : model_.coordinates) {
-            at[c.q] = value(sr);
-            at[c.qd] = value(sr);
-            at[c.qdd] = value(sr);
+            at[c.q] = state_value();
+            at[c.qd] = state_value();
+            at[c.qdd] = state_value();
         }
         for (const GiNaC::symbol& s : state_symbols_) at[s] = value(sr);
         return at;
     }
     /// A symbol that takes a value per state, as the coordinates do (a constraint's multiplier λ).
     void add_state_symbol(const GiNaC::symbol& s) { state_symbols_.push_back(s); }
+    /// Whether the points give q, q', q'' either sign (at even state seeds): while a non-smooth function is compared.
+    void sign_state(bool on) { signed_state_ = on; }
+    bool state_signed() const { return signed_state_; }
     GiNaC::exmap point(unsigned seed) const { return point(seed, seed); }
 
     std::optional<Complex> value(const GiNaC::ex& e, const GiNaC::exmap& at) {
@@ -206,6 +213,7 @@ class Numbers {
 
   private:
     std::vector<GiNaC::symbol> state_symbols_;
+    bool signed_state_ = false;
     GiNaC::ex integrals(const GiNaC::ex& e) {
         if (!has_integral(e)) return e;
         if (GiNaC::is_a<GiNaC::integral>(e)) {
@@ -862,10 +870,43 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
     return p;
 }
 
+namespace {
+
+/// Whether e holds abs, sign, heaviside, max or min (the model's, or GiNaC's abs and csgn from the text's |x|).
+bool has_nonsmooth(const GiNaC::ex& e) {
+    if (GiNaC::is_a<GiNaC::function>(e)) {
+        static const char* const names[] = {"abs", "sign", "heaviside", "max", "min", "csgn", "step"};
+        const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+        for (const char* n : names)
+            if (name == n) return true;
+    }
+    for (const GiNaC::ex& op : e)
+        if (has_nonsmooth(op)) return true;
+    return false;
+}
+
+/// Signs the sample states while it lives, where the expressions compared are not smooth.
+class SignedStates {
+  public:
+    template <class Numbers>
+    SignedStates(Numbers& numbers, bool needed) : restore_([&numbers, was = numbers.state_signed()] { numbers.sign_state(was); }) {
+        if (needed) numbers.sign_state(true);
+    }
+    ~SignedStates() { restore_(); }
+    SignedStates(const SignedStates&) = delete;
+    SignedStates& operator=(const SignedStates&) = delete;
+
+  private:
+    std::function<void()> restore_;
+};
+
+}  // namespace
+
 std::vector<Complex> Checker::signature(const GiNaC::ex& e) {
     auto hit = signatures_.find(e);
     if (hit != signatures_.end()) return hit->second;
     std::vector<Complex> s;
+    const SignedStates signed_states(numbers_, has_nonsmooth(e));
     for (unsigned seed = 201; seed <= 203; ++seed) {
         const auto v = numbers_.value(e, numbers_.point(seed));
         s.push_back(v ? *v : Complex(std::nan(""), 0));
@@ -883,6 +924,7 @@ bool Checker::same_signature(const std::vector<Complex>& a, const std::vector<Co
 }
 
 Tri Checker::equal(const GiNaC::ex& a, const GiNaC::ex& b, double tol) {
+    const SignedStates signed_states(numbers_, has_nonsmooth(a) || has_nonsmooth(b));
     const GiNaC::ex diff = a - b;
     if (tol <= 1e-9) {  // exact numbers: a symbolic zero settles it
         try {
@@ -911,6 +953,8 @@ Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* onl
                                             std::vector<std::string>* acting, std::vector<bool>* terms,
                                             int multipliers) {
     const std::size_t n = model_.dof();
+    const SignedStates signed_states(numbers_, has_nonsmooth(r) || std::any_of(motion_.begin(), motion_.end(),
+                                                                               [](const GiNaC::ex& e) { return has_nonsmooth(e); }));
     std::vector<GiNaC::ex> motion = motion_;  // = 0; with the multipliers, EL − Q − (±Aᵀλ)
     if (multipliers != 0) {
         acting = nullptr;  // the constraint forces are in the equations: none is missing
@@ -1002,6 +1046,7 @@ Tri Checker::euler_lagrange_combination(const GiNaC::ex& r, double tol, int* onl
 }
 
 bool Checker::proportional_in_state(const GiNaC::ex& r, const GiNaC::ex& target, double tol, GiNaC::ex* c) {
+    const SignedStates signed_states(numbers_, has_nonsmooth(r) || has_nonsmooth(target));
     int settled = 0;
     for (unsigned ps = 1; ps <= 4 && settled < 2; ++ps) {
         std::vector<Complex> ratios;

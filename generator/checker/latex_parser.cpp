@@ -1,6 +1,8 @@
 /** @file latex_parser.cpp  Tokenizer, chain splitter and recursive-descent parser for derivation LaTeX. */
 #include "checker/latex_parser.hpp"
 
+#include "model/nonsmooth.hpp"
+
 #include "checker/latex_normalize.hpp"
 #include "checker/units.hpp"
 
@@ -251,7 +253,7 @@ bool is_plain_word(const std::string& s) {
 
 bool is_function_name(const std::string& f) {
     return is_one_of(f, {"sin", "cos", "tan", "cot", "sec", "csc", "exp", "ln", "log", "sinh", "cosh", "tanh",
-                         "coth", "arcsin", "arccos", "arctan", "asin", "acos", "atan"});
+                         "coth", "arcsin", "arccos", "arctan", "asin", "acos", "atan", "sgn", "sign"});
 }
 
 bool is_relation_word(const std::string& w) {
@@ -714,7 +716,7 @@ class Parser {
         --abs_depth_;
         if (!is_char(peek(), "|")) fail(at, "missing '|' for this '|'");
         ++pos_;
-        return GiNaC::abs(e);
+        return eomgen::real_abs(e);
     }
 
     GiNaC::ex left_right(std::size_t at) {
@@ -741,7 +743,7 @@ class Parser {
         if (!rd) fail(at, "\\right needs a delimiter");
         const std::string rdelim = rd->text;
         ++pos_;
-        if ((delim == "|" || delim == "\\vert" || delim == "\\lvert")) return GiNaC::abs(e);
+        if ((delim == "|" || delim == "\\vert" || delim == "\\lvert")) return eomgen::real_abs(e);
         if (delim == "." && rdelim == "|") fail(at, "an evaluation bar \\left. \\right| is not read");
         if (delim == "\\langle") fail(at, "angle brackets are not read");
         return e;
@@ -1138,6 +1140,10 @@ class Parser {
                 ++pos_;
                 return 1;
             }
+            if (content == "sgn" || content == "sign") {  // \mathrm{sgn}(\dot x), \text{sign}(v)
+                ++pos_;
+                return function(content, at);
+            }
             if (is_plain_word(content) || is_unit_command(w, t.raw)) return name_value();
             fail(at, "text '" + content + "' in a formula is not read");
         }
@@ -1225,6 +1231,8 @@ class Parser {
             v = GiNaC::asin(arg);
         else if (f == "arccos" || f == "acos")
             v = GiNaC::acos(arg);
+        else if (f == "sgn" || f == "sign")
+            v = eomgen::sign(arg);  // the model language's sign (sign(0) = 0), real_abs's derivative
         else
             v = GiNaC::atan(arg);
         return has_pw ? power(v, pw, at) : v;

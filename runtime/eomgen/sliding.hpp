@@ -147,6 +147,13 @@ IntegrationResult<State> integrate_sliding(
     constexpr std::size_t none = static_cast<std::size_t>(-1);
     std::size_t sliding = none;
     const Scalar dir = t_end >= t0 ? Scalar(1) : Scalar(-1);
+    // A start on a surface that holds the motion (a door released at rest against its hinges' friction): sliding
+    // from t0.
+    for (std::size_t i = 0; i < events.size() && sliding == none && t0 != t_end; ++i)
+        if (surfaces[i] && events[i].g(t0, x0) == Scalar(0) && surfaces[i]->attracting(t0, x0)) {
+            sliding = i;
+            total.events.push_back({events[i].name + ": slides", t0, x0});
+        }
     for (bool first = true;; first = false) {
         // Samples after this segment's start (at it, for the first); the observer sees each point once.
         std::vector<Scalar> times;

@@ -1,6 +1,7 @@
 /** @file exam_latex_parser.cpp  LaTeX → GiNaC: each construct derivations use, and where and why the rest is
  * refused. */
 #include "checker/latex_parser.hpp"
+#include "model/nonsmooth.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -78,7 +79,8 @@ TEST_CASE("latex: fractions, powers, dots and implicit multiplication", "[checke
     CHECK(same(n.parse("\\left( m + M \\right)^{2}"), GiNaC::pow(n.m + n.M, 2)));
     CHECK(same(n.parse("[m + M] l"), (n.m + n.M) * n.l));
     CHECK(same(n.parse("-\\frac{1}{2}(m+2 M) g l"), -(n.m + 2 * n.M) * n.g * n.l / 2));
-    CHECK(same(n.parse("\\left|l\\right| + |m|"), GiNaC::abs(n.l) + GiNaC::abs(n.m)));
+    CHECK(same(n.parse("\\left|l\\right| + |m|"), eomgen::real_abs(n.l) + eomgen::real_abs(n.m)));
+    CHECK(same(n.parse("\\operatorname{sgn}(l) + \\mathrm{sign}(m)"), eomgen::sign(n.l) + eomgen::sign(n.m)));
 }
 
 TEST_CASE("latex: functions with and without parentheses", "[checker][parser]") {

@@ -355,10 +355,17 @@ private:
             if (in_.chance(10)) T_.push_back("1/2*" + param("J") + "*" + q + "'^2");                 // joint inertia
             if (in_.chance(10)) V_.push_back("1/2*" + param("k") + "*(" + q + " - " + param("q0") + ")^2");  // a spring on q
             if (in_.chance(5)) V_.push_back(param("k") + "*cos(" + q + ")");
+            if (in_.chance(4)) V_.push_back(in_.chance(50) ? param("k") + "*abs(" + q + ")"  // a V-shaped well
+                                                           : "1/2*" + param("k") + "*min(" + q + ", 0)^2");  // one-sided
             if (in_.chance(5) && n > 1) T_.push_back(param("B") + "*" + q + "*" + random_coord() + "'");  // linear in q'
             if (in_.chance(5)) T_.push_back("1/2*" + param("m1") + "*" + param("omega") + "^2*sin(" + q + ")^2");  // T0
             if (in_.chance(12)) {
-                static const std::vector<std::string> forms = {"-c*Q'", "F0*cos(omega*t)", "F0", "-c*Q'^3", "F0*sin(P)"};
+                // The non-smooth ones (issue 36): quadratic drag, dry friction (also as Q'/sqrt(Q'^2)), a switch,
+                // a one-sided spring, a saturated torque.
+                static const std::vector<std::string> forms = {
+                    "-c*Q'", "F0*cos(omega*t)", "F0", "-c*Q'^3", "F0*sin(P)", "-c*Q'*abs(Q')", "-F0*sign(Q')",
+                    "-F0*Q'/sqrt(Q'^2)", "F0*heaviside(P)", "-c*max(P, 0)", "clamp(-c*Q', -F0, F0)",
+                    "-F0*sign(Q' - omega)"};
                 std::string f = in_.one_of(forms);
                 if (f.find('c') != std::string::npos) param("c");
                 if (f.find("F0") != std::string::npos) param("F0");
