@@ -203,3 +203,35 @@ TEST_CASE("nonsmooth: a kink is no place to slide, and a switch event restarts e
         CHECK(std::abs(adams.switches[i].t - dopri.switches[i].t) <= 1e-7);
     CHECK((adams.x - dopri.x).norm() <= 1e-7);
 }
+
+TEST_CASE("nonsmooth: the generated code of abs and sign in long double and under forward differentiation",
+          "[physics][nonsmooth]") {
+    // long double: the same rhs as double at a state on either side of each surface.
+    using DragL = eomgen::models::quadratic_drag_pendulum::Model<long double>;
+    using Belt = eomgen::models::block_on_belt::Model<double>;
+    using BeltL = eomgen::models::block_on_belt::Model<long double>;
+    for (double v : {-0.7, 0.4}) {
+        Drag::State x(0.3, v), xdot;
+        DragL::State xl(0.3L, static_cast<long double>(v)), xdotl;
+        Drag::rhs(0.0, x, Drag::Params{}, xdot);
+        DragL::rhs(0.0L, xl, DragL::Params{}, xdotl);
+        CHECK(std::abs(double(xdotl(1)) - xdot(1)) <= 1e-15 * (1 + std::abs(xdot(1))));
+        Belt::State y(0.1, v), ydot;
+        BeltL::State yl(0.1L, static_cast<long double>(v)), ydotl;
+        Belt::rhs(0.0, y, Belt::Params{}, ydot);
+        BeltL::rhs(0.0L, yl, BeltL::Params{}, ydotl);
+        CHECK(std::abs(double(ydotl(1)) - ydot(1)) <= 1e-15 * (1 + std::abs(ydot(1))));
+        // x'' = -g/l sin(theta) - k l/m theta'|theta'|: d/dtheta' = -2 k l/m |theta'| by hand, against AD.
+        Eigen::Matrix<double, 2, 2> A;
+        Eigen::Matrix<double, 2, Drag::n_params> B;
+        const Drag::Params p{};
+        Drag::linearization(0.0, x, p, A, B);
+        CHECK(std::abs(A(1, 1) - (-2 * p.k * p.l / p.m * std::abs(v))) <= 1e-14);
+        // The belt's friction is flat away from x' = v: its derivative there is 0, and the spring's -k/m remains.
+        Eigen::Matrix<double, 2, 2> Ab;
+        Eigen::Matrix<double, 2, Belt::n_params> Bb;
+        Belt::linearization(0.0, y, Belt::Params{}, Ab, Bb);
+        CHECK(Ab(1, 1) == 0.0);
+        CHECK(Ab(1, 0) == Approx(-Belt::Params{}.k / Belt::Params{}.m));
+    }
+}
