@@ -763,6 +763,9 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "\n    /// A = dx'/dx and B = dx'/dp (columns in param_names order) at (t, x), exact to round-off by forward\n"
           "    /// differentiation through rhs (eomgen/linearize.hpp); for Scalar = double. A member template, so that\n"
           "    /// instantiating the class does not compile the differentiation.\n";
+    if (!switches.empty())
+        os << "    /// On a switching surface (switch_names) A and B are not defined: the derivative there is the one on the\n"
+              "    /// side the code's branch takes (sign(0) = 0).\n";
     os << "    template <class MatA = StateJacobian, class MatB = ParameterJacobian>\n";
     os << "    static void linearization(const Scalar& t, const State& x_, const Params& p_, MatA& A_, MatB& B_) {\n";
     os << "        static_assert(std::is_same_v<Scalar, double>, \"linearization() is for Model<double>\");\n";

@@ -2,6 +2,7 @@
 #include "codegen/jacobian_emitter.hpp"
 
 #include "mechanics/jacobian_terms.hpp"
+#include "model/nonsmooth.hpp"
 
 #include <fmt/format.h>
 
@@ -47,10 +48,19 @@ std::string emit_analytic_jacobian(const Model& model, const Equations& eq, cons
         "    /// nq x n_params; a member template, compiled only where called.",
         "void", "parameter_jacobian_terms", {t_in, q_in, qd_in, qdd_in, p_in}, {{"MatRp", "Rp_"}}, params, {},
         "template <class MatRp>"};
+    // With abs, sign, max … in the dynamics, the derivatives are the ones away from the switching surfaces.
+    std::vector<GiNaC::ex> dynamics(eq.f.begin(), eq.f.end());
+    for (unsigned i = 0; i < eq.M.rows(); ++i)
+        for (unsigned j = 0; j < eq.M.cols(); ++j) dynamics.push_back(eq.M(i, j));
+    const std::string kinks = switching_surfaces(dynamics).empty()
+                                  ? ""
+                                  : "    /// On a switching surface (switch_names, switching()) f has a kink or a jump and J is not defined\n"
+                                    "    /// there: the value is the derivative on the side the code's branch takes (sign(0) = 0).\n";
     std::ostringstream os;
     os << emit_function(state_terms, table) << "\n" << emit_function(param_terms, table) << "\n";
     os << combine("    /// J = dx'/dx = [[0, I], [M^-1 dr/dq, M^-1 dr/dq']] at (t, x), analytic (jacobian_terms()), with one\n"
-                  "    /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.\n",
+                  "    /// factorization of M; a singular M throws as in rhs(). A member template: compiled only where called.\n" +
+                      kinks,
                   "state_jacobian", "StateJacobian", "J", "analytic_state_jacobian");
     os << "\n";
     os << combine("    /// Jp = dx'/dp = [[0], [M^-1 dr/dp]] at (t, x), columns in param_names order, analytic\n"
