@@ -39,6 +39,8 @@ struct Model {
     static constexpr bool explicit_time = false;
     /// Generalized forces Q or dissipation R act (the variational integrator does not apply).
     static constexpr bool has_generalized_forces = true;
+    /// h is not conserved (forces act, or L depends on t): power() is dh/dt along a motion.
+    static constexpr bool has_power = true;
 
     using Config = Eigen::Matrix<Scalar, nq, 1>;
     using State = Eigen::Matrix<Scalar, nx, 1>;
@@ -185,6 +187,15 @@ struct Model {
         static_cast<void>(qd_);
         static_cast<void>(p_);
         static_cast<void>(out_);
+    }
+
+    /// Power P = sum Q_i q'_i - dL/dt: dh/dt along a motion, so that h(t) - h(0) - int_0^t P dt stays 0 (the energy balance of a damped, driven or rheonomic model).
+    EOMGEN_HD static Scalar power(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
+        static_cast<void>(t);
+        static_cast<void>(q_);
+        const Scalar c = p_.c;
+        const Scalar phi_dot = qd_(0);
+        return -(c*(phi_dot*phi_dot));
     }
 
     /// Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq = 0 about an equilibrium.

@@ -39,6 +39,8 @@ struct Model {
     static constexpr bool explicit_time = false;
     /// Generalized forces Q or dissipation R act (the variational integrator does not apply).
     static constexpr bool has_generalized_forces = true;
+    /// h is not conserved (forces act, or L depends on t): power() is dh/dt along a motion.
+    static constexpr bool has_power = true;
 
     using Config = Eigen::Matrix<Scalar, nq, 1>;
     using State = Eigen::Matrix<Scalar, nx, 1>;
@@ -206,6 +208,19 @@ struct Model {
         static_cast<void>(qd_);
         static_cast<void>(p_);
         static_cast<void>(out_);
+    }
+
+    /// Power P = sum Q_i q'_i - dL/dt: dh/dt along a motion, so that h(t) - h(0) - int_0^t P dt stays 0 (the energy balance of a damped, driven or rheonomic model).
+    EOMGEN_HD static Scalar power(const Scalar& t, const Config& q_, const Config& qd_, const Params& p_) {
+        static_cast<void>(t);
+        using std::sin;
+        const Scalar l = p_.l;
+        const Scalar c = p_.c;
+        const Scalar theta = q_(0);
+        const Scalar theta_dot = qd_(0);
+        const Scalar phi_dot = qd_(1);
+        const Scalar sin_theta = sin(theta);
+        return -(c*(l*l)*(theta_dot*theta_dot + (phi_dot*phi_dot)*(sin_theta*sin_theta)));
     }
 
     /// q'' from M q'' = f by M = L D L^T, unrolled (L unit lower triangular; its entries that are zero for every q

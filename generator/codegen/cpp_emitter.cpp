@@ -468,6 +468,11 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
                                     [](const GiNaC::ex& q) { return !q.is_zero(); });
     os << "    /// Generalized forces Q or dissipation R act (the variational integrator does not apply).\n";
     os << "    static constexpr bool has_generalized_forces = " << (forced ? "true" : "false") << ";\n";
+    const bool balance = eq.constraints.empty() && (forced || eq.explicit_time);
+    if (balance) {
+        os << "    /// h is not conserved (forces act, or L depends on t): power() is dh/dt along a motion.\n";
+        os << "    static constexpr bool has_power = true;\n";
+    }
     if (!switches.empty()) {
         os << "    /// Switching surfaces of rhs() (abs, sign, heaviside, max, min): switching() and switch_names.\n";
         os << "    static constexpr int n_switches = " << switches.size() << ";\n";
@@ -667,6 +672,13 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         {"Declared outputs ([outputs] of the model file), in the order of output_names.", "void", "outputs",
          {t_in, q_in, qd_in, p_in}, {{"Outputs", "out_"}}, recorded},
     };
+    if (balance) {
+        GiNaC::ex P = -eq.L.diff(model.t);
+        for (std::size_t i = 0; i < n; ++i) P += eq.generalized_forces[i] * model.coordinates[i].qd;
+        functions.push_back({"Power P = sum Q_i q'_i - dL/dt: dh/dt along a motion, so that h(t) - h(0) - int_0^t P dt stays 0 "
+                             "(the energy balance of a damped, driven or rheonomic model).",
+                             "Scalar", "power", {t_in, q_in, qd_in, p_in}, {}, {{"return", P}}});
+    }
     if (!switches.empty()) {
         std::vector<Output> surfaces;
         for (std::size_t k = 0; k < switches.size(); ++k) surfaces.push_back({fmt::format("out_({})", k), switches[k].s});

@@ -34,7 +34,7 @@
 namespace eomgen {
 
 /// Raised when ModelTable's layout changes: a table of another layout is refused.
-constexpr std::uint32_t kModelTableAbi = 3;
+constexpr std::uint32_t kModelTableAbi = 4;
 
 /// What a table function reports: success, or which of the runtime's errors it caught.
 enum TableStatus : int {
@@ -83,6 +83,8 @@ struct ModelTable {
     int n_switches;
     const char* const* switch_names;
     int (*switching)(double t, const double* q, const double* qd, const void* p, double* out);
+    /// dh/dt = Σ Q_i q'_i − ∂L/∂t (M::power), null where the model has none.
+    int (*power)(double t, const double* q, const double* qd, const void* p, double* out);
 };
 
 namespace table_detail {
@@ -175,6 +177,9 @@ struct Wrappers {
             M::outputs(t, read<Config>(q), read<Config>(qd), params(p), o);
             write(o, out);
         });
+    }
+    static int power(double t, const double* q, const double* qd, const void* p, double* out) {
+        return guarded([&] { *out = M::power(t, read<Config>(q), read<Config>(qd), params(p)); });
     }
     static int switching(double t, const double* q, const double* qd, const void* p, double* out) {
         return guarded([&] {
@@ -295,6 +300,7 @@ const ModelTable& model_table() {
         t.lagrangian_gradient = &W::lagrangian_gradient;
         if constexpr (WithJacobian) t.jacobian = &W::jacobian;
         t.error_message = &W::error_message;
+        if constexpr (declares_power<M>::value) t.power = &W::power;
         if constexpr (has_switching<M>::value) {
             t.n_switches = M::n_switches;
             t.switch_names = M::switch_names.data();
@@ -349,6 +355,8 @@ class TableModel {
     using Switches = Eigen::VectorXd;
     static inline int n_switches = 0;
     static inline std::vector<const char*> switch_names;
+    /// Whether the model has power() (dh/dt where h is not conserved).
+    static inline bool has_power = false;
 
     /// Makes `t` the model of every TableModel call; throws std::invalid_argument for a table of another
     /// layout or one this program cannot use.
@@ -376,6 +384,7 @@ class TableModel {
         constraint_names.assign(t.constraint_names, t.constraint_names + t.n_constraints);
         constraint_is_holonomic.assign(t.constraint_is_holonomic, t.constraint_is_holonomic + t.n_constraints);
         n_switches = t.switching ? t.n_switches : 0;
+        has_power = t.power != nullptr;
         switch_names.assign(t.switch_names, t.switch_names + n_switches);
     }
 
@@ -415,6 +424,12 @@ class TableModel {
     static void outputs(double t, const Config& q, const Config& qd, const Params& p, Outputs& out) {
         out.resize(n_outputs);
         check(table().outputs(t, q.data(), qd.data(), p.data(), out.data()));
+    }
+    static double power(double t, const Config& q, const Config& qd, const Params& p) {
+        double out = 0;
+        if (!table().power) throw std::logic_error("the compiled model has no power()");
+        check(table().power(t, q.data(), qd.data(), p.data(), &out));
+        return out;
     }
     static void switching(double t, const Config& q, const Config& qd, const Params& p, Switches& out) {
         out.resize(n_switches);

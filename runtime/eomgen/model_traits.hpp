@@ -37,6 +37,22 @@ struct has_switching : std::false_type {};
 template <class M>
 struct has_switching<M, std::void_t<decltype(M::n_switches)>> : std::true_type {};
 
+/// Models whose h is not conserved (forces, or L depending on t; unconstrained) declare has_power and
+/// power(t, q, q', p) = dh/dt: the energy balance h(t) − h(0) − ∫ P dt stays 0.
+template <class M, class = void>
+struct declares_power : std::false_type {};
+template <class M>
+struct declares_power<M, std::void_t<decltype(M::has_power)>> : std::true_type {};
+
+/// Whether M has power() to call (a table model knows at run time).
+template <class M>
+bool power_available() {
+    if constexpr (declares_power<M>::value)
+        return bool(M::has_power);
+    else
+        return false;
+}
+
 /// How many constraints a model has at run time (0 for a model without the constraint interface).
 template <class M>
 int constraint_count() {

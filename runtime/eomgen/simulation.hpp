@@ -71,6 +71,8 @@ std::string did_you_mean(const std::string& name, const Names& candidates) {
 
 /// Models with constraints have n_constraints, multipliers() and constraint_residuals() (model_traits.hpp).
 using eomgen::is_constrained;
+using eomgen::declares_power;
+using eomgen::power_available;
 
 /// The simulation options of `eomgen-sim` and `eomgen run` (the same meaning in both).
 struct Options {
@@ -345,6 +347,10 @@ struct Trajectory {
     double h0 = 0;           ///< the energy at the start (after a projection onto the constraints)
     double max_drift = 0;    ///< the largest change of h from h0 at the samples (and steps), relative unless h0 = 0
     std::vector<eomgen::Sample<State>> samples;  ///< at o.samples + 1 times when keep_samples
+    /// Where h is not conserved (M::power, unconstrained, an explicit method): the work W(t) = ∫ P dt at each
+    /// sample, integrated with the state, and the balance's largest |h(t) − h(0) − W(t)|; empty and 0 otherwise.
+    std::vector<double> work;
+    double max_imbalance = 0;
 };
 
 /**
@@ -458,6 +464,60 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
         out.t = vi.t();
         meter.finish();
         if (log) *log << "method:  variational midpoint, dt " << std::to_string(o.dt) << ", " << steps << " steps\n";
+    } else if (!done && keep_samples && power_available<M>() && o.method != "radau5") {
+        if constexpr (declares_power<M>::value) {
+            // The energy balance: W' = P beside the state (one more component, under the same error control), so
+            // that h(t) − h(0) − W(t) checks the integration where h itself is not conserved.
+            constexpr int na = M::nx == Eigen::Dynamic ? Eigen::Dynamic : M::nx + 1;
+            using Aug = Eigen::Matrix<double, na, 1>;
+            const Eigen::Index nx = x0.size();
+            const auto split = [nx](const Aug& xa) { return State(xa.head(nx)); };
+            auto fa = [&](const double& t, const Aug& xa, Aug& xdota) {
+                const State x = split(xa);
+                State xdot = x;
+                f(t, x, xdot);
+                xdota.resize(nx + 1);
+                xdota.head(nx) = xdot;
+                xdota(nx) = M::power(t, positions<M::nq>(x), velocities<M::nq>(x), params);
+            };
+            std::vector<eomgen::Event<Aug>> ea;
+            for (const auto& e : events) {
+                eomgen::Event<Aug> a{e.name, [g = e.g, split](const double& t, const Aug& xa) { return g(t, split(xa)); },
+                                     e.direction, e.action};
+                if (e.stop_at_switch)
+                    a.stop_at_switch = [h = e.stop_at_switch, split](const double& t, const Aug& xa) { return h(t, split(xa)); };
+                ea.push_back(std::move(a));
+            }
+            Aug xa0(nx + 1);
+            xa0.head(nx) = x0;
+            xa0(nx) = 0;
+            const eomgen::Observer<Aug> watch = [&](const double& t, const Aug& xa) {
+                const State x = split(xa);
+                track(t, x);
+                out.samples.push_back({t, x});
+                out.work.push_back(xa(nx));
+                out.max_imbalance = std::max(out.max_imbalance, std::abs(h(t, x) - out.h0 - xa(nx)));
+            };
+            eomgen::IntegrationResult<Aug> r;
+            if (o.method == "rk4") {
+                r = eomgen::integrate_rk4(fa, 0.0, xa0, o.t_end, o.dt, ea, sample_times, watch);
+                if (log) *log << "method:  rk4, dt " << o.dt << "\n";
+            } else if (!with_adaptive_method(o.method, [&](auto method) {
+                           using Method = decltype(method);
+                           r = eomgen::integrate_sliding<Method::template type>(fa, 0.0, xa0, o.t_end,
+                                                                               Method::template options<Aug>(o), ea,
+                                                                               sample_times, watch);
+                           if (log) *log << "method:  " << o.method << ", rtol " << o.rtol << ", atol " << o.atol << "\n";
+                       })) {
+                throw UsageError("--method " + o.method + ": expected dopri5, dop853, adams, radau5, rk4 or symplectic");
+            }
+            out.t = r.t;
+            out.x = split(r.x);
+            if (r.stop_reason == eomgen::StopReason::TerminalEvent) out.stopped_by = r.stopped_by;
+            track(r.t, out.x);
+            meter.finish();
+            report_run(r);
+        }
     } else if (!done) {
         eomgen::Observer<State> observer;
         if (keep_samples)
@@ -558,6 +618,9 @@ int run(const Options& o) {
               << (std::abs(r.h0) < 1e-12 ? "max |dh| = " : "max |dh|/|h0| = ") << r.max_drift
               << (std::abs(r.h0) < 1e-12 ? "  (absolute: h0 is 0)" : "")
               << (M::explicit_time ? "  (L depends on t: h need not be conserved)" : "") << "\n";
+    if (!r.work.empty())
+        std::cout << "balance: W = " << r.work.back() << " (the work of the forces, int power dt); max |h - h0 - W| = "
+                  << r.max_imbalance << " over the samples\n";
     report_conserved<M>(params, r.samples, std::cout);
     try {
         write_samples<M>(o, params, r.samples);

@@ -221,6 +221,10 @@ TEST_CASE("nonsmooth: the generated code of abs and sign in long double and unde
         Belt::rhs(0.0, y, Belt::Params{}, ydot);
         BeltL::rhs(0.0L, yl, BeltL::Params{}, ydotl);
         CHECK(std::abs(double(ydotl(1)) - ydot(1)) <= 1e-15 * (1 + std::abs(ydot(1))));
+        // power() = dh/dt = Q theta' = -k l^3 theta'^2 |theta'| by hand.
+        const Drag::Params pp{};
+        CHECK(std::abs(Drag::power(0.0, x.head<1>(), x.tail<1>(), pp) + pp.k * std::pow(pp.l, 3) * v * v * std::abs(v)) <=
+              1e-15);
         // x'' = -g/l sin(theta) - k l/m theta'|theta'|: d/dtheta' = -2 k l/m |theta'| by hand, against AD.
         Eigen::Matrix<double, 2, 2> A;
         Eigen::Matrix<double, 2, Drag::n_params> B;
