@@ -66,8 +66,10 @@ void plot(const PlotRequest& r) {
         return std::any_of(r.outputs.begin(), r.outputs.end(),
                            [&](const PlotColumn& o) { return o.name == name; });
     };
+    // Where the CSV has the work of the forces, h is not conserved: its panel shows the balance h - h0 - W.
+    const bool balance = std::find(header.begin(), header.end(), "work") != header.end();
     for (std::size_t i = static_cast<std::size_t>(column(header, "energy")) - 1; i < header.size(); ++i) {
-        if (is_output(header[i])) continue;
+        if (is_output(header[i]) || header[i] == "work") continue;
         if (header[i].rfind("residual_", 0) == 0)
             residuals.push_back(header[i]);
         else if (header[i].rfind("lambda_", 0) != 0)
@@ -111,9 +113,11 @@ void plot(const PlotRequest& r) {
     gp << "set logscale y\nset format y '%.0e'\nset ylabel 'relative drift (floor 1e-17)'\nplot ";
     for (std::size_t k = 0; k < invariants.size(); ++k) {
         const std::string first = "I" + std::to_string(k) + "_min";
+        const bool h = balance && invariants[k] == "energy";  // h − h0 − W: the energy balance
         gp << (k ? ", " : "") << gnuplot_string(r.csv) << " every ::1 using 1:(abs($" << column(header, invariants[k])
-           << " - " << first << ")/(abs(" << first << ") > 1e-300 ? abs(" << first << ") : 1) + 1e-17) with lines title "
-           << gnuplot_string(invariants[k]);
+           << " - " << first << (h ? " - $" + std::to_string(column(header, "work")) : std::string()) << ")/(abs("
+           << first << ") > 1e-300 ? abs(" << first << ") : 1) + 1e-17) with lines title "
+           << gnuplot_string(h ? "energy balance h - h0 - W" : invariants[k]);
     }
     gp << "\n";
     if (!residuals.empty()) {

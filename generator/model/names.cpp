@@ -143,6 +143,7 @@ std::string output_name_reason(std::string_view name, const std::vector<std::str
                                const std::vector<std::string>& constraints) {
     const std::string q = quoted(name);
     if (name == "energy") return q + " is the CSV column of the energy function";
+    if (name == "work") return q + " is the CSV column of the work of the forces (where h is not conserved)";
     if (name == "h") return q + " is the name of the energy function among the conserved quantities";
     for (const auto& c : coordinates)
         if (name == "p_" + c) return q + " is the name of the momentum of coordinate '" + c + "'";

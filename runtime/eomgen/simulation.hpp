@@ -199,12 +199,16 @@ std::string list(const Array& names) {
 /// and multipliers, and the model's declared outputs ([outputs]) as extra columns, in that order.
 template <class M>
 void write_samples(const Options& o, const typename M::Params& params,
-                   const std::vector<eomgen::Sample<typename M::State>>& samples) {
+                   const std::vector<eomgen::Sample<typename M::State>>& samples, const std::vector<double>& work = {}) {
     using State = typename M::State;
     using Config = typename M::Config;
     if (o.csv.empty()) return;
     std::vector<std::string> names(M::state_names.begin(), M::state_names.end());
     std::vector<std::string> extra{"energy"};
+    // Where h is not conserved: the work of the forces, W = ∫ P dt, so that energy − energy(0) − work is the balance.
+    const bool with_work = !work.empty() && work.size() == samples.size();
+    if (with_work) extra.push_back("work");
+    std::size_t row_index = 0;
     for (const char* c : M::conserved_names)
         if (std::string(c) != "h") extra.push_back(c);
     if constexpr (is_constrained<M>::value)
@@ -213,11 +217,13 @@ void write_samples(const Options& o, const typename M::Params& params,
             extra.push_back(std::string("lambda_") + c);
         }
     extra.insert(extra.end(), M::output_names.begin(), M::output_names.end());
-    eomgen::write_csv(o.csv, names, extra, samples, [&params](double t, const State& x) {
+    eomgen::write_csv(o.csv, names, extra, samples, [&params, &work, with_work, &row_index](double t, const State& x) {
         const Config q = positions<M::nq>(x), qd = velocities<M::nq>(x);
         typename M::Conserved c;
         M::conserved(t, q, qd, params, c);
         std::vector<double> row{M::energy(t, q, qd, params)};
+        if (with_work) row.push_back(work[row_index]);
+        ++row_index;
         for (int k = 0; k < M::n_conserved; ++k)
             if (std::string(M::conserved_names[std::size_t(k)]) != "h") row.push_back(c(k));
         if constexpr (is_constrained<M>::value) {
@@ -623,7 +629,7 @@ int run(const Options& o) {
                   << r.max_imbalance << " over the samples\n";
     report_conserved<M>(params, r.samples, std::cout);
     try {
-        write_samples<M>(o, params, r.samples);
+        write_samples<M>(o, params, r.samples, r.work);
     } catch (const std::runtime_error& e) {
         throw OutputError(std::string("cannot write the CSV: ") + e.what());
     }

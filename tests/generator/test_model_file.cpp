@@ -468,6 +468,7 @@ TEST_CASE("[outputs] names: identifiers, not reserved, not another name or CSV c
           "coordinate 'psi'");
     CHECK_THAT(named("energy"),
                StartsWith("test.toml:10:1: cannot use 'energy'") && Contains("CSV column of the energy"));
+    CHECK_THAT(named("work"), Contains("CSV column of the work of the forces"));
     CHECK_THAT(named("h"), Contains("energy function among the conserved quantities"));
     CHECK_THAT(named("p_psi"), Contains("momentum of coordinate 'psi'"));
     CHECK_THAT(named("t"), Contains("reserved for time"));
