@@ -4,9 +4,9 @@
 #include "codegen/jacobian_emitter.hpp"
 #include "codegen/tree_emitter.hpp"
 #include "codegen/mass_solve_emitter.hpp"
+#include "codegen/switching_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/rest_linearization.hpp"
-#include "model/nonsmooth.hpp"
 #include "text/escape.hpp"
 
 #include <fmt/format.h>
@@ -321,53 +321,12 @@ std::string emit_function(const FunctionSpec& f, const SymbolTable& table) {
 
 namespace {
 
-bool has_nonsmooth(const GiNaC::ex& e) {
-    if (is_nonsmooth_function(e)) return true;
-    for (const GiNaC::ex& op : e)
-        if (has_nonsmooth(op)) return true;
-    return false;
-}
-
-/// Whether the header's expressions can hold abs, sign, heaviside, max or min: its T, V, forces, constraints and
-/// outputs (everything else is derived from them).
-bool uses_nonsmooth(const Model& model, const Equations& eq) {
-    if (has_nonsmooth(eq.L) || has_nonsmooth(eq.energy)) return true;
-    for (const GiNaC::ex& e : eq.f)
-        if (has_nonsmooth(e)) return true;
-    for (const GiNaC::ex& e : eq.generalized_forces)
-        if (has_nonsmooth(e)) return true;
-    for (const ConstraintEquations& c : eq.constraints)
-        if (has_nonsmooth(c.position) || has_nonsmooth(c.velocity)) return true;
-    for (const DeclaredOutput& o : model.outputs)
-        if (has_nonsmooth(o.expr.expr)) return true;
-    return false;
-}
-
-/// A switching surface's function as printed (sign(v - x'), max(a, b)), without the sign that an odd function's
-/// printed form may carry in front (-sign(x' - v) is the same surface).
-std::string switch_name(const SwitchingSurface& w, MathPrinter& printer) {
-    const std::string s = printer.print(w.function, MathStyle::Text);
-    return s.rfind('-', 0) == 0 ? s.substr(1) : s;
-}
-
 /// The lines that start with prefix.
 std::vector<std::string> only(const std::vector<std::string>& lines, const std::string& prefix) {
     std::vector<std::string> out;
     for (const std::string& l : lines)
         if (l.rfind(prefix, 0) == 0) out.push_back(l);
     return out;
-}
-
-/// The switching surfaces of the dynamics (M, f, the constraints' terms): where rhs() has a kink or a jump.
-std::vector<SwitchingSurface> dynamics_switches(const Equations& eq) {
-    std::vector<GiNaC::ex> exprs(eq.f.begin(), eq.f.end());
-    for (unsigned i = 0; i < eq.M.rows(); ++i)
-        for (unsigned j = 0; j < eq.M.cols(); ++j) exprs.push_back(eq.M(i, j));
-    for (const ConstraintEquations& c : eq.constraints) {
-        exprs.push_back(c.gamma);
-        exprs.insert(exprs.end(), c.jacobian.begin(), c.jacobian.end());
-    }
-    return switching_surfaces(exprs);
 }
 
 std::string string_array(const std::vector<std::string>& names) {
@@ -428,10 +387,8 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     if (eq.conserved.empty()) os << "nothing found";
     for (std::size_t i = 0; i < eq.conserved.size(); ++i)
         os << (i ? "; " : "") << cpp_comment(eq.conserved[i].name + " (" + eq.conserved[i].reason + ")");
-    const std::vector<SwitchingSurface> switches = dynamics_switches(eq);
-    if (!switches.empty()) os << "\n//\n// Switching surfaces (rhs() has a kink or a jump where one is 0; EventAction::Switch):";
-    for (const SwitchingSurface& w : switches)
-        os << "\n//   " << cpp_comment(printer.print(w.s, MathStyle::Text) + " = 0, of " + switch_name(w, printer));
+    const SwitchingCode switches = switching_code(model, eq, printer);
+    os << switches.comment(printer);
     if (!model.outputs.empty()) os << "\n//\n// Outputs ([outputs]):";
     for (const DeclaredOutput& o : model.outputs)
         os << "\n//   " << cpp_comment(o.name + " = " + printer.print(o.expr.expr, MathStyle::Text) +
@@ -449,7 +406,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     if (jacobians) os << (tree_rhs ? "#include \"eomgen/model_jacobian.hpp\"\n" : "#include \"eomgen/analytic_jacobian.hpp\"\n");
     os << (eq.constraints.empty() ? "#include \"eomgen/linear_solve.hpp\"\n" : "#include \"eomgen/constraints.hpp\"\n");
     if (tree_rhs) os << "#include \"eomgen/particle_tree.hpp\"\n";
-    if (uses_nonsmooth(model, eq)) os << "#include \"eomgen/nonsmooth.hpp\"\n";
+    if (switches.include_runtime) os << "#include \"eomgen/nonsmooth.hpp\"\n";
     os << "#include \"eomgen/device.hpp\"\n#include \"eomgen/linearize.hpp\"\n\n";
     os << "#include <Eigen/Core>\n\n#include <array>\n#include <cmath>\n#include <string_view>\n#include <type_traits>\n\n";
     os << "namespace eomgen::models::" << model.name << " {\n\n";
@@ -473,10 +430,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         os << "    /// h is not conserved (forces act, or L depends on t): power() is dh/dt along a motion.\n";
         os << "    static constexpr bool has_power = true;\n";
     }
-    if (!switches.empty()) {
-        os << "    /// Switching surfaces of rhs() (abs, sign, heaviside, max, min): switching() and switch_names.\n";
-        os << "    static constexpr int n_switches = " << switches.size() << ";\n";
-    }
+    os << switches.constants();
     const std::size_t nc = eq.constraints.size();
     std::vector<std::string> constraint_names;
     for (const ConstraintEquations& c : eq.constraints) constraint_names.push_back(c.name);
@@ -494,7 +448,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "    using Outputs = Eigen::Matrix<Scalar, n_outputs, 1>;\n";
     os << "    using StateJacobian = Eigen::Matrix<Scalar, nx, nx>;\n";
     os << "    using ParameterJacobian = Eigen::Matrix<Scalar, nx, n_params>;\n";
-    if (!switches.empty()) os << "    using Switches = Eigen::Matrix<Scalar, n_switches, 1>;\n";
+    os << switches.types();
     if (nc > 0) {
         os << "    using ConstraintVector = Eigen::Matrix<Scalar, n_constraints, 1>;\n";
         os << "    using ConstraintJacobian = Eigen::Matrix<Scalar, n_constraints, nq>;\n";
@@ -515,11 +469,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
     os << "    static constexpr std::array<const char*, n_conserved> conserved_names" << string_array(conserved)
        << ";\n";
     os << "    static constexpr std::array<const char*, n_outputs> output_names" << string_array(outputs) << ";\n";
-    if (!switches.empty()) {
-        std::vector<std::string> switch_names;
-        for (const SwitchingSurface& w : switches) switch_names.push_back(switch_name(w, printer));
-        os << "    static constexpr std::array<const char*, n_switches> switch_names" << string_array(switch_names) << ";\n";
-    }
+    os << switches.names_array();
     if (nc > 0) {
         os << "    static constexpr std::array<const char*, n_constraints> constraint_names" << string_array(constraint_names)
            << ";\n";
@@ -679,13 +629,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
                              "(the energy balance of a damped, driven or rheonomic model).",
                              "Scalar", "power", {t_in, q_in, qd_in, p_in}, {}, {{"return", P}}});
     }
-    if (!switches.empty()) {
-        std::vector<Output> surfaces;
-        for (std::size_t k = 0; k < switches.size(); ++k) surfaces.push_back({fmt::format("out_({})", k), switches[k].s});
-        functions.push_back({"The switching surfaces' functions s_k (in the order of switch_names): rhs() has a kink or a "
-                             "jump where one changes sign.",
-                             "void", "switching", {t_in, q_in, qd_in, p_in}, {{"Switches", "out_"}}, surfaces});
-    }
+    if (!switches.empty()) functions.push_back(switches.function(t_in, q_in, qd_in, p_in));
     if (rest_matrices) {
         const std::vector<FunctionSpec> rest = {
             {"Stiffness about rest, K = d/dq (dV_eff/dq - Q) at q' = 0 (V_eff = V - T(q' = 0)): M dq'' + (C + G) dq' + K dq "
