@@ -99,8 +99,10 @@ std::optional<GiNaC::ex> derivative_at_rest(const GiNaC::ex& e, const GiNaC::sym
         const GiNaC::ex step = (s == 0 ? 1 : -1) * eps;
         GiNaC::exmap at = others;
         at[v] = step;
-        const GiNaC::ex along = smooth_elsewhere.subs(at, GiNaC::subs_options::no_pattern);
-        side[s] = subs_unless_pole(GiNaC::normal((along - e0) / step), GiNaC::exmap{{eps, 0}},
+        // Not subs(): GiNaC throws on a zero denominator from inside the product it builds, and leaks it.
+        const std::optional<GiNaC::ex> along = subs_unless_pole(smooth_elsewhere, at, GiNaC::subs_options::no_pattern);
+        if (!along) continue;
+        side[s] = subs_unless_pole(GiNaC::normal((*along - e0) / step), GiNaC::exmap{{eps, 0}},
                                    GiNaC::subs_options::no_pattern);
         if (side[s] && side[s]->has(eps)) side[s].reset();
     }

@@ -1,6 +1,8 @@
 /** @file small_oscillations.cpp  Equilibria, linearization, normal modes, stability (small_oscillations.hpp). */
 #include "mechanics/small_oscillations.hpp"
 
+#include "model/nonsmooth.hpp"
+
 #include "mechanics/constrained_equilibria.hpp"
 #include "mechanics/pole_free_subs.hpp"
 #include "mechanics/time_dependence.hpp"
@@ -107,6 +109,10 @@ private:
 /// The limit of e at the exact point `at` along the coordinates: the ε⁰ term of e(q0 + ε d) for a fixed
 /// direction d, taken in exact arithmetic. For a removable singularity such as (1 − cos θ)²/sin²θ at θ = 0.
 double limit_at(const ex& e, const std::vector<symbol>& q, const exmap& at) {
+    // GiNaC's series of abs, sign … goes through derivatives that can divide by zero inside GiNaC, which then
+    // leaks what it was building (LeakSanitizer, the structural fuzzer's V = k*abs(th1)): no limit taken there.
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (is_nonsmooth_function(*it)) return std::nan("");
     static const int direction[][2] = {{1, 1},       {7071, 10000}, {5477, 10000}, {4472, 10000},
                                        {3780, 10000}, {3333, 10000}, {3015, 10000}, {2774, 10000}};
     const symbol eps("eps");
@@ -116,6 +122,14 @@ double limit_at(const ex& e, const std::vector<symbol>& q, const exmap& at) {
     try {
         const std::optional<ex> along = subs_unless_pole(e, shifted, GiNaC::subs_options::no_pattern);
         if (!along) return std::nan("");  // a pole along the whole line, not a removable 0/0
+        // A root of something that vanishes at the point (sqrt(s^2) at s = 0) is a branch point: GiNaC's series
+        // throws there from inside what it builds, and leaks it (LeakSanitizer, the structural fuzzer); no limit.
+        for (auto it = along->preorder_begin(); it != along->preorder_end(); ++it)
+            if (GiNaC::is_a<GiNaC::power>(*it) && GiNaC::is_a<GiNaC::numeric>(it->op(1)) &&
+                !GiNaC::ex_to<GiNaC::numeric>(it->op(1)).is_integer()) {
+                const std::optional<ex> base = subs_unless_pole(it->op(0), exmap{{eps, 0}}, GiNaC::subs_options::no_pattern);
+                if (!base || GiNaC::normal(*base).is_zero()) return std::nan("");
+            }
         const ex s = GiNaC::series_to_poly(along->series(eps == 0, 2));
         // A term in a negative power of ε is a pole, not a removable 0/0: e has no limit there (the ε⁰ term
         // alone would be the regular part of a Laurent series, a finite number that is no value of e).
