@@ -8,25 +8,18 @@
 namespace eomgen::codegen {
 namespace {
 
-bool has_nonsmooth(const GiNaC::ex& e) {
-    if (is_nonsmooth_function(e)) return true;
-    for (const GiNaC::ex& op : e)
-        if (has_nonsmooth(op)) return true;
-    return false;
-}
-
 /// Whether the header's expressions can hold abs, sign, heaviside, max or min: its T, V, forces, constraints and
 /// outputs (everything else is derived from them).
 bool uses_nonsmooth(const Model& model, const Equations& eq) {
-    if (has_nonsmooth(eq.L) || has_nonsmooth(eq.energy)) return true;
+    if (contains_nonsmooth(eq.L) || contains_nonsmooth(eq.energy)) return true;
     for (const GiNaC::ex& e : eq.f)
-        if (has_nonsmooth(e)) return true;
+        if (contains_nonsmooth(e)) return true;
     for (const GiNaC::ex& e : eq.generalized_forces)
-        if (has_nonsmooth(e)) return true;
+        if (contains_nonsmooth(e)) return true;
     for (const ConstraintEquations& c : eq.constraints)
-        if (has_nonsmooth(c.position) || has_nonsmooth(c.velocity)) return true;
+        if (contains_nonsmooth(c.position) || contains_nonsmooth(c.velocity)) return true;
     for (const DeclaredOutput& o : model.outputs)
-        if (has_nonsmooth(o.expr.expr)) return true;
+        if (contains_nonsmooth(o.expr.expr)) return true;
     return false;
 }
 

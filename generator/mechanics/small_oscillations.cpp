@@ -111,8 +111,7 @@ private:
 double limit_at(const ex& e, const std::vector<symbol>& q, const exmap& at) {
     // GiNaC's series of abs, sign … goes through derivatives that can divide by zero inside GiNaC, which then
     // leaks what it was building (LeakSanitizer, the structural fuzzer's V = k*abs(th1)): no limit taken there.
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (is_nonsmooth_function(*it)) return std::nan("");
+    if (contains_nonsmooth(e)) return std::nan("");
     static const int direction[][2] = {{1, 1},       {7071, 10000}, {5477, 10000}, {4472, 10000},
                                        {3780, 10000}, {3333, 10000}, {3015, 10000}, {2774, 10000}};
     const symbol eps("eps");

@@ -155,6 +155,12 @@ namespace {
 ex signs_of_quotients(const ex& product);
 }  // namespace
 
+bool contains_nonsmooth(const ex& e) {
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (is_nonsmooth_function(*it)) return true;
+    return false;
+}
+
 ex real_roots(const ex& e) {
     if (GiNaC::is_exactly_a<GiNaC::power>(e) && GiNaC::is_exactly_a<numeric>(e.op(1))) {
         const numeric r = GiNaC::ex_to<numeric>(e.op(1));

@@ -31,6 +31,9 @@ bool nonsmooth_value(const std::string& name, const double* args, std::size_t n,
 /// Whether e is one of the functions above.
 bool is_nonsmooth_function(const GiNaC::ex& e);
 
+/// Whether e holds one of them anywhere.
+bool contains_nonsmooth(const GiNaC::ex& e);
+
 /// Roots of squares read for real numbers: sqrt(x^2) = |x|, (x^2)^(3/2) = |x|^3, sqrt(l^2 x^2) = |l| |x|, so that a
 /// quadratic drag written −k θ' sqrt(θ'^2) has the derivative 2k|θ'|, defined at rest.
 GiNaC::ex real_roots(const GiNaC::ex& e);
