@@ -77,6 +77,16 @@ std::vector<std::size_t> small_coordinates_in_prose(const Derivation& d, std::si
     return out;
 }
 
+std::optional<std::size_t> small_motion_stated_before(const Derivation& d, std::size_t at) {
+    const std::string s = lower(d.text.substr(0, std::min(at, d.text.size())));
+    for (std::size_t k = s.find("small"); k != std::string::npos; k = s.find("small", k + 5)) {
+        const std::string after = s.substr(k + 5, 24);
+        for (const char* what : {"oscillation", "angle", "amplitude", "vibration", "displacement"})
+            if (after.find(what) != std::string::npos) return k;
+    }
+    return std::nullopt;
+}
+
 ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int reference_side, const Model& model,
                                     const std::vector<GiNaC::ex>& motion, const std::vector<std::size_t>& small,
                                     const std::function<bool(const GiNaC::ex&, const GiNaC::ex&)>& same) {
@@ -160,7 +170,13 @@ bool check_approximation(const Derivation& d, const Model& model, const std::vec
                          const std::pair<std::string, std::string>& sources, const GiNaC::ex& a, const GiNaC::ex& b,
                          int reference_side, bool implied, Comparisons& cmp, EquationCheck& r) {
     std::vector<std::size_t> small = small_coordinates_in_prose(d, at, model);
-    const std::string said = small.empty() ? "" : " (the text says it is small)";
+    std::string said = small.empty() ? "" : " (the text says it is small)";
+    // "… makes small oscillations" in the statement of the problem: what it derives after is about them.
+    if (small.empty() && !implied)
+        if (const std::optional<std::size_t> cue = small_motion_stated_before(d, at)) {
+            for (std::size_t k = 0; k < model.dof(); ++k) small.push_back(k);
+            said = " (the text says on line " + std::to_string(d.position(*cue).line) + " that the motion is small)";
+        }
     if (small.empty() && implied)  // implied: every coordinate the equation holds
         for (std::size_t k = 0; k < model.dof(); ++k)
             if ((a - b).has(model.coordinates[k].q) || (a - b).has(model.coordinates[k].qd)) small.push_back(k);

@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,6 +24,13 @@ namespace eomgen::checker {
  * paragraph of `at` (to the blank line before it and after it). Indices into model.coordinates.
  */
 std::vector<std::size_t> small_coordinates_in_prose(const Derivation& d, std::size_t at, const Model& model);
+
+/**
+ * Where the text, before file offset `at`, says the motion is small ("makes small oscillations", "small
+ * angles", "small amplitude", "small vibrations", "small displacements"), as a file offset; std::nullopt when it
+ * does not. An equation after it that would disagree is compared as the approximation it may be.
+ */
+std::optional<std::size_t> small_motion_stated_before(const Derivation& d, std::size_t at);
 
 /// "first", "second", "third", or "4th" ...
 std::string ordinal(int order);

@@ -175,12 +175,17 @@ class Numbers {
             at[c.qdd] = state_value();
         }
         for (const GiNaC::symbol& s : state_symbols_) at[s] = value(sr);
+        for (const auto& [p, v] : pinned_) at[p] = v;
         return at;
     }
     /// A symbol that takes a value per state, as the coordinates do (a constraint's multiplier λ).
     void add_state_symbol(const GiNaC::symbol& s) { state_symbols_.push_back(s); }
     /// Whether the points give q, q', q'' either sign (at even state seeds): while a non-smooth function is compared.
     void sign_state(bool on) { signed_state_ = on; }
+    /// Parameters and coordinates held at a value the text chose for its paragraph (`m_1 = 0`, `\\theta = \\pi/2`):
+    /// every point uses it.
+    void pin(const GiNaC::exmap& values) { pinned_ = values; }
+    const GiNaC::exmap& pinned() const { return pinned_; }
     bool state_signed() const { return signed_state_; }
     GiNaC::exmap point(unsigned seed) const { return point(seed, seed); }
 
@@ -213,6 +218,7 @@ class Numbers {
 
   private:
     std::vector<GiNaC::symbol> state_symbols_;
+    GiNaC::exmap pinned_;
     bool signed_state_ = false;
     GiNaC::ex integrals(const GiNaC::ex& e) {
         if (!has_integral(e)) return e;
@@ -382,6 +388,21 @@ class Checker : public Comparisons {
             if (e.has(c.qd)) return true;
         return false;
     }
+    /// `s = \frac{1}{2h}`, `\dot\theta = 0`: a coordinate or a velocity alone set to a value free of the state
+    /// and of t — a condition of a particular point or motion, not an equation of the motion (an acceleration so
+    /// set is one: free fall). The coordinate's LaTeX, or "" when the link is not one.
+    std::string condition_of(const GiNaC::ex& a, const GiNaC::ex& b, GiNaC::ex* symbol = nullptr,
+                             GiNaC::ex* value = nullptr) const {
+        for (const auto& [x, y] : {std::pair(a, b), std::pair(b, a)})
+            for (const Coordinate& c : model_.coordinates)
+                if ((x.is_equal(c.q) || x.is_equal(c.qd)) && !depends_on_state(y) && !has_acceleration(y) &&
+                    !y.has(model_.t)) {
+                    if (symbol) *symbol = x;
+                    if (value) *value = y;
+                    return x.is_equal(c.q) ? c.latex : "\\dot{" + c.latex + "}";
+                }
+        return "";
+    }
     bool depends_on_state(const GiNaC::ex& e) const {
         for (const Coordinate& c : model_.coordinates)
             if (e.has(c.q) || e.has(c.qd)) return true;
@@ -508,6 +529,8 @@ class Checker : public Comparisons {
     }
     void check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a, const Prepared& b,
                       double tol, EquationCheck& r);
+    bool diagnose_solved_acceleration(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
+                                      EquationCheck& out);
     void diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
                                  EquationCheck& out);
     /// The coordinate whose Euler–Lagrange equation r matches best (the most groups of terms equal after the
@@ -553,6 +576,16 @@ class Checker : public Comparisons {
     }
     NormalModesCheck modes_;       ///< ω² and secular equations against the model's normal modes
     ParameterValues parameter_values_;  ///< for the numbers the text works out
+    /// The conditions the text states (`\theta = \pi/2`: the point it considers), each holding to the end of its
+    /// paragraph: the links after it there are compared at that point.
+    struct Condition {
+        GiNaC::ex symbol, value;
+        std::size_t from, until;
+        int line;
+    };
+    std::vector<Condition> conditions_;
+    std::vector<std::string> chosen_notes_;  ///< "with $m_1 = 0$, the value the text chose on line 31" (check_link)
+    std::set<std::size_t> at_a_point_;  ///< heads of definitions that hold at a point the text considers
     LinearAlgebra algebra_;             ///< arrays, tuples, eigen-equations: entry by entry
     int velocity_h_line_ = 0;       ///< the first line where the text writes H in velocities (0: none)
     std::size_t velocity_h_at_ = 0;  ///< its file offset
@@ -1450,7 +1483,22 @@ int Checker::best_factor(const GiNaC::ex& text, const GiNaC::ex& truth, double t
 // ---------------------------------------------------------------------------------------------- checking
 
 void Checker::collect_definitions(const std::vector<FullChain>& chains) {
+    // After a condition (`s = \frac{1}{2h}`: "halfway along the first turn"), a value free of the state that the
+    // paragraph gives a name (`y = r\cos\pi`) is that name's value at the point, not its definition: it holds
+    // to the end of the paragraph only.
+    std::size_t condition_until = 0;
     for (const FullChain& c : chains) {
+        for (std::size_t k = 0; k + 1 < c.sides.size(); ++k) {
+            if (!c.sides[k].side->ok || !c.sides[k + 1].side->ok) continue;
+            const Prepared x = prepare(c.sides[k]), y = prepare(c.sides[k + 1]);
+            GiNaC::ex q, v;
+            if (x.comparable() && y.comparable() && !condition_of(x.value, y.value, &q, &v).empty()) {
+                const std::size_t end = d_.text.find("\n\n", c.relation_offsets[k]);
+                condition_until = end == std::string::npos ? d_.text.size() : end;
+                conditions_.push_back({q, v, c.relation_offsets[k], condition_until,
+                                       d_.position(c.relation_offsets[k]).line});
+            }
+        }
         if (c.sides.size() < 2 || !c.sides[0].side->ok) continue;
         const GiNaC::ex head = c.sides[0].side->value;
         const FreeName* f = ctx_.free_name_of(head);
@@ -1464,8 +1512,11 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
             const Prepared p = prepare(c.sides[k]);
             if (!p.comparable() || !p.units.empty() || p.value.has(head)) continue;
             const std::size_t at = c.sides[k].base + c.sides[k].side->begin;
-            const std::size_t until =
-                c.section >= 0 ? d_.sections[std::size_t(c.section)].end : std::string::npos;
+            std::size_t until = c.section >= 0 ? d_.sections[std::size_t(c.section)].end : std::string::npos;
+            if (at < condition_until && !depends_on_state(p.value)) {
+                until = std::min(until, condition_until);
+                at_a_point_.insert(c.sides[0].base + c.sides[0].side->begin);
+            }
             definitions_.add(head, f->name, p.value, at, d_.position(at).line, until, c.sides[k].side->source,
                              c.sides[0].base + c.sides[0].side->begin);
             break;
@@ -1558,6 +1609,31 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         r.reason = !a.ok ? a.problem : b.problem;
         return r;
     }
+    // A parameter the text set for this paragraph (`m_1 = 0`): both the text and eomgen's equations take it.
+    GiNaC::exmap chosen;
+    chosen_notes_.clear();
+    for (std::size_t k = 0; k < model_.parameters.size(); ++k)
+        if (const auto [v, origin] = parameter_values_.at(k, rel_at); origin.rfind("chosen by the text", 0) == 0) {
+            chosen[model_.parameters[k].symbol] = exact_decimal(v);
+            chosen_notes_.push_back("with $" + (model_.parameters[k].latex.empty() ? model_.parameters[k].name
+                                                                                : model_.parameters[k].latex) +
+                                    " = " + latex(exact_decimal(v)) + "$, the value the text chose on line " +
+                                    origin.substr(origin.rfind(' ') + 1));
+        }
+    std::map<GiNaC::ex, int, GiNaC::ex_is_less> stated_on;  // a condition's line; a later one replaces it
+    for (const Condition& k : conditions_)
+        if (k.from < rel_at && rel_at < k.until) {
+            if (!chosen.count(k.symbol) || !chosen[k.symbol].is_equal(k.value)) stated_on[k.symbol] = k.line;
+            chosen[k.symbol] = k.value;
+        }
+    for (const auto& [symbol, line] : stated_on)
+        chosen_notes_.push_back("at $" + latex(symbol) + " = " + latex(chosen[symbol]) +
+                                "$, the condition the text states on line " + std::to_string(line));
+    struct Unpin {
+        Numbers& n;
+        ~Unpin() { n.pin({}); }
+    } const unpin{numbers_};
+    numbers_.pin(chosen);
     for (const Prepared* p : {&a, &b}) r.notes.insert(r.notes.end(), p->notes.begin(), p->notes.end());
     std::sort(r.notes.begin(), r.notes.end());
     r.notes.erase(std::unique(r.notes.begin(), r.notes.end()), r.notes.end());
@@ -1830,8 +1906,9 @@ void Checker::check_part(const GiNaC::ex& part, const std::string& part_source, 
     r.corrected = part_source + " = " + latex(expected);
 }
 
-void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a,
-                           const Prepared& b, double tol, EquationCheck& r) {
+void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a_read,
+                           const Prepared& b_read, double tol, EquationCheck& r) {
+    Prepared a = a_read, b = b_read;
     const PSide& L = c.sides[i];
     const PSide& R = c.sides[j];
     auto label_of = [&](const PSide& s) -> std::string {
@@ -1898,13 +1975,25 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
                        ": not a symbol of the model (--map can say what it stands for)";
         else
             r.reason = "vector quantities (" + join(vectors) + ") are not compared";
-        if (!def.empty()) r.reason += "; a definition: the text's abbreviation $" + def + "$ for the rest of its section";
+        if (!def.empty())
+            r.reason += "; a definition: the text's abbreviation $" + def + "$ for the rest of its " +
+                        (at_a_point_.count(L.base + L.side->begin) ? "paragraph (its value at the point the text considers)"
+                                                                   : "section");
         return;
     }
     // A number the text works out: units to SI, the parameters' values, its printed digits.
     if (check_number(a.value, b.value, {L.side->source, R.side->source}, c.relation_offsets[j - 1], model_, ctx_, d_,
                      parameter_values_, r))
         return;
+    // A parameter the text set for this paragraph (`m_1 = 0`): the text's sides take it as eomgen's equations do
+    // (the sample points hold it, Numbers::pin).
+    // A condition stated again (`\theta = 0` at θ = 0) is not an identity: it is judged as the condition it is.
+    if (!numbers_.pinned().empty() && !condition_of(a.value, b.value).empty()) numbers_.pin({});
+    if (!numbers_.pinned().empty()) {
+        r.notes.insert(r.notes.end(), chosen_notes_.begin(), chosen_notes_.end());
+        a.value = subs_unless_pole(a.value, numbers_.pinned()).value_or(a.value);
+        b.value = subs_unless_pole(b.value, numbers_.pinned()).value_or(b.value);
+    }
     if (!a.units.empty() || !b.units.empty()) {
         if (equal(a.value, b.value, tol) == Tri::Yes) {
             r.verdict = Verdict::Agrees;
@@ -2077,6 +2166,15 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         }
     }
+    if (const std::string q = condition_of(a.value, b.value); !q.empty()) {
+        const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
+        r.reason = cue.empty() ? "a condition: the point or motion the text considers, where " + m(q) +
+                                     " takes this value (not an equation of the motion, so not judged)"
+                               : "a condition or a given value (after “" + cue +
+                                     "”): it sets a value for what follows, not an equation of motion, and is not "
+                                     "judged";
+        return;
+    }
     // A formula set equal to a number that is not a worked-out number (printed_numbers: no single decimal or
     // number with units, such as the Earth's (I_3 - I)/I \approx 3 \times 10^{-3}) is particular data.
     auto constant = [&](const GiNaC::ex& x) {
@@ -2227,6 +2325,7 @@ void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, con
                                       EquationCheck& out) {
     (void)left;
     (void)right;
+    if (diagnose_solved_acceleration(left, right, r, tol, out)) return;
     GiNaC::ex best_c = 1;
     const std::size_t i = std::size_t(closest_euler_lagrange(r, tol, &best_c, nullptr));
     const Coordinate& q = model_.coordinates[i];
@@ -2290,6 +2389,51 @@ void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, con
         } catch (...) {
         }
     }
+}
+
+bool Checker::diagnose_solved_acceleration(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
+                                           EquationCheck& out) {
+    // `\ddot x_2 = …` with the other accelerations eliminated, in a model of 2 to 4 unconstrained coordinates:
+    // compared with q''_i solved from M q'' = f, not with the Euler–Lagrange equation that still holds the others.
+    const std::size_t n = model_.dof();
+    if (n < 2 || n > 4 || !eq_.constraints.empty()) return false;
+    int solved = -1;
+    for (std::size_t k = 0; k < n; ++k)
+        if (r.has(model_.coordinates[k].qdd)) {
+            if (solved >= 0) return false;
+            solved = int(k);
+        }
+    if (solved < 0) return false;
+    const std::size_t i = std::size_t(solved);
+    const GiNaC::symbol& qdd = model_.coordinates[i].qdd;
+    const PSide* alone = nullptr;  // the side that is q''_i itself
+    for (const PSide* s : {&left, &right})
+        if (s->side->ok && s->side->value.is_equal(qdd)) alone = s;
+    if (!alone) return false;
+    GiNaC::ex value;
+    try {
+        GiNaC::matrix x(unsigned(n), 1), rhs(unsigned(n), 1);
+        std::vector<GiNaC::symbol> unknowns(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            x(unsigned(k), 0) = unknowns[k];
+            rhs(unsigned(k), 0) = eq_.f[k];
+        }
+        const GiNaC::matrix sol = eq_.M.solve(x, rhs, GiNaC::solve_algo::gauss);
+        value = GiNaC::normal(sol(unsigned(i), 0));
+        if (!numbers_.pinned().empty()) value = GiNaC::normal(subs_unless_pole(value, numbers_.pinned()).value_or(value));
+    } catch (...) {
+        return false;
+    }
+    if (expanded_terms(value) > kMaxExpandedTerms) return false;
+    const GiNaC::ex truth_r = alone == &left ? GiNaC::ex(qdd - value) : GiNaC::ex(value - qdd);
+    out.verdict = Verdict::Disagrees;
+    out.compared_with = m("\\ddot{" + model_.coordinates[i].latex + "}") + " solved from the Euler–Lagrange equations";
+    const Diagnosis dg = compare_to(r, truth_r, tol);
+    out.difference = dg.difference;
+    out.wrong_terms = dg.lines;
+    out.corrected = alone == &left ? alone->side->source + " = " + latex(value)
+                                   : latex(value) + " = " + alone->side->source;
+    return true;
 }
 
 CheckReport Checker::run() {

@@ -1,0 +1,108 @@
+/** @file exam_roles.cpp  Rows that are not claims of the general motion: a value the text chooses for a
+ * parameter, the conditions of a particular point, an approximation announced in the problem's statement, and
+ * an acceleration solved from the equations. */
+#include "checked_text.hpp"
+
+#include <catch2/catch.hpp>
+
+using eomgen::checker::CheckReport;
+using eomgen::checker::EquationCheck;
+using eomgen::checker::Verdict;
+
+namespace {
+
+const char* kAtwood = "tests/checker/corpus/atwood_double_pf/model.toml";
+const char* kPendulum = "tests/checker/models/plane_pendulum.toml";
+
+std::vector<const EquationCheck*> on_line(const CheckReport& r, int line) {
+    std::vector<const EquationCheck*> out;
+    for (const EquationCheck& e : r.equations)
+        if (e.where.line == line) out.push_back(&e);
+    return out;
+}
+
+}  // namespace
+
+TEST_CASE("roles: a parameter the text sets holds for the rest of its paragraph, in the text and in eomgen's "
+          "equations",
+          "[checker][roles]") {
+    const std::string text = "For $m_1 = 0$ it reduces to $\\ddot{l_2} = 0$, and $\\ddot{l_1} = -g$.\n"
+                             "\n"
+                             "In general $\\ddot{l_1} = -g$ does not hold.\n";
+    const CheckReport r = eomgen::test::check_text(kAtwood, text);
+    const auto first = on_line(r, 1);
+    REQUIRE(first.size() == 3);
+    for (const EquationCheck* e : first) INFO(eomgen::test::describe(*e));
+    CHECK(first[0]->verdict == Verdict::NotComparable);
+    CHECK(first[0]->reason.find("a value the text chooses") == 0);
+    for (int k : {1, 2}) {
+        INFO(eomgen::test::describe(*first[std::size_t(k)]));
+        CHECK(first[std::size_t(k)]->verdict == Verdict::Agrees);
+        CHECK(eomgen::test::has_note(*first[std::size_t(k)], "with $m_{1} = 0$, the value the text chose on line 1"));
+    }
+    // The next paragraph is back to the model's m_1.
+    const auto later = on_line(r, 3);
+    REQUIRE(later.size() == 1);
+    INFO(eomgen::test::describe(*later[0]));
+    CHECK(later[0]->verdict == Verdict::Disagrees);
+}
+
+TEST_CASE("roles: an acceleration with the others eliminated is compared with its solution, and corrected to it",
+          "[checker][roles]") {
+    const CheckReport wrong = eomgen::test::check_text(
+        kAtwood, "$$\\ddot{l_2} = \\frac{ 2m_1(m_2 - M) }{m_1M + m_1 m_2 + 2 M m_2}g$$\n");
+    REQUIRE(wrong.equations.size() == 1);
+    const EquationCheck& w = wrong.equations[0];
+    INFO(eomgen::test::describe(w));
+    CHECK(w.verdict == Verdict::Disagrees);
+    CHECK(w.compared_with == "$\\ddot{l_{2}}$ solved from the Euler–Lagrange equations");
+    CHECK(w.corrected.find("\\ddot{l_2} = ") == 0);  // the author's left side, then eomgen's solution
+    CHECK(w.corrected.find("4 m_{2} M") != std::string::npos);
+    CHECK(w.corrected.find("\\ddot{l_{1}}") == std::string::npos);  // no other acceleration in the correction
+    const CheckReport right = eomgen::test::check_text(
+        kAtwood, "$$\\ddot{l_2} = \\frac{ 2m_1(m_2 - M) }{m_1M + m_1 m_2 + 4 M m_2}g$$\n");
+    REQUIRE(right.equations.size() == 1);
+    INFO(eomgen::test::describe(right.equations[0]));
+    CHECK(right.equations[0].verdict == Verdict::Agrees);
+}
+
+TEST_CASE("roles: a coordinate set to a value is a condition, and what the paragraph names there holds only in it",
+          "[checker][roles]") {
+    const std::string text = "At the side,\n"
+                             "$$\n"
+                             "u = \\theta = \\frac{\\pi}{2},\\\\\n"
+                             "y = l \\cos\\theta = 0\n"
+                             "$$\n"
+                             "\n"
+                             "The potential energy is $V = -m g y$.\n";
+    const CheckReport r = eomgen::test::check_text(kPendulum, text);
+    for (const EquationCheck& e : r.equations) {
+        INFO(eomgen::test::describe(e));
+        CHECK(e.verdict != Verdict::Disagrees);
+    }
+    const auto cond = on_line(r, 3);
+    REQUIRE(cond.size() == 2);
+    CHECK(cond[1]->reason.find("a condition: the point or motion the text considers, where $\\theta$") == 0);
+    // y = 0 at θ = π/2 is not the definition of y: V = −m g y is not judged with y = 0.
+    const auto v = on_line(r, 7);
+    REQUIRE(v.size() == 1);
+    CHECK(v[0]->verdict == Verdict::NotComparable);
+    CHECK(v[0]->reason.find("unknown symbol $y$") == 0);
+}
+
+TEST_CASE("roles: small oscillations stated with the problem make a later linear equation an approximation",
+          "[checker][roles]") {
+    const std::string eq = "$$\\ddot\\theta + \\frac{g}{l}\\theta = 0$$\n";
+    const CheckReport stated =
+        eomgen::test::check_text(kPendulum, "The pendulum makes small oscillations.\n\nIts equation:\n\n" + eq);
+    REQUIRE(stated.equations.size() == 1);
+    INFO(eomgen::test::describe(stated.equations[0]));
+    CHECK(stated.equations[0].verdict == Verdict::Agrees);
+    CHECK(stated.equations[0].reason == "agrees to first order in $\\theta$");
+    CHECK(stated.equations[0].compared_with.find("the text says on line 1 that the motion is small") !=
+          std::string::npos);
+    // Without it, θ for sin θ is a slip.
+    const CheckReport unstated = eomgen::test::check_text(kPendulum, "The pendulum swings.\n\nIts equation:\n\n" + eq);
+    REQUIRE(unstated.equations.size() == 1);
+    CHECK(unstated.equations[0].verdict == Verdict::Disagrees);
+}
