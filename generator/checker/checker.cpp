@@ -584,6 +584,16 @@ class Checker : public Comparisons {
         int line;
     };
     std::vector<Condition> conditions_;
+    /// A letter the text gives another quantity's meaning (`p_\theta = L`), from the naming to its section's end.
+    struct Naming {
+        GiNaC::ex letter, quantity;
+        std::string letter_latex, quantity_latex;
+        std::size_t from, until;
+        int line;
+    };
+    std::vector<Naming> namings_;
+    GiNaC::ex renamed(const GiNaC::ex& e, std::size_t at, std::vector<std::string>& notes) const;
+    void collect_namings(const std::vector<FullChain>& chains);
     std::vector<std::string> chosen_notes_;  ///< "with $m_1 = 0$, the value the text chose on line 31" (check_link)
     std::set<std::size_t> at_a_point_;  ///< heads of definitions that hold at a point the text considers
     LinearAlgebra algebra_;             ///< arrays, tuples, eigen-equations: entry by entry
@@ -785,10 +795,12 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
         return p;
     }
     for (const std::string& n : side.notes) p.notes.push_back(n);
+    // A letter the text has given another quantity's meaning (`p_\theta = L`): that quantity, outside ∂·/∂·.
+    const GiNaC::ex value = renamed(side.value, s.base + side.begin, p.notes);
     try {
         GiNaC::exmap subs;
         ExSet symbols;
-        std::vector<GiNaC::ex> stack{side.value};
+        std::vector<GiNaC::ex> stack{value};
         while (!stack.empty()) {
             GiNaC::ex x = stack.back();
             stack.pop_back();
@@ -798,14 +810,14 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
         for (const GiNaC::ex& sym : symbols) {
             // The momenta stay variables while the text differentiates (∂H/∂p_θ), and H inside ∂ is H(q, p, t).
             if (hamilton_.is_momentum(sym) && truth_.count(sym)) {
-                p.has_truth_label = p.has_truth_label || side.value.is_equal(sym);
+                p.has_truth_label = p.has_truth_label || value.is_equal(sym);
                 p.has_momenta = true;
                 continue;
             }
-            if (hamilton_.is_hamiltonian(sym) && !side.value.is_equal(sym)) continue;
+            if (hamilton_.is_hamiltonian(sym) && !value.is_equal(sym)) continue;
             auto t = truth_.find(sym);
             // h and H are common letters (a height): they stand for the energy function only as a whole side.
-            if (t != truth_.end() && bare_only_.count(sym) && !side.value.is_equal(sym)) {
+            if (t != truth_.end() && bare_only_.count(sym) && !value.is_equal(sym)) {
                 subs[sym] = ctx_.free_symbol(GiNaC::ex_to<GiNaC::symbol>(sym).get_name(), NameKind::Unknown);
                 continue;
             }
@@ -814,7 +826,7 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
                 // A declared result is the reference only as a whole side (`a = ...`); inside an expression
                 // it is a value like a map entry's.
                 const bool result = result_labels_.count(sym) != 0;
-                p.has_truth_label = p.has_truth_label || !result || side.value.is_equal(sym);
+                p.has_truth_label = p.has_truth_label || !result || value.is_equal(sym);
                 continue;
             }
             std::string pname;
@@ -828,7 +840,7 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
                 }
             }
         }
-        GiNaC::ex v = subs.empty() ? side.value : side.value.subs(subs);
+        GiNaC::ex v = subs.empty() ? value : value.subs(subs);
         current_offset_ = s.base + side.begin;
         definitions_.take_used();
         const bool H_inside = hamilton_.has_hamiltonian(v);
@@ -1482,6 +1494,59 @@ int Checker::best_factor(const GiNaC::ex& text, const GiNaC::ex& truth, double t
 
 // ---------------------------------------------------------------------------------------------- checking
 
+namespace {
+
+/// e with `from` replaced by `to`, except inside ∂·/∂· (where a letter keeps the meaning the derivative gives it:
+/// ∂L/∂q̇ differentiates the Lagrangian whatever else the text calls L).
+GiNaC::ex replace_outside_partials(const GiNaC::ex& e, const GiNaC::ex& from, const GiNaC::ex& to) {
+    if (is_ex_the_function(e, pdiff)) return e;
+    if (e.is_equal(from)) return to;
+    if (e.nops() == 0) return e;
+    struct Each : GiNaC::map_function {
+        const GiNaC::ex &from, &to;
+        Each(const GiNaC::ex& f, const GiNaC::ex& t) : from(f), to(t) {}
+        GiNaC::ex operator()(const GiNaC::ex& x) override { return replace_outside_partials(x, from, to); }
+    } each(from, to);
+    return e.map(each);
+}
+
+}  // namespace
+
+GiNaC::ex Checker::renamed(const GiNaC::ex& e, std::size_t at, std::vector<std::string>& notes) const {
+    GiNaC::ex v = e;
+    for (const Naming& n : namings_)
+        if (n.from < at && at < n.until && v.has(n.letter)) {
+            const GiNaC::ex w = replace_outside_partials(v, n.letter, n.quantity);
+            if (w.is_equal(v)) continue;
+            v = w;
+            notes.push_back("reads $" + n.letter_latex + "$ as $" + n.quantity_latex + "$, as the text names it on line " +
+                            std::to_string(n.line));
+        }
+    return v;
+}
+
+void Checker::collect_namings(const std::vector<FullChain>& chains) {
+    // `p_\theta = L`: a momentum set equal to a one-letter label of another quantity names it with that letter
+    // (L the angular momentum about P) — two of eomgen's quantities equal as a claim is not what such a line says.
+    const std::vector<std::string> letters{"L", "H", "h", "E", "T", "V"};
+    for (const FullChain& c : chains)
+        for (std::size_t k = 0; k + 1 < c.sides.size(); ++k) {
+            const Side &x = *c.sides[k].side, &y = *c.sides[k + 1].side;
+            if (!x.ok || !y.ok || c.relations[k] != Relation::Equal) continue;
+            for (const auto& [q, l] : {std::pair(&x, &y), std::pair(&y, &x)}) {
+                if (!hamilton_.is_momentum(q->value) || !truth_.count(q->value)) continue;
+                for (const std::string& name : letters) {
+                    const auto it = ctx_.names.find(name);
+                    if (it == ctx_.names.end() || !l->value.is_equal(it->second) || !truth_.count(it->second)) continue;
+                    if (equal(truth_.at(q->value), truth_.at(it->second), 1e-9) == Tri::Yes) continue;
+                    const std::size_t until = c.section >= 0 ? d_.sections[std::size_t(c.section)].end : d_.text.size();
+                    namings_.push_back({it->second, q->value, name, q->source, c.relation_offsets[k], until,
+                                        d_.position(c.relation_offsets[k]).line});
+                }
+            }
+        }
+}
+
 void Checker::collect_definitions(const std::vector<FullChain>& chains) {
     // After a condition (`s = \frac{1}{2h}`: "halfway along the first turn"), a value free of the state that the
     // paragraph gives a name (`y = r\cos\pi`) is that name's value at the point, not its definition: it holds
@@ -1580,6 +1645,13 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     r.equation = (L.side->source.empty() ? std::string("\\ldots") : L.side->source) + sign +
                  (R.side->source.empty() ? std::string("\\ldots") : R.side->source);
     if (bridge) r.notes.push_back("compared across the step(s) between them that cannot be compared");
+    for (const Naming& n : namings_)
+        if (n.from == rel_at && j == i + 1) {
+            r.reason = "a definition: the text names $" + n.quantity_latex + "$ $" + n.letter_latex +
+                       "$ here, and reads so to the end of its section (outside ∂/∂, where $" + n.letter_latex +
+                       "$ is still eomgen's)";
+            return r;
+        }
     if (rel == Relation::Inequality) {
         r.reason = "an inequality or a relation other than equality is not compared";
         return r;
@@ -1695,6 +1767,10 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
 }
 
 void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r) {
+    // A row in a letter the text has just given another meaning (`p_\theta = L`) is about that quantity, not
+    // about what the sentence before the display names.
+    for (const std::string& n : r.notes)
+        if (n.find(", as the text names it on line ") != std::string::npos) return;
     const auto coordinate = [this](const std::string& latex) {
         LatexContext ctx = ctx_;
         const Side s = parse_expression(latex, ctx);
@@ -1913,7 +1989,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     const PSide& R = c.sides[j];
     auto label_of = [&](const PSide& s) -> std::string {
         if (!s.side->ok) return "";
-        auto it = label_what_.find(s.side->value);
+        std::vector<std::string> unused;
+        auto it = label_what_.find(renamed(s.side->value, s.base + s.side->begin, unused));
         return it == label_what_.end() ? "" : it->second;
     };
     const std::string ll = label_of(L), rl = label_of(R);
@@ -2526,6 +2603,7 @@ CheckReport Checker::run() {
         at.offset = tp.offset;
         if (row_selected(d_, at, selected, whole)) report.problems.push_back({d_.position(tp.offset), tp.message});
     }
+    collect_namings(chains);
     collect_definitions(chains);
     for (const FullChain& c : chains)  // stated vectors and eigen-equations, used before and after their line
         for (std::size_t k = 0; k + 1 < c.sides.size(); ++k)

@@ -91,7 +91,90 @@ std::size_t skip_braces(std::string_view s, std::size_t i) {
     return s.size();
 }
 
-std::vector<Token> tokenize(std::string_view s) {
+std::vector<Token> tokenize_text(std::string_view s);
+
+// The end (one past the closing brace) of the brace group that opens at token k, or k when none opens there.
+std::size_t group_end(const std::vector<Token>& t, std::size_t k) {
+    if (k >= t.size() || t[k].kind != Tok::Char || t[k].text != "{") return k;
+    int depth = 0;
+    for (std::size_t q = k; q < t.size(); ++q) {
+        if (t[q].kind != Tok::Char) continue;
+        if (t[q].text == "{") ++depth;
+        if (t[q].text == "}" && --depth == 0) return q + 1;
+    }
+    return k;
+}
+
+/**
+ * The derivative macros of the physics package and of course notes, as the fraction they typeset, in tokens at
+ * the macro's place (the arguments keep theirs): `\pdv{L}{\theta}`, `\pdiff{L}{\theta}` are
+ * `\frac{\partial L}{\partial \theta}`; `\dv{x}{t}`, `\diff{x}{t}` are `\frac{d x}{d t}`; with one argument
+ * (`\dv{t}`, `\diff{}{t}` with an empty first one) the operator `\frac{d}{d t}`. `\Lagr` and `\Lagrangian`
+ * are `\mathcal{L}`. A third argument (the order, as `\pdv[2]{f}{x}` writes it) is not expanded.
+ */
+std::vector<Token> expand_macros(std::vector<Token> in) {
+    std::vector<Token> out;
+    out.reserve(in.size());
+    for (std::size_t k = 0; k < in.size(); ++k) {
+        const Token& m = in[k];
+        if (m.kind != Tok::Word) {
+            out.push_back(m);
+            continue;
+        }
+        // Made tokens lie at the macro or at a brace of its own, so that a side's extent is still the text's.
+        auto made = [&](Tok kind, const char* text, const Token& at) {
+            return Token{kind, text, at.offset, at.length, "", false};
+        };
+        if (m.text == "\\Lagr" || m.text == "\\Lagrangian") {
+            out.push_back(made(Tok::Word, "\\mathcal", m));
+            out.push_back(made(Tok::Char, "{", m));
+            out.push_back(made(Tok::Letter, "L", m));
+            out.push_back(made(Tok::Char, "}", m));
+            continue;
+        }
+        const bool partial = is_one_of(m.text, {"\\pdv", "\\pdiff", "\\pderiv", "\\partialderivative", "\\pd"});
+        const bool total = is_one_of(m.text, {"\\dv", "\\diff", "\\deriv", "\\derivative", "\\od", "\\tdiff"});
+        const std::size_t a = k + 1, a_end = group_end(in, a), b_end = group_end(in, a_end);
+        if (!(partial || total) || a_end == a) {
+            out.push_back(m);
+            continue;
+        }
+        auto d = [&](const Token& at) {
+            return partial ? made(Tok::Word, "\\partial", at) : made(Tok::Letter, "d", at);
+        };
+        auto copy = [&](std::size_t from, std::size_t to) {  // the tokens inside the group [from, to), expanded
+            const std::vector<Token> inner =
+                expand_macros({in.begin() + std::ptrdiff_t(from) + 1, in.begin() + std::ptrdiff_t(to) - 1});
+            out.insert(out.end(), inner.begin(), inner.end());
+        };
+        out.push_back(made(Tok::Word, "\\frac", m));
+        if (b_end != a_end) {  // \pdv{f}{x}: f over x; \diff{}{t}: the operator
+            out.push_back(in[a]);
+            out.push_back(d(in[a]));
+            copy(a, a_end);
+            out.push_back(in[a_end - 1]);
+            out.push_back(in[a_end]);
+            out.push_back(d(in[a_end]));
+            copy(a_end, b_end);
+            out.push_back(in[b_end - 1]);
+            k = b_end - 1;
+        } else {  // \dv{t}: the operator d/dt
+            out.push_back(made(Tok::Char, "{", m));
+            out.push_back(d(m));
+            out.push_back(made(Tok::Char, "}", m));
+            out.push_back(in[a]);
+            out.push_back(d(in[a]));
+            copy(a, a_end);
+            out.push_back(in[a_end - 1]);
+            k = a_end - 1;
+        }
+    }
+    return out;
+}
+
+std::vector<Token> tokenize(std::string_view s) { return expand_macros(tokenize_text(s)); }
+
+std::vector<Token> tokenize_text(std::string_view s) {
     std::vector<Token> out;
     std::size_t i = 0;
     while (i < s.size()) {

@@ -21,6 +21,14 @@ std::vector<const EquationCheck*> on_line(const CheckReport& r, int line) {
     return out;
 }
 
+/// The verdict on a text of one equation.
+Verdict one_verdict(const char* model, const std::string& text) {
+    const CheckReport r = eomgen::test::check_text(model, text);
+    REQUIRE(r.equations.size() == 1);
+    INFO(eomgen::test::describe(r.equations[0]));
+    return r.equations[0].verdict;
+}
+
 }  // namespace
 
 TEST_CASE("roles: a parameter the text sets holds for the rest of its paragraph, in the text and in eomgen's "
@@ -59,11 +67,8 @@ TEST_CASE("roles: an acceleration with the others eliminated is compared with it
     CHECK(w.corrected.find("\\ddot{l_2} = ") == 0);  // the author's left side, then eomgen's solution
     CHECK(w.corrected.find("4 m_{2} M") != std::string::npos);
     CHECK(w.corrected.find("\\ddot{l_{1}}") == std::string::npos);  // no other acceleration in the correction
-    const CheckReport right = eomgen::test::check_text(
-        kAtwood, "$$\\ddot{l_2} = \\frac{ 2m_1(m_2 - M) }{m_1M + m_1 m_2 + 4 M m_2}g$$\n");
-    REQUIRE(right.equations.size() == 1);
-    INFO(eomgen::test::describe(right.equations[0]));
-    CHECK(right.equations[0].verdict == Verdict::Agrees);
+    CHECK(one_verdict(kAtwood, "$$\\ddot{l_2} = \\frac{ 2m_1(m_2 - M) }{m_1M + m_1 m_2 + 4 M m_2}g$$\n") ==
+          Verdict::Agrees);
 }
 
 TEST_CASE("roles: a coordinate set to a value is a condition, and what the paragraph names there holds only in it",
@@ -102,7 +107,43 @@ TEST_CASE("roles: small oscillations stated with the problem make a later linear
     CHECK(stated.equations[0].compared_with.find("the text says on line 1 that the motion is small") !=
           std::string::npos);
     // Without it, θ for sin θ is a slip.
-    const CheckReport unstated = eomgen::test::check_text(kPendulum, "The pendulum swings.\n\nIts equation:\n\n" + eq);
-    REQUIRE(unstated.equations.size() == 1);
-    CHECK(unstated.equations[0].verdict == Verdict::Disagrees);
+    CHECK(one_verdict(kPendulum, "The pendulum swings.\n\nIts equation:\n\n" + eq) == Verdict::Disagrees);
+}
+
+TEST_CASE("roles: the derivative macros of the physics package and of course notes are read as the fractions they "
+          "typeset",
+          "[checker][roles]") {
+    for (const char* text : {"$$\\dv{t}\\pdv{L}{\\dot\\theta} = \\pdv{L}{\\theta}$$\n",
+                             "$$\\diff{}{t}\\pdiff{\\Lagr}{\\dot{\\theta}} - \\pdiff{\\Lagr}{\\theta} = 0$$\n",
+                             "$$\\dv{t}\\left(\\pdv{L}{\\dot\\theta}\\right) = \\pdv{L}{\\theta}$$\n",
+                             "$$\\pdv{L}{\\dot\\theta} = m l^2 \\dv{\\theta}{t}$$\n"}) {
+        const CheckReport r = eomgen::test::check_text(kPendulum, text);
+        REQUIRE(r.equations.size() == 1);
+        INFO(text << "\n" << eomgen::test::describe(r.equations[0]));
+        CHECK(r.equations[0].verdict == Verdict::Agrees);
+        CHECK(r.equations[0].equation.find("\\pd") != std::string::npos);  // shown as the text writes it
+    }
+    // A slip inside a macro is still one.
+    CHECK(one_verdict(kPendulum, "$$\\pdv{L}{\\dot\\theta} = m l \\dot\\theta$$\n") == Verdict::Disagrees);
+}
+
+TEST_CASE("roles: a momentum set equal to a one-letter label names it with that letter for the rest of the section",
+          "[checker][roles]") {
+    const std::string text = "$$\n"
+                             "p_\\theta = L = \\pdv{L}{\\dot{\\theta}} = m l^2 \\dot{\\theta}, \\qquad\n"
+                             "\\dot{L} = \\pdv{L}{\\theta}\n"
+                             "$$\n";
+    const CheckReport r = eomgen::test::check_text(kPendulum, text);
+    REQUIRE(r.equations.size() == 4);
+    for (const EquationCheck& e : r.equations) INFO(eomgen::test::describe(e));
+    CHECK(r.equations[0].verdict == Verdict::NotComparable);
+    CHECK(r.equations[0].reason.find("a definition: the text names $p_\\theta$ $L$ here") == 0);
+    for (std::size_t k = 1; k < 4; ++k) {
+        INFO(eomgen::test::describe(r.equations[k]));
+        CHECK(r.equations[k].verdict == Verdict::Agrees);
+    }
+    CHECK(r.equations[1].compared_with == "$p_{\\theta}$");
+    CHECK(eomgen::test::has_note(r.equations[3], "reads $L$ as $p_\\theta$, as the text names it on line 2"));
+    // Without the naming, L = ∂L/∂θ̇ is wrong.
+    CHECK(one_verdict(kPendulum, "$$L = \\pdv{L}{\\dot{\\theta}}$$\n") == Verdict::Disagrees);
 }
