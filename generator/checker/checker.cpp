@@ -6,6 +6,7 @@
 #include "checker/coverage.hpp"
 
 #include "checker/additive_constant.hpp"
+#include "checker/amplitude_equations.hpp"
 #include "checker/equivalent_lagrangian.hpp"
 #include "checker/approximation.hpp"
 #include "checker/budget.hpp"
@@ -575,6 +576,34 @@ class Checker : public Comparisons {
         return motions_.check(a, b, c.sides[i].side->source, titles, *this, tol, r);
     }
     NormalModesCheck modes_;       ///< ω² and secular equations against the model's normal modes
+    AmplitudeEquations amplitudes_{model_, motion_};  ///< rows of (K − ω² M) A = 0 for a trial solution
+    std::vector<TrialSolution> trials_;               ///< `x_j = A_j e^{i\omega t}`, in file order
+    std::set<std::size_t> trial_links_;               ///< where the text sets one up (relation offsets)
+    void collect_trials(const std::vector<FullChain>& chains);
+    /// `\omega_3^2 = \frac{k}{M}…`: the squared frequencies the text states, where (relation offsets).
+    std::vector<std::pair<std::size_t, GiNaC::ex>> stated_frequencies_;
+    /// The squared frequency the text stated last before `at` in its section, if any.
+    std::optional<GiNaC::ex> stated_frequency(std::size_t at) const {
+        std::optional<GiNaC::ex> last;
+        for (const auto& [from, w2] : stated_frequencies_)
+            if (from < at && std::none_of(d_.sections.begin(), d_.sections.end(), [&](const Section& s) {
+                    return s.begin > from && s.begin <= at;  // a heading between them
+                }))
+                last = w2;
+        return last;
+    }
+    static std::vector<std::string> written_names(const PSide& a, const PSide& b) {
+        std::vector<std::string> out;
+        for (const PSide* s : {&a, &b})
+            for (const NameUse& u : s->side->uses) out.push_back(u.name);
+        return out;
+    }
+    const TrialSolution* trial_at(std::size_t at) const {
+        const TrialSolution* found = nullptr;
+        for (const TrialSolution& t : trials_)
+            if (t.from < at && at < t.until) found = &t;
+        return found;
+    }
     ParameterValues parameter_values_;  ///< for the numbers the text works out
     /// The conditions the text states (`\theta = \pi/2`: the point it considers), each holding to the end of its
     /// paragraph: the links after it there are compared at that point.
@@ -1547,6 +1576,52 @@ void Checker::collect_namings(const std::vector<FullChain>& chains) {
         }
 }
 
+void Checker::collect_trials(const std::vector<FullChain>& chains) {
+    for (const FullChain& c : chains)
+        for (std::size_t k = 0; k + 1 < c.sides.size(); ++k) {
+            const Side &x = *c.sides[k].side, &y = *c.sides[k + 1].side;
+            if (!x.ok || !y.ok || c.relations[k] != Relation::Equal) continue;
+            // `\omega_3^2 = …`, `\omega_2 = \sqrt{k/M}`: a frequency of the text set to a value in the parameters.
+            for (const auto& [f, v] : {std::pair(&x, &y), std::pair(&y, &x)}) {
+                GiNaC::ex base = f->value;
+                int power = 1;
+                if (GiNaC::is_a<GiNaC::power>(base) && base.op(1).is_equal(2)) {
+                    base = base.op(0);
+                    power = 2;
+                }
+                const FreeName* fn = ctx_.free_name_of(base);
+                if (!fn || fn->name.rfind("\\omega", 0) != 0) continue;
+                ExSet in_value;
+                bool constant = !depends_on_state(v->value) && !has_acceleration(v->value) && !v->value.has(model_.t);
+                std::vector<GiNaC::ex> stack{v->value};
+                while (constant && !stack.empty()) {
+                    const GiNaC::ex e = stack.back();
+                    stack.pop_back();
+                    if (ctx_.free_name_of(e)) constant = false;
+                    for (std::size_t q = 0; q < e.nops(); ++q) stack.push_back(e.op(q));
+                }
+                if (constant)
+                    stated_frequencies_.push_back({c.relation_offsets[k], power == 2 ? v->value : v->value * v->value});
+            }
+            std::optional<TrialSolution> t = trial_solution(x.value, y.value, model_, ctx_);
+            if (!t) continue;
+            t->from = c.relation_offsets[k];
+            t->until = c.section >= 0 ? d_.sections[std::size_t(c.section)].end : d_.text.size();
+            t->line = d_.position(t->from).line;
+            t->source = x.source + " = " + y.source;
+            // `x_1 = A_1 \cos\omega t`, then `x_2 = A_2 \cos\omega t`: one trial solution, its amplitudes gathered.
+            if (!trials_.empty() && trials_.back().omega.is_equal(t->omega) && trials_.back().until == t->until) {
+                TrialSolution& last = trials_.back();
+                for (std::size_t q = 0; q < t->amplitude.size(); ++q)
+                    if (last.amplitude[q].is_zero()) last.amplitude[q] = t->amplitude[q];
+                trial_links_.insert(t->from);
+                continue;
+            }
+            trial_links_.insert(t->from);
+            trials_.push_back(*t);
+        }
+}
+
 void Checker::collect_definitions(const std::vector<FullChain>& chains) {
     // After a condition (`s = \frac{1}{2h}`: "halfway along the first turn"), a value free of the state that the
     // paragraph gives a name (`y = r\cos\pi`) is that name's value at the point, not its definition: it holds
@@ -1645,6 +1720,11 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     r.equation = (L.side->source.empty() ? std::string("\\ldots") : L.side->source) + sign +
                  (R.side->source.empty() ? std::string("\\ldots") : R.side->source);
     if (bridge) r.notes.push_back("compared across the step(s) between them that cannot be compared");
+    if (trial_links_.count(rel_at) && j == i + 1) {
+        r.reason = "a trial solution: not judged; the equations for its amplitudes that follow are compared with the "
+                   "rows of $(K - \\omega^2 M) A = 0$ about rest";
+        return r;
+    }
     for (const Naming& n : namings_)
         if (n.from == rel_at && j == i + 1) {
             r.reason = "a definition: the text names $" + n.quantity_latex + "$ $" + n.letter_latex +
@@ -1832,7 +1912,8 @@ void Checker::verify_correction(const FullChain& c, std::size_t j, EquationCheck
             f.display = c.display;
             for (const Side& s : ch.sides) f.sides.push_back({&s, at});
             f.relations = ch.relations;
-            for (std::size_t off : ch.relation_offsets) f.relation_offsets.push_back(at + off);
+            // Where the slip is: what holds there (definitions, conditions, a trial solution) holds for the correction.
+            f.relation_offsets.assign(ch.relation_offsets.size(), at);
             return safe_check_link(f, a, b, false);
         });
     } catch (const std::exception& e) {
@@ -2009,6 +2090,12 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
                                              }()
                                        : "";
 
+    // The amplitudes of a trial solution (`x_j = A_j e^{i\omega t}`): rows of (K − ω² M) A = 0.
+    if (const TrialSolution* trial = trial_at(c.relation_offsets[j - 1]);
+        trial && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
+        amplitudes_.check(a.value, b.value, L.side->source, R.side->source, written_names(L, R), *trial,
+                          stated_frequency(c.relation_offsets[j - 1]), ctx_, *this, r))
+        return;
     // Free names: an identity still agrees, anything else cannot be judged.
     if (!a.comparable() || !b.comparable()) {
         // Vectors are not scalars: a×b = −b×a, so only identities in scalar unknowns are claimed.
@@ -2604,6 +2691,7 @@ CheckReport Checker::run() {
         if (row_selected(d_, at, selected, whole)) report.problems.push_back({d_.position(tp.offset), tp.message});
     }
     collect_namings(chains);
+    collect_trials(chains);
     collect_definitions(chains);
     for (const FullChain& c : chains)  // stated vectors and eigen-equations, used before and after their line
         for (std::size_t k = 0; k + 1 < c.sides.size(); ++k)

@@ -1,0 +1,110 @@
+/** @file exam_amplitudes.cpp  A trial solution and the equations for its amplitudes (amplitude_equations.hpp),
+ * on the triatomic molecule (linear, springs with rest lengths) and the double pendulum (about rest). */
+#include "checked_text.hpp"
+
+#include <catch2/catch.hpp>
+
+using eomgen::checker::CheckReport;
+using eomgen::checker::EquationCheck;
+using eomgen::checker::Verdict;
+
+namespace {
+
+const char* kTriatomic = "tests/checker/models/triatomic.toml";  // x1, x2, x3; masses m, M, m; springs k
+const char* kDouble = "tests/checker/models/double_pendulum_equal.toml";
+
+const std::string kAnsatz = "Try $x_j = A_j e^{i \\omega t}$.\n\n";
+
+/// The verdict on the text's last equation (after its trial solution), kept with its report.
+EquationCheck last(const CheckReport& r) {
+    REQUIRE(!r.equations.empty());
+    return r.equations.back();
+}
+
+}  // namespace
+
+TEST_CASE("amplitudes: the rows of (K - w^2 M) A = 0 agree, with the frequency free and the factors in t",
+          "[checker][amplitudes]") {
+    const CheckReport r = eomgen::test::check_text(
+        kTriatomic, kAnsatz + "$$\n\\begin{aligned}\n"
+                              "m(-\\omega^2 A_1 e^{i\\omega t}) &= k (A_2 e^{i\\omega t} - A_1 e^{i\\omega t}) \\\\\n"
+                              "(-M \\omega^2 + 2k)A_2 - kA_1 - kA_3 &= 0 \\\\\n"
+                              "\\left(k - m\\omega^2\\right) A_3 &= k A_2\n"
+                              "\\end{aligned}\n$$\n");
+    REQUIRE(r.equations.size() == 4);
+    CHECK(r.equations[0].reason.find("a trial solution") == 0);
+    for (std::size_t k = 1; k < 4; ++k) {
+        INFO(eomgen::test::describe(r.equations[k]));
+        CHECK(r.equations[k].verdict == Verdict::Agrees);
+        CHECK(r.equations[k].compared_with == "the amplitude equation for $x_{" + std::to_string(k) +
+                                                  "}$ of the trial solution of line 1");
+    }
+}
+
+TEST_CASE("amplitudes: a wrong coefficient, a wrong power and a term without its amplitude are named",
+          "[checker][amplitudes]") {
+    const EquationCheck sign = last(eomgen::test::check_text(kTriatomic, kAnsatz + "$$kA_1 + (-M \\omega^2 + 2k)A_2 - kA_3 = 0$$\n"))
+    ;
+    INFO(eomgen::test::describe(sign));
+    CHECK(sign.verdict == Verdict::Disagrees);
+    REQUIRE(sign.wrong_terms.size() == 1);
+    CHECK(sign.wrong_terms[0] == "the coefficient of $A_{1}$ should be $-k$, not $k$");
+    const EquationCheck cube =
+        last(eomgen::test::check_text(kTriatomic, kAnsatz + "$$m(-\\omega^3 A_3) = -k (A_3 - A_2)$$\n"));
+    INFO(eomgen::test::describe(cube));
+    CHECK(cube.verdict == Verdict::Disagrees);
+    CHECK(cube.compared_with.find("the amplitude equation for $x_{3}$") == 0);
+    const EquationCheck lost =
+        last(eomgen::test::check_text(kTriatomic, kAnsatz + "$$0 \\cdot A_1 - kA_2 + (-m \\omega^2 + k) = 0$$\n"));
+    INFO(eomgen::test::describe(lost));
+    CHECK(lost.verdict == Verdict::Disagrees);
+    CHECK(lost.compared_with.find("the amplitude equation for $x_{3}$") == 0);  // A_1 is written (0 · A_1)
+    REQUIRE(!lost.wrong_terms.empty());
+    CHECK(lost.wrong_terms[0].find("without its amplitude $A_{3}$") != std::string::npos);
+}
+
+TEST_CASE("amplitudes: at the normal frequency the text states, rows and their combinations agree and a slip is "
+          "corrected in the author's form",
+          "[checker][amplitudes]") {
+    // ω² = k/m: the outer masses opposite, the middle one at rest.
+    const std::string text = kAnsatz + "For the second mode put $\\omega_2^2 = \\frac{k}{m}$ into the rows:\n"
+                                       "$$\n\\begin{aligned}\n"
+                                       "-kA_2 &= 0 \\\\\n"
+                                       "-kA_1 + k\\left(2 - \\frac{M}{m}\\right)A_2 - kA_3 &= 0\n"
+                                       "\\end{aligned}\n$$\n"
+                                       "so $A_1 = -A_3$ and $A_1 = A_3$.\n";
+    const CheckReport r = eomgen::test::check_text(kTriatomic, text);
+    std::vector<const EquationCheck*> amplitude;
+    for (const EquationCheck& e : r.equations)
+        if (e.compared_with.find("of the trial solution of line 1 at") != std::string::npos) amplitude.push_back(&e);
+    REQUIRE(amplitude.size() == 4);
+    for (std::size_t k = 0; k < 3; ++k) {
+        INFO(eomgen::test::describe(*amplitude[k]));
+        CHECK(amplitude[k]->verdict == Verdict::Agrees);
+        CHECK(amplitude[k]->compared_with.find("at the normal frequency $\\omega^2 = \\frac{k}{m}$") != std::string::npos);
+    }
+    const EquationCheck& wrong = *amplitude[3];
+    INFO(eomgen::test::describe(wrong));
+    CHECK(wrong.verdict == Verdict::Disagrees);
+    CHECK(wrong.corrected == "A_1 = -A_{3}");
+    REQUIRE(wrong.wrong_terms.size() == 1);
+    CHECK(wrong.wrong_terms[0] == "in this mode $A_{1}$ is $-1$ times $A_{3}$, not $1$ times");
+}
+
+TEST_CASE("amplitudes: about rest, a nonlinear model's small oscillations", "[checker][amplitudes]") {
+    const std::string ansatz = "Let $\\theta_1 = A_1 \\cos\\omega t$ and $\\theta_2 = A_2 \\cos\\omega t$.\n\n";
+    // Linearized: 2 m l² θ̈₁ + m l² θ̈₂ + 2 m g l θ₁ = 0, m l² θ̈₁ + m l² θ̈₂ + m g l θ₂ = 0.
+    const EquationCheck right =
+        last(eomgen::test::check_text(kDouble, ansatz + "$$(2g - 2l\\omega^2) A_1 - l \\omega^2 A_2 = 0$$\n"));
+    INFO(eomgen::test::describe(right));
+    CHECK(right.verdict == Verdict::Agrees);
+    const EquationCheck wrong =
+        last(eomgen::test::check_text(kDouble, ansatz + "$$(g - l\\omega^2) A_2 - 2 l \\omega^2 A_1 = 0$$\n"));
+    INFO(eomgen::test::describe(wrong));
+    CHECK(wrong.verdict == Verdict::Disagrees);
+    CHECK(wrong.compared_with.find("the amplitude equation for $\\theta_2$") == 0);
+    // Without a trial solution the amplitudes are unknown names, as before.
+    const EquationCheck none =
+        last(eomgen::test::check_text(kDouble, "$$(2g - 2l\\omega^2) A_1 - l \\omega^2 A_2 = 0$$\n"));
+    CHECK(none.verdict == Verdict::NotComparable);
+}
