@@ -12,6 +12,7 @@
 #include "checker/budget.hpp"
 #include "checker/correction_check.hpp"
 #include "checker/definitions.hpp"
+#include "checker/discourse.hpp"
 #include "checker/hamiltonian_check.hpp"
 #include "checker/labels.hpp"
 #include "checker/meanings.hpp"
@@ -389,21 +390,6 @@ class Checker : public Comparisons {
             if (e.has(c.qd)) return true;
         return false;
     }
-    /// `s = \frac{1}{2h}`, `\dot\theta = 0`: a coordinate or a velocity alone set to a value free of the state
-    /// and of t — a condition of a particular point or motion, not an equation of the motion (an acceleration so
-    /// set is one: free fall). The coordinate's LaTeX, or "" when the link is not one.
-    std::string condition_of(const GiNaC::ex& a, const GiNaC::ex& b, GiNaC::ex* symbol = nullptr,
-                             GiNaC::ex* value = nullptr) const {
-        for (const auto& [x, y] : {std::pair(a, b), std::pair(b, a)})
-            for (const Coordinate& c : model_.coordinates)
-                if ((x.is_equal(c.q) || x.is_equal(c.qd)) && !depends_on_state(y) && !has_acceleration(y) &&
-                    !y.has(model_.t)) {
-                    if (symbol) *symbol = x;
-                    if (value) *value = y;
-                    return x.is_equal(c.q) ? c.latex : "\\dot{" + c.latex + "}";
-                }
-        return "";
-    }
     bool depends_on_state(const GiNaC::ex& e) const {
         for (const Coordinate& c : model_.coordinates)
             if (e.has(c.q) || e.has(c.qd)) return true;
@@ -577,52 +563,15 @@ class Checker : public Comparisons {
     }
     NormalModesCheck modes_;       ///< ω² and secular equations against the model's normal modes
     AmplitudeEquations amplitudes_{model_, motion_};  ///< rows of (K − ω² M) A = 0 for a trial solution
-    std::vector<TrialSolution> trials_;               ///< `x_j = A_j e^{i\omega t}`, in file order
-    std::set<std::size_t> trial_links_;               ///< where the text sets one up (relation offsets)
-    void collect_trials(const std::vector<FullChain>& chains);
-    /// `\omega_3^2 = \frac{k}{M}…`: the squared frequencies the text states, where (relation offsets).
-    std::vector<std::pair<std::size_t, GiNaC::ex>> stated_frequencies_;
-    /// The squared frequency the text stated last before `at` in its section, if any.
-    std::optional<GiNaC::ex> stated_frequency(std::size_t at) const {
-        std::optional<GiNaC::ex> last;
-        for (const auto& [from, w2] : stated_frequencies_)
-            if (from < at && std::none_of(d_.sections.begin(), d_.sections.end(), [&](const Section& s) {
-                    return s.begin > from && s.begin <= at;  // a heading between them
-                }))
-                last = w2;
-        return last;
-    }
+    /// The rows' roles besides claims (discourse.hpp), read from all rows before any is compared.
+    std::optional<Discourse> discourse_;
+    ParameterValues parameter_values_;  ///< for the numbers the text works out
     static std::vector<std::string> written_names(const PSide& a, const PSide& b) {
         std::vector<std::string> out;
         for (const PSide* s : {&a, &b})
             for (const NameUse& u : s->side->uses) out.push_back(u.name);
         return out;
     }
-    const TrialSolution* trial_at(std::size_t at) const {
-        const TrialSolution* found = nullptr;
-        for (const TrialSolution& t : trials_)
-            if (t.from < at && at < t.until) found = &t;
-        return found;
-    }
-    ParameterValues parameter_values_;  ///< for the numbers the text works out
-    /// The conditions the text states (`\theta = \pi/2`: the point it considers), each holding to the end of its
-    /// paragraph: the links after it there are compared at that point.
-    struct Condition {
-        GiNaC::ex symbol, value;
-        std::size_t from, until;
-        int line;
-    };
-    std::vector<Condition> conditions_;
-    /// A letter the text gives another quantity's meaning (`p_\theta = L`), from the naming to its section's end.
-    struct Naming {
-        GiNaC::ex letter, quantity;
-        std::string letter_latex, quantity_latex;
-        std::size_t from, until;
-        int line;
-    };
-    std::vector<Naming> namings_;
-    GiNaC::ex renamed(const GiNaC::ex& e, std::size_t at, std::vector<std::string>& notes) const;
-    void collect_namings(const std::vector<FullChain>& chains);
     std::vector<std::string> chosen_notes_;  ///< "with $m_1 = 0$, the value the text chose on line 31" (check_link)
     std::set<std::size_t> at_a_point_;  ///< heads of definitions that hold at a point the text considers
     LinearAlgebra algebra_;             ///< arrays, tuples, eigen-equations: entry by entry
@@ -825,7 +774,7 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
     }
     for (const std::string& n : side.notes) p.notes.push_back(n);
     // A letter the text has given another quantity's meaning (`p_\theta = L`): that quantity, outside ∂·/∂·.
-    const GiNaC::ex value = renamed(side.value, s.base + side.begin, p.notes);
+    const GiNaC::ex value = discourse_ ? discourse_->renamed(side.value, s.base + side.begin, p.notes) : side.value;
     try {
         GiNaC::exmap subs;
         ExSet symbols;
@@ -1523,122 +1472,11 @@ int Checker::best_factor(const GiNaC::ex& text, const GiNaC::ex& truth, double t
 
 // ---------------------------------------------------------------------------------------------- checking
 
-namespace {
-
-/// e with `from` replaced by `to`, except inside ∂·/∂· (where a letter keeps the meaning the derivative gives it:
-/// ∂L/∂q̇ differentiates the Lagrangian whatever else the text calls L).
-GiNaC::ex replace_outside_partials(const GiNaC::ex& e, const GiNaC::ex& from, const GiNaC::ex& to) {
-    if (is_ex_the_function(e, pdiff)) return e;
-    if (e.is_equal(from)) return to;
-    if (e.nops() == 0) return e;
-    struct Each : GiNaC::map_function {
-        const GiNaC::ex &from, &to;
-        Each(const GiNaC::ex& f, const GiNaC::ex& t) : from(f), to(t) {}
-        GiNaC::ex operator()(const GiNaC::ex& x) override { return replace_outside_partials(x, from, to); }
-    } each(from, to);
-    return e.map(each);
-}
-
-}  // namespace
-
-GiNaC::ex Checker::renamed(const GiNaC::ex& e, std::size_t at, std::vector<std::string>& notes) const {
-    GiNaC::ex v = e;
-    for (const Naming& n : namings_)
-        if (n.from < at && at < n.until && v.has(n.letter)) {
-            const GiNaC::ex w = replace_outside_partials(v, n.letter, n.quantity);
-            if (w.is_equal(v)) continue;
-            v = w;
-            notes.push_back("reads $" + n.letter_latex + "$ as $" + n.quantity_latex + "$, as the text names it on line " +
-                            std::to_string(n.line));
-        }
-    return v;
-}
-
-void Checker::collect_namings(const std::vector<FullChain>& chains) {
-    // `p_\theta = L`: a momentum set equal to a one-letter label of another quantity names it with that letter
-    // (L the angular momentum about P) — two of eomgen's quantities equal as a claim is not what such a line says.
-    const std::vector<std::string> letters{"L", "H", "h", "E", "T", "V"};
-    for (const FullChain& c : chains)
-        for (std::size_t k = 0; k + 1 < c.sides.size(); ++k) {
-            const Side &x = *c.sides[k].side, &y = *c.sides[k + 1].side;
-            if (!x.ok || !y.ok || c.relations[k] != Relation::Equal) continue;
-            for (const auto& [q, l] : {std::pair(&x, &y), std::pair(&y, &x)}) {
-                if (!hamilton_.is_momentum(q->value) || !truth_.count(q->value)) continue;
-                for (const std::string& name : letters) {
-                    const auto it = ctx_.names.find(name);
-                    if (it == ctx_.names.end() || !l->value.is_equal(it->second) || !truth_.count(it->second)) continue;
-                    if (equal(truth_.at(q->value), truth_.at(it->second), 1e-9) == Tri::Yes) continue;
-                    const std::size_t until = c.section >= 0 ? d_.sections[std::size_t(c.section)].end : d_.text.size();
-                    namings_.push_back({it->second, q->value, name, q->source, c.relation_offsets[k], until,
-                                        d_.position(c.relation_offsets[k]).line});
-                }
-            }
-        }
-}
-
-void Checker::collect_trials(const std::vector<FullChain>& chains) {
-    for (const FullChain& c : chains)
-        for (std::size_t k = 0; k + 1 < c.sides.size(); ++k) {
-            const Side &x = *c.sides[k].side, &y = *c.sides[k + 1].side;
-            if (!x.ok || !y.ok || c.relations[k] != Relation::Equal) continue;
-            // `\omega_3^2 = …`, `\omega_2 = \sqrt{k/M}`: a frequency of the text set to a value in the parameters.
-            for (const auto& [f, v] : {std::pair(&x, &y), std::pair(&y, &x)}) {
-                GiNaC::ex base = f->value;
-                int power = 1;
-                if (GiNaC::is_a<GiNaC::power>(base) && base.op(1).is_equal(2)) {
-                    base = base.op(0);
-                    power = 2;
-                }
-                const FreeName* fn = ctx_.free_name_of(base);
-                if (!fn || fn->name.rfind("\\omega", 0) != 0) continue;
-                ExSet in_value;
-                bool constant = !depends_on_state(v->value) && !has_acceleration(v->value) && !v->value.has(model_.t);
-                std::vector<GiNaC::ex> stack{v->value};
-                while (constant && !stack.empty()) {
-                    const GiNaC::ex e = stack.back();
-                    stack.pop_back();
-                    if (ctx_.free_name_of(e)) constant = false;
-                    for (std::size_t q = 0; q < e.nops(); ++q) stack.push_back(e.op(q));
-                }
-                if (constant)
-                    stated_frequencies_.push_back({c.relation_offsets[k], power == 2 ? v->value : v->value * v->value});
-            }
-            std::optional<TrialSolution> t = trial_solution(x.value, y.value, model_, ctx_);
-            if (!t) continue;
-            t->from = c.relation_offsets[k];
-            t->until = c.section >= 0 ? d_.sections[std::size_t(c.section)].end : d_.text.size();
-            t->line = d_.position(t->from).line;
-            t->source = x.source + " = " + y.source;
-            // `x_1 = A_1 \cos\omega t`, then `x_2 = A_2 \cos\omega t`: one trial solution, its amplitudes gathered.
-            if (!trials_.empty() && trials_.back().omega.is_equal(t->omega) && trials_.back().until == t->until) {
-                TrialSolution& last = trials_.back();
-                for (std::size_t q = 0; q < t->amplitude.size(); ++q)
-                    if (last.amplitude[q].is_zero()) last.amplitude[q] = t->amplitude[q];
-                trial_links_.insert(t->from);
-                continue;
-            }
-            trial_links_.insert(t->from);
-            trials_.push_back(*t);
-        }
-}
-
 void Checker::collect_definitions(const std::vector<FullChain>& chains) {
     // After a condition (`s = \frac{1}{2h}`: "halfway along the first turn"), a value free of the state that the
     // paragraph gives a name (`y = r\cos\pi`) is that name's value at the point, not its definition: it holds
     // to the end of the paragraph only.
-    std::size_t condition_until = 0;
     for (const FullChain& c : chains) {
-        for (std::size_t k = 0; k + 1 < c.sides.size(); ++k) {
-            if (!c.sides[k].side->ok || !c.sides[k + 1].side->ok) continue;
-            const Prepared x = prepare(c.sides[k]), y = prepare(c.sides[k + 1]);
-            GiNaC::ex q, v;
-            if (x.comparable() && y.comparable() && !condition_of(x.value, y.value, &q, &v).empty()) {
-                const std::size_t end = d_.text.find("\n\n", c.relation_offsets[k]);
-                condition_until = end == std::string::npos ? d_.text.size() : end;
-                conditions_.push_back({q, v, c.relation_offsets[k], condition_until,
-                                       d_.position(c.relation_offsets[k]).line});
-            }
-        }
         if (c.sides.size() < 2 || !c.sides[0].side->ok) continue;
         const GiNaC::ex head = c.sides[0].side->value;
         const FreeName* f = ctx_.free_name_of(head);
@@ -1653,8 +1491,8 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
             if (!p.comparable() || !p.units.empty() || p.value.has(head)) continue;
             const std::size_t at = c.sides[k].base + c.sides[k].side->begin;
             std::size_t until = c.section >= 0 ? d_.sections[std::size_t(c.section)].end : std::string::npos;
-            if (at < condition_until && !depends_on_state(p.value)) {
-                until = std::min(until, condition_until);
+            if (const std::size_t point = discourse_->condition_paragraph(at); point > 0 && !depends_on_state(p.value)) {
+                until = std::min(until, point);
                 at_a_point_.insert(c.sides[0].base + c.sides[0].side->begin);
             }
             definitions_.add(head, f->name, p.value, at, d_.position(at).line, until, c.sides[k].side->source,
@@ -1720,18 +1558,17 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     r.equation = (L.side->source.empty() ? std::string("\\ldots") : L.side->source) + sign +
                  (R.side->source.empty() ? std::string("\\ldots") : R.side->source);
     if (bridge) r.notes.push_back("compared across the step(s) between them that cannot be compared");
-    if (trial_links_.count(rel_at) && j == i + 1) {
+    if (discourse_->sets_trial(rel_at) && j == i + 1) {
         r.reason = "a trial solution: not judged; the equations for its amplitudes that follow are compared with the "
                    "rows of $(K - \\omega^2 M) A = 0$ about rest";
         return r;
     }
-    for (const Naming& n : namings_)
-        if (n.from == rel_at && j == i + 1) {
-            r.reason = "a definition: the text names $" + n.quantity_latex + "$ $" + n.letter_latex +
-                       "$ here, and reads so to the end of its section (outside ∂/∂, where $" + n.letter_latex +
-                       "$ is still eomgen's)";
-            return r;
-        }
+    if (const Discourse::Naming* n = discourse_->naming_at(rel_at); n && j == i + 1) {
+        r.reason = "a definition: the text names $" + n->quantity_latex + "$ $" + n->letter_latex +
+                   "$ here, and reads so to the end of its section (outside ∂/∂, where $" + n->letter_latex +
+                   "$ is still eomgen's)";
+        return r;
+    }
     if (rel == Relation::Inequality) {
         r.reason = "an inequality or a relation other than equality is not compared";
         return r;
@@ -1772,15 +1609,11 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
                                     " = " + latex(exact_decimal(v)) + "$, the value the text chose on line " +
                                     origin.substr(origin.rfind(' ') + 1));
         }
-    std::map<GiNaC::ex, int, GiNaC::ex_is_less> stated_on;  // a condition's line; a later one replaces it
-    for (const Condition& k : conditions_)
-        if (k.from < rel_at && rel_at < k.until) {
-            if (!chosen.count(k.symbol) || !chosen[k.symbol].is_equal(k.value)) stated_on[k.symbol] = k.line;
-            chosen[k.symbol] = k.value;
-        }
-    for (const auto& [symbol, line] : stated_on)
-        chosen_notes_.push_back("at $" + latex(symbol) + " = " + latex(chosen[symbol]) +
-                                "$, the condition the text states on line " + std::to_string(line));
+    for (const auto& [symbol, stated] : discourse_->conditions_at(rel_at)) {
+        chosen[symbol] = stated.first;
+        chosen_notes_.push_back("at $" + latex(symbol) + " = " + latex(stated.first) +
+                                "$, the condition the text states on line " + std::to_string(stated.second));
+    }
     struct Unpin {
         Numbers& n;
         ~Unpin() { n.pin({}); }
@@ -2071,7 +1904,7 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     auto label_of = [&](const PSide& s) -> std::string {
         if (!s.side->ok) return "";
         std::vector<std::string> unused;
-        auto it = label_what_.find(renamed(s.side->value, s.base + s.side->begin, unused));
+        auto it = label_what_.find(discourse_->renamed(s.side->value, s.base + s.side->begin, unused));
         return it == label_what_.end() ? "" : it->second;
     };
     const std::string ll = label_of(L), rl = label_of(R);
@@ -2091,10 +1924,10 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
                                        : "";
 
     // The amplitudes of a trial solution (`x_j = A_j e^{i\omega t}`): rows of (K − ω² M) A = 0.
-    if (const TrialSolution* trial = trial_at(c.relation_offsets[j - 1]);
+    if (const TrialSolution* trial = discourse_->trial_at(c.relation_offsets[j - 1]);
         trial && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
         amplitudes_.check(a.value, b.value, L.side->source, R.side->source, written_names(L, R), *trial,
-                          stated_frequency(c.relation_offsets[j - 1]), ctx_, *this, r))
+                          discourse_->stated_frequency(c.relation_offsets[j - 1]), ctx_, *this, r))
         return;
     // Free names: an identity still agrees, anything else cannot be judged.
     if (!a.comparable() || !b.comparable()) {
@@ -2152,7 +1985,7 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     // A parameter the text set for this paragraph (`m_1 = 0`): the text's sides take it as eomgen's equations do
     // (the sample points hold it, Numbers::pin).
     // A condition stated again (`\theta = 0` at θ = 0) is not an identity: it is judged as the condition it is.
-    if (!numbers_.pinned().empty() && !condition_of(a.value, b.value).empty()) numbers_.pin({});
+    if (!numbers_.pinned().empty() && !condition_of(a.value, b.value, model_).empty()) numbers_.pin({});
     if (!numbers_.pinned().empty()) {
         r.notes.insert(r.notes.end(), chosen_notes_.begin(), chosen_notes_.end());
         a.value = subs_unless_pole(a.value, numbers_.pinned()).value_or(a.value);
@@ -2330,7 +2163,7 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         }
     }
-    if (const std::string q = condition_of(a.value, b.value); !q.empty()) {
+    if (const std::string q = condition_of(a.value, b.value, model_); !q.empty()) {
         const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
         r.reason = cue.empty() ? "a condition: the point or motion the text considers, where " + m(q) +
                                      " takes this value (not an equation of the motion, so not judged)"
@@ -2690,8 +2523,26 @@ CheckReport Checker::run() {
         at.offset = tp.offset;
         if (row_selected(d_, at, selected, whole)) report.problems.push_back({d_.position(tp.offset), tp.message});
     }
-    collect_namings(chains);
-    collect_trials(chains);
+    {
+        std::vector<DiscourseLink> links;
+        for (const FullChain& c : chains)
+            for (std::size_t k = 0; k + 1 < c.sides.size(); ++k) {
+                const std::size_t at = c.relation_offsets[k];
+                const std::size_t blank = d_.text.find("\n\n", at);
+                links.push_back({c.sides[k].side, c.sides[k + 1].side, c.relations[k], at,
+                                 c.section >= 0 ? d_.sections[std::size_t(c.section)].end : d_.text.size(),
+                                 blank == std::string::npos ? d_.text.size() : blank,
+                                 c.sides[k].base + c.sides[k].side->begin});
+            }
+        LabelView labels;
+        labels.value = [this](const GiNaC::ex& x) -> std::optional<GiNaC::ex> {
+            const auto it = truth_.find(x);
+            return it == truth_.end() ? std::nullopt : std::optional<GiNaC::ex>(it->second);
+        };
+        labels.is_momentum = [this](const GiNaC::ex& x) { return hamilton_.is_momentum(x); };
+        labels.same = [this](const GiNaC::ex& x, const GiNaC::ex& y) { return equal(x, y, 1e-9) == Tri::Yes; };
+        discourse_.emplace(links, model_, ctx_, d_, labels);
+    }
     collect_definitions(chains);
     for (const FullChain& c : chains)  // stated vectors and eigen-equations, used before and after their line
         for (std::size_t k = 0; k + 1 < c.sides.size(); ++k)

@@ -1,0 +1,166 @@
+/** @file discourse.cpp  The conditions, namings, trial solutions and stated frequencies of a text. */
+#include "checker/discourse.hpp"
+
+#include <algorithm>
+#include <utility>
+
+namespace eomgen::checker {
+
+namespace {
+
+bool depends_on_state(const GiNaC::ex& e, const Model& model) {
+    for (const Coordinate& c : model.coordinates)
+        if (e.has(c.q) || e.has(c.qd) || e.has(c.qdd)) return true;
+    return false;
+}
+
+/// Whether e holds a name the text uses without a known meaning.
+bool has_free_name(const GiNaC::ex& e, const LatexContext& ctx) {
+    if (ctx.free_name_of(e)) return true;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (has_free_name(e.op(i), ctx)) return true;
+    return false;
+}
+
+/// e with `from` replaced by `to`, except inside ∂·/∂· (where a letter keeps the meaning the derivative gives it:
+/// ∂L/∂q̇ differentiates the Lagrangian whatever else the text calls L).
+GiNaC::ex replace_outside_partials(const GiNaC::ex& e, const GiNaC::ex& from, const GiNaC::ex& to) {
+    if (is_ex_the_function(e, pdiff)) return e;
+    if (e.is_equal(from)) return to;
+    if (e.nops() == 0) return e;
+    struct Each : GiNaC::map_function {
+        const GiNaC::ex &from, &to;
+        Each(const GiNaC::ex& f, const GiNaC::ex& t) : from(f), to(t) {}
+        GiNaC::ex operator()(const GiNaC::ex& x) override { return replace_outside_partials(x, from, to); }
+    } each(from, to);
+    return e.map(each);
+}
+
+/// Whether e holds a label (T, H, p_θ: its value depends on the state) or an operator left for the checker (∂, d/dt).
+bool has_label_or_operator(const GiNaC::ex& e, const LabelView& labels) {
+    if (is_ex_the_function(e, pdiff) || is_ex_the_function(e, ddt) || is_ex_the_function(e, pbracket)) return true;
+    if (GiNaC::is_a<GiNaC::symbol>(e)) return labels.value(e).has_value();
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (has_label_or_operator(e.op(i), labels)) return true;
+    return false;
+}
+
+}  // namespace
+
+std::string condition_of(const GiNaC::ex& a, const GiNaC::ex& b, const Model& model, GiNaC::ex* symbol,
+                         GiNaC::ex* value) {
+    for (const auto& [x, y] : {std::pair(a, b), std::pair(b, a)})
+        for (const Coordinate& c : model.coordinates)
+            if ((x.is_equal(c.q) || x.is_equal(c.qd)) && !depends_on_state(y, model) && !y.has(model.t)) {
+                if (symbol) *symbol = x;
+                if (value) *value = y;
+                return x.is_equal(c.q) ? c.latex : "\\dot{" + c.latex + "}";
+            }
+    return "";
+}
+
+Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model, LatexContext& ctx,
+                     const Derivation& d, const LabelView& labels) {
+    const std::vector<std::string> letters{"L", "H", "h", "E", "T", "V"};
+    for (const DiscourseLink& link : links) {
+        const Side &x = *link.left, &y = *link.right;
+        if (!x.ok || !y.ok || link.relation != Relation::Equal) continue;
+        const int line = d.position(link.at).line;
+        // A condition: `s = \frac{1}{2h}` "halfway along the first turn".
+        GiNaC::ex q, v;
+        if (!has_free_name(x.value, ctx) && !has_free_name(y.value, ctx) && !has_label_or_operator(x.value, labels) &&
+            !has_label_or_operator(y.value, labels) && !condition_of(x.value, y.value, model, &q, &v).empty())
+            conditions_.push_back({q, v, link.at, link.paragraph, line});
+        // `p_\theta = L`: a momentum set equal to a one-letter label of another quantity names it with that letter
+        // (L the angular momentum about P): two of eomgen's quantities equal as a claim is not what such a line says.
+        for (const auto& [p, l] : {std::pair(&x, &y), std::pair(&y, &x)}) {
+            if (!labels.is_momentum(p->value)) continue;
+            const std::optional<GiNaC::ex> pv = labels.value(p->value);
+            if (!pv) continue;
+            for (const std::string& name : letters) {
+                const auto it = ctx.names.find(name);
+                if (it == ctx.names.end() || !l->value.is_equal(it->second)) continue;
+                const std::optional<GiNaC::ex> lv = labels.value(it->second);
+                if (!lv || labels.same(*pv, *lv)) continue;
+                namings_.push_back({it->second, p->value, name, p->source, link.at, link.until, line});
+            }
+        }
+        // `\omega_3^2 = …`, `\omega_2 = \sqrt{k/M}`: a frequency of the text set to a value in the parameters.
+        for (const auto& [f, w] : {std::pair(&x, &y), std::pair(&y, &x)}) {
+            GiNaC::ex base = f->value;
+            const bool squared = GiNaC::is_a<GiNaC::power>(base) && base.op(1).is_equal(2);
+            if (squared) base = base.op(0);
+            const FreeName* fn = ctx.free_name_of(base);
+            if (!fn || fn->name.rfind("\\omega", 0) != 0) continue;
+            if (depends_on_state(w->value, model) || w->value.has(model.t) || has_free_name(w->value, ctx)) continue;
+            stated_.push_back({link.at, link.until, squared ? w->value : w->value * w->value});
+        }
+        // A trial solution; those of one coordinate each with one frequency are one.
+        std::optional<TrialSolution> t = trial_solution(x.value, y.value, model, ctx);
+        if (!t) continue;
+        t->from = link.at;
+        t->until = link.until;
+        t->line = line;
+        t->source = x.source + " = " + y.source;
+        trial_links_.insert(link.at);
+        if (!trials_.empty() && trials_.back().omega.is_equal(t->omega) && trials_.back().until == t->until) {
+            TrialSolution& last = trials_.back();
+            for (std::size_t k = 0; k < t->amplitude.size(); ++k)
+                if (last.amplitude[k].is_zero()) last.amplitude[k] = t->amplitude[k];
+            continue;
+        }
+        trials_.push_back(*t);
+    }
+}
+
+std::map<GiNaC::ex, std::pair<GiNaC::ex, int>, GiNaC::ex_is_less> Discourse::conditions_at(std::size_t at) const {
+    std::map<GiNaC::ex, std::pair<GiNaC::ex, int>, GiNaC::ex_is_less> out;
+    for (const Condition& k : conditions_)  // in file order: a later one replaces an earlier one
+        if (k.from < at && at < k.until) {
+            const auto it = out.find(k.symbol);
+            if (it == out.end() || !it->second.first.is_equal(k.value)) out[k.symbol] = {k.value, k.line};
+        }
+    return out;
+}
+
+std::size_t Discourse::condition_paragraph(std::size_t at) const {
+    std::size_t end = 0;
+    for (const Condition& k : conditions_)
+        if (k.from < at && at < k.until) end = std::max(end, k.until);
+    return end;
+}
+
+const Discourse::Naming* Discourse::naming_at(std::size_t at) const {
+    for (const Naming& n : namings_)
+        if (n.from == at) return &n;
+    return nullptr;
+}
+
+GiNaC::ex Discourse::renamed(const GiNaC::ex& e, std::size_t at, std::vector<std::string>& notes) const {
+    GiNaC::ex v = e;
+    for (const Naming& n : namings_)
+        if (n.from < at && at < n.until && v.has(n.letter)) {
+            const GiNaC::ex w = replace_outside_partials(v, n.letter, n.quantity);
+            if (w.is_equal(v)) continue;
+            v = w;
+            notes.push_back("reads $" + n.letter_latex + "$ as $" + n.quantity_latex +
+                            "$, as the text names it on line " + std::to_string(n.line));
+        }
+    return v;
+}
+
+const TrialSolution* Discourse::trial_at(std::size_t at) const {
+    const TrialSolution* found = nullptr;
+    for (const TrialSolution& t : trials_)
+        if (t.from < at && at < t.until) found = &t;
+    return found;
+}
+
+std::optional<GiNaC::ex> Discourse::stated_frequency(std::size_t at) const {
+    std::optional<GiNaC::ex> last;
+    for (const Stated& s : stated_)
+        if (s.at < at && at < s.until) last = s.omega2;
+    return last;
+}
+
+}  // namespace eomgen::checker
