@@ -610,6 +610,9 @@ void Checker::setup_names() {
     // Labels for eomgen's quantities, unless the model uses the letter for something of its own.
     add_label("T", eq_.T, "T");
     add_label("V", eq_.V, "V");
+    // U: the letter many texts use for the potential energy (a model's own U comes first). K for the kinetic
+    // energy is not read so: `KE` would be K times E.
+    add_label("U", eq_.V, "V");
     add_label("L", eq_.L, "L");
     add_label("\\mathcal{L}", eq_.L, "L");
     add_label("E", eq_.T + eq_.V, "E = T + V");
@@ -752,7 +755,12 @@ bool Checker::is_part(const GiNaC::ex& e, std::string* name, GiNaC::ex* whole) c
     const FreeName* f = ctx_.free_name_of(e);
     if (!f || f->kind != NameKind::Unknown) return false;
     const std::string& n = f->name;
-    if (n.size() < 4 || (n[0] != 'T' && n[0] != 'V') || n[1] != '_') return false;
+    if (n.size() < 4 || (n[0] != 'T' && n[0] != 'V' && n[0] != 'U') || n[1] != '_') return false;
+    // U_{1} is a part only where U is the potential energy (not a model's own name).
+    if (n[0] == 'U') {
+        const auto letter = ctx_.names.find(n.substr(0, 1));
+        if (letter == ctx_.names.end() || !truth_.count(letter->second)) return false;
+    }
     // V_{eff}, V_{\text{eff}}: the effective potential of a reduced problem, a quantity of its own, not a part of V.
     if (n.find("eff") != std::string::npos) return false;
     if (name) *name = n;

@@ -147,3 +147,11 @@ TEST_CASE("roles: a momentum set equal to a one-letter label names it with that 
     // Without the naming, L = ∂L/∂θ̇ is wrong.
     CHECK(one_verdict(kPendulum, "$$L = \\pdv{L}{\\dot{\\theta}}$$\n") == Verdict::Disagrees);
 }
+
+TEST_CASE("roles: U is the potential energy, as many texts write it; KE is not K times E", "[checker][roles]") {
+    CHECK(one_verdict(kPendulum, "$$\\mathcal{L} = T - U$$\n") == Verdict::Agrees);
+    CHECK(one_verdict(kPendulum, "$$U = -m g l \\cos\\theta$$\n") == Verdict::Agrees);
+    CHECK(one_verdict(kPendulum, "$$U = m g l \\cos\\theta$$\n") == Verdict::Disagrees);
+    // K is left alone: a spring constant as often as a kinetic energy, and KE would read as K·E.
+    CHECK(one_verdict(kPendulum, "$$KE = \\frac12 m l^2 \\dot\\theta^2 + m g l$$\n") == Verdict::NotComparable);
+}
