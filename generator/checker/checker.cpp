@@ -611,8 +611,10 @@ void Checker::setup_names() {
     add_label("T", eq_.T, "T");
     add_label("V", eq_.V, "V");
     // U: the letter many texts use for the potential energy (a model's own U comes first). K for the kinetic
-    // energy is not read so: `KE` would be K times E.
+    // energy is not read so (a spring constant as often); KE and PE, the blogs' abbreviations, are.
     add_label("U", eq_.V, "V");
+    add_label("KE", eq_.T, "T");
+    add_label("PE", eq_.V, "V");
     add_label("L", eq_.L, "L");
     add_label("\\mathcal{L}", eq_.L, "L");
     add_label("E", eq_.T + eq_.V, "E = T + V");

@@ -275,6 +275,15 @@ std::vector<Token> tokenize_text(std::string_view s) {
                 break;
             }
             if (bare) continue;
+            // `KE`, `PE`: the kinetic and potential energy as blogs and notes abbreviate them, a name (as
+            // `\mathrm{KE}` is), not K times E.
+            if ((s.compare(i, 2, "KE") == 0 || s.compare(i, 2, "PE") == 0) &&
+                (i == 0 || (!std::isalpha(static_cast<unsigned char>(s[i - 1])) && s[i - 1] != '\\')) &&
+                (i + 2 >= s.size() || !std::isalpha(static_cast<unsigned char>(s[i + 2])))) {
+                out.push_back({Tok::Word, "\\mathrm", i, 2, std::string(s.substr(i, 2)), false});
+                i += 2;
+                continue;
+            }
             out.push_back({Tok::Letter, std::string(1, char(c)), i, 1, "", false});
             ++i;
             continue;

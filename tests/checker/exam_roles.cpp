@@ -148,10 +148,14 @@ TEST_CASE("roles: a momentum set equal to a one-letter label names it with that 
     CHECK(one_verdict(kPendulum, "$$L = \\pdv{L}{\\dot{\\theta}}$$\n") == Verdict::Disagrees);
 }
 
-TEST_CASE("roles: U is the potential energy, as many texts write it; KE is not K times E", "[checker][roles]") {
+TEST_CASE("roles: U is the potential energy, KE and PE the energies, as many texts write them", "[checker][roles]") {
     CHECK(one_verdict(kPendulum, "$$\\mathcal{L} = T - U$$\n") == Verdict::Agrees);
     CHECK(one_verdict(kPendulum, "$$U = -m g l \\cos\\theta$$\n") == Verdict::Agrees);
     CHECK(one_verdict(kPendulum, "$$U = m g l \\cos\\theta$$\n") == Verdict::Disagrees);
-    // K is left alone: a spring constant as often as a kinetic energy, and KE would read as K·E.
-    CHECK(one_verdict(kPendulum, "$$KE = \\frac12 m l^2 \\dot\\theta^2 + m g l$$\n") == Verdict::NotComparable);
+    CHECK(one_verdict(kPendulum, "$$KE = \\frac12 m l^2 \\dot\\theta^2$$\n") == Verdict::Agrees);
+    CHECK(one_verdict(kPendulum, "$$\\text{PE} = -m g l \\cos\\theta$$\n") == Verdict::Agrees);
+    CHECK(one_verdict(kPendulum, "$$PE = m g l$$\n") == Verdict::Disagrees);
+    // K alone is left unknown (a spring constant as often as a kinetic energy); K E with a space is a product.
+    CHECK(one_verdict(kPendulum, "$$K = \\frac12 m l^2 \\dot\\theta^2$$\n") == Verdict::NotComparable);
+    CHECK(one_verdict(kPendulum, "$$K E = \\frac12 m l^2 \\dot\\theta^2$$\n") == Verdict::NotComparable);
 }
