@@ -7,6 +7,7 @@
 
 #include "checker/additive_constant.hpp"
 #include "checker/amplitude_equations.hpp"
+#include "checker/claimed_solution.hpp"
 #include "checker/equivalent_lagrangian.hpp"
 #include "checker/approximation.hpp"
 #include "checker/budget.hpp"
@@ -1938,6 +1939,10 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         trial && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
         amplitudes_.check(a.value, b.value, L.side->source, R.side->source, written_names(L, R), *trial,
                           discourse_->stated_frequency(c.relation_offsets[j - 1]), ctx_, *this, r))
+        return;
+    // `s(t) = s_0\cos(\omega t)`: a solution the text claims for a coordinate, put into its equation of motion.
+    if (a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
+        check_claimed_solution(a.value, b.value, model_, eq_, motion_, ctx_, *this, r))
         return;
     // Free names: an identity still agrees, anything else cannot be judged.
     if (!a.comparable() || !b.comparable()) {

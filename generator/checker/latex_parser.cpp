@@ -761,8 +761,24 @@ class Parser {
         }
     }
 
+    /// `(t)` right after a name (`\theta(t)`, `\dot{x}_1(t)`, `s(t)`, `y'(t)`): the name as a function of time, the
+    /// name itself, not times t. Moves past the `)` when it is.
+    bool of_time() {
+        const std::size_t at = pos_;
+        if (at == 0 || at + 2 >= t_.size() || t_[at].text != "(" || t_[at + 1].text != "t" || t_[at + 2].text != ")")
+            return false;
+        const Token& before = t_[at - 1];
+        if (before.offset + before.length != t_[at].offset) return false;  // `m g (t)` is a product
+        const bool name_end = before.kind == Tok::Letter || (before.kind == Tok::Word && !is_function_name(before.text.substr(1))) ||
+                              (before.kind == Tok::Char && (before.text == "}" || before.text == "'"));
+        if (!name_end) return false;
+        pos_ += 3;
+        return true;
+    }
+
     GiNaC::ex bracket_group() {
         if (label_arguments()) return 1;
+        if (of_time()) return 1;
         const std::size_t at = pos_;
         const std::string open = t_[pos_].text;
         const std::string close = open == "(" ? ")" : "]";

@@ -1,0 +1,58 @@
+/** @file exam_solutions.cpp  A solution the text claims for a coordinate (claimed_solution.hpp), and `q(t)` read as
+ * the coordinate as a function of time, not q times t. */
+#include "checked_text.hpp"
+
+#include <catch2/catch.hpp>
+
+using eomgen::checker::CheckReport;
+using eomgen::checker::EquationCheck;
+using eomgen::checker::Verdict;
+
+namespace {
+
+const char* kPendulum = "tests/checker/models/plane_pendulum.toml";
+const char* kRod = "tests/checker/corpus/bead_rotating_rod/model.toml";  // s along a rod turned at phi = omega t
+
+EquationCheck one(const char* model, const std::string& text) {
+    const CheckReport r = eomgen::test::check_text(model, text);
+    REQUIRE(r.equations.size() == 1);
+    INFO(eomgen::test::describe(r.equations[0]));
+    return r.equations[0];
+}
+
+}  // namespace
+
+TEST_CASE("solutions: q(t) is the coordinate as a function of time", "[checker][solutions]") {
+    CHECK(one(kPendulum, "$$\\theta(t) = \\theta$$\n").verdict == Verdict::Agrees);
+    CHECK(one(kPendulum, "$$\\dot\\theta(t) = \\dot\\theta$$\n").verdict == Verdict::Agrees);
+    // Spaced, it stays a product.
+    CHECK(one(kPendulum, "$$\\theta (t) = \\theta$$\n").verdict == Verdict::NotComparable);
+}
+
+TEST_CASE("solutions: a claimed solution is put into the equation of motion, with the constraints that fix the "
+          "other coordinates in time",
+          "[checker][solutions]") {
+    // s'' = ω² s − g sin ωt on the rod: s_0 cos ωt is no solution for any s_0.
+    const EquationCheck wrong = one(kRod, "$$s(t) = s_0 \\cos(\\omega t)$$\n");
+    CHECK(wrong.verdict == Verdict::Disagrees);
+    CHECK(wrong.compared_with == "the equation of motion for $s$ on the constraints, with this as its solution");
+    REQUIRE(wrong.wrong_terms.size() == 1);
+    CHECK(wrong.wrong_terms[0].find("it is not a solution") != std::string::npos);
+    // s_0 cosh ωt + g/(2ω²) sin ωt is one.
+    const EquationCheck right =
+        one(kRod, "$$s(t) = s_0 \\cosh(\\omega t) + \\frac{g}{2\\omega^2}\\sin(\\omega t)$$\n");
+    CHECK(right.verdict == Verdict::Agrees);
+    CHECK(right.reason == "it solves the equation of motion for $s$ at every $t$");
+}
+
+TEST_CASE("solutions: a small oscillation holds to first order, and a name inside the function of t is not judged",
+          "[checker][solutions]") {
+    const EquationCheck small =
+        one(kPendulum, "$$\\theta(t) = A \\cos\\left(\\sqrt{\\frac{g}{l}}\\, t\\right)$$\n");
+    CHECK(small.verdict == Verdict::Agrees);
+    CHECK(small.reason.find("to first order") != std::string::npos);
+    const EquationCheck wrong = one(kPendulum, "$$\\theta(t) = A \\cos\\left(\\frac{g}{l} t\\right)$$\n");
+    CHECK(wrong.verdict == Verdict::Disagrees);
+    // Ω unknown: the right Ω would make it one.
+    CHECK(one(kPendulum, "$$\\theta(t) = A \\cos(\\Omega t)$$\n").verdict == Verdict::NotComparable);
+}
