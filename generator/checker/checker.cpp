@@ -1659,6 +1659,11 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
                                         says_total_derivative_dropped(d_, rel_at), alt))
             return alt;
         r.notes = alt.notes;
+        // L = L_cm + L_rel: the text's L of the coordinates it keeps (a two-body problem's relative motion).
+        const bool a_is_L = equal(a.value, eq_.L, 1e-9) == Tri::Yes, b_is_L = equal(b.value, eq_.L, 1e-9) == Tri::Yes;
+        if (a_is_L != b_is_L &&
+            check_separated_lagrangian(a_is_L ? b.value : a.value, eq_.L, model_, *this, alt))
+            return alt;
     }
     // ∂H/∂θ after the text wrote H in velocities: the reading it set up (at fixed θ̇) when Hamilton's disagrees.
     if (r.verdict == Verdict::Disagrees && velocity_h_line_ > 0 && rel_at > velocity_h_at_ &&

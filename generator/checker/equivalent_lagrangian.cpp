@@ -17,6 +17,42 @@ bool says_total_derivative_dropped(const Derivation& d, std::size_t offset) {
     return false;
 }
 
+bool check_separated_lagrangian(const GiNaC::ex& text_L, const GiNaC::ex& model_L, const Model& model,
+                                Comparisons& cmp, EquationCheck& r) {
+    try {
+        const GiNaC::ex D = (model_L - text_L).expand();
+        if (cmp.same(D, 0, 1e-9)) return false;
+        std::vector<std::size_t> left_out, kept;
+        for (std::size_t k = 0; k < model.dof(); ++k) {
+            const Coordinate& c = model.coordinates[k];
+            const bool in_D = D.has(c.q) || D.has(c.qd), in_text = text_L.has(c.q) || text_L.has(c.qd);
+            if (in_D && in_text) return false;  // coupled through this coordinate
+            if (D.has(c.qdd) || text_L.has(c.qdd)) return false;
+            (in_D ? left_out : kept).push_back(k);
+        }
+        if (left_out.empty() || kept.empty() || D.has(model.t)) return false;
+        // Coordinates in neither: they must be in neither's equations either (a text may not name a cyclic one).
+        for (std::size_t k : kept)
+            if (!text_L.has(model.coordinates[k].q) && !text_L.has(model.coordinates[k].qd)) return false;
+        auto names = [&](const std::vector<std::size_t>& ks) {
+            std::string s;
+            for (std::size_t i = 0; i < ks.size(); ++i)
+                s += (i ? ", $" : "$") + model.coordinates[ks[i]].latex + "$";
+            return s;
+        };
+        r.verdict = Verdict::Agrees;
+        r.compared_with = "$L$";
+        r.reason = "the Lagrangian of " + names(kept) + " alone: eomgen's L separates, and the part in " +
+                   names(left_out) + " is left out ($" + cmp.latex(D) + "$)";
+        r.difference.clear();
+        r.wrong_terms.clear();
+        r.corrected.clear();
+        return true;
+    } catch (...) {
+        return false;
+    }
+}
+
 bool check_equivalent_lagrangian(const GiNaC::ex& text_L, const GiNaC::ex& model_L, const Model& model,
                                  Comparisons& cmp, double tol, bool text_drops_it, EquationCheck& r) {
     try {

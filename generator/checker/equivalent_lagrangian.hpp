@@ -22,6 +22,15 @@ namespace eomgen::checker {
 bool check_equivalent_lagrangian(const GiNaC::ex& text_L, const GiNaC::ex& model_L, const Model& model,
                                  Comparisons& cmp, double tol, bool text_drops_it, EquationCheck& r);
 
+/**
+ * When eomgen's L is the text's L plus a part D in coordinates the text's L does not hold (L = L_cm(Ẋ, Ẏ) +
+ * L_rel(r, θ, ṙ, θ̇): the centre of mass of a two-body problem), and D holds none of the others, the text writes the
+ * Lagrangian of the coordinates it keeps, which give the same equations for them: agrees ("the Lagrangian of $r$,
+ * $\theta$ alone: eomgen's L separates, and the part in $X$, $Y$ is left out ($D$)"). Returns whether r was set.
+ */
+bool check_separated_lagrangian(const GiNaC::ex& text_L, const GiNaC::ex& model_L, const Model& model,
+                                Comparisons& cmp, EquationCheck& r);
+
 /// True when the sentences that lead into the math at `offset` (the last three of its paragraph's prose) say that
 /// a total time derivative is dropped: "total (time) derivative", "drop", "omit", "discard", "equivalent
 /// Lagrangian", "gauge".

@@ -60,9 +60,10 @@ TEST_CASE("definitions: a later definition of the same name applies from its pla
 }
 
 TEST_CASE("definitions: an unknown symbol is never differentiated to 0", "[checker][definitions]") {
-    // Before: ∂U/∂θ was 0 (U a constant), so "∂U/∂θ = 0" agreed and the right line disagreed.
-    const auto r = eomgen::test::check_text(kSpherical, "$$\\frac{\\partial U}{\\partial \\theta} = m g l \\sin\\theta$$\n"
-                                                        "$$\\frac{\\partial U}{\\partial \\theta} = 0$$\n"
+    // Before: ∂W/∂θ was 0 (W a constant), so "∂W/∂θ = 0" agreed and the right line disagreed. (U is read as
+    // the potential energy now.)
+    const auto r = eomgen::test::check_text(kSpherical, "$$\\frac{\\partial W}{\\partial \\theta} = m g l \\sin\\theta$$\n"
+                                                        "$$\\frac{\\partial W}{\\partial \\theta} = 0$$\n"
                                                         "$$\\frac{d}{dt}\\left(I_0 \\dot\\phi\\right) = 0$$\n"
                                                         "$$\\frac{\\partial L}{\\partial x} = 0$$\n"
                                                         "$$\\frac{d}{dt}\\left(\\text{const}\\right) = 0$$\n");
@@ -71,8 +72,8 @@ TEST_CASE("definitions: an unknown symbol is never differentiated to 0", "[check
         INFO(describe(r.equations[k]));
         CHECK(r.equations[k].verdict == Verdict::NotComparable);
     }
-    CHECK(r.equations[0].reason.find("partial derivative of $U$ (1:") != std::string::npos);
-    CHECK(r.equations[1].reason.find("$U$") != std::string::npos);
+    CHECK(r.equations[0].reason.find("partial derivative of $W$ (1:") != std::string::npos);
+    CHECK(r.equations[1].reason.find("$W$") != std::string::npos);
     CHECK(r.equations[2].reason.find("time derivative of $I_{0}$") != std::string::npos);
     CHECK(r.equations[3].reason.find("with respect to $x$") != std::string::npos);
     // An additive constant is a constant.

@@ -159,3 +159,24 @@ TEST_CASE("roles: U is the potential energy, KE and PE the energies, as many tex
     CHECK(one_verdict(kPendulum, "$$K = \\frac12 m l^2 \\dot\\theta^2$$\n") == Verdict::NotComparable);
     CHECK(one_verdict(kPendulum, "$$K E = \\frac12 m l^2 \\dot\\theta^2$$\n") == Verdict::NotComparable);
 }
+
+TEST_CASE("roles: the Lagrangian of the coordinates a text keeps, when eomgen's separates (a two-body problem's "
+          "relative motion)",
+          "[checker][roles]") {
+    const char* two_body = "tests/checker/corpus/central_two_body_one_body/model.toml";
+    const EquationCheck rel = [&] {
+        const CheckReport r = eomgen::test::check_text(
+            two_body, "$$L = \\frac{1}{2}\\frac{m_1 m_2}{m_1 + m_2}(\\dot{r}^{2} + r^{2}\\dot{\\theta}^{2}) + \\frac{k}{r}$$\n");
+        REQUIRE(r.equations.size() == 1);
+        return r.equations[0];
+    }();
+    INFO(eomgen::test::describe(rel));
+    CHECK(rel.verdict == Verdict::Agrees);
+    CHECK(rel.reason.find("the Lagrangian of $r$, $\\theta$ alone: eomgen's L separates, and the part in $X$, $Y$") == 0);
+    // A slip in the part it keeps is still one.
+    CHECK(one_verdict(two_body, "$$L = \\frac{1}{2}\\frac{m_1 m_2}{m_1 + m_2}(\\dot{r}^{2} + r\\dot{\\theta}^{2}) + "
+                                "\\frac{k}{r}$$\n") == Verdict::Disagrees);
+    // A double pendulum's L without θ₂'s own terms is no such part: θ₂ is coupled to θ₁.
+    CHECK(one_verdict("tests/checker/models/double_pendulum_equal.toml",
+                      "$$L = m l^2 \\dot\\theta_1^2 + 2 m g l \\cos\\theta_1$$\n") == Verdict::Disagrees);
+}
