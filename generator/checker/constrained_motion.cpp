@@ -27,6 +27,33 @@ std::optional<bool> holds_on_constrained_motion(const GiNaC::ex& r, const Model&
             DoubleEvaluator ev(v);
             return ev(e);
         };
+        // q moved onto the holonomic constraints g(q, t) = 0 (ρ² = a z), by Gauss–Newton steps of least change: the
+        // equations of motion hold only there (ż φ̇ + z φ̈ = 0 is ρ² φ̈ + 2ρρ̇φ̇ = 0 only where ρ² = a z).
+        std::vector<std::size_t> holonomic;
+        for (std::size_t k = 0; k < m; ++k)
+            if (!eq.constraints[k].position.is_zero()) holonomic.push_back(k);
+        for (int step = 0; step < 30 && !holonomic.empty(); ++step) {
+            const Eigen::Index h = Eigen::Index(holonomic.size());
+            Eigen::MatrixXd G(h, Eigen::Index(n));
+            Eigen::VectorXd g(h);
+            for (Eigen::Index k = 0; k < h; ++k) {
+                const ConstraintEquations& c = eq.constraints[holonomic[std::size_t(k)]];
+                const auto gk = value(c.position);
+                if (!gk) return std::nullopt;
+                g[k] = *gk;
+                for (std::size_t i = 0; i < n; ++i) {
+                    const auto a = value(c.jacobian[i]);
+                    if (!a) return std::nullopt;
+                    G(k, Eigen::Index(i)) = *a;
+                }
+            }
+            if (g.norm() < 1e-14) break;
+            Eigen::FullPivLU<Eigen::MatrixXd> lu_g(G * G.transpose());
+            if (!lu_g.isInvertible()) return std::nullopt;
+            const Eigen::VectorXd dq = G.transpose() * lu_g.solve(g);
+            for (std::size_t i = 0; i < n; ++i)
+                v[model.coordinates[i].q] = v[model.coordinates[i].q] - dq[Eigen::Index(i)];
+        }
         // A and b at q, t; q̇ moved onto A q̇ + b = 0 by the least change.
         Eigen::MatrixXd A(m, n);
         Eigen::VectorXd b(m);

@@ -180,3 +180,11 @@ TEST_CASE("roles: the Lagrangian of the coordinates a text keeps, when eomgen's 
     CHECK(one_verdict("tests/checker/models/double_pendulum_equal.toml",
                       "$$L = m l^2 \\dot\\theta_1^2 + 2 m g l \\cos\\theta_1$$\n") == Verdict::Disagrees);
 }
+
+TEST_CASE("roles: an equation that holds only on a holonomic constraint is checked at states on it",
+          "[checker][roles]") {
+    // x² + y² = a z in (ρ, z, φ): ρ² φ̈ + 2 ρ ρ̇ φ̇ = 0 is a (ż φ̇ + z φ̈) = 0 where ρ² = a z.
+    const char* paraboloid = "tests/checker/corpus/central_paraboloid_multiplier_mathse/model.toml";
+    CHECK(one_verdict(paraboloid, "$$\\dot z\\dot\\varphi+z\\ddot\\varphi=0$$\n") == Verdict::Agrees);
+    CHECK(one_verdict(paraboloid, "$$\\dot z\\dot\\varphi+2z\\ddot\\varphi=0$$\n") == Verdict::Disagrees);
+}
