@@ -668,6 +668,10 @@ void Checker::setup_names() {
         integrals_of_motion_.push_back(
             {c.value - c.value.subs(init),
              "the conservation of " + m(c.latex) + " with the model's initial state (" + c.reason + ")"});
+    // A holonomic constraint's name is its function g(q, t) (`\frac{\partial f}{\partial\varphi}` of the constraint f),
+    // unless the model uses the name for something else.
+    for (const ConstraintEquations& k : eq_.constraints)
+        if (!k.position.is_zero() && !ctx_.names.count(canonical_name(k.name))) add_name(k.name, k.position);
     // The constraints' multipliers: \lambda where there is one constraint, \lambda_{k} and \lambda_{name} (the model's
     // own names first); each takes a value per state, as it is a function of the state.
     for (std::size_t k = 0; k < eq_.constraints.size(); ++k) {
@@ -2062,6 +2066,19 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         r.reason = "could not be evaluated at enough points to decide";
         return;
     }
+    // 2a. With the multipliers, written on the constraints (φ = ωt put in: cos ωt for cos φ, ω for φ̇, φ̈ = 0): it
+    // holds at states on them, λ from the constrained equations.
+    if (std::any_of(multipliers_.begin(), multipliers_.end(), [&](const GiNaC::symbol& l) { return r_ex.has(l); }))
+        for (int sign : {1, -1}) {
+            const std::optional<bool> holds = holds_on_constrained_motion(r_ex, model_, eq_, tol, multipliers_, sign);
+            if (!holds || !*holds) continue;
+            r.verdict = Verdict::Agrees;
+            r.compared_with = "the equations of motion with the constraint forces";
+            r.reason = std::string("it holds on every motion, with the constraints put in (checked at sample states)") +
+                       (sign < 0 ? ", the multiplier taken with the opposite sign to eomgen's (M q'' = f + A^T λ)" : "") +
+                       within;
+            return;
+        }
     // 2. An equation of motion: a combination of the Euler–Lagrange equations.
     if (has_acceleration(r_ex)) {
         int only = -1;

@@ -11,7 +11,7 @@
 namespace eomgen::checker {
 
 std::optional<bool> holds_on_constrained_motion(const GiNaC::ex& r, const Model& model, const Equations& eq,
-                                                double tol) {
+                                                double tol, const std::vector<GiNaC::symbol>& multipliers, int sign) {
     const std::size_t n = model.dof(), m = eq.constraints.size();
     if (m == 0 || n == 0) return std::nullopt;
     std::mt19937 rng(20261126);
@@ -99,6 +99,7 @@ std::optional<bool> holds_on_constrained_motion(const GiNaC::ex& r, const Model&
         if (!lu.isInvertible()) return std::nullopt;
         const Eigen::VectorXd x = lu.solve(rhs);
         for (std::size_t i = 0; i < n; ++i) v[model.coordinates[i].qdd] = x[Eigen::Index(i)];
+        for (std::size_t k = 0; k < multipliers.size() && k < m; ++k) v[multipliers[k]] = -sign * x[Eigen::Index(n + k)];
         // The residual against the size of its terms.
         const GiNaC::ex e = r.expand();
         const auto total = value(e);

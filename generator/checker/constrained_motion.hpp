@@ -9,18 +9,21 @@
 
 #include <ginac/ginac.h>
 #include <optional>
+#include <vector>
 
 namespace eomgen::checker {
 
 /**
  * r(q, q̇, q̈, t) = 0 at three sample states of the model with constraints: the parameters at their values, q
  * and t drawn, q̇ drawn and projected onto the velocity constraints A q̇ + b = 0, and q̈ from
- * [M Aᵀ; A 0] [q̈; −λ] = [f + Q; γ]. True when |r| is within `tol` of the size of its terms at every state,
- * false when it is not at one; nothing when r holds a name the model does not know, a state gives no finite
- * value or the system is singular there. Position-level constraints are not imposed on q (an equation that
- * needs them, such as x = R θ substituted, is not decided by this).
+ * [M Aᵀ; A 0] [q̈; −λ] = [f + Q; γ], q first moved onto the holonomic constraints g(q, t) = 0. With `multipliers`
+ * (one symbol per constraint, as the text writes them), r may hold them: each takes `sign` times the λ of that
+ * state (sign −1: the text's multiplier has the opposite sign to eomgen's M q̈ = f + Aᵀλ). True when |r| is within
+ * `tol` of the size of its terms at every state, false when it is not at one; nothing when r holds a name the
+ * model does not know, a state gives no finite value or the system is singular there.
  */
 std::optional<bool> holds_on_constrained_motion(const GiNaC::ex& r, const Model& model, const Equations& eq,
-                                                double tol);
+                                                double tol, const std::vector<GiNaC::symbol>& multipliers = {},
+                                                int sign = 1);
 
 }  // namespace eomgen::checker

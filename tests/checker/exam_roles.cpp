@@ -188,3 +188,20 @@ TEST_CASE("roles: an equation that holds only on a holonomic constraint is check
     CHECK(one_verdict(paraboloid, "$$\\dot z\\dot\\varphi+z\\ddot\\varphi=0$$\n") == Verdict::Agrees);
     CHECK(one_verdict(paraboloid, "$$\\dot z\\dot\\varphi+2z\\ddot\\varphi=0$$\n") == Verdict::Disagrees);
 }
+
+TEST_CASE("roles: an equation with the multiplier, written on the constraint, and a constraint's name as its "
+          "function",
+          "[checker][roles]") {
+    // The rod turned at φ = ωt (constraint f = φ − ωt): the φ equation with λ, φ = ωt put in.
+    const char* rod = "tests/checker/corpus/bead_rotating_rod/model.toml";
+    const CheckReport r = eomgen::test::check_text(
+        rod, "$$2ms\\dot s \\omega + mgs\\cos(\\omega t) = \\lambda\\frac {\\partial f}{\\partial\\varphi} = \\lambda$$\n");
+    REQUIRE(r.equations.size() == 2);
+    for (const EquationCheck& e : r.equations) {
+        INFO(eomgen::test::describe(e));
+        CHECK(e.verdict == Verdict::Agrees);
+    }
+    CHECK(r.equations[0].compared_with == "the equations of motion with the constraint forces");
+    CHECK(one_verdict(rod, "$$2ms\\dot s \\omega + mgs\\cos(\\omega t) = 2\\lambda$$\n") != Verdict::Agrees);
+    CHECK(one_verdict(rod, "$$ms\\dot s \\omega + mgs\\cos(\\omega t) = \\lambda$$\n") != Verdict::Agrees);
+}
