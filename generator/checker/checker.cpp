@@ -445,7 +445,13 @@ class Checker : public Comparisons {
                         return n;
                     }
             }
+            // (A label of eomgen's — V, T, L, p_θ — set to an expression in the state is a claim about it, whatever
+            // the sentence's cue; set to a number, `T = 1` "the unit of time", it is the text's other meaning.)
+            const auto label_claim = [&](std::size_t label, std::size_t other) {
+                return truth_.count(c.sides[label].side->value) && depends_on_state(prepare(c.sides[other]).value);
+            };
             if (r.verdict == Verdict::Disagrees && !verifying_ && c.sides[i].side->ok && c.sides[j].side->ok &&
+                !label_claim(i, j) && !label_claim(j, i) &&
                 sets_a_value(c.sides[i].side->value, c.sides[j].side->value, model_)) {
                 // "started with θ̇ = 0", "with m₁ = m₂ = m": values set for what follows, not an equation of motion.
                 const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
@@ -459,6 +465,7 @@ class Checker : public Comparisons {
                     return n;
                 }
             }
+            if (r.verdict == Verdict::Disagrees && !verifying_) blame_definition(c, i, j, r);
             if (!r.corrected.empty() && !verifying_) verify_correction(c, j, r);
             if (!verifying_ && c.display) check_prose_label(c, i, j, r);
             return r;
@@ -471,6 +478,20 @@ class Checker : public Comparisons {
             return r;
         }
     }
+    /// A line that disagrees only through a name the text defined (`V = m g y` with the text's y of line 23), its
+    /// other side eomgen's value: what the name would have to be for it to hold (apply_blames decides).
+    struct Blame {
+        std::string name;     ///< the defined name, canonical LaTeX
+        GiNaC::ex needed;     ///< what the line needs it to be
+        int definition_line;  ///< where the text defines it
+        SourcePos where;      ///< the line's verdict
+        std::string equation;
+    };
+    std::vector<Blame> blames_;
+    void blame_definition(const FullChain& c, std::size_t i, std::size_t j, const EquationCheck& r);
+    /// A definition that two or more lines blame alike is the slip: it disagrees (corrected to what they need), and
+    /// they are not comparable, pointing to it.
+    void apply_blames(std::vector<EquationCheck>& equations);
     /// The link compared with what the sentence before its display calls it (labels.hpp).
     void check_prose_label(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r);
     /// Parses r.corrected back with the names of its line and checks it (correction_check.hpp); a correction
@@ -2470,6 +2491,96 @@ bool Checker::diagnose_solved_acceleration(const PSide& left, const PSide& right
     return true;
 }
 
+void Checker::blame_definition(const FullChain& c, std::size_t i, std::size_t j, const EquationCheck& r) {
+    const PSide* sides[2] = {&c.sides[i], &c.sides[j]};
+    // The one defined name the link uses, on one side only.
+    int text_side = -1;
+    const FreeName* name = nullptr;
+    int line = 0;
+    GiNaC::ex definition;
+    for (int k = 0; k < 2; ++k) {
+        const PSide& s = *sides[k];
+        if (!s.side->ok) return;
+        std::vector<GiNaC::ex> stack{s.side->value};
+        while (!stack.empty()) {
+            const GiNaC::ex e = stack.back();
+            stack.pop_back();
+            for (std::size_t q = 0; q < e.nops(); ++q) stack.push_back(e.op(q));
+            const FreeName* f = ctx_.free_name_of(e);
+            int at_line = 0;
+            const GiNaC::ex* value = f ? definitions_.value_at(e, s.base + s.side->begin, &at_line) : nullptr;
+            if (!value) continue;
+            if (name && (name != f || text_side != k)) return;  // two names, or on both sides
+            name = f;
+            text_side = k;
+            line = at_line;
+            definition = *value;
+        }
+    }
+    if (!name) return;
+    // The other side is eomgen's value: a label, or the chain's right side that equals what the chain is about.
+    const Prepared trusted = prepare(*sides[1 - text_side]);
+    const bool right_is_right = std::any_of(r.notes.begin(), r.notes.end(), [](const std::string& n) {
+        return n.rfind("the right side is right", 0) == 0;
+    });
+    if (!trusted.comparable() || !(trusted.has_truth_label || (right_is_right && text_side == 0))) return;
+    definitions_.suspend(name->name);
+    const Prepared free = prepare(*sides[text_side]);
+    definitions_.resume();
+    if (!free.ok) return;
+    try {
+        const GiNaC::ex e = (free.value - trusted.value).expand();
+        if (e.degree(name->symbol) != 1) return;
+        const GiNaC::ex needed = GiNaC::normal(-e.coeff(name->symbol, 0) / e.coeff(name->symbol, 1));
+        if (needed.has(name->symbol) || equal(needed, definition, 1e-9) == Tri::Yes) return;
+        blames_.push_back({name->name, needed, line, r.where, r.equation});
+    } catch (...) {
+    }
+}
+
+void Checker::apply_blames(std::vector<EquationCheck>& equations) {
+    std::set<std::string> names;
+    for (const Blame& b : blames_) names.insert(b.name);
+    for (const std::string& name : names) {
+        std::vector<const Blame*> these;
+        for (const Blame& b : blames_)
+            if (b.name == name) these.push_back(&b);
+        if (these.size() < 2) continue;
+        bool alike = true;
+        for (const Blame* b : these) alike = alike && equal(b->needed, these.front()->needed, 1e-9) == Tri::Yes;
+        if (!alike) continue;
+        const Blame& first = *these.front();
+        const std::string prefix = "a definition: the text's abbreviation $" + name + " = ";
+        EquationCheck* def = nullptr;
+        for (EquationCheck& e : equations)
+            if (e.where.line == first.definition_line && e.reason.find(prefix) != std::string::npos) def = &e;
+        if (!def) continue;
+        std::string lines;
+        for (const Blame* b : these) {
+            const std::string l = std::to_string(b->where.line);
+            if (lines.find(l) == std::string::npos) lines += (lines.empty() ? "" : ", ") + l;
+        }
+        const std::string needed = latex(first.needed);
+        def->verdict = Verdict::Disagrees;
+        def->reason = "the text's definition of $" + name + "$, which its uses make wrong";
+        def->compared_with = "what its uses on line " + lines + " need, where the other side is eomgen's";
+        def->wrong_terms = {"with this $" + name + "$ the lines that use it disagree with eomgen; they hold with $" +
+                            name + " = " + needed + "$"};
+        def->corrected = name + " = " + needed;
+        for (const Blame* b : these)
+            for (EquationCheck& e : equations)
+                if (e.where.line == b->where.line && e.where.column == b->where.column && e.equation == b->equation &&
+                    e.verdict == Verdict::Disagrees) {
+                    e.verdict = Verdict::NotComparable;
+                    e.reason = "it holds with $" + name + " = " + needed + "$: the text's $" + name + "$ of line " +
+                               std::to_string(first.definition_line) + " is what disagrees (see there)";
+                    e.difference.clear();
+                    e.wrong_terms.clear();
+                    e.corrected.clear();
+                }
+    }
+}
+
 CheckReport Checker::run() {
     CheckReport report;
     report.model_path = model_.path;
@@ -2599,6 +2710,7 @@ CheckReport Checker::run() {
         if (c.sides.size() < 2) continue;  // an expression, not an equation
         check_chain(c, report.equations);
     }
+    apply_blames(report.equations);
     {  // never silent: a row with a relation that gave no equation is "not read", with the reason
         std::vector<const MathRow*> read;
         for (const Parsed& p : parsed) read.push_back(p.row);

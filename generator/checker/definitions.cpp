@@ -23,6 +23,7 @@ void TextDefinitions::add(const GiNaC::ex& symbol, const std::string& name, cons
 const TextDefinitions::Definition* TextDefinitions::in_force(const std::vector<Definition>& list, std::size_t at,
                                                             bool in_section) const {
     const Definition* best = nullptr;
+    if (!list.empty() && suspended_.count(list.front().name)) return nullptr;
     for (const Definition& d : list)
         if (d.offset < at && (!in_section || at < d.until) && (!best || d.offset > best->offset)) best = &d;
     return best;

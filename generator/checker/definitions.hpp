@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <map>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -78,6 +79,11 @@ class TextDefinitions {
 
     bool empty() const { return defs_.empty(); }
 
+    /// While suspended, the definitions of the name `name` (canonical LaTeX) are not in force anywhere: the name is
+    /// the text's unknown again (to find what a line needs it to be).
+    void suspend(const std::string& name) { suspended_.insert(name); }
+    void resume() { suspended_.clear(); }
+
   private:
     struct Definition {
         std::string name;
@@ -91,6 +97,7 @@ class TextDefinitions {
     const Definition* in_force(const std::vector<Definition>& list, std::size_t at, bool in_section) const;
     std::map<GiNaC::ex, std::vector<Definition>, GiNaC::ex_is_less> defs_;
     mutable std::vector<std::string> used_;
+    std::set<std::string> suspended_;
     mutable std::vector<std::string> abbreviations_;
     /// The defined names where they are defined (never abbreviated): file offset, "k = g/l".
     std::vector<std::pair<std::size_t, std::string>> heads_;

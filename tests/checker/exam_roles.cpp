@@ -205,3 +205,25 @@ TEST_CASE("roles: an equation with the multiplier, written on the constraint, an
     CHECK(one_verdict(rod, "$$2ms\\dot s \\omega + mgs\\cos(\\omega t) = 2\\lambda$$\n") != Verdict::Agrees);
     CHECK(one_verdict(rod, "$$ms\\dot s \\omega + mgs\\cos(\\omega t) = \\lambda$$\n") != Verdict::Agrees);
 }
+
+TEST_CASE("roles: a definition that two uses make wrong is the slip, not the uses", "[checker][roles]") {
+    // The height is y = −l cos θ; the text defines y = l sin θ and uses it twice with eomgen's V and L.
+    const std::string wrong_def = "Let $y = l\\sin\\theta$ be the height of the bob.\n\n"
+                                  "$$V = m g y$$\n\n"
+                                  "$$L = \\frac12 m l^2 \\dot\\theta^2 - m g y$$\n";
+    const CheckReport r = eomgen::test::check_text(kPendulum, wrong_def);
+    REQUIRE(r.equations.size() == 3);
+    for (const EquationCheck& e : r.equations) INFO(eomgen::test::describe(e));
+    CHECK(r.equations[0].verdict == Verdict::Disagrees);
+    CHECK(r.equations[0].corrected == "y = -l \\cos \\theta");
+    for (std::size_t k = 1; k < 3; ++k) {
+        INFO(eomgen::test::describe(r.equations[k]));
+        CHECK(r.equations[k].verdict == Verdict::NotComparable);
+        CHECK(r.equations[k].reason.find("the text's $y$ of line 1 is what disagrees") != std::string::npos);
+    }
+    // One use alone does not say which of the two is wrong: the use disagrees, the definition stands.
+    const CheckReport once = eomgen::test::check_text(kPendulum, "Let $y = l\\sin\\theta$ be the height.\n\n$$V = m g y$$\n");
+    REQUIRE(once.equations.size() == 2);
+    CHECK(once.equations[0].verdict == Verdict::NotComparable);
+    CHECK(once.equations[1].verdict == Verdict::Disagrees);
+}
