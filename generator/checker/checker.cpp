@@ -595,6 +595,7 @@ class Checker : public Comparisons {
         return out;
     }
     std::vector<std::string> chosen_notes_;  ///< "with $m_1 = 0$, the value the text chose on line 31" (check_link)
+    std::set<std::string> not_parts_;  ///< T_… the text sets to a nonzero constant: a period, not a part of T
     std::set<std::size_t> at_a_point_;  ///< heads of definitions that hold at a point the text considers
     LinearAlgebra algebra_;             ///< arrays, tuples, eigen-equations: entry by entry
     int velocity_h_line_ = 0;       ///< the first line where the text writes H in velocities (0: none)
@@ -791,6 +792,8 @@ bool Checker::is_part(const GiNaC::ex& e, std::string* name, GiNaC::ex* whole) c
     }
     // V_{eff}, V_{\text{eff}}: the effective potential of a reduced problem, a quantity of its own, not a part of V.
     if (n.find("eff") != std::string::npos) return false;
+    // T_0 = 2\pi\sqrt{l/g}: a period, which the text sets to a constant; no part of T is one.
+    if (not_parts_.count(n)) return false;
     if (name) *name = n;
     if (whole) *whole = n[0] == 'T' ? eq_.T : eq_.V;
     return true;
@@ -1972,7 +1975,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         return;
     // `s(t) = s_0\cos(\omega t)`: a solution the text claims for a coordinate, put into its equation of motion.
     if (a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
-        check_claimed_solution(a.value, b.value, model_, eq_, motion_, ctx_, *this, r))
+        check_claimed_solution(a.value, b.value, model_, eq_, motion_, ctx_, *this, r,
+                               discourse_->stated_frequencies(c.relation_offsets[j - 1])))
         return;
     // Free names: an identity still agrees, anything else cannot be judged.
     if (!a.comparable() || !b.comparable()) {
@@ -2690,6 +2694,23 @@ CheckReport Checker::run() {
         labels.is_momentum = [this](const GiNaC::ex& x) { return hamilton_.is_momentum(x); };
         labels.same = [this](const GiNaC::ex& x, const GiNaC::ex& y) { return equal(x, y, 1e-9) == Tri::Yes; };
         discourse_.emplace(links, model_, ctx_, d_, labels);
+    }
+    for (const FullChain& c : chains) {  // T_0 = 2\pi\sqrt{l/g}: a period, not a part of T
+        if (c.sides.size() < 2 || !c.sides[0].side->ok) continue;
+        std::string name;
+        if (!is_part(c.sides[0].side->value, &name) || name[0] != 'T') continue;
+        for (std::size_t k = 1; k < c.sides.size(); ++k) {
+            const Side& v = *c.sides[k].side;
+            bool constant = v.ok && !v.value.is_zero() && !depends_on_state(v.value) && !has_acceleration(v.value);
+            std::vector<GiNaC::ex> stack{v.ok ? v.value : GiNaC::ex(0)};
+            while (constant && !stack.empty()) {
+                const GiNaC::ex e = stack.back();
+                stack.pop_back();
+                if (ctx_.free_name_of(e) || truth_.count(e)) constant = false;
+                for (std::size_t q = 0; q < e.nops(); ++q) stack.push_back(e.op(q));
+            }
+            if (constant) not_parts_.insert(name);
+        }
     }
     collect_definitions(chains);
     for (const FullChain& c : chains)  // stated vectors and eigen-equations, used before and after their line

@@ -49,9 +49,10 @@ bool linear_in_its_names(const GiNaC::ex& F, const LatexContext& ctx) {
 
 bool check_claimed_solution(const GiNaC::ex& left, const GiNaC::ex& right, const Model& model, const Equations& eq,
                             const std::vector<GiNaC::ex>& motion, const LatexContext& ctx, Comparisons& cmp,
-                            EquationCheck& r) {
+                            EquationCheck& r, const GiNaC::exmap& stated) {
     const GiNaC::ex& t = model.t;
-    for (const auto& [q, F] : {std::pair(left, right), std::pair(right, left)}) {
+    for (const auto& [q, written] : {std::pair(left, right), std::pair(right, left)}) {
+        const GiNaC::ex F = stated.empty() ? written : written.subs(stated);
         std::size_t k = model.dof();
         for (std::size_t i = 0; i < model.dof(); ++i)
             if (q.is_equal(model.coordinates[i].q)) k = i;

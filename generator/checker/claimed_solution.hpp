@@ -25,10 +25,11 @@ namespace eomgen::checker {
  * solves the equation of motion for $s$"; disagrees with what it leaves (the equation's residual, no correction:
  * a solution is not unique) only when the text's constants in F are coefficients (s_0 cos ωt), not inside a
  * function of t (Ω' and δ in cos(Ω' t − δ) could make it a solution at their right values). False (r untouched) when the link is no such claim or the
- * equation of q_k still holds other coordinates.
+ * equation of q_k still holds other coordinates. `stated`: the frequencies the text has stated (ω → √(g/l)), put in
+ * first.
  */
 bool check_claimed_solution(const GiNaC::ex& left, const GiNaC::ex& right, const Model& model, const Equations& eq,
                             const std::vector<GiNaC::ex>& motion, const LatexContext& ctx, Comparisons& cmp,
-                            EquationCheck& r);
+                            EquationCheck& r, const GiNaC::exmap& stated = {});
 
 }  // namespace eomgen::checker

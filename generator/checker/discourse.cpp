@@ -93,11 +93,12 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
             const FreeName* fn = ctx.free_name_of(base);
             if (!fn || fn->name.rfind("\\omega", 0) != 0) continue;
             if (depends_on_state(w->value, model) || w->value.has(model.t) || has_free_name(w->value, ctx)) continue;
-            stated_.push_back({link.at, link.until, squared ? w->value : w->value * w->value});
+            stated_.push_back({link.at, link.until, squared ? w->value : w->value * w->value, base});
         }
-        // A trial solution; those of one coordinate each with one frequency are one.
+        // A trial solution; those of one coordinate each with one frequency are one. With a frequency the text has
+        // stated (`\omega^2 = g/l`, then `\theta(t) = \theta_0\cos(\omega t)`) it is a solution it claims instead.
         std::optional<TrialSolution> t = trial_solution(x.value, y.value, model, ctx);
-        if (!t) continue;
+        if (!t || stated_frequencies(link.at).count(t->omega)) continue;
         t->from = link.at;
         t->until = link.until;
         t->line = line;
@@ -128,6 +129,13 @@ std::size_t Discourse::condition_paragraph(std::size_t at) const {
     for (const Condition& k : conditions_)
         if (k.from < at && at < k.until) end = std::max(end, k.until);
     return end;
+}
+
+GiNaC::exmap Discourse::stated_frequencies(std::size_t at) const {
+    GiNaC::exmap out;
+    for (const Stated& s : stated_)
+        if (s.at < at && at < s.until) out[s.symbol] = GiNaC::sqrt(s.omega2);
+    return out;
 }
 
 const Discourse::Naming* Discourse::naming_at(std::size_t at) const {

@@ -89,6 +89,8 @@ class Discourse {
     const TrialSolution* trial_at(std::size_t at) const;
     /// The squared frequency the text stated last before `at` in its section, if any.
     std::optional<GiNaC::ex> stated_frequency(std::size_t at) const;
+    /// The frequencies stated before `at` in their section, by name: ω → its value (`\omega^2 = g/l` gives √(g/l)).
+    GiNaC::exmap stated_frequencies(std::size_t at) const;
 
   private:
     std::vector<Condition> conditions_;
@@ -98,6 +100,7 @@ class Discourse {
     struct Stated {
         std::size_t at, until;
         GiNaC::ex omega2;
+        GiNaC::ex symbol;  ///< the text's ω
     };
     std::vector<Stated> stated_;
 };

@@ -227,3 +227,13 @@ TEST_CASE("roles: a definition that two uses make wrong is the slip, not the use
     CHECK(once.equations[0].verdict == Verdict::NotComparable);
     CHECK(once.equations[1].verdict == Verdict::Disagrees);
 }
+
+TEST_CASE("roles: T_0 set to a constant is a period, not a part of T", "[checker][roles]") {
+    const CheckReport r = eomgen::test::check_text(kPendulum, "The period is $T_0 = 2\\pi\\sqrt{l/g}$.\n\n"
+                                                              "$$T_{1} = \\frac12 m l^2 \\dot\\theta^2$$\n");
+    REQUIRE(r.equations.size() == 2);
+    CHECK(r.equations[0].verdict == Verdict::NotComparable);
+    CHECK(r.equations[0].reason.find("a definition: the text's abbreviation $T_{0} = ") != std::string::npos);
+    INFO(eomgen::test::describe(r.equations[1]));
+    CHECK(r.equations[1].compared_with.find("a part of $T$") != std::string::npos);
+}

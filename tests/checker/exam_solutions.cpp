@@ -56,3 +56,17 @@ TEST_CASE("solutions: a small oscillation holds to first order, and a name insid
     // Ω unknown: the right Ω would make it one.
     CHECK(one(kPendulum, "$$\\theta(t) = A \\cos(\\Omega t)$$\n").verdict == Verdict::NotComparable);
 }
+
+TEST_CASE("solutions: with the frequency the text has stated, x = A cos(omega t) is a solution it claims, not a trial",
+          "[checker][solutions]") {
+    const CheckReport r = eomgen::test::check_text(
+        kPendulum, "For small oscillations $\\omega^2 = g/l$ and $\\theta(t) = \\theta_0 \\cos(\\omega t)$.\n");
+    REQUIRE(r.equations.size() == 2);
+    INFO(eomgen::test::describe(r.equations[1]));
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    CHECK(r.equations[1].reason.find("to first order") != std::string::npos);
+    const CheckReport wrong = eomgen::test::check_text(
+        kPendulum, "For small oscillations $\\omega^2 = g l$ and $\\theta(t) = \\theta_0 \\cos(\\omega t)$.\n");
+    REQUIRE(wrong.equations.size() == 2);
+    CHECK(wrong.equations[1].verdict == Verdict::Disagrees);
+}
