@@ -446,12 +446,21 @@ class Checker : public Comparisons {
                     }
             }
             // (A label of eomgen's — V, T, L, p_θ — set to an expression in the state is a claim about it, whatever
-            // the sentence's cue; set to a number, `T = 1` "the unit of time", it is the text's other meaning.)
+            // the sentence's cue; set to a number, `T = 1` "the unit of time", it is the text's other meaning. The
+            // amplitudes of a trial solution are not values the text sets either: `A_1 = A_2` "with ω² = 3k/m" is the
+            // mode's shape, a claim.)
             const auto label_claim = [&](std::size_t label, std::size_t other) {
                 return truth_.count(c.sides[label].side->value) && depends_on_state(prepare(c.sides[other]).value);
             };
+            const auto amplitudes = [&] {
+                const TrialSolution* t = discourse_->trial_at(c.relation_offsets[j - 1]);
+                if (!t) return false;
+                for (const GiNaC::ex& a : t->amplitude)
+                    if (!a.is_zero() && (c.sides[i].side->value.has(a) || c.sides[j].side->value.has(a))) return true;
+                return false;
+            };
             if (r.verdict == Verdict::Disagrees && !verifying_ && c.sides[i].side->ok && c.sides[j].side->ok &&
-                !label_claim(i, j) && !label_claim(j, i) &&
+                !label_claim(i, j) && !label_claim(j, i) && !amplitudes() &&
                 sets_a_value(c.sides[i].side->value, c.sides[j].side->value, model_)) {
                 // "started with θ̇ = 0", "with m₁ = m₂ = m": values set for what follows, not an equation of motion.
                 const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
@@ -1739,7 +1748,7 @@ void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j
     // U are") is labelled by its own letter when the sentence names that quantity too, not by the last quantity
     // the sentence names. (A sentence that names only another one still disagrees with it.)
     static const std::pair<const char*, const char*> kSelfLabels[] = {
-        {"T", "kinetic energy"},   {"K", "kinetic energy"}, {"V", "potential"},      {"U", "potential"},
+        {"T", "kinetic"},          {"K", "kinetic"},        {"V", "potential"},      {"U", "potential"},
         {"L", "lagrangian"},       {"H", "hamiltonian"},    {"E", "energy"},         {"\\mathcal{L}", "lagrangian"},
         {"\\mathscr{L}", "lagrangian"}};
     std::string head = c.sides[0].side->source;
