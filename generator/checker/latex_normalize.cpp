@@ -369,12 +369,28 @@ bool is_constant_name(const std::string& n) {
     return n == "const" || n == "constant" || n == "Const" || n == "cst";
 }
 
+/// `(E_1):& …`, `(ii): …`: an equation's label before it, a parenthesis of a few characters without a relation
+/// followed by a colon at the start of a row, is blanked.
+void blank_leading_label(std::string& row) {
+    const std::size_t open = row.find_first_not_of(" \t\n");
+    if (open == std::string::npos || row[open] != '(') return;
+    const std::size_t close = row.find(')', open);
+    if (close == std::string::npos || close - open > 12) return;
+    const std::string inside = row.substr(open + 1, close - open - 1);
+    if (inside.empty() || inside.find_first_of("=<>") != std::string::npos) return;
+    std::size_t colon = close + 1;
+    while (colon < row.size() && (row[colon] == ' ' || row[colon] == '\t')) ++colon;
+    if (colon >= row.size() || row[colon] != ':') return;
+    for (std::size_t k = open; k <= colon; ++k) row[k] = ' ';
+}
+
 void normalize_rows(Derivation& d) {
     for (MathRow& r : d.rows) {
         // &amp; is the alignment mark of a page written in HTML.
         for (std::size_t k = r.text.find("&amp;"); k != std::string::npos; k = r.text.find("&amp;", k + 1))
             for (std::size_t q = k; q < k + 5; ++q) r.text[q] = ' ';
         blank_equation_number(r.text);
+        blank_leading_label(r.text);
     }
     std::vector<MathRow> out;
     for (MathRow& r : d.rows) {

@@ -275,6 +275,19 @@ std::vector<Token> tokenize_text(std::string_view s) {
                 break;
             }
             if (bare) continue;
+            // `const`, `constant` without a backslash (`+ const.`): the additive constant, as `\text{const}` is.
+            for (const char* word : {"constant", "const"}) {
+                const std::size_t n = std::strlen(word);
+                if (s.compare(i, n, word) != 0 || (i > 0 && (std::isalpha(static_cast<unsigned char>(s[i - 1])) ||
+                                                             s[i - 1] == '\\')))
+                    continue;
+                if (i + n < s.size() && std::isalpha(static_cast<unsigned char>(s[i + n]))) continue;
+                out.push_back({Tok::Word, "\\mathrm", i, n, word, false});
+                i += n;
+                bare = true;
+                break;
+            }
+            if (bare) continue;
             // `KE`, `PE`: the kinetic and potential energy as blogs and notes abbreviate them, a name (as
             // `\mathrm{KE}` is), not K times E.
             if ((s.compare(i, 2, "KE") == 0 || s.compare(i, 2, "PE") == 0) &&

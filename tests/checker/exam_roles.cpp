@@ -237,3 +237,16 @@ TEST_CASE("roles: T_0 set to a constant is a period, not a part of T", "[checker
     INFO(eomgen::test::describe(r.equations[1]));
     CHECK(r.equations[1].compared_with.find("a part of $T$") != std::string::npos);
 }
+
+TEST_CASE("roles: a bare const is the additive constant; a label (E_1): before a row is no part of it",
+          "[checker][roles]") {
+    CHECK(one_verdict(kPendulum, "$$V = -m g l \\cos\\theta + const.$$\n") == Verdict::Agrees);
+    CHECK(one_verdict(kPendulum, "$$V = -m g l \\cos\\theta + \\text{constant}$$\n") == Verdict::Agrees);
+    // `constraint` stays letters (here unknown names).
+    CHECK(one_verdict(kPendulum, "$$V = constraint$$\n") == Verdict::NotComparable);
+    const CheckReport r = eomgen::test::check_text(
+        kPendulum, "$$\\begin{aligned}(E_1):& \\; m l^2 \\ddot\\theta + m g l \\sin\\theta = 0\\end{aligned}$$\n");
+    REQUIRE(r.equations.size() == 1);
+    INFO(eomgen::test::describe(r.equations[0]));
+    CHECK(r.equations[0].verdict == Verdict::Agrees);
+}
