@@ -64,7 +64,7 @@ bool takes_raw_argument(const std::string& w) {
 // Commands that only change spacing or size: dropped.
 bool is_ignored_word(const std::string& w) {
     return is_one_of(
-        w, {"\\displaystyle", "\\textstyle",  "\\scriptstyle", "\\limits", "\\nolimits", "\\big",
+        w, {"\\displaystyle", "\\ds", "\\textstyle",  "\\scriptstyle", "\\limits", "\\nolimits", "\\big",
             "\\Big",          "\\bigg",       "\\Bigg",        "\\bigl",   "\\bigr",     "\\Bigl",
             "\\Bigr",         "\\biggl",      "\\biggr",       "\\Biggl",  "\\Biggr",    "\\bigm",
             "\\Bigm",         "\\nonumber",   "\\notag",       "\\middle", "\\mathopen", "\\mathclose",
@@ -191,6 +191,34 @@ std::vector<Token> tokenize_text(std::string_view s) {
             ++i;
             continue;
         }
+        // `d/dt` and `(d/dt)` as plain text writes the operator: \frac{d}{dt}.
+        {
+            const std::size_t open = c == '(' ? 1 : 0;
+            if (s.compare(i + open, 4, "d/dt") == 0 && (i == 0 || !std::isalpha(static_cast<unsigned char>(s[i - 1]))) &&
+                (open == 0 || (i + 5 < s.size() && s[i + 5] == ')')) &&
+                (i + open + 4 >= s.size() || !std::isalpha(static_cast<unsigned char>(s[i + open + 4])))) {
+                const std::size_t n = open ? 6 : 4;
+                for (const char* w : {"\\frac", "{", "d", "}", "{", "d", "t", "}"}) {
+                    const unsigned char w0 = static_cast<unsigned char>(w[0]);
+                    out.push_back({w0 == '\\' ? Tok::Word : (std::isalpha(w0) ? Tok::Letter : Tok::Char), w, i, n, "", false});
+                }
+                i += n;
+                continue;
+            }
+        }
+        // A combining dot (U+0307) or two (U+0308) after a space, on the letter before it (`x ̈` as a word
+        // processor pastes ẍ): that letter dotted.
+        if (c == 0xCC && i + 1 < s.size() && (static_cast<unsigned char>(s[i + 1]) == 0x87 ||
+                                              static_cast<unsigned char>(s[i + 1]) == 0x88) &&
+            !out.empty() && (out.back().kind == Tok::Letter || (out.back().kind == Tok::Word && out.back().raw.empty())) &&
+            s.find_first_not_of(" \t", out.back().offset + out.back().length) == i) {
+            const Token letter = out.back();
+            out.back() = {Tok::Word, static_cast<unsigned char>(s[i + 1]) == 0x87 ? "\\dot" : "\\ddot", letter.offset,
+                          0, "", false};
+            out.push_back({letter.kind, letter.text, letter.offset, i + 2 - letter.offset, "", false});
+            i += 2;
+            continue;
+        }
         // HTML entities, Unicode letters and signs, combining dots (latex_normalize): their LaTeX tokens.
         if (c >= 0x80 || c == '&' ||
             (std::isalpha(c) && i + 1 < s.size() && (static_cast<unsigned char>(s[i + 1]) == 0xCC || s[i + 1] == '&'))) {
@@ -297,6 +325,27 @@ std::vector<Token> tokenize_text(std::string_view s) {
                 i += 2;
                 continue;
             }
+            // `K.E.`, `P.E.` (the last dot may end the formula): the same names.
+            if ((s.compare(i, 3, "K.E") == 0 || s.compare(i, 3, "P.E") == 0) &&
+                (i == 0 || (!std::isalpha(static_cast<unsigned char>(s[i - 1])) && s[i - 1] != '\\')) &&
+                (i + 3 >= s.size() || !std::isalpha(static_cast<unsigned char>(s[i + 3])))) {
+                const std::size_t n = i + 3 < s.size() && s[i + 3] == '.' ? 4 : 3;
+                out.push_back({Tok::Word, "\\mathrm", i, n, std::string(1, s[i]) + "E", false});
+                i += n;
+                continue;
+            }
+            // `frac{…}{…}`, `sqrt{…}` without their backslash (math pasted from a word processor).
+            for (const char* word : {"dfrac", "frac", "sqrt"}) {
+                const std::size_t n = std::strlen(word);
+                if (s.compare(i, n, word) != 0 || i + n >= s.size() || s[i + n] != '{' ||
+                    (i > 0 && (std::isalpha(static_cast<unsigned char>(s[i - 1])) || s[i - 1] == '\\')))
+                    continue;
+                out.push_back({Tok::Word, std::string("\\") + word, i, n, "", false});
+                i += n;
+                bare = true;
+                break;
+            }
+            if (bare) continue;
             out.push_back({Tok::Letter, std::string(1, char(c)), i, 1, "", false});
             ++i;
             continue;

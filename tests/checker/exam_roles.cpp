@@ -250,3 +250,16 @@ TEST_CASE("roles: a bare const is the additive constant; a label (E_1): before a
     INFO(eomgen::test::describe(r.equations[0]));
     CHECK(r.equations[0].verdict == Verdict::Agrees);
 }
+
+TEST_CASE("roles: math as word processors and course notes paste it: K.E., \\ds, frac{ without its backslash, a "
+          "dot after a space",
+          "[checker][roles]") {
+    CHECK(one_verdict(kPendulum, "$\\ds L = K.E. - P.E.$\n") == Verdict::Agrees);
+    CHECK(one_verdict(kPendulum, "$K.E. = frac{1}{2} m l^2 \\dot\\theta^2$\n") == Verdict::Agrees);
+    CHECK(one_verdict(kPendulum, "$\\theta ̈ = -frac{g}{l} \\sin\\theta$\n") == Verdict::Agrees);
+    CHECK(one_verdict(kPendulum, "$T = frac{1}{2} m l^2 \\theta ̇^2$\n") == Verdict::Agrees);
+    CHECK(one_verdict(kPendulum, "$\\theta ̈ = frac{g}{l} \\sin\\theta$\n") == Verdict::Disagrees);
+    // d/dt in plain text, bare or in parentheses, is the operator.
+    CHECK(one_verdict(kPendulum, "$(d/dt) [m l^2 \\dot\\theta] = -m g l \\sin\\theta$\n") == Verdict::Agrees);
+    CHECK(one_verdict(kPendulum, "$d/dt (m l^2 \\dot\\theta) = -m g l \\sin\\theta$\n") == Verdict::Agrees);
+}
