@@ -238,7 +238,7 @@ TEST_CASE("roles: T_0 set to a constant is a period, not a part of T", "[checker
     CHECK(r.equations[1].compared_with.find("a part of $T$") != std::string::npos);
 }
 
-TEST_CASE("roles: a bare const is the additive constant; a label (E_1): before a row is no part of it",
+TEST_CASE("roles: a bare const is the additive constant, and a label (E_1): before a row is no part of it",
           "[checker][roles]") {
     CHECK(one_verdict(kPendulum, "$$V = -m g l \\cos\\theta + const.$$\n") == Verdict::Agrees);
     CHECK(one_verdict(kPendulum, "$$V = -m g l \\cos\\theta + \\text{constant}$$\n") == Verdict::Agrees);

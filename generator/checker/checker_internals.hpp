@@ -1,0 +1,642 @@
+/** @file checker_internals.hpp  The checker's comparisons (class Checker), shared by the files that define its
+ * parts: checker.cpp (setup, the text's definitions and parts, the driver), evaluation.cpp (prepared sides,
+ * equality, the Euler–Lagrange tests), compare_link.cpp (one link a = b judged), diagnosis.cpp (what is wrong
+ * and the correction). Private to generator/checker: the public face is checker.hpp. */
+#pragma once
+
+#include "checker/checker.hpp"
+#include "checker/conditions.hpp"
+#include "checker/constrained_motion.hpp"
+#include "checker/coverage.hpp"
+
+#include "checker/additive_constant.hpp"
+#include "checker/amplitude_equations.hpp"
+#include "checker/claimed_solution.hpp"
+#include "checker/equivalent_lagrangian.hpp"
+#include "checker/approximation.hpp"
+#include "checker/budget.hpp"
+#include "checker/correction_check.hpp"
+#include "checker/definitions.hpp"
+#include "checker/discourse.hpp"
+#include "checker/hamiltonian_check.hpp"
+#include "checker/labels.hpp"
+#include "checker/meanings.hpp"
+#include "checker/prose.hpp"
+#include "checker/latex_normalize.hpp"
+#include "checker/motions.hpp"
+#include "checker/latex_parser.hpp"
+#include "checker/linear_algebra.hpp"
+#include "checker/normal_modes_check.hpp"
+#include "checker/printed_numbers.hpp"
+#include "codegen/cpp_emitter.hpp"
+#include "codegen/math_printer.hpp"
+#include "mechanics/pole_free_subs.hpp"
+#include "mechanics/results.hpp"
+#include "mechanics/trig_rewrite.hpp"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdlib>
+#include <functional>
+#include <iomanip>
+#include <map>
+#include <optional>
+#include <random>
+#include <set>
+#include <sstream>
+
+namespace eomgen::checker::detail {
+
+
+using Complex = std::complex<double>;
+using ExSet = std::set<GiNaC::ex, GiNaC::ex_is_less>;
+template <class V>
+using ExMap = std::map<GiNaC::ex, V, GiNaC::ex_is_less>;
+
+inline std::string m(const std::string& latex) {
+    return "$" + latex + "$";
+}
+
+enum class Tri { No, Yes, Unknown };
+
+/// The exact rational a model's double default stands for ("0.3" is 3/10, not the binary float).
+inline GiNaC::numeric exact_decimal(double v) {
+    const std::string s = codegen::shortest_decimal(v);
+    GiNaC::numeric mant(0);
+    long exponent = 0;
+    bool neg = false, point = false;
+    std::size_t i = 0;
+    if (i < s.size() && (s[i] == '-' || s[i] == '+')) neg = s[i++] == '-';
+    for (; i < s.size(); ++i) {
+        const char c = s[i];
+        if (c >= '0' && c <= '9') {
+            mant = mant * 10 + (c - '0');
+            if (point) --exponent;
+        } else if (c == '.') {
+            point = true;
+        } else if (c == 'e' || c == 'E') {
+            exponent += std::strtol(s.c_str() + i + 1, nullptr, 10);
+            break;
+        }
+    }
+    GiNaC::numeric r = mant * GiNaC::pow(GiNaC::numeric(10), GiNaC::numeric(exponent));
+    return neg ? -r : r;
+}
+
+inline bool has_integral(const GiNaC::ex& e) {
+    if (GiNaC::is_a<GiNaC::integral>(e)) return true;
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (has_integral(e.op(i))) return true;
+    return false;
+}
+
+inline std::optional<Complex> as_complex(const GiNaC::ex& v) {
+    if (!GiNaC::is_a<GiNaC::numeric>(v)) return std::nullopt;
+    const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(v);
+    const Complex c(n.real().to_double(), n.imag().to_double());
+    if (!std::isfinite(c.real()) || !std::isfinite(c.imag())) return std::nullopt;
+    return c;
+}
+
+/**
+ * ∫_a^b f(x) dx by tanh–sinh quadrature (Takahasi & Mori 1974), which copes with the integrable endpoint
+ * singularities of derivations such as ∫ dψ/√(sin ψ). Nodes are placed by their distance from the nearer end
+ * so that points next to a singular end are not rounded onto it.
+ */
+template <class F>
+inline std::optional<Complex> tanh_sinh(F f, double a, double b) {
+    const double half = (b - a) / 2, mid = (a + b) / 2;
+    if (half == 0) return Complex(0);
+    std::optional<Complex> previous;
+    for (int level = 2; level <= 7; ++level) {
+        const double h = std::ldexp(1.0, -level);
+        Complex sum = 0;
+        bool ok = true;
+        for (double t = -4.0; t <= 4.0 + 1e-12; t += h) {
+            const double u = M_PI / 2 * std::sinh(t);
+            const double w = M_PI / 2 * std::cosh(t) / (std::cosh(u) * std::cosh(u));
+            if (w < 1e-300) continue;
+            const double dist = 2 / (std::exp(2 * std::abs(u)) + 1);  // 1 − tanh|u|, accurately
+            const double x = t > 0 ? b - half * dist : (t < 0 ? a + half * dist : mid);
+            if (x == a || x == b) continue;
+            const std::optional<Complex> fx = f(x);
+            if (!fx) {
+                ok = false;
+                break;
+            }
+            sum += w * *fx;
+        }
+        if (!ok) return std::nullopt;
+        const Complex value = half * h * sum;
+        if (previous && std::abs(value - *previous) <= 1e-11 * std::max(1.0, std::abs(value))) return value;
+        previous = value;
+    }
+    return previous;
+}
+
+/// Numbers for the comparisons: random points for every symbol, values with integrals evaluated.
+class Numbers {
+  public:
+    Numbers(const Model& model, const LatexContext& ctx) : model_(model), ctx_(ctx) {}
+
+    /// Parameters (and free names) from `param_seed`, coordinates, velocities, accelerations and t from
+    /// `state_seed`; each a rational in (0.5, 1.5).
+    GiNaC::exmap point(unsigned param_seed, unsigned state_seed) const {
+        GiNaC::exmap at;
+        std::mt19937 pr(param_seed * 7919u + 17u), sr(state_seed * 104729u + 5u), flip(state_seed * 31u + 7u);
+        std::uniform_int_distribution<int> pick(500, 1500);
+        auto value = [&](std::mt19937& r) { return GiNaC::numeric(pick(r), 1000); };
+        // Where abs, sign, max … of the state are compared, every other point gives the state values either sign:
+        // at positive values alone θ'|θ'| and θ'² are one function.
+        const bool signs = signed_state_ && state_seed % 2 == 0;
+        auto state_value = [&] { return (signs && (flip() & 1u)) ? -value(sr) : value(sr); };
+        for (const Parameter& p : model_.parameters) at[p.symbol] = value(pr);
+        for (const auto& [name, f] : ctx_.free_names) at[f.symbol] = value(pr);
+        at[model_.t] = value(sr);
+        for (const Coordinate& c : model_.coordinates) {
+            at[c.q] = state_value();
+            at[c.qd] = state_value();
+            at[c.qdd] = state_value();
+        }
+        for (const GiNaC::symbol& s : state_symbols_) at[s] = value(sr);
+        for (const auto& [p, v] : pinned_) at[p] = v;
+        return at;
+    }
+    /// A symbol that takes a value per state, as the coordinates do (a constraint's multiplier λ).
+    void add_state_symbol(const GiNaC::symbol& s) { state_symbols_.push_back(s); }
+    /// Whether the points give q, q', q'' either sign (at even state seeds): while a non-smooth function is compared.
+    void sign_state(bool on) { signed_state_ = on; }
+    /// Parameters and coordinates held at a value the text chose for its paragraph (`m_1 = 0`, `\\theta = \\pi/2`):
+    /// every point uses it.
+    void pin(const GiNaC::exmap& values) { pinned_ = values; }
+    const GiNaC::exmap& pinned() const { return pinned_; }
+    bool state_signed() const { return signed_state_; }
+    GiNaC::exmap point(unsigned seed) const { return point(seed, seed); }
+
+    std::optional<Complex> value(const GiNaC::ex& e, const GiNaC::exmap& at) {
+        try {
+            GiNaC::ex v = e.subs(at);
+            v = integrals(v);
+            return as_complex(GiNaC::evalf(v));
+        } catch (...) {
+            return std::nullopt;
+        }
+    }
+
+    /// Σ |term| over the terms of e expanded: the scale against which a difference is small.
+    double scale(const GiNaC::ex& e, const GiNaC::exmap& at) {
+        GiNaC::ex x = e;
+        try {
+            x = e.expand();
+        } catch (...) {
+        }
+        double s = 0;
+        if (GiNaC::is_a<GiNaC::add>(x)) {
+            for (const GiNaC::ex& t : x)
+                if (auto v = value(t, at)) s += std::abs(*v);
+        } else if (auto v = value(x, at)) {
+            s = std::abs(*v);
+        }
+        return s;
+    }
+
+  private:
+    std::vector<GiNaC::symbol> state_symbols_;
+    GiNaC::exmap pinned_;
+    bool signed_state_ = false;
+    GiNaC::ex integrals(const GiNaC::ex& e) {
+        if (!has_integral(e)) return e;
+        if (GiNaC::is_a<GiNaC::integral>(e)) {
+            auto hit = cache_.find(e);
+            if (hit != cache_.end()) return hit->second;
+            const GiNaC::ex x = e.op(0);
+            const GiNaC::ex lo = integrals(e.op(1)), hi = integrals(e.op(2)), f = integrals(e.op(3));
+            const auto a = as_complex(GiNaC::evalf(lo)), b = as_complex(GiNaC::evalf(hi));
+            if (!a || !b || a->imag() != 0 || b->imag() != 0) throw std::runtime_error("limits");
+            auto integrand = [&](double xv) -> std::optional<Complex> {
+                try {
+                    return as_complex(GiNaC::evalf(f.subs(x == GiNaC::numeric(xv))));
+                } catch (...) {
+                    return std::nullopt;
+                }
+            };
+            const auto v = tanh_sinh(integrand, a->real(), b->real());
+            if (!v) throw std::runtime_error("integral");
+            const GiNaC::ex r = GiNaC::numeric(v->real()) + GiNaC::I * GiNaC::numeric(v->imag());
+            cache_[e] = r;
+            return r;
+        }
+        struct Each : GiNaC::map_function {
+            Numbers* self;
+            explicit Each(Numbers* n) : self(n) {}
+            GiNaC::ex operator()(const GiNaC::ex& x) override { return self->integrals(x); }
+        } each(this);
+        return e.map(each);
+    }
+
+    const Model& model_;
+    const LatexContext& ctx_;
+    ExMap<GiNaC::ex> cache_;
+};
+
+/// A side of a link with where its row starts in the file.
+struct PSide {
+    const Side* side = nullptr;
+    std::size_t base = 0;
+};
+
+/// A chain a = b = c, continued across rows that start with "=".
+struct FullChain {
+    std::vector<PSide> sides;
+    std::vector<Relation> relations;
+    std::vector<std::size_t> relation_offsets;  ///< file offsets
+    int section = -1;
+    bool display = false;
+};
+
+/// A side made ready for comparison: labels replaced, d/dt and ∂ evaluated, free names listed.
+struct Prepared {
+    bool ok = false;
+    std::string problem;  ///< when !ok
+    GiNaC::ex value;
+    std::vector<const FreeName*> unknown, vectors, units;
+    std::vector<GiNaC::ex> constants;  ///< `\text{const}`: an arbitrary additive constant
+    bool has_truth_label = false;  ///< refers to eomgen's T, V, L, ...
+    bool has_part = false;         ///< uses a part T_{x} whose value came from the text
+    bool from_definition = false;  ///< differentiates a quantity the text defines (the step's reference)
+    bool has_momenta = false;      ///< written in the momenta p_q (or ∂H/∂·): `value_p` is in them
+    GiNaC::ex value_p;             ///< the value before p_q → p(q, q̇) (hamiltonian_check.hpp)
+    std::vector<std::string> notes;
+    bool comparable() const { return ok && unknown.empty() && vectors.empty(); }
+};
+
+/// Terms grouped by their monomial in the velocities and accelerations (the shape of a mechanics equation).
+struct Group {
+    GiNaC::ex monomial;
+    std::vector<GiNaC::ex> terms;  ///< whole terms, monomial included
+    GiNaC::ex coefficient = 0;     ///< Σ terms / monomial
+};
+
+struct Diagnosis {
+    std::string difference;
+    std::vector<std::string> lines;
+};
+
+class Checker : public Comparisons {
+  public:
+    // Comparisons, for the files of one capability (approximation, additive_constant).
+    bool same(const GiNaC::ex& a, const GiNaC::ex& b, double tol) override { return equal(a, b, tol) == Tri::Yes; }
+    bool equation_of_motion(const GiNaC::ex& r, double tol) override {
+        int only = -1;
+        std::string factor;
+        return has_acceleration(r) && euler_lagrange_combination(r, tol, &only, &factor) == Tri::Yes;
+    }
+    std::vector<bool> euler_lagrange_terms(const GiNaC::ex& r, double tol) override {
+        int only = -1;
+        std::string factor;
+        std::vector<bool> used;
+        if (!has_acceleration(r) || euler_lagrange_combination(r, tol, &only, &factor, nullptr, &used) != Tri::Yes)
+            return {};
+        return used;
+    }
+    int closest_euler_lagrange(const GiNaC::ex& r, double tol) override {
+        GiNaC::ex factor = 1;
+        int groups = 0;
+        const int i = has_acceleration(r) ? closest_euler_lagrange(r, tol, &factor, &groups) : -1;
+        return groups >= 1 ? i : -1;
+    }
+    std::string latex(const GiNaC::ex& e) override;
+    std::vector<std::string> wrong_terms(const GiNaC::ex& text, const GiNaC::ex& truth, double tol) override {
+        return compare_to(text, truth, tol).lines;
+    }
+
+    Checker(const Model& model, const Equations& eq, const Derivation& d, const CheckOptions& options)
+        : model_(model),
+          eq_(eq),
+          d_(d),
+          options_(options),
+          numbers_(model, ctx_),
+          printer_table_(codegen::symbol_table(model)),
+          hamilton_(model, eq),
+          modes_(model, eq, d),
+          parameter_values_(model, options.set),
+          algebra_(model, d, ctx_, [this](const Side& s, std::size_t base) {
+              const Prepared p = prepare(PSide{&s, base});
+              return ScalarReading{p.ok, p.value, p.problem, p.has_truth_label};
+          }) {
+        hints_.other_angles = false;  // only the sines and cosines the author or the model wrote
+        for (const Parameter& p : model.parameters) hints_.constants.insert(p.symbol);
+    }
+
+    CheckReport run();
+
+  private:
+    // ----- setup
+    void add_name(const std::string& latex, const GiNaC::ex& value) {
+        std::string c = canonical_name(latex);
+        if (c.empty()) c = latex;
+        ctx_.names.emplace(c, value);
+    }
+    void add_label(const std::string& name, const GiNaC::ex& truth, const std::string& what) {
+        if (ctx_.names.count(name)) return;  // the model's own names come first
+        const GiNaC::symbol s(name, name);
+        ctx_.names[name] = s;
+        truth_[s] = truth;
+        label_what_[s] = what;
+    }
+    void setup_names();
+    /// The map's entries for every line (line 0), or those scoped to the text's `line`.
+    void apply_map(int line = 0);
+
+    // ----- evaluation
+    GiNaC::ex resolve_operators(const GiNaC::ex& e) const;
+    Prepared prepare(const PSide& s, const GiNaC::ex* exclude_part = nullptr);
+    std::string where(std::size_t file_offset) const {
+        const SourcePos p = d_.position(file_offset);
+        return std::to_string(p.line) + ":" + std::to_string(p.column);
+    }
+    bool is_part(const GiNaC::ex& e, std::string* name = nullptr, GiNaC::ex* whole = nullptr) const;
+
+    Tri equal(const GiNaC::ex& a, const GiNaC::ex& b, double tol);
+    std::vector<Complex> signature(const GiNaC::ex& e);
+    bool same_signature(const std::vector<Complex>& a, const std::vector<Complex>& b, double tol) const;
+
+    // ----- what an equation can be
+    bool has_acceleration(const GiNaC::ex& e) const {
+        for (const Coordinate& c : model_.coordinates)
+            if (e.has(c.qdd)) return true;
+        return false;
+    }
+    bool has_velocity(const GiNaC::ex& e) const {
+        for (const Coordinate& c : model_.coordinates)
+            if (e.has(c.qd)) return true;
+        return false;
+    }
+    bool depends_on_state(const GiNaC::ex& e) const {
+        for (const Coordinate& c : model_.coordinates)
+            if (e.has(c.q) || e.has(c.qd)) return true;
+        return false;
+    }
+    /// "the left side is k times the right side", from the factors the two sides do not share.
+    std::vector<std::string> factor_analysis(const GiNaC::ex& a, const GiNaC::ex& b, double tol,
+                                             std::string* ratio);
+    /// r = Σ c_i EL_i with c from the acceleration coefficients: a consequence of the equations of motion.
+    /// With `multipliers` (+1 or −1: the text's λ with eomgen's sign or the other), EL_i holds the constraint
+    /// forces ± Σ_k A_ki λ_k, the text's λ being the constraints' multipliers.
+    Tri euler_lagrange_combination(const GiNaC::ex& r, double tol, int* only, std::string* factor,
+                                   std::vector<std::string>* acting = nullptr, std::vector<bool>* terms = nullptr,
+                                   int multipliers = 0);
+    /// The constraints solved for some coordinates and velocities (those `keep` does not use first), with
+    /// the substitutions in LaTeX.
+    ConstraintReduction reduction(const GiNaC::ex& keep, std::string* shown);
+    /// r = k(q, t)·c with c the velocity form of constraint `index`, k ≠ 0 free of the velocities.
+    bool proportional_to_constraint(const GiNaC::ex& r, std::size_t index, double tol);
+    /// r is linear in the velocities (no products or powers of them) and has at least one.
+    bool linear_in_velocities(const GiNaC::ex& r) const;
+    /// r = c·target with c free of the state: the integral of motion written with the model's initial state.
+    bool proportional_in_state(const GiNaC::ex& r, const GiNaC::ex& target, double tol, GiNaC::ex* c);
+
+    // ----- diagnosis
+    std::vector<Group> groups(const GiNaC::ex& e) const;
+    std::string group_name(const GiNaC::ex& monomial) const;
+    Diagnosis compare_to(const GiNaC::ex& text, const GiNaC::ex& truth, double tol);
+    std::string pair_kind(const GiNaC::ex& t, const GiNaC::ex& u, double tol, int* score);
+    /// The factor c making c·truth closest to text group by group; the number of groups that then agree.
+    int best_factor(const GiNaC::ex& text, const GiNaC::ex& truth, double tol, GiNaC::ex* c);
+
+    // ----- checking
+    void collect_parts(const std::vector<FullChain>& chains);
+    void check_chain(const FullChain& c, std::vector<EquationCheck>& out);
+    EquationCheck check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge);
+    /// check_link, with anything GiNaC throws on a strange input turned into a "not comparable" verdict.
+    EquationCheck safe_check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
+        try {
+            EquationCheck r = check_link(c, i, j, bridge);
+            if (i == 0 && r.verdict == Verdict::Disagrees && !verifying_) {
+                const std::size_t at = c.relation_offsets[j - 1];
+                for (const TextMeaning& m : meanings_)
+                    if (at >= m.begin && at < m.end) {
+                        EquationCheck n;
+                        n.where = r.where;
+                        n.section = r.section;
+                        n.equation = r.equation;
+                        n.reason = "a definition: the text's $" + m.name + "$ is the " + m.noun + " here, not eomgen's $" +
+                                   m.name + "$; read so from line " + std::to_string(m.line + 1) +
+                                   " to the end of its section";
+                        return n;
+                    }
+            }
+            // (A label of eomgen's — V, T, L, p_θ — set to an expression in the state is a claim about it, whatever
+            // the sentence's cue; set to a number, `T = 1` "the unit of time", it is the text's other meaning. The
+            // amplitudes of a trial solution are not values the text sets either: `A_1 = A_2` "with ω² = 3k/m" is the
+            // mode's shape, a claim.)
+            const auto label_claim = [&](std::size_t label, std::size_t other) {
+                return truth_.count(c.sides[label].side->value) && depends_on_state(prepare(c.sides[other]).value);
+            };
+            const auto amplitudes = [&] {
+                const TrialSolution* t = discourse_->trial_at(c.relation_offsets[j - 1]);
+                if (!t) return false;
+                for (const GiNaC::ex& a : t->amplitude)
+                    if (!a.is_zero() && (c.sides[i].side->value.has(a) || c.sides[j].side->value.has(a))) return true;
+                return false;
+            };
+            if (r.verdict == Verdict::Disagrees && !verifying_ && c.sides[i].side->ok && c.sides[j].side->ok &&
+                !label_claim(i, j) && !label_claim(j, i) && !amplitudes() &&
+                sets_a_value(c.sides[i].side->value, c.sides[j].side->value, model_)) {
+                // "started with θ̇ = 0", "with m₁ = m₂ = m": values set for what follows, not an equation of motion.
+                const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
+                if (!cue.empty()) {
+                    EquationCheck n;
+                    n.where = r.where;
+                    n.section = r.section;
+                    n.equation = r.equation;
+                    n.reason = "a condition or a given value (after “" + cue +
+                               "”): it sets a value for what follows, not an equation of motion, and is not judged";
+                    return n;
+                }
+            }
+            if (r.verdict == Verdict::Disagrees && !verifying_) blame_definition(c, i, j, r);
+            if (!r.corrected.empty() && !verifying_) verify_correction(c, j, r);
+            if (!verifying_ && c.display) check_prose_label(c, i, j, r);
+            return r;
+        } catch (const std::exception& e) {
+            EquationCheck r;
+            r.where = d_.position(c.relation_offsets[j - 1]);
+            if (c.section >= 0) r.section = d_.sections[std::size_t(c.section)].title;
+            r.equation = c.sides[i].side->source + " = " + c.sides[j].side->source;
+            r.reason = std::string("cannot be evaluated: ") + e.what();
+            return r;
+        }
+    }
+    /// A line that disagrees only through a name the text defined (`V = m g y` with the text's y of line 23), its
+    /// other side eomgen's value: what the name would have to be for it to hold (apply_blames decides).
+    struct Blame {
+        std::string name;     ///< the defined name, canonical LaTeX
+        GiNaC::ex needed;     ///< what the line needs it to be
+        int definition_line;  ///< where the text defines it
+        SourcePos where;      ///< the line's verdict
+        std::string equation;
+    };
+    std::vector<Blame> blames_;
+    void blame_definition(const FullChain& c, std::size_t i, std::size_t j, const EquationCheck& r);
+    /// A definition that two or more lines blame alike is the slip: it disagrees (corrected to what they need), and
+    /// they are not comparable, pointing to it.
+    void apply_blames(std::vector<EquationCheck>& equations);
+    /// The link compared with what the sentence before its display calls it (labels.hpp).
+    void check_prose_label(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r);
+    /// Parses r.corrected back with the names of its line and checks it (correction_check.hpp); a correction
+    /// that does not agree is withheld, with a note.
+    void verify_correction(const FullChain& c, std::size_t j, EquationCheck& r);
+    /// a ≈ b compared with the Taylor expansion about q = 0 of the coordinates the text calls small (or, when
+    /// `implied`, every coordinate it holds), to the order it keeps (approximation.hpp). False when it does
+    /// not apply (no side is a polynomial in them).
+    bool approximation(std::size_t at, const std::string& left, const std::string& right, const Prepared& a,
+                       const Prepared& b, bool implied, EquationCheck& r);
+    bool verifying_ = false;
+    void check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other, double tol,
+                    EquationCheck& r);
+    /// T (or V) minus the text's other parts of it, when the text defines other parts.
+    std::optional<GiNaC::ex> expected_part(const GiNaC::ex& part) const {
+        std::string name;
+        GiNaC::ex whole;
+        if (!is_part(part, &name, &whole)) return std::nullopt;
+        GiNaC::ex others = 0;
+        bool any = false;
+        for (const auto& [sym, value] : part_value_) {
+            std::string n2;
+            if (sym.is_equal(part) || !is_part(sym, &n2) || n2[0] != name[0]) continue;
+            others += value;
+            any = true;
+        }
+        if (!any) return std::nullopt;
+        return whole - others;
+    }
+    /// `V = -m g l \cos\theta + \text{const}`: agrees (true) when the sides differ by a constant; else
+    /// the constants are dropped from a and b for the other comparisons (false).
+    bool up_to_constant(Prepared& a, Prepared& b, double tol, EquationCheck& r) {
+        if (a.constants.empty() && b.constants.empty()) return false;
+        GiNaC::exmap zero;
+        for (const Prepared* p : {&a, &b})
+            for (const GiNaC::ex& k : p->constants) zero[k] = 0;
+        a.value = a.value.subs(zero);
+        b.value = b.value.subs(zero);
+        if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
+        const int constant_side = a.value.is_zero() && !a.constants.empty()
+                                      ? 0
+                                      : (b.value.is_zero() && !b.constants.empty() ? 1 : -1);
+        return check_additive_constant(a.value, b.value, constant_side, model_, *this, tol, r);
+    }
+    void check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a, const Prepared& b,
+                      double tol, EquationCheck& r);
+    bool diagnose_solved_acceleration(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
+                                      EquationCheck& out);
+    void diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
+                                 EquationCheck& out);
+    /// The coordinate whose Euler–Lagrange equation r matches best (the most groups of terms equal after the
+    /// best factor, `factor`; `groups` of them).
+    int closest_euler_lagrange(const GiNaC::ex& r, double tol, GiNaC::ex* factor, int* groups);
+
+    const Model& model_;
+    const Equations& eq_;
+    const Derivation& d_;
+    const CheckOptions& options_;
+    /// The text's own meanings of label letters (meanings.hpp), as map entries scoped to the lines after their
+    /// definition, and the rows that define them.
+    std::vector<MapEntry> meaning_map_;
+    std::vector<TextMeaning> meanings_;
+    LatexContext ctx_;
+    Numbers numbers_;
+    codegen::SymbolTable printer_table_;
+    trig::Hints hints_;  ///< what is printed is rewritten towards: the author's angle sums (set per link)
+    ExMap<GiNaC::ex> truth_;          ///< label symbol → eomgen's value
+    ExMap<std::string> label_what_;   ///< label symbol → what it is, for the report
+    ExSet bare_only_;                 ///< labels that count only as a whole side (h, H)
+    ExSet result_labels_;             ///< labels of the model's declared results
+    ExMap<GiNaC::ex> part_value_;     ///< part symbol → its value in the text
+    ExMap<std::string> part_origin_;  ///< part symbol → "line N"
+    std::vector<GiNaC::ex> motion_;   ///< the equations of motion, = 0
+    std::vector<GiNaC::symbol> multipliers_;  ///< λ_k per constraint, as a text names them (\lambda, \lambda_{1})
+    std::vector<std::pair<GiNaC::ex, std::string>> integrals_of_motion_;
+    ExMap<std::vector<Complex>> signatures_;
+    TextDefinitions definitions_;   ///< K = ..., used where the text differentiates K
+    std::size_t current_offset_ = 0;  ///< file offset of the side being prepared (definitions before it apply)
+    void collect_definitions(const std::vector<FullChain>& chains);
+    HamiltonianReading hamilton_;  ///< p_q as variables, H(q, p, t) inside ∂
+    ParticularMotions motions_{model_, eq_, ctx_};  ///< [[motions]]: lines that hold on one motion
+    /// a = b (link j of c) on the model's particular motion for its section (motions.hpp).
+    bool on_motion(const FullChain& c, std::size_t i, std::size_t j, const GiNaC::ex& a, const GiNaC::ex& b,
+                   double tol, EquationCheck& r) {
+        if (motions_.empty()) return false;
+        std::vector<std::string> titles;
+        const std::size_t at = c.relation_offsets[j - 1];
+        for (const Section& s : d_.sections)
+            if (s.begin <= at && at < s.end) titles.push_back(s.title);
+        return motions_.check(a, b, c.sides[i].side->source, titles, *this, tol, r);
+    }
+    NormalModesCheck modes_;       ///< ω² and secular equations against the model's normal modes
+    AmplitudeEquations amplitudes_{model_, motion_};  ///< rows of (K − ω² M) A = 0 for a trial solution
+    /// The rows' roles besides claims (discourse.hpp), read from all rows before any is compared.
+    std::optional<Discourse> discourse_;
+    ParameterValues parameter_values_;  ///< for the numbers the text works out
+    static std::vector<std::string> written_names(const PSide& a, const PSide& b) {
+        std::vector<std::string> out;
+        for (const PSide* s : {&a, &b})
+            for (const NameUse& u : s->side->uses) out.push_back(u.name);
+        return out;
+    }
+    std::vector<std::string> chosen_notes_;  ///< "with $m_1 = 0$, the value the text chose on line 31" (check_link)
+    std::set<std::string> not_parts_;  ///< T_… the text sets to a nonzero constant: a period, not a part of T
+    std::set<std::size_t> at_a_point_;  ///< heads of definitions that hold at a point the text considers
+    LinearAlgebra algebra_;             ///< arrays, tuples, eigen-equations: entry by entry
+    int velocity_h_line_ = 0;       ///< the first line where the text writes H in velocities (0: none)
+    std::size_t velocity_h_at_ = 0;  ///< its file offset
+    /// The reference's value as a correction prints it: in the momenta when the text's side is written in them.
+    std::string printed_value(const Prepared& ref, const PSide& ref_side, const Prepared& text) {
+        const std::string in_velocities = latex(ref.value);
+        std::optional<GiNaC::ex> in_p;
+        if (text.has_momenta && ref.has_momenta) in_p = hamilton_.in_momenta(ref.value_p);
+        if (text.has_momenta && ref_side.side->ok && hamilton_.is_hamiltonian(ref_side.side->value))
+            in_p = hamilton_.hamiltonian();
+        // In the momenta unless that is much longer (an inverse mass matrix GiNaC cannot simplify).
+        if (in_p && expanded_terms(*in_p) <= kMaxExpandedTerms / 10) {
+            const std::string shown = latex(*in_p);
+            if (shown.size() <= 2 * in_velocities.size()) return shown;
+        }
+        return in_velocities;
+    }
+};
+
+
+/// Whether e holds abs, sign, heaviside, max or min (the model's, or GiNaC's abs and csgn from the text's |x|).
+inline bool has_nonsmooth(const GiNaC::ex& e) {
+    if (GiNaC::is_a<GiNaC::function>(e)) {
+        static const char* const names[] = {"abs", "sign", "heaviside", "max", "min", "csgn", "step"};
+        const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+        for (const char* n : names)
+            if (name == n) return true;
+    }
+    for (const GiNaC::ex& op : e)
+        if (has_nonsmooth(op)) return true;
+    return false;
+}
+
+/// Signs the sample states while it lives, where the expressions compared are not smooth.
+class SignedStates {
+  public:
+    template <class Numbers>
+    SignedStates(Numbers& numbers, bool needed) : restore_([&numbers, was = numbers.state_signed()] { numbers.sign_state(was); }) {
+        if (needed) numbers.sign_state(true);
+    }
+    ~SignedStates() { restore_(); }
+    SignedStates(const SignedStates&) = delete;
+    SignedStates& operator=(const SignedStates&) = delete;
+
+  private:
+    std::function<void()> restore_;
+};
+
+
+}  // namespace eomgen::checker::detail

@@ -1,0 +1,721 @@
+/** @file compare_link.cpp  One link a = b judged: its role, the comparisons in their order, and the corrections
+ * checked before they are printed. */
+#include "checker/checker_internals.hpp"
+
+namespace eomgen::checker::detail {
+
+EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
+    EquationCheck r;
+    const PSide& L = c.sides[i];
+    const PSide& R = c.sides[j];
+    const std::size_t rel_at = c.relation_offsets[j - 1];
+    r.where = d_.position(bridge ? c.relation_offsets[i] : rel_at);
+    hints_.angles = trig::angle_sums((L.side->ok ? L.side->value : 0) + (R.side->ok ? R.side->value : 0));
+    if (c.section >= 0) r.section = d_.sections[std::size_t(c.section)].title;
+    Relation rel = Relation::Equal;
+    for (std::size_t q = i; q < j; ++q)
+        if (c.relations[q] != Relation::Equal) rel = c.relations[q];
+    const std::string sign =
+        rel == Relation::Approx ? " \\approx " : (rel == Relation::Inequality ? " \\;?\\; " : " = ");
+    r.equation = (L.side->source.empty() ? std::string("\\ldots") : L.side->source) + sign +
+                 (R.side->source.empty() ? std::string("\\ldots") : R.side->source);
+    if (bridge) r.notes.push_back("compared across the step(s) between them that cannot be compared");
+    if (discourse_->sets_trial(rel_at) && j == i + 1) {
+        r.reason = "a trial solution: not judged; the equations for its amplitudes that follow are compared with the "
+                   "rows of $(K - \\omega^2 M) A = 0$ about rest";
+        return r;
+    }
+    if (const Discourse::Naming* n = discourse_->naming_at(rel_at); n && j == i + 1) {
+        r.reason = "a definition: the text names $" + n->quantity_latex + "$ $" + n->letter_latex +
+                   "$ here, and reads so to the end of its section (outside ∂/∂, where $" + n->letter_latex +
+                   "$ is still eomgen's)";
+        return r;
+    }
+    if (rel == Relation::Inequality) {
+        r.reason = "an inequality or a relation other than equality is not compared";
+        return r;
+    }
+    if (rel == Relation::Equal && modes_.check(*L.side, *R.side, ctx_, *this, r)) return r;
+    if (rel == Relation::Equal && algebra_.check(*L.side, L.base, *R.side, R.base, *this, r)) return r;
+    // A part of T or V defined by this link: compare it with its share of eomgen's T or V.
+    for (int side = 0; side < 2; ++side) {
+        const PSide& P = side == 0 ? L : R;
+        const PSide& O = side == 0 ? R : L;
+        if (!P.side->ok || !is_part(P.side->value)) continue;
+        const GiNaC::ex part = P.side->value;
+        Prepared o = prepare(O, &part);
+        if (!o.ok) {
+            r.reason = o.problem;
+            return r;
+        }
+        if (o.value.has(part)) break;  // T_{a} = T_{a}: an identity, handled below
+        if (!o.comparable() || !o.units.empty()) break;
+        const double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
+        r.notes.insert(r.notes.end(), o.notes.begin(), o.notes.end());
+        check_part(part, P.side->source, o, tol, r);
+        return r;
+    }
+    Prepared a = prepare(L), b = prepare(R);
+    if (!a.ok || !b.ok) {
+        r.reason = !a.ok ? a.problem : b.problem;
+        return r;
+    }
+    // A parameter the text set for this paragraph (`m_1 = 0`): both the text and eomgen's equations take it.
+    GiNaC::exmap chosen;
+    chosen_notes_.clear();
+    for (std::size_t k = 0; k < model_.parameters.size(); ++k)
+        if (const auto [v, origin] = parameter_values_.at(k, rel_at); origin.rfind("chosen by the text", 0) == 0) {
+            chosen[model_.parameters[k].symbol] = exact_decimal(v);
+            chosen_notes_.push_back("with $" + (model_.parameters[k].latex.empty() ? model_.parameters[k].name
+                                                                                : model_.parameters[k].latex) +
+                                    " = " + latex(exact_decimal(v)) + "$, the value the text chose on line " +
+                                    origin.substr(origin.rfind(' ') + 1));
+        }
+    for (const auto& [symbol, stated] : discourse_->conditions_at(rel_at)) {
+        chosen[symbol] = stated.first;
+        chosen_notes_.push_back("at $" + latex(symbol) + " = " + latex(stated.first) +
+                                "$, the condition the text states on line " + std::to_string(stated.second));
+    }
+    struct Unpin {
+        Numbers& n;
+        ~Unpin() { n.pin({}); }
+    } const unpin{numbers_};
+    numbers_.pin(chosen);
+    for (const Prepared* p : {&a, &b}) r.notes.insert(r.notes.end(), p->notes.begin(), p->notes.end());
+    std::sort(r.notes.begin(), r.notes.end());
+    r.notes.erase(std::unique(r.notes.begin(), r.notes.end()), r.notes.end());
+    // Comparing the sides takes their difference and their ratio over a common denominator.
+    if (const double terms = expanded_terms(a.value - b.value); terms > kMaxExpandedTerms) {
+        std::ostringstream os;
+        os << "too large to compare within the budget: the two sides over a common denominator expand to up to "
+           << std::setprecision(3) << terms << " terms (at most " << static_cast<long>(kMaxExpandedTerms) << ")";
+        r.reason = os.str();
+        return r;
+    }
+    double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
+    if (rel == Relation::Approx) tol = std::max(tol, 1e-2);
+    if (up_to_constant(a, b, tol, r)) return r;
+    // \approx, \simeq: the Taylor expansion to the order the text keeps; "= ... for small θ" too, where it
+    // would otherwise disagree.
+    const bool approx = rel == Relation::Approx;
+    if (approx && approximation(rel_at, L.side->source, R.side->source, a, b, true, r)) return r;
+    check_values(c, i, j, a, b, tol, r);
+    if (r.verdict == Verdict::Disagrees && r.compared_with == "$L$") {  // L + dF/dt: the same equations
+        EquationCheck alt;
+        alt.where = r.where;
+        alt.section = r.section;
+        alt.equation = r.equation;
+        alt.notes = r.notes;
+        if (check_equivalent_lagrangian(a.value, b.value, model_, *this, tol,
+                                        says_total_derivative_dropped(d_, rel_at), alt))
+            return alt;
+        r.notes = alt.notes;
+        // L = L_cm + L_rel: the text's L of the coordinates it keeps (a two-body problem's relative motion).
+        const bool a_is_L = equal(a.value, eq_.L, 1e-9) == Tri::Yes, b_is_L = equal(b.value, eq_.L, 1e-9) == Tri::Yes;
+        if (a_is_L != b_is_L &&
+            check_separated_lagrangian(a_is_L ? b.value : a.value, eq_.L, model_, *this, alt))
+            return alt;
+    }
+    // ∂H/∂θ after the text wrote H in velocities: the reading it set up (at fixed θ̇) when Hamilton's disagrees.
+    if (r.verdict == Verdict::Disagrees && velocity_h_line_ > 0 && rel_at > velocity_h_at_ &&
+        (hamilton_.has_hamiltonian(L.side->value) || hamilton_.has_hamiltonian(R.side->value))) {
+        hamilton_.set_velocity_reading(true);
+        Prepared va = prepare(L), vb = prepare(R);
+        EquationCheck alt;
+        alt.where = r.where;
+        alt.section = r.section;
+        alt.equation = r.equation;
+        if (va.ok && vb.ok) check_values(c, i, j, va, vb, tol, alt);
+        hamilton_.set_velocity_reading(false);
+        if (alt.verdict == Verdict::Agrees) {
+            alt.notes.push_back("read as the text set it up: H written in velocities (line " +
+                                std::to_string(velocity_h_line_) +
+                                ") and differentiated at fixed velocities; Hamilton's equations take ∂H/∂q at "
+                                "fixed momenta, under which this line does not hold");
+            return alt;
+        }
+    }
+    if (!approx && r.verdict == Verdict::Disagrees) {
+        EquationCheck alt;
+        alt.where = r.where;
+        alt.section = r.section;
+        alt.equation = r.equation;
+        if (approximation(rel_at, L.side->source, R.side->source, a, b, false, alt) && alt.verdict == Verdict::Agrees)
+            return alt;
+    }
+    return r;
+}
+
+void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r) {
+    // A row in a letter the text has just given another meaning (`p_\theta = L`) is about that quantity, not
+    // about what the sentence before the display names.
+    for (const std::string& n : r.notes)
+        if (n.find(", as the text names it on line ") != std::string::npos) return;
+    const auto coordinate = [this](const std::string& latex) {
+        LatexContext ctx = ctx_;
+        const Side s = parse_expression(latex, ctx);
+        for (std::size_t k = 0; s.ok && k < model_.dof(); ++k)
+            if (s.value.is_equal(model_.coordinates[k].q)) return int(k);
+        return -1;
+    };
+    // A chain that names its quantity on the left (`T &= …` under "the kinetic energy T and the potential energy
+    // U are") is labelled by its own letter when the sentence names that quantity too, not by the last quantity
+    // the sentence names. (A sentence that names only another one still disagrees with it.)
+    static const std::pair<const char*, const char*> kSelfLabels[] = {
+        {"T", "kinetic"},          {"K", "kinetic"},        {"V", "potential"},      {"U", "potential"},
+        {"L", "lagrangian"},       {"H", "hamiltonian"},    {"E", "energy"},         {"\\mathcal{L}", "lagrangian"},
+        {"\\mathscr{L}", "lagrangian"}};
+    std::string head = c.sides[0].side->source;
+    head.erase(0, std::min(head.find_first_not_of(" \t"), head.size()));
+    head.erase(std::min(head.find_last_not_of(" \t") + 1, head.size()));
+    bool self_labelled = false;
+    for (const auto& [letter, noun] : kSelfLabels)
+        if (head == letter) {
+            self_labelled = lead_in(d_, c.relation_offsets[j - 1], 2).find(noun) != std::string::npos;
+            break;
+        }
+    try {  // what GiNaC throws on a strange input leaves the verdict as it is
+        const auto label = label_before(d_, c.relation_offsets[j - 1], coordinate, model_);
+        if (!label) return;
+        Prepared a = prepare(c.sides[i]), b = prepare(c.sides[j]);
+        if (!a.comparable() || !b.comparable()) return;
+        GiNaC::exmap zero;  // `= \text{const}`: any constant
+        for (const Prepared* p : {&a, &b})
+            for (const GiNaC::ex& k : p->constants) zero[k] = 0;
+        const double tol = std::max(1e-9, c.sides[i].side->rounding + c.sides[j].side->rounding);
+        EquationCheck labelled = r;
+        check_label(*label, a.value.subs(zero), b.value.subs(zero), model_, eq_, *this, tol, labelled);
+        if (self_labelled && labelled.verdict == Verdict::Disagrees && r.verdict != Verdict::Disagrees) return;
+        r = std::move(labelled);
+    } catch (const std::exception&) {
+    }
+}
+
+bool Checker::approximation(std::size_t at, const std::string& left, const std::string& right, const Prepared& a,
+                            const Prepared& b, bool implied, EquationCheck& r) {
+    if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
+    const int ref_side = a.has_truth_label && !a.has_part ? 0 : (b.has_truth_label && !b.has_part ? 1 : -1);
+    return check_approximation(d_, model_, motion_, at, {left, right}, a.value, b.value, ref_side, implied, *this, r);
+}
+
+void Checker::verify_correction(const FullChain& c, std::size_t j, EquationCheck& r) {
+    const std::size_t at = c.relation_offsets[j - 1];
+    const auto saved_names = ctx_.names;
+    const auto saved_free = ctx_.free_names;
+    verifying_ = true;
+    apply_map(d_.position(at).line);
+    std::string why;
+    try {
+        why = correction_problem(r.corrected, ctx_, [&](const Chain& ch, std::size_t a, std::size_t b) {
+            FullChain f;
+            f.section = c.section;
+            f.display = c.display;
+            for (const Side& s : ch.sides) f.sides.push_back({&s, at});
+            f.relations = ch.relations;
+            // Where the slip is: what holds there (definitions, conditions, a trial solution) holds for the correction.
+            f.relation_offsets.assign(ch.relation_offsets.size(), at);
+            return safe_check_link(f, a, b, false);
+        });
+    } catch (const std::exception& e) {
+        why = std::string("it could not be checked: ") + e.what();
+    }
+    verifying_ = false;
+    ctx_.names = saved_names;
+    ctx_.free_names = saved_free;
+    if (why.empty()) return;
+    r.notes.push_back("no correction is printed: the one computed does not check (" + why + ")");
+    r.corrected.clear();
+}
+
+void Checker::check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other,
+                         double tol, EquationCheck& r) {
+    std::string name;
+    GiNaC::ex whole;
+    is_part(part, &name, &whole);
+    const std::string whole_name = name.substr(0, 1);
+    r.compared_with = m(name) + ", a part of " + m(whole_name);
+    // Its terms are terms of T (or V): then it is a part of it.
+    std::vector<GiNaC::ex> wt, pt;
+    const GiNaC::ex we = whole.expand(), pe = other.value.expand();
+    if (GiNaC::is_a<GiNaC::add>(we))
+        for (const GiNaC::ex& t : we) wt.push_back(t);
+    else
+        wt.push_back(we);
+    if (GiNaC::is_a<GiNaC::add>(pe))
+        for (const GiNaC::ex& t : pe) pt.push_back(t);
+    else
+        pt.push_back(pe);
+    bool subset = !pe.is_zero();
+    std::vector<bool> used(wt.size(), false);
+    for (const GiNaC::ex& t : pt) {
+        bool found = false;
+        for (std::size_t k = 0; k < wt.size() && !found; ++k)
+            if (!used[k] && same_signature(signature(t), signature(wt[k]), tol)) found = used[k] = true;
+        subset = subset && found;
+    }
+    if (subset) {
+        r.verdict = Verdict::Agrees;
+        r.reason = "its terms are terms of eomgen's " + m(whole_name);
+        return;
+    }
+    // Otherwise it should be T minus the other parts the text defines.
+    GiNaC::ex others = 0;
+    std::vector<std::string> names;
+    for (const auto& [sym, value] : part_value_) {
+        std::string n2;
+        GiNaC::ex w2;
+        if (sym.is_equal(part) || !is_part(sym, &n2, &w2) || n2[0] != name[0]) continue;
+        others += value;
+        names.push_back(m(n2) + " (" + part_origin_.at(sym) + ")");
+    }
+    std::sort(names.begin(), names.end());
+    GiNaC::ex expected;
+    if (!names.empty()) {
+        expected = whole - others;
+        std::string list;
+        for (std::size_t k = 0; k < names.size(); ++k) list += (k ? ", " : "") + names[k];
+        if (equal(other.value, expected, tol) == Tri::Yes) {
+            r.verdict = Verdict::Agrees;
+            r.reason = "it is eomgen's " + m(whole_name) + " minus the text's other parts: " + list;
+            return;
+        }
+        r.notes.push_back("compared with eomgen's " + m(whole_name) +
+                          " minus the text's other parts: " + list);
+    } else {
+        // No other parts: its share of T is the terms of T of the same kinds (velocity monomials).
+        expected = 0;
+        for (const Group& g : groups(whole))
+            for (const Group& h : groups(other.value))
+                if (g.monomial.is_equal(h.monomial)) expected += g.coefficient * g.monomial;
+        r.notes.push_back("compared with the terms of eomgen's " + m(whole_name) + " of the same kinds");
+    }
+    r.verdict = Verdict::Disagrees;
+    const Diagnosis dg = compare_to(other.value, expected, tol);
+    r.difference = dg.difference;
+    r.wrong_terms = dg.lines;
+    r.corrected = part_source + " = " + latex(expected);
+}
+
+void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a_read,
+                           const Prepared& b_read, double tol, EquationCheck& r) {
+    Prepared a = a_read, b = b_read;
+    const PSide& L = c.sides[i];
+    const PSide& R = c.sides[j];
+    auto label_of = [&](const PSide& s) -> std::string {
+        if (!s.side->ok) return "";
+        std::vector<std::string> unused;
+        auto it = label_what_.find(discourse_->renamed(s.side->value, s.base + s.side->begin, unused));
+        return it == label_what_.end() ? "" : it->second;
+    };
+    const std::string ll = label_of(L), rl = label_of(R);
+    // A declared result is described in words (with its LaTeX inside), eomgen's labels are LaTeX.
+    auto shown = [](const std::string& what) {
+        return what.rfind("the declared result", 0) == 0 ? what : m(what);
+    };
+    r.compared_with = !ll.empty() ? shown(ll) : (!rl.empty() ? shown(rl) : "");
+    const bool rounded = tol > 1e-9;
+    const std::string within = rounded ? " within the rounding of its numbers (" +
+                                             [&] {
+                                                 std::ostringstream os;
+                                                 os.precision(2);
+                                                 os << tol * 100 << "%)";
+                                                 return os.str();
+                                             }()
+                                       : "";
+
+    // The amplitudes of a trial solution (`x_j = A_j e^{i\omega t}`): rows of (K − ω² M) A = 0.
+    if (const TrialSolution* trial = discourse_->trial_at(c.relation_offsets[j - 1]);
+        trial && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
+        amplitudes_.check(a.value, b.value, L.side->source, R.side->source, written_names(L, R), *trial,
+                          discourse_->stated_frequency(c.relation_offsets[j - 1]), ctx_, *this, r))
+        return;
+    // `s(t) = s_0\cos(\omega t)`: a solution the text claims for a coordinate, put into its equation of motion.
+    if (a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
+        check_claimed_solution(a.value, b.value, model_, eq_, motion_, ctx_, *this, r,
+                               discourse_->stated_frequencies(c.relation_offsets[j - 1])))
+        return;
+    // Free names: an identity still agrees, anything else cannot be judged.
+    if (!a.comparable() || !b.comparable()) {
+        // Vectors are not scalars: a×b = −b×a, so only identities in scalar unknowns are claimed.
+        if (a.vectors.empty() && b.vectors.empty() && equal(a.value, b.value, tol) == Tri::Yes) {
+            r.verdict = Verdict::Agrees;
+            r.compared_with = "an identity";
+            r.reason = "both sides are equal (in the text's own symbols)" + within;
+            return;
+        }
+        // `k = g/l`: a definition, used in the rest of its section (definitions.hpp), not a line of a motion.
+        const std::string def = definitions_.defined_at(L.base + L.side->begin);
+        if (def.empty() && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
+            on_motion(c, i, j, a.value, b.value, tol, r))
+            return;
+        std::vector<std::string> unknown, vectors;
+        auto describe = [&](const PSide& s, const Prepared& p) {
+            for (const FreeName* f : p.vectors) {
+                const std::string x = m(f->name);
+                if (std::find(vectors.begin(), vectors.end(), x) == vectors.end()) vectors.push_back(x);
+            }
+            for (const FreeName* f : p.unknown) {
+                std::string x = m(f->name);
+                for (const NameUse& u : s.side->uses)
+                    if (u.name == f->name) {
+                        x += " (" + where(s.base + u.offset) + ")";
+                        break;
+                    }
+                if (f->name == "d") x += " (a differential?)";
+                if (std::find(unknown.begin(), unknown.end(), x) == unknown.end()) unknown.push_back(x);
+            }
+        };
+        describe(L, a);
+        describe(R, b);
+        auto join = [](const std::vector<std::string>& v) {
+            std::string s;
+            for (std::size_t k = 0; k < v.size(); ++k) s += (k ? ", " : "") + v[k];
+            return s;
+        };
+        if (!unknown.empty())
+            r.reason = "unknown symbol" + std::string(unknown.size() > 1 ? "s " : " ") + join(unknown) +
+                       ": not a symbol of the model (--map can say what it stands for)";
+        else
+            r.reason = "vector quantities (" + join(vectors) + ") are not compared";
+        if (!def.empty())
+            r.reason += "; a definition: the text's abbreviation $" + def + "$ for the rest of its " +
+                        (at_a_point_.count(L.base + L.side->begin) ? "paragraph (its value at the point the text considers)"
+                                                                   : "section");
+        return;
+    }
+    // A number the text works out: units to SI, the parameters' values, its printed digits.
+    if (check_number(a.value, b.value, {L.side->source, R.side->source}, c.relation_offsets[j - 1], model_, ctx_, d_,
+                     parameter_values_, r))
+        return;
+    // A parameter the text set for this paragraph (`m_1 = 0`): the text's sides take it as eomgen's equations do
+    // (the sample points hold it, Numbers::pin).
+    // A condition stated again (`\theta = 0` at θ = 0) is not an identity: it is judged as the condition it is.
+    if (!numbers_.pinned().empty() && !condition_of(a.value, b.value, model_).empty()) numbers_.pin({});
+    if (!numbers_.pinned().empty()) {
+        r.notes.insert(r.notes.end(), chosen_notes_.begin(), chosen_notes_.end());
+        a.value = subs_unless_pole(a.value, numbers_.pinned()).value_or(a.value);
+        b.value = subs_unless_pole(b.value, numbers_.pinned()).value_or(b.value);
+    }
+    if (!a.units.empty() || !b.units.empty()) {
+        if (equal(a.value, b.value, tol) == Tri::Yes) {
+            r.verdict = Verdict::Agrees;
+            r.compared_with = "an identity";
+            r.reason = "both sides are equal, units included" + within;
+            return;
+        }
+        r.reason = "a quantity with units that do not cancel";
+        return;
+    }
+    const GiNaC::ex r_ex = a.value - b.value;
+    // 1. An identity: equal as they stand (a label and its value, two steps of a chain, T = T_{1} + T_{2}).
+    const Tri same = equal(a.value, b.value, tol);
+    if (same == Tri::Yes && (has_root(a.value) || has_root(b.value))) {
+        // ṙ = √(2/m (E − V)): equal where the sampled velocities are positive, but a root has no sign. With every
+        // velocity reversed the sides must still agree, or a ± is missing.
+        GiNaC::exmap reversed;
+        std::string names;  // the velocities of the side without the root (both sides' when both have one)
+        const GiNaC::ex& bare = !has_root(a.value) ? a.value : !has_root(b.value) ? b.value : r_ex;
+        int named = 0;
+        for (const Coordinate& q : model_.coordinates) {
+            if (r_ex.has(q.qd)) reversed[q.qd] = -q.qd;
+            if (bare.has(q.qd)) {
+                names += (names.empty() ? "" : ", ") + m(latex(q.qd));
+                ++named;
+            }
+        }
+        if (!reversed.empty() && equal(a.value.subs(reversed), b.value.subs(reversed), tol) == Tri::No) {
+            r.verdict = Verdict::Disagrees;
+            r.compared_with = "the same line with the velocities reversed";
+            r.reason = "the sides are equal only while " + names + (named > 1 ? " have" : " has") +
+                       " the sign of the square root: a root is never negative, so a ± (or the sign of the "
+                       "velocity) is missing";
+            return;
+        }
+    }
+    if (same == Tri::Yes) {
+        r.verdict = Verdict::Agrees;
+        if (r.compared_with.empty()) r.compared_with = "an identity";
+        r.reason = (ll.empty() && rl.empty() ? std::string("both sides are equal")
+                                             : "equal to " + [&] {
+                                                   const std::string& w = ll.empty() ? rl : ll;
+                                                   return w.rfind("the declared result", 0) == 0 ? w : "eomgen's " + m(w);
+                                               }()) +
+                   within;
+        return;
+    }
+    if (same == Tri::Unknown) {
+        r.reason = "could not be evaluated at enough points to decide";
+        return;
+    }
+    // 2a. With the multipliers, written on the constraints (φ = ωt put in: cos ωt for cos φ, ω for φ̇, φ̈ = 0): it
+    // holds at states on them, λ from the constrained equations.
+    if (std::any_of(multipliers_.begin(), multipliers_.end(), [&](const GiNaC::symbol& l) { return r_ex.has(l); }))
+        for (int sign : {1, -1}) {
+            const std::optional<bool> holds = holds_on_constrained_motion(r_ex, model_, eq_, tol, multipliers_, sign);
+            if (!holds || !*holds) continue;
+            r.verdict = Verdict::Agrees;
+            r.compared_with = "the equations of motion with the constraint forces";
+            r.reason = std::string("it holds on every motion, with the constraints put in (checked at sample states)") +
+                       (sign < 0 ? ", the multiplier taken with the opposite sign to eomgen's (M q'' = f + A^T λ)" : "") +
+                       within;
+            return;
+        }
+    // 2. An equation of motion: a combination of the Euler–Lagrange equations.
+    if (has_acceleration(r_ex)) {
+        int only = -1;
+        std::string factor;
+        std::vector<std::string> acting;
+        // With the multipliers written (m ẍ = 2 x λ): the equations with the constraint forces, λ with eomgen's sign
+        // (M q̈ = f + Aᵀλ, A from the constraint as the model writes it) or the opposite one.
+        const bool with_lambda = std::any_of(multipliers_.begin(), multipliers_.end(),
+                                             [&](const GiNaC::symbol& l) { return r_ex.has(l); });
+        for (int sign : {1, -1}) {
+            if (!with_lambda) break;
+            if (euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor, nullptr, nullptr, sign) !=
+                Tri::Yes)
+                continue;
+            r.verdict = Verdict::Agrees;
+            r.compared_with = (only >= 0 ? "the Euler–Lagrange equation for " +
+                                               m(model_.coordinates[std::size_t(only)].latex)
+                                         : std::string("the Euler–Lagrange equations")) +
+                              " with the constraint forces";
+            r.reason = (factor.empty() ? std::string(only >= 0 ? "the same equation" : "a combination of them")
+                                       : "the same equation times " + m(factor)) +
+                       (sign < 0 ? ", the multiplier taken with the opposite sign to eomgen's (M q'' = f + A^T λ)"
+                                 : "") +
+                       within;
+            return;
+        }
+        if (euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor, &acting) == Tri::Yes) {
+            if (!acting.empty()) {
+                std::string names;
+                for (std::size_t k = 0; k < acting.size(); ++k) names += (k ? ", " : "") + ("'" + acting[k] + "'");
+                r.compared_with = only >= 0 ? "the Euler–Lagrange equation for " +
+                                                  m(model_.coordinates[std::size_t(only)].latex)
+                                            : "the Euler–Lagrange equations";
+                r.reason = "it is that equation without the forces of the constraint" +
+                           std::string(acting.size() > 1 ? "s " : " ") + names + ", which act along it";
+                if (only >= 0) {
+                    GiNaC::ex force = 0;
+                    for (std::size_t k = 0; k < eq_.constraints.size(); ++k)
+                        force += eq_.constraints[k].jacobian[std::size_t(only)] * multipliers_[k];
+                    r.verdict = Verdict::Disagrees;
+                    r.reason += ": the constraint force " + m(latex(force)) + " is missing (" +
+                                m("\\lambda") + " with eomgen's sign, M q'' = f + A^T λ)";
+                } else {
+                    r.reason += ": the true equations hold their multipliers";
+                }
+                return;
+            }
+            r.verdict = Verdict::Agrees;
+            if (only >= 0) {
+                r.compared_with =
+                    "the Euler–Lagrange equation for " + m(model_.coordinates[std::size_t(only)].latex);
+                r.reason = factor.empty() ? "the same equation" + within
+                                          : "the same equation times " + m(factor) + within;
+            } else {
+                r.compared_with = "the Euler–Lagrange equations";
+                r.reason = "a combination of them" + within;
+            }
+            return;
+        }
+    }
+    // 2b. With constraints, no multipliers written: an equation that holds on every motion (a constraint
+    // differentiated twice, or the equations with the constraint forces eliminated).
+    if (has_acceleration(r_ex) && !eq_.constraints.empty() &&
+        std::none_of(multipliers_.begin(), multipliers_.end(), [&](const GiNaC::symbol& l) { return r_ex.has(l); })) {
+        if (const std::optional<bool> holds = holds_on_constrained_motion(r_ex, model_, eq_, tol); holds && *holds) {
+            r.verdict = Verdict::Agrees;
+            r.compared_with = "the equations of motion with the constraints";
+            r.reason = "it holds on every motion: q'' from M q'' = f + A^T λ and the constraints, the constraint "
+                       "forces eliminated (checked at sample states)" +
+                       within;
+            return;
+        }
+    }
+    // 3. An integral of motion with the model's initial state (also after squaring a square root).
+    if (!has_acceleration(r_ex) && depends_on_state(r_ex)) {
+        std::vector<std::pair<GiNaC::ex, std::string>> forms{{r_ex, ""}};
+        if ((has_root(a.value) || has_root(b.value)) &&
+            expanded_terms(a.value * a.value - b.value * b.value) <= kMaxExpandedTerms)
+            forms.push_back({(a.value * a.value - b.value * b.value).expand(),
+                             " after squaring both sides (the sign of the root is not checked)"});
+        for (const auto& [form, how] : forms)
+            for (const auto& [target, what] : integrals_of_motion_) {
+                GiNaC::ex factor;
+                if (proportional_in_state(form, target, tol, &factor)) {
+                    r.verdict = Verdict::Agrees;
+                    r.compared_with = what;
+                    r.reason = "proportional to it" + how + within;
+                    return;
+                }
+            }
+    }
+    // 3b. With constraints: a constraint (up to a non-zero factor, at position or velocity level), or an
+    // equation that holds once the constraints are solved for some coordinates and velocities.
+    if (!eq_.constraints.empty() && !has_acceleration(r_ex)) {
+        for (std::size_t k = 0; k < eq_.constraints.size(); ++k) {
+            const ConstraintEquations& ck = eq_.constraints[k];
+            const bool position = ck.kind == ConstraintKind::Holonomic && !has_velocity(r_ex);
+            const GiNaC::ex& target = position ? ck.position : ck.velocity;
+            GiNaC::ex factor;
+            const bool same = position ? depends_on_state(r_ex) && equal(r_ex, target, tol) == Tri::Yes
+                                       : has_velocity(r_ex) && proportional_to_constraint(r_ex, k, tol);
+            const bool scaled = !same && position && depends_on_state(r_ex) &&
+                                proportional_in_state(r_ex, target, tol, &factor);
+            if (same || scaled) {
+                r.verdict = Verdict::Agrees;
+                r.compared_with = "the constraint '" + ck.name + "' (" + m(latex(target) + " = 0") + ")";
+                r.reason = "the same constraint" + std::string(position ? "" : ", up to a factor free of the velocities") + within;
+                return;
+            }
+        }
+        const bool labelled = a.has_truth_label || b.has_truth_label;
+        std::string shown;
+        const ConstraintReduction red = reduction(labelled ? (a.has_truth_label ? b.value : a.value) : r_ex, &shown);
+        if (!red.solved.empty() && depends_on_state(r_ex) &&
+            equal(red.apply(a.value), red.apply(b.value), tol) == Tri::Yes) {
+            r.verdict = Verdict::Agrees;
+            if (r.compared_with.empty()) r.compared_with = "the constraints";
+            r.reason = "equal on the constraints (" + shown + ")" + within;
+            return;
+        }
+    }
+    if (const std::string q = condition_of(a.value, b.value, model_); !q.empty()) {
+        const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
+        r.reason = cue.empty() ? "a condition: the point or motion the text considers, where " + m(q) +
+                                     " takes this value (not an equation of the motion, so not judged)"
+                               : "a condition or a given value (after “" + cue +
+                                     "”): it sets a value for what follows, not an equation of motion, and is not "
+                                     "judged";
+        return;
+    }
+    // A formula set equal to a number that is not a worked-out number (printed_numbers: no single decimal or
+    // number with units, such as the Earth's (I_3 - I)/I \approx 3 \times 10^{-3}) is particular data.
+    auto constant = [&](const GiNaC::ex& x) {
+        for (const Parameter& p : model_.parameters)
+            if (x.has(p.symbol)) return false;
+        return !depends_on_state(x) && !has_acceleration(x) && !x.has(model_.t);
+    };
+    const GiNaC::ex& varying = constant(a.value) ? b.value : a.value;
+    if (constant(a.value) != constant(b.value) && !(constant(a.value) ? a.value : b.value).is_zero() &&
+        !has_velocity(varying) && !has_acceleration(varying)) {
+        r.reason = "a value for particular data: not compared (only a printed decimal or a number with units is "
+                   "worked out with the model's values)";
+        return;
+    }
+    // 4. It disagrees with what it tries to be.
+    const bool left_ref = (a.has_truth_label || a.from_definition) && !a.has_part;
+    const bool right_ref = !left_ref && (b.has_truth_label || b.from_definition) && !b.has_part;
+    if (left_ref || right_ref) {
+        const bool left_is_truth = left_ref;
+        const PSide& ref = left_is_truth ? L : R;
+        const Prepared& truth = left_is_truth ? a : b;
+        const Prepared& text = left_is_truth ? b : a;
+        if (has_acceleration(r_ex) && !has_acceleration(truth.value)) {
+            // "... = 0" against d/dt(∂L/∂q̇) − ∂L/∂q written with L: fall through to the equation-of-motion
+            // check.
+        } else {
+            r.verdict = Verdict::Disagrees;
+            if (r.compared_with.empty())
+                r.compared_with = truth.has_truth_label ? "eomgen's value of " + m(ref.side->source)
+                                                        : m(ref.side->source) + " from the text's definition";
+            const Diagnosis dg = compare_to(text.value, truth.value, tol);
+            r.difference = dg.difference;
+            // A text in momenta, in velocities: sin² + cos² = 1 may shorten the difference a lot.
+            if (text.has_momenta)
+                if (const std::string s = latex(shorter_trig((text.value - truth.value).expand()));
+                    s.size() < r.difference.size())
+                    r.difference = s;
+            r.wrong_terms = dg.lines;
+            r.corrected = ref.side->source + " = " + printed_value(truth, ref, text);
+            return;
+        }
+    }
+    if (on_motion(c, i, j, a.value, b.value, tol, r)) return;
+    if (has_acceleration(r_ex)) {
+        diagnose_euler_lagrange(L, R, r_ex, tol, r);
+        return;
+    }
+    // A velocity-level equation in a model with constraints: the constraint it matches best.
+    if (!eq_.constraints.empty() && linear_in_velocities(r_ex) && groups(r_ex).size() >= 2) {
+        int best = 0;
+        std::size_t best_k = 0;
+        GiNaC::ex best_c = 1;
+        for (std::size_t k = 0; k < eq_.constraints.size(); ++k) {
+            GiNaC::ex cf = 1;
+            const int count = best_factor(r_ex, eq_.constraints[k].velocity, tol, &cf);
+            if (count > best) {
+                best = count;
+                best_k = k;
+                best_c = cf;
+            }
+        }
+        if (best >= 1) {
+            const ConstraintEquations& ck = eq_.constraints[best_k];
+            const GiNaC::ex truth = (best_c * ck.velocity).expand();
+            r.verdict = Verdict::Disagrees;
+            r.compared_with = "the constraint '" + ck.name + "' (" + m(latex(ck.velocity) + " = 0") + ")";
+            if (!best_c.is_equal(1)) r.notes.push_back("compared after scaling the constraint by " + m(latex(best_c)));
+            const Diagnosis dg = compare_to(r_ex, truth, tol);
+            r.difference = dg.difference;
+            r.wrong_terms = dg.lines;
+            r.corrected = latex(truth) + " = 0";
+            return;
+        }
+    }
+    const bool chain_link = c.sides.size() >= 3;
+    if (chain_link) {
+        r.verdict = Verdict::Disagrees;
+        r.compared_with = "the previous step of the chain";
+        const bool sums =
+            GiNaC::is_a<GiNaC::add>(a.value.expand()) || GiNaC::is_a<GiNaC::add>(b.value.expand());
+        // What the chain is about (T = ..., T_{disk} = ...): when the right side equals it, the slip is on
+        // the left.
+        bool slip_left = false;
+        if (c.sides[0].side->ok) {
+            std::optional<GiNaC::ex> subject;
+            auto t = truth_.find(c.sides[0].side->value);
+            if (t != truth_.end()) subject = t->second;
+            if (!subject && is_part(c.sides[0].side->value)) subject = expected_part(c.sides[0].side->value);
+            if (subject && equal(b.value, *subject, tol) == Tri::Yes) {
+                slip_left = true;
+                r.notes.push_back("the right side is right (it equals eomgen's value of " +
+                                  m(c.sides[0].side->source) + "): the slip is in the left side");
+            }
+        }
+        std::string ratio;
+        const std::vector<std::string> factors =
+            sums ? std::vector<std::string>{} : factor_analysis(a.value, b.value, tol, &ratio);
+        const Diagnosis dg =
+            slip_left ? compare_to(a.value, b.value, tol) : compare_to(b.value, a.value, tol);
+        r.difference = dg.difference;
+        r.wrong_terms = factors;
+        if (factors.empty()) r.wrong_terms.insert(r.wrong_terms.end(), dg.lines.begin(), dg.lines.end());
+        if (slip_left)
+            r.corrected = latex(b.value) + " = " + R.side->source;
+        else
+            r.corrected = !scaled_step(L.side->source, ratio, R.side->source).empty()
+                              ? scaled_step(L.side->source, ratio, R.side->source)
+                              : L.side->source + " = " + printed_value(a, L, b);
+        return;
+    }
+    if (has_velocity(r_ex) && !integrals_of_motion_.empty()) {
+        GiNaC::ex cf = 1;
+        const GiNaC::ex target = integrals_of_motion_.front().first;
+        if (best_factor(r_ex, target, tol, &cf) >= 1) {
+            r.verdict = Verdict::Disagrees;
+            r.compared_with = integrals_of_motion_.front().second;
+            const Diagnosis dg = compare_to(r_ex, (cf * target).expand(), tol);
+            r.difference = dg.difference;
+            r.wrong_terms = dg.lines;
+            r.corrected = latex((cf * target).expand()) + " = 0";
+            return;
+        }
+    }
+    r.reason =
+        "not an identity, and not an equation of this model (a condition or an assumption, such as a "
+        "particular value)";
+}
+
+}  // namespace eomgen::checker::detail
