@@ -344,6 +344,10 @@ CheckReport Checker::run() {
         for (const TextMeaning& m : meanings_)
             meaning_map_.push_back({m.name, m.value, "the text, line " + std::to_string(m.line), m.line + 1,
                                     std::max(m.line + 1, m.last_line)});
+        // "… is conserved; call it $\ell$": ℓ is that quantity from its line on (to the end of the section).
+        for (const TextMeaning& m : prose_namings(d_, rows))
+            meaning_map_.push_back({m.name, m.value, "the text, line " + std::to_string(m.line), m.line,
+                                    std::max(m.line, m.last_line)});
     }
 
     // Pass 1: parse every selected row; rows that start with "=" continue the chain above them.

@@ -390,7 +390,15 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     // A parameter the text set for this paragraph (`m_1 = 0`): the text's sides take it as eomgen's equations do
     // (the sample points hold it, Numbers::pin).
     // A condition stated again (`\theta = 0` at θ = 0) is not an identity: it is judged as the condition it is.
-    if (!numbers_.pinned().empty() && !condition_of(a.value, b.value, model_).empty()) numbers_.pin({});
+    const bool states_condition = discourse_->states_condition(c.relation_offsets[j - 1]);
+    if (!numbers_.pinned().empty() && (states_condition || !condition_of(a.value, b.value, model_).empty()))
+        numbers_.pin({});
+    // An acceleration the conditions of a motion set (`\ddot\theta = 0` after `\dot\theta = 0`).
+    if (states_condition && has_acceleration(a.value - b.value) && condition_of(a.value, b.value, model_).empty()) {
+        r.reason = "a condition: the acceleration of the motion the text considers, with the condition before it in "
+                   "its paragraph (not an equation of the motion, so not judged)";
+        return;
+    }
     if (!numbers_.pinned().empty()) {
         r.notes.insert(r.notes.end(), chosen_notes_.begin(), chosen_notes_.end());
         a.value = subs_unless_pole(a.value, numbers_.pinned()).value_or(a.value);
@@ -533,6 +541,29 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         }
     }
+    // 2c. On the motion the text considers (θ̇ = 0 and θ̈ = 0 stated before it): an Euler–Lagrange equation there,
+    // times a factor free of the velocities (φ̇² = g/(l cos θ) for a conical pendulum).
+    if (!has_acceleration(r_ex) && depends_on_state(r_ex))
+        for (const auto& [symbol, value] : numbers_.pinned()) {
+            if (!has_acceleration(symbol)) continue;
+            for (std::size_t k = 0; k < model_.dof(); ++k) {
+                const std::optional<GiNaC::ex> there = subs_unless_pole(motion_[k], numbers_.pinned());
+                if (!there || equal(*there, 0, 1e-9) == Tri::Yes || has_acceleration(*there)) continue;
+                GiNaC::ex factor;
+                try {
+                    factor = GiNaC::normal(*there / r_ex);
+                } catch (...) {
+                    continue;
+                }
+                if (has_velocity(factor) || has_acceleration(factor) || equal(factor, 0, 1e-9) == Tri::Yes) continue;
+                r.verdict = Verdict::Agrees;
+                r.compared_with = "the Euler–Lagrange equation for " + m(model_.coordinates[k].latex) +
+                                  " on the motion the text considers";
+                r.reason = "the same equation there, times a factor free of the velocities" + within;
+                return;
+            }
+            break;
+        }
     // 3. An integral of motion with the model's initial state (also after squaring a square root).
     if (!has_acceleration(r_ex) && depends_on_state(r_ex)) {
         std::vector<std::pair<GiNaC::ex, std::string>> forms{{r_ex, ""}};

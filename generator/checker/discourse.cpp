@@ -69,8 +69,19 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
         // A condition: `s = \frac{1}{2h}` "halfway along the first turn".
         GiNaC::ex q, v;
         if (!has_free_name(x.value, ctx) && !has_free_name(y.value, ctx) && !has_label_or_operator(x.value, labels) &&
-            !has_label_or_operator(y.value, labels) && !condition_of(x.value, y.value, model, &q, &v).empty())
-            conditions_.push_back({q, v, link.at, link.paragraph, line});
+            !has_label_or_operator(y.value, labels)) {
+            if (!condition_of(x.value, y.value, model, &q, &v).empty())
+                conditions_.push_back({q, v, link.at, link.paragraph, line});
+            // θ̈ = 0 after θ̇ = 0 (or θ = θ₀) in its paragraph: the acceleration of the motion the text considers.
+            for (const auto& [a, b] : {std::pair(x.value, y.value), std::pair(y.value, x.value)})
+                for (const Coordinate& c : model.coordinates)
+                    if (a.is_equal(c.qdd) && !depends_on_state(b, model) && !b.has(model.t) &&
+                        std::any_of(conditions_.begin(), conditions_.end(), [&](const Condition& k) {
+                            return (k.symbol.is_equal(c.q) || k.symbol.is_equal(c.qd)) && k.from < link.at &&
+                                   link.at < k.until;
+                        }))
+                        conditions_.push_back({a, b, link.at, link.paragraph, line});
+        }
         // `p_\theta = L`: a momentum set equal to a one-letter label of another quantity names it with that letter
         // (L the angular momentum about P): two of eomgen's quantities equal as a claim is not what such a line says.
         for (const auto& [p, l] : {std::pair(&x, &y), std::pair(&y, &x)}) {

@@ -10,6 +10,7 @@
 
 #include <ginac/ginac.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <functional>
 #include <map>
@@ -63,7 +64,9 @@ class Discourse {
     };
 
     /**
-     * Reads the links in file order. Conditions: condition_of() on links whose sides name nothing unknown.
+     * Reads the links in file order. Conditions: condition_of() on links whose sides name nothing unknown, and an
+ * acceleration set to a value free of the state where a condition on its coordinate is in force (`\dot\theta =
+ * 0` and `\ddot\theta = 0`: a steady motion, not free fall).
      * Namings: a momentum label set equal to one of the one-letter labels L, H, h, E, T, V when the two differ.
      * Trial solutions: trial_solution(), those of one coordinate each with one frequency gathered. Stated
      * frequencies: a free name `\omega…` (or its square) set to a value in the parameters alone.
@@ -72,6 +75,10 @@ class Discourse {
               const LabelView& labels);
 
     const std::vector<Condition>& conditions() const { return conditions_; }
+    /// Whether the link at `at` states a condition (`\dot\theta = 0`, and `\ddot\theta = 0` after one on θ).
+    bool states_condition(std::size_t at) const {
+        return std::any_of(conditions_.begin(), conditions_.end(), [&](const Condition& c) { return c.from == at; });
+    }
     /// The conditions in force at `at` (stated before it in its paragraph), the latest per symbol, with its line.
     std::map<GiNaC::ex, std::pair<GiNaC::ex, int>, GiNaC::ex_is_less> conditions_at(std::size_t at) const;
     /// The end of the paragraph of a condition stated before `at` there, or 0: what that paragraph names a value

@@ -94,4 +94,46 @@ std::vector<TextMeaning> text_meanings(const Derivation& d, const std::vector<co
     return out;
 }
 
+std::vector<TextMeaning> prose_namings(const Derivation& d, const std::vector<const MathRow*>& rows) {
+    std::vector<TextMeaning> out;
+    static const char* const kCues[] = {"call it", "calling it", "denote it by", "denote it", "denoted by",
+                                        "denoted", "which we call", "we call it", "call this", "named", "call"};
+    for (std::size_t k = 1; k < rows.size(); ++k) {
+        const MathRow& row = *rows[k];
+        const MathRow& before = *rows[k - 1];
+        const std::string name = trim(row.text);
+        if (row.display || name.empty() || name.size() > 24 || name.find_first_of("=+-*/()<>") != std::string::npos)
+            continue;
+        const std::size_t from = before.offset + before.text.size();
+        if (from > row.offset || row.offset - from > 200) continue;
+        std::string prose;
+        for (char c : d.text.substr(from, row.offset - from))
+            if (c != '$' && c != '#') prose += char(std::tolower(static_cast<unsigned char>(c)));
+        prose = trim(prose);
+        bool cued = false;
+        for (const char* cue : kCues) {
+            const std::size_t n = std::strlen(cue);
+            if (prose.size() >= n && prose.compare(prose.size() - n, n, cue) == 0 &&
+                (prose.size() == n || !std::isalpha(static_cast<unsigned char>(prose[prose.size() - n - 1])))) {
+                cued = true;
+                break;
+            }
+        }
+        if (!cued) continue;
+        const std::string head = trim(before.text.substr(0, std::min(before.text.find('='), before.text.size())));
+        if (head.empty() || head == name || before.text.find('=') == std::string::npos) continue;
+        TextMeaning m;
+        m.name = name;
+        m.value = head;
+        m.noun = "the name the text gives $" + head + "$";
+        m.begin = row.offset;
+        m.end = row.offset + row.text.size();
+        m.line = d.position(row.offset).line;
+        const std::size_t section_end = row.section >= 0 ? d.sections[std::size_t(row.section)].end : d.text.size();
+        m.last_line = d.position(section_end > 0 ? section_end - 1 : 0).line;
+        out.push_back(m);
+    }
+    return out;
+}
+
 }  // namespace eomgen::checker

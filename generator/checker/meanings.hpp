@@ -28,4 +28,12 @@ struct TextMeaning {
  */
 std::vector<TextMeaning> text_meanings(const Derivation& d, const std::vector<const MathRow*>& rows);
 
+/**
+ * Names the prose gives a quantity: inline math that is a name alone right after "call it", "calling it",
+ * "denote it (by)", "denoted (by)", "which we call", "call this", "write … as" … names the left side of the math row
+ * before it (`$p_\phi = … $ is conserved; call it $\ell$`: ℓ is p_φ), from the next line to the end of the section.
+ * As TextMeaning (noun "the name the text gives it"), in the order of the text.
+ */
+std::vector<TextMeaning> prose_namings(const Derivation& d, const std::vector<const MathRow*>& rows);
+
 }  // namespace eomgen::checker

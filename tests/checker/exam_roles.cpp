@@ -263,3 +263,24 @@ TEST_CASE("roles: math as word processors and course notes paste it: K.E., \\ds,
     CHECK(one_verdict(kPendulum, "$(d/dt) [m l^2 \\dot\\theta] = -m g l \\sin\\theta$\n") == Verdict::Agrees);
     CHECK(one_verdict(kPendulum, "$d/dt (m l^2 \\dot\\theta) = -m g l \\sin\\theta$\n") == Verdict::Agrees);
 }
+
+TEST_CASE("roles: a name the prose gives a quantity, and the conditions of a steady motion with their consequence",
+          "[checker][roles]") {
+    // Written here, not from the corpus: "… is conserved; call it $\ell$", then θ̇ = 0 and θ̈ = 0 for a conical motion.
+    const CheckReport r = eomgen::test::check_text("tests/checker/models/spherical_pendulum.toml",
+                                                   eomgen::test::fixture("spherical_conical_notes.md"));
+    for (const EquationCheck& e : r.equations) {
+        INFO(eomgen::test::describe(e));
+        CHECK(e.verdict != Verdict::Disagrees);
+    }
+    CHECK(r.count(Verdict::Agrees) == 8);
+    const auto last = r.equations.back();
+    CHECK(last.compared_with == "the Euler–Lagrange equation for $\\theta$ on the motion the text considers");
+    // A wrong steady-motion relation is not excused.
+    const CheckReport wrong = eomgen::test::check_text(
+        "tests/checker/models/spherical_pendulum.toml",
+        "For a conical motion $\\dot\\theta = 0$ and $\\ddot\\theta = 0$, so $\\dot\\phi^2 = \\frac{g}{l}$.\n");
+    REQUIRE(wrong.equations.size() == 3);
+    CHECK(wrong.equations[1].verdict == Verdict::NotComparable);
+    CHECK(wrong.equations[2].verdict == Verdict::Disagrees);
+}
