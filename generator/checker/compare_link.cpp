@@ -395,8 +395,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         numbers_.pin({});
     // An acceleration the conditions of a motion set (`\ddot\theta = 0` after `\dot\theta = 0`).
     if (states_condition && has_acceleration(a.value - b.value) && condition_of(a.value, b.value, model_).empty()) {
-        r.reason = "a condition: the acceleration of the motion the text considers, with the condition before it in "
-                   "its paragraph (not an equation of the motion, so not judged)";
+        r.reason = "a condition: the acceleration of the motion the text considers (an equilibrium, a steady motion), "
+                   "not an equation of the motion, so not judged";
         return;
     }
     if (!numbers_.pinned().empty()) {

@@ -1,6 +1,8 @@
 /** @file discourse.cpp  The conditions, namings, trial solutions and stated frequencies of a text. */
 #include "checker/discourse.hpp"
 
+#include "checker/prose.hpp"
+
 #include <algorithm>
 #include <utility>
 
@@ -45,6 +47,10 @@ bool has_label_or_operator(const GiNaC::ex& e, const LabelView& labels) {
     return false;
 }
 
+/// Words of a sentence about a motion whose accelerations vanish or are set (lower case).
+constexpr const char* kSteady[] = {"equilibrium", "at rest", "steady", "stationary", "uniform", "conical",
+                                   "circular orbit", "constant speed", "constant rate"};
+
 }  // namespace
 
 std::string condition_of(const GiNaC::ex& a, const GiNaC::ex& b, const Model& model, GiNaC::ex* symbol,
@@ -70,17 +76,25 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
         GiNaC::ex q, v;
         if (!has_free_name(x.value, ctx) && !has_free_name(y.value, ctx) && !has_label_or_operator(x.value, labels) &&
             !has_label_or_operator(y.value, labels)) {
-            if (!condition_of(x.value, y.value, model, &q, &v).empty())
-                conditions_.push_back({q, v, link.at, link.paragraph, line});
-            // θ̈ = 0 after θ̇ = 0 (or θ = θ₀) in its paragraph: the acceleration of the motion the text considers.
+            if (!condition_of(x.value, y.value, model, &q, &v).empty()) {
+                bool position = false;
+                for (const Coordinate& c : model.coordinates) position = position || q.is_equal(c.q);
+                conditions_.push_back({q, v, link.at, link.paragraph, line, position});
+            }
+            // θ̈ = 0 after θ̇ = 0 (or θ = θ₀) in its paragraph, or in a sentence about an equilibrium or a steady
+            // motion ("at equilibrium $\ddot x = 0$"): the acceleration of the motion the text considers.
+            const std::string sentence = lead_in(d, link.at, 1);
+            const bool steady = std::any_of(std::begin(kSteady), std::end(kSteady), [&](const char* w) {
+                return sentence.find(w) != std::string::npos;
+            });
             for (const auto& [a, b] : {std::pair(x.value, y.value), std::pair(y.value, x.value)})
                 for (const Coordinate& c : model.coordinates)
                     if (a.is_equal(c.qdd) && !depends_on_state(b, model) && !b.has(model.t) &&
-                        std::any_of(conditions_.begin(), conditions_.end(), [&](const Condition& k) {
-                            return (k.symbol.is_equal(c.q) || k.symbol.is_equal(c.qd)) && k.from < link.at &&
-                                   link.at < k.until;
-                        }))
-                        conditions_.push_back({a, b, link.at, link.paragraph, line});
+                        (steady || std::any_of(conditions_.begin(), conditions_.end(), [&](const Condition& k) {
+                             return (k.symbol.is_equal(c.q) || k.symbol.is_equal(c.qd)) && k.from < link.at &&
+                                    link.at < k.until;
+                         })))
+                        conditions_.push_back({a, b, link.at, link.paragraph, line, false});
         }
         // `p_\theta = L`: a momentum set equal to a one-letter label of another quantity names it with that letter
         // (L the angular momentum about P): two of eomgen's quantities equal as a claim is not what such a line says.
@@ -138,7 +152,7 @@ std::map<GiNaC::ex, std::pair<GiNaC::ex, int>, GiNaC::ex_is_less> Discourse::con
 std::size_t Discourse::condition_paragraph(std::size_t at) const {
     std::size_t end = 0;
     for (const Condition& k : conditions_)
-        if (k.from < at && at < k.until) end = std::max(end, k.until);
+        if (k.from < at && at < k.until && k.is_position) end = std::max(end, k.until);
     return end;
 }
 

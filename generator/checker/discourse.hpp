@@ -54,6 +54,7 @@ class Discourse {
         GiNaC::ex symbol, value;
         std::size_t from, until;
         int line;
+        bool is_position;  ///< a coordinate's value (a point), not a velocity's or an acceleration's
     };
     /// A letter the text gives another quantity (`p_\theta = L`), from the naming to its section's end.
     struct Naming {
@@ -81,7 +82,7 @@ class Discourse {
     }
     /// The conditions in force at `at` (stated before it in its paragraph), the latest per symbol, with its line.
     std::map<GiNaC::ex, std::pair<GiNaC::ex, int>, GiNaC::ex_is_less> conditions_at(std::size_t at) const;
-    /// The end of the paragraph of a condition stated before `at` there, or 0: what that paragraph names a value
+    /// The end of the paragraph of a point (a coordinate's value) stated before `at` there, or 0: what that paragraph names a value
     /// free of the state (`y = r\cos\pi`) is the name's value at the point, not its definition.
     std::size_t condition_paragraph(std::size_t at) const;
 
