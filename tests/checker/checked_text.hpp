@@ -5,6 +5,8 @@
 #include "checker/checker.hpp"
 #include "model/model_file.hpp"
 
+#include <catch2/catch.hpp>
+
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -75,6 +77,24 @@ inline std::map<int, std::string> planted_lines(const std::string& path) {
     std::stringstream ss;
     ss << in.rdbuf();
     return planted_mistakes(ss.str());
+}
+
+/// Every disagreement of `r` is at a planted line (no false alarm) and names its phrase (in the difference, the wrong
+/// terms, the notes or the correction); returns how many there are.
+inline int planted_found(const checker::CheckReport& r, const std::map<int, std::string>& planted) {
+    int found = 0;
+    for (const checker::EquationCheck& e : r.equations) {
+        INFO(describe(e));
+        if (e.verdict != checker::Verdict::Disagrees) continue;
+        const auto p = planted.find(e.where.line);
+        REQUIRE(p != planted.end());
+        std::string all = e.difference + e.corrected;
+        for (const std::string& w : e.wrong_terms) all += w;
+        for (const std::string& n : e.notes) all += n;
+        CHECK(all.find(p->second) != std::string::npos);
+        ++found;
+    }
+    return found;
 }
 
 }  // namespace eomgen::test
