@@ -162,7 +162,9 @@ class Numbers {
             at[c.qdd] = state_value();
         }
         for (const GiNaC::symbol& s : state_symbols_) at[s] = value(sr);
-        for (const auto& [p, v] : pinned_) at[p] = v;
+        // A pin may name other symbols (m_1 → m_2, m_2 → m): the point's values, to a fixed point.
+        for (int round = 0; round < 3; ++round)
+            for (const auto& [p, v] : pinned_) at[p] = v.subs(at);
         return at;
     }
     /// A symbol that takes a value per state, as the coordinates do (a constraint's multiplier λ).
@@ -531,6 +533,8 @@ class Checker : public Comparisons {
     }
     void check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a, const Prepared& b,
                       double tol, EquationCheck& r);
+    /// The multiplier of constraint k solved from the constrained equations (eomgen's sign), when small enough.
+    std::optional<GiNaC::ex> multiplier_value(std::size_t k);
     bool diagnose_solved_acceleration(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
                                       EquationCheck& out);
     void diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,

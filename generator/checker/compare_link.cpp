@@ -73,8 +73,12 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         }
     for (const auto& [symbol, stated] : discourse_->conditions_at(rel_at)) {
         chosen[symbol] = stated.first;
-        chosen_notes_.push_back("at $" + latex(symbol) + " = " + latex(stated.first) +
-                                "$, the condition the text states on line " + std::to_string(stated.second));
+        const bool parameter = std::any_of(model_.parameters.begin(), model_.parameters.end(),
+                                           [&](const Parameter& p) { return symbol.is_equal(p.symbol); });
+        chosen_notes_.push_back(parameter ? "with $" + latex(symbol) + " = " + latex(stated.first) +
+                                                "$, as the text assumes on line " + std::to_string(stated.second)
+                                          : "at $" + latex(symbol) + " = " + latex(stated.first) +
+                                                "$, the condition the text states on line " + std::to_string(stated.second));
     }
     struct Unpin {
         Numbers& n;
@@ -393,6 +397,11 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     const bool states_condition = discourse_->states_condition(c.relation_offsets[j - 1]);
     if (!numbers_.pinned().empty() && (states_condition || !condition_of(a.value, b.value, model_).empty()))
         numbers_.pin({});
+    if (discourse_->states_assumption(c.relation_offsets[j - 1])) {
+        r.reason = "an assumption on the parameters, for the rest of its paragraph: the equations that follow there are "
+                   "compared with it";
+        return;
+    }
     // An acceleration the conditions of a motion set (`\ddot\theta = 0` after `\dot\theta = 0`).
     if (states_condition && has_acceleration(a.value - b.value) && condition_of(a.value, b.value, model_).empty()) {
         r.reason = "a condition: the acceleration of the motion the text considers (an equilibrium, a steady motion), "
@@ -401,8 +410,10 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     }
     if (!numbers_.pinned().empty()) {
         r.notes.insert(r.notes.end(), chosen_notes_.begin(), chosen_notes_.end());
-        a.value = subs_unless_pole(a.value, numbers_.pinned()).value_or(a.value);
-        b.value = subs_unless_pole(b.value, numbers_.pinned()).value_or(b.value);
+        for (int round = 0; round < 3; ++round) {  // m_1 → m_2, m_2 → m
+            a.value = subs_unless_pole(a.value, numbers_.pinned()).value_or(a.value);
+            b.value = subs_unless_pole(b.value, numbers_.pinned()).value_or(b.value);
+        }
     }
     if (!a.units.empty() || !b.units.empty()) {
         if (equal(a.value, b.value, tol) == Tri::Yes) {
@@ -459,13 +470,39 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     // holds at states on them, λ from the constrained equations.
     if (std::any_of(multipliers_.begin(), multipliers_.end(), [&](const GiNaC::symbol& l) { return r_ex.has(l); }))
         for (int sign : {1, -1}) {
-            const std::optional<bool> holds = holds_on_constrained_motion(r_ex, model_, eq_, tol, multipliers_, sign);
+            const std::optional<bool> holds = holds_on_constrained_motion(r_ex, model_, eq_, tol, multipliers_, sign, numbers_.pinned());
             if (!holds || !*holds) continue;
             r.verdict = Verdict::Agrees;
             r.compared_with = "the equations of motion with the constraint forces";
             r.reason = std::string("it holds on every motion, with the constraints put in (checked at sample states)") +
                        (sign < 0 ? ", the multiplier taken with the opposite sign to eomgen's (M q'' = f + A^T λ)" : "") +
                        within;
+            return;
+        }
+    // `\lambda = …` (no accelerations) that holds with neither sign: wrong, corrected to the multiplier solved from the
+    // constrained equations where it stands alone on a side.
+    if (!has_acceleration(r_ex) && !eq_.constraints.empty())
+        for (std::size_t k = 0; k < multipliers_.size(); ++k) {
+            if (!r_ex.has(multipliers_[k])) continue;
+            bool wrong = true;
+            for (int sign : {1, -1}) {
+                const std::optional<bool> holds =
+                    holds_on_constrained_motion(r_ex, model_, eq_, tol, multipliers_, sign, numbers_.pinned());
+                wrong = wrong && holds && !*holds;
+            }
+            if (!wrong) break;
+            r.verdict = Verdict::Disagrees;
+            r.compared_with = "the equations of motion with the constraint forces";
+            r.reason = "it holds on no motion, with either sign of the multiplier (checked at sample states)";
+            const PSide* alone = a.value.is_equal(multipliers_[k]) ? &L : (b.value.is_equal(multipliers_[k]) ? &R : nullptr);
+            if (const std::optional<GiNaC::ex> value = multiplier_value(k); alone && value) {
+                GiNaC::ex shown = *value;
+                for (int round = 0; round < 3 && !numbers_.pinned().empty(); ++round)
+                    shown = subs_unless_pole(shown, numbers_.pinned()).value_or(shown);
+                shown = GiNaC::normal(shown);
+                r.corrected = alone == &L ? L.side->source + " = " + latex(shown) : latex(shown) + " = " + R.side->source;
+                r.wrong_terms = {"the multiplier is $" + latex(shown) + "$ (with eomgen's sign, M q'' = f + A^T λ)"};
+            }
             return;
         }
     // 2. An equation of motion: a combination of the Euler–Lagrange equations.
@@ -532,7 +569,7 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     // differentiated twice, or the equations with the constraint forces eliminated).
     if (has_acceleration(r_ex) && !eq_.constraints.empty() &&
         std::none_of(multipliers_.begin(), multipliers_.end(), [&](const GiNaC::symbol& l) { return r_ex.has(l); })) {
-        if (const std::optional<bool> holds = holds_on_constrained_motion(r_ex, model_, eq_, tol); holds && *holds) {
+        if (const std::optional<bool> holds = holds_on_constrained_motion(r_ex, model_, eq_, tol, {}, 1, numbers_.pinned()); holds && *holds) {
             r.verdict = Verdict::Agrees;
             r.compared_with = "the equations of motion with the constraints";
             r.reason = "it holds on every motion: q'' from M q'' = f + A^T λ and the constraints, the constraint "
@@ -747,6 +784,33 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     r.reason =
         "not an identity, and not an equation of this model (a condition or an assumption, such as a "
         "particular value)";
+}
+
+std::optional<GiNaC::ex> Checker::multiplier_value(std::size_t k) {
+    // [M −Aᵀ; A 0] [q̈; λ] = [f + Q; γ], solved by elimination for up to 6 unknowns.
+    const std::size_t n = model_.dof(), m = eq_.constraints.size();
+    if (n + m > 6 || k >= m) return std::nullopt;
+    try {
+        const unsigned size = static_cast<unsigned>(n + m);
+        GiNaC::matrix K(size, size), x(size, 1), rhs(size, 1);
+        std::vector<GiNaC::symbol> unknowns(n + m);
+        for (unsigned i = 0; i < size; ++i) x(i, 0) = unknowns[i];
+        for (unsigned i = 0; i < n; ++i) {
+            for (unsigned j = 0; j < n; ++j) K(i, j) = eq_.M(i, j);
+            for (unsigned c = 0; c < m; ++c) K(i, unsigned(n) + c) = -eq_.constraints[c].jacobian[i];
+            rhs(i, 0) = eq_.f[i] + (i < eq_.generalized_forces.size() ? eq_.generalized_forces[i] : 0);
+        }
+        for (unsigned c = 0; c < m; ++c) {
+            for (unsigned j = 0; j < n; ++j) K(unsigned(n) + c, j) = eq_.constraints[c].jacobian[j];
+            rhs(unsigned(n) + c, 0) = eq_.constraints[c].gamma;
+        }
+        const GiNaC::matrix sol = K.solve(x, rhs, GiNaC::solve_algo::gauss);
+        const GiNaC::ex v = GiNaC::normal(sol(unsigned(n + k), 0));
+        if (expanded_terms(v) > kMaxExpandedTerms) return std::nullopt;
+        return v;
+    } catch (...) {
+        return std::nullopt;
+    }
 }
 
 }  // namespace eomgen::checker::detail

@@ -11,7 +11,8 @@
 namespace eomgen::checker {
 
 std::optional<bool> holds_on_constrained_motion(const GiNaC::ex& r, const Model& model, const Equations& eq,
-                                                double tol, const std::vector<GiNaC::symbol>& multipliers, int sign) {
+                                                double tol, const std::vector<GiNaC::symbol>& multipliers, int sign,
+                                                const GiNaC::exmap& assumed) {
     const std::size_t n = model.dof(), m = eq.constraints.size();
     if (m == 0 || n == 0) return std::nullopt;
     std::mt19937 rng(20261126);
@@ -19,6 +20,10 @@ std::optional<bool> holds_on_constrained_motion(const GiNaC::ex& r, const Model&
     for (int state = 0; state < 3; ++state) {
         SymbolValues v;
         for (const Parameter& p : model.parameters) v[p.symbol] = p.value;
+        for (int round = 0; round < 3; ++round)  // m_1 = m_2 (= m): the text's assumption for its paragraph
+            for (const Parameter& p : model.parameters)
+                if (const auto it = assumed.find(p.symbol); it != assumed.end())
+                    if (const auto x = DoubleEvaluator(v)(it->second)) v[p.symbol] = *x;
         v[model.t] = pick(rng);
         for (const Coordinate& c : model.coordinates) v[c.q] = pick(rng);
         Eigen::VectorXd qd(n);

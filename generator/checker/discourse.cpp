@@ -96,6 +96,18 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
                          })))
                         conditions_.push_back({a, b, link.at, link.paragraph, line, false});
         }
+        // `m_1 = m_2`, `m_1 = m_2 = m`: an assumption on the parameters, for the rest of the paragraph (a
+        // parameter set to a number is a value the text chooses: printed_numbers.hpp).
+        for (const auto& [p, w] : {std::pair(&x, &y), std::pair(&y, &x)}) {
+            const bool parameter = std::any_of(model.parameters.begin(), model.parameters.end(),
+                                               [&](const Parameter& q) { return p->value.is_equal(q.symbol); });
+            if (!parameter || w->value.has(p->value) || GiNaC::is_a<GiNaC::numeric>(w->value) ||
+                depends_on_state(w->value, model) || w->value.has(model.t) || has_label_or_operator(w->value, labels))
+                continue;
+            conditions_.push_back({p->value, w->value, link.at, link.paragraph, line, false});
+            assumptions_.insert(link.at);
+            break;
+        }
         // `p_\theta = L`: a momentum set equal to a one-letter label of another quantity names it with that letter
         // (L the angular momentum about P): two of eomgen's quantities equal as a claim is not what such a line says.
         for (const auto& [p, l] : {std::pair(&x, &y), std::pair(&y, &x)}) {

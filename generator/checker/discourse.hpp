@@ -65,7 +65,8 @@ class Discourse {
     };
 
     /**
-     * Reads the links in file order. Conditions: condition_of() on links whose sides name nothing unknown, and an
+     * Reads the links in file order. Conditions: condition_of() on links whose sides name nothing unknown, a
+ * parameter set to an expression in the others (an assumption, `m_1 = m_2`), and an
  * acceleration set to a value free of the state where a condition on its coordinate is in force (`\dot\theta =
  * 0` and `\ddot\theta = 0`: a steady motion, not free fall).
      * Namings: a momentum label set equal to one of the one-letter labels L, H, h, E, T, V when the two differ.
@@ -76,6 +77,8 @@ class Discourse {
               const LabelView& labels);
 
     const std::vector<Condition>& conditions() const { return conditions_; }
+    /// Whether the link at `at` states an assumption on the parameters (`m_1 = m_2`), in force to its paragraph's end.
+    bool states_assumption(std::size_t at) const { return assumptions_.count(at) != 0; }
     /// Whether the link at `at` states a condition (`\dot\theta = 0`, and `\ddot\theta = 0` after one on θ).
     bool states_condition(std::size_t at) const {
         return std::any_of(conditions_.begin(), conditions_.end(), [&](const Condition& c) { return c.from == at; });
@@ -102,6 +105,7 @@ class Discourse {
 
   private:
     std::vector<Condition> conditions_;
+    std::set<std::size_t> assumptions_;
     std::vector<Naming> namings_;
     std::vector<TrialSolution> trials_;
     std::set<std::size_t> trial_links_;

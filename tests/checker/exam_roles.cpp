@@ -295,3 +295,18 @@ TEST_CASE("roles: at equilibrium x'' = 0 is a condition; a derivation written he
     for (const EquationCheck& e : r.equations)
         if (e.equation == "\\ddot x = 0") CHECK(e.reason.find("a condition") == 0);
 }
+
+TEST_CASE("roles: an assumption on the parameters (m_1 = m_2) holds for its paragraph; equations with the multiplier",
+          "[checker][roles]") {
+    const std::string text = eomgen::test::fixture("atwood_lambda_notes.md");
+    const std::map<int, std::string> planted = eomgen::test::planted_mistakes(text);
+    REQUIRE(planted.size() == 1);
+    const CheckReport r = eomgen::test::check_text("tests/checker/models/atwood_lambda.toml", text);
+    CHECK(eomgen::test::planted_found(r, planted) == 1);
+    const EquationCheck& last = r.equations.back();
+    INFO(eomgen::test::describe(last));
+    CHECK(last.verdict == Verdict::Agrees);  // ÿ₁ = 0 with m₁ = m₂
+    CHECK(eomgen::test::has_note(last, "with $m_{1} = m_{2}$, as the text assumes on line"));
+    // Outside the paragraph the assumption does not hold.
+    CHECK(one_verdict("tests/checker/models/atwood_lambda.toml", "$$\\ddot y_1 = 0$$\n") == Verdict::Disagrees);
+}
