@@ -152,6 +152,45 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
                 return v;
             }
         }
+        // One acceleration alone, the others eliminated (θ̈ ≈ −(M+m)g θ/(M l) for a pendulum on a free cart): q̈_i
+        // solved from the equations, expanded. (Up to 4 coordinates, where the symbolic solve is cheap.)
+        std::size_t only = motion.size(), count = 0;
+        for (std::size_t i = 0; i < motion.size(); ++i)
+            if (R->has(model.coordinates[i].qdd)) {
+                only = i;
+                ++count;
+            }
+        if (count == 1 && motion.size() >= 2 && motion.size() <= 4) {
+            try {
+                const unsigned n = static_cast<unsigned>(motion.size());
+                GiNaC::matrix Mm(n, n), rhs(n, 1), x(n, 1);
+                GiNaC::exmap no_acc;
+                for (const Coordinate& c : model.coordinates) no_acc[c.qdd] = 0;
+                std::vector<GiNaC::symbol> unknowns(n);
+                for (unsigned i = 0; i < n; ++i) {
+                    for (unsigned j = 0; j < n; ++j) Mm(i, j) = GiNaC::diff(motion[i], model.coordinates[j].qdd);
+                    rhs(i, 0) = -motion[i].subs(no_acc);
+                    x(i, 0) = unknowns[i];
+                }
+                const GiNaC::ex solved = GiNaC::normal(Mm.solve(x, rhs, GiNaC::solve_algo::gauss)(unsigned(only), 0));
+                const GiNaC::symbol& qdd = model.coordinates[only].qdd;
+                const GiNaC::ex E = (qdd - solved).subs(scale);
+                if (const auto Ek = taylor(E, eps, k)) {
+                    const GiNaC::ex c = GiNaC::normal(GiNaC::diff(*R, qdd).subs(at_zero));
+                    const GiNaC::ex ref = (c * *Ek).expand();
+                    // The text eliminated the other accelerations: this is what it should be, right or wrong.
+                    v.equation = int(only);
+                    v.solved = true;
+                    v.reference = ref;
+                    v.wrong_order = first_difference((A - B), c * E);
+                    if (same(*R, ref)) {
+                        v.agrees = true;
+                        return v;
+                    }
+                }
+            } catch (const std::exception&) {
+            }
+        }
         return v;
     }
     if (reference_side == 0 || reference_side == 1) {
@@ -191,9 +230,13 @@ bool check_approximation(const Derivation& d, const Model& model, const std::vec
     }
     const std::string about = " about " + m(point) + said;
     if (v.agrees || !v.reference.is_zero() || v.equation >= 0)
-        r.compared_with = v.equation >= 0 ? "the Euler–Lagrange equation for " +
-                                                 m(model.coordinates[std::size_t(v.equation)].latex) + ", expanded" + about
-                                           : "the Taylor expansion" + about;
+        r.compared_with = v.equation >= 0 ? (v.solved ? m("\\ddot{" + model.coordinates[std::size_t(v.equation)].latex + "}") +
+                                                             " solved from the Euler–Lagrange equations, expanded"
+                                                       : "the Euler–Lagrange equation for " +
+                                                             m(model.coordinates[std::size_t(v.equation)].latex) +
+                                                             ", expanded") +
+                                                about
+                                          : "the Taylor expansion" + about;
     if (v.agrees) {
         r.verdict = Verdict::Agrees;
         r.reason = "agrees to " + ordinal(v.order) + " order in " + vars;

@@ -42,6 +42,7 @@ struct ApproxVerdict {
     int order = 0;         ///< the order the text keeps (the degree of its polynomial side)
     int wrong_order = 0;   ///< disagrees: the lowest order at which it differs
     int equation = -1;     ///< the Euler–Lagrange equation it was compared with, or -1
+    bool solved = false;   ///< compared with that coordinate's acceleration solved from the equations instead
     GiNaC::ex text;        ///< a − b to `order` (ε = 1)
     GiNaC::ex reference;   ///< what it should be to `order`: c·EL_i, or the reference side's expansion
 };
@@ -49,7 +50,8 @@ struct ApproxVerdict {
 /**
  * Compares a ≈ b about q = 0 for the coordinates `small` (each q, q̇, q̈ of the same small order ε): the
  * order k is the highest degree in ε of a side that is a polynomial in them; a − b must vanish to order k, or
- * (with accelerations) equal c·EL_i (c constant) to order k, c from the acceleration coefficients at q = 0.
+ * (with accelerations) equal c·EL_i (c constant) to order k, c from the acceleration coefficients at q = 0, or —
+ * with one acceleration alone, the others eliminated — c·(q̈_i − (M⁻¹f)_i), q̈_i solved from the equations.
  * `reference_side` (0: a, 1: b, −1: none) is the side that holds eomgen's value (a label), for an
  * approximation without accelerations that disagrees. `same(x, y)` decides equality (numerically).
  */

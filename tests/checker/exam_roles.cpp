@@ -310,3 +310,13 @@ TEST_CASE("roles: an assumption on the parameters (m_1 = m_2) holds for its para
     // Outside the paragraph the assumption does not hold.
     CHECK(one_verdict("tests/checker/models/atwood_lambda.toml", "$$\\ddot y_1 = 0$$\n") == Verdict::Disagrees);
 }
+
+TEST_CASE("roles: a small-angle equation with the other acceleration eliminated is the solved acceleration, expanded",
+          "[checker][roles]") {
+    const std::string text = eomgen::test::fixture("cart_pendulum_notes.md");
+    const std::map<int, std::string> planted = eomgen::test::planted_mistakes(text);
+    REQUIRE(planted.size() == 1);
+    const CheckReport r = eomgen::test::check_text("tests/checker/models/cart_pendulum_free.toml", text);
+    CHECK(eomgen::test::planted_found(r, planted) == 1);
+    CHECK(r.count(Verdict::Agrees) == 8);
+}
