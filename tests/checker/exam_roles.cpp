@@ -285,7 +285,7 @@ TEST_CASE("roles: a name the prose gives a quantity, and the conditions of a ste
     CHECK(wrong.equations[2].verdict == Verdict::Disagrees);
 }
 
-TEST_CASE("roles: at equilibrium x'' = 0 is a condition; a derivation written here, its one slip found",
+TEST_CASE("roles: at equilibrium x'' = 0 is a condition, and a derivation written here has its one slip found",
           "[checker][roles]") {
     const std::string text = eomgen::test::fixture("incline_spring_notes.md");
     const std::map<int, std::string> planted = eomgen::test::planted_mistakes(text);
@@ -296,7 +296,7 @@ TEST_CASE("roles: at equilibrium x'' = 0 is a condition; a derivation written he
         if (e.equation == "\\ddot x = 0") CHECK(e.reason.find("a condition") == 0);
 }
 
-TEST_CASE("roles: an assumption on the parameters (m_1 = m_2) holds for its paragraph; equations with the multiplier",
+TEST_CASE("roles: an assumption on the parameters (m_1 = m_2) holds for its paragraph, and equations with the multiplier",
           "[checker][roles]") {
     const std::string text = eomgen::test::fixture("atwood_lambda_notes.md");
     const std::map<int, std::string> planted = eomgen::test::planted_mistakes(text);
