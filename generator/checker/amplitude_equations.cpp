@@ -264,7 +264,9 @@ bool AmplitudeEquations::check(const GiNaC::ex& left, const GiNaC::ex& right, co
     for (std::size_t k = 0; k < n; ++k)
         for (const auto& [a, zero] : none)
             if (c[k].has(a)) return false;  // A_1 A_2
-    const GiNaC::ex c0 = s->subs(none);
+    const std::optional<GiNaC::ex> c0_at = subs_unless_pole(*s, none);
+    if (!c0_at) return false;
+    const GiNaC::ex c0 = *c0_at;
     const bool homogeneous = cmp.same(c0, 0, 1e-9);
     const GiNaC::ex w = trial.omega;
     const bool has_omega = !w.is_zero() && s->has(w);

@@ -1,6 +1,10 @@
 /** @file approximation.cpp  Taylor expansions about q = 0 to the order the text keeps. */
 #include "checker/approximation.hpp"
 
+#include "mechanics/pole_free_subs.hpp"
+
+#include <stdexcept>
+
 #include <algorithm>
 #include <cctype>
 #include <optional>
@@ -135,9 +139,12 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
             if (!Ek) continue;
             GiNaC::ex c;
             try {
-                const GiNaC::ex den = GiNaC::diff(*Ek, qdd).subs(at_zero).expand();
+                const std::optional<GiNaC::ex> den_at = subs_unless_pole(GiNaC::diff(*Ek, qdd), at_zero),
+                                               num_at = subs_unless_pole(GiNaC::diff(*R, qdd), at_zero);
+                if (!den_at || !num_at) continue;
+                const GiNaC::ex den = den_at->expand();
                 if (den.is_zero()) continue;
-                c = GiNaC::normal(GiNaC::diff(*R, qdd).subs(at_zero) / den);
+                c = GiNaC::normal(*num_at / den);
             } catch (const std::exception&) {
                 continue;
             }
@@ -176,7 +183,9 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
                 const GiNaC::symbol& qdd = model.coordinates[only].qdd;
                 const GiNaC::ex E = (qdd - solved).subs(scale);
                 if (const auto Ek = taylor(E, eps, k)) {
-                    const GiNaC::ex c = GiNaC::normal(GiNaC::diff(*R, qdd).subs(at_zero));
+                    const std::optional<GiNaC::ex> c_at = subs_unless_pole(GiNaC::diff(*R, qdd), at_zero);
+                    if (!c_at) throw std::runtime_error("pole");
+                    const GiNaC::ex c = GiNaC::normal(*c_at);
                     const GiNaC::ex ref = (c * *Ek).expand();
                     // The text eliminated the other accelerations: this is what it should be, right or wrong.
                     v.equation = int(only);

@@ -164,7 +164,8 @@ class Numbers {
         for (const GiNaC::symbol& s : state_symbols_) at[s] = value(sr);
         // A pin may name other symbols (m_1 → m_2, m_2 → m): the point's values, to a fixed point.
         for (int round = 0; round < 3; ++round)
-            for (const auto& [p, v] : pinned_) at[p] = v.subs(at);
+            for (const auto& [p, v] : pinned_)
+                if (const auto x = subs_unless_pole(v, at)) at[p] = *x;
         return at;
     }
     /// A symbol that takes a value per state, as the coordinates do (a constraint's multiplier λ).
@@ -180,7 +181,11 @@ class Numbers {
 
     std::optional<Complex> value(const GiNaC::ex& e, const GiNaC::exmap& at) {
         try {
-            GiNaC::ex v = e.subs(at);
+            // A pinned value (θ = 0, m₁ = 0) can make a denominator exactly 0: GiNaC would throw from inside the
+            // product it builds, and leak it.
+            const std::optional<GiNaC::ex> at_point = subs_unless_pole(e, at);
+            if (!at_point) return std::nullopt;
+            GiNaC::ex v = *at_point;
             v = integrals(v);
             return as_complex(GiNaC::evalf(v));
         } catch (...) {
