@@ -2,6 +2,8 @@
  * equality at random points, and whether an equation is a consequence of the Euler–Lagrange equations. */
 #include "checker/checker_internals.hpp"
 
+#include <stdexcept>
+
 namespace eomgen::checker::detail {
 
 // ------------------------------------------------------------------------------------------- evaluation
@@ -32,6 +34,14 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
         return hamilton_.poisson(resolve_operators(definitions_.expand(e.op(0), current_offset_)),
                                  resolve_operators(definitions_.expand(e.op(1), current_offset_)));
     if (e.nops() == 0) return e;
+    // A power whose base the operators make 0 (1/\frac{d}{dt}l, l a constant): refused here, before GiNaC builds
+    // it inside map() and throws from its evaluation, leaking the node (found by the sanitized fuzzer).
+    if (GiNaC::is_a<GiNaC::power>(e)) {
+        const GiNaC::ex base = resolve_operators(e.op(0)), exponent = resolve_operators(e.op(1));
+        if (base.is_zero() && !(GiNaC::is_a<GiNaC::numeric>(exponent) && GiNaC::ex_to<GiNaC::numeric>(exponent).is_positive()))
+            throw std::runtime_error("division by zero: a derivative in a denominator is 0");
+        return GiNaC::pow(base, exponent);
+    }
     struct Each : GiNaC::map_function {
         const Checker* self;
         explicit Each(const Checker* c) : self(c) {}

@@ -320,3 +320,13 @@ TEST_CASE("roles: a small-angle equation with the other acceleration eliminated 
     CHECK(eomgen::test::planted_found(r, planted) == 1);
     CHECK(r.count(Verdict::Agrees) == 8);
 }
+
+TEST_CASE("roles: a derivative that makes a denominator 0 is refused with a reason, not thrown from inside GiNaC",
+          "[checker][roles]") {
+    // Found by the sanitized fuzzer: 1/(d/dt l cos θ) with l a constant made GiNaC build 0^-1 inside map() and leak.
+    const CheckReport r = eomgen::test::check_text(
+        "models/pendulum_5_20.toml", "so the bob turns at $\\dot\\phi = \\sqrt{g/(\\frac{d}{dt}l\\cos\\theta)}$\n");
+    REQUIRE(r.equations.size() == 1);
+    INFO(eomgen::test::describe(r.equations[0]));
+    CHECK(r.equations[0].verdict == Verdict::NotComparable);
+}
