@@ -1,5 +1,6 @@
 /** @file claimed_solution.cpp  A claimed solution q_k(t) put into the equation of motion of q_k. */
 #include "checker/claimed_solution.hpp"
+#include "checker/state_symbols.hpp"
 
 #include "mechanics/pole_free_subs.hpp"
 
@@ -9,12 +10,6 @@
 namespace eomgen::checker {
 
 namespace {
-
-bool has_state(const GiNaC::ex& e, const Model& model) {
-    for (const Coordinate& c : model.coordinates)
-        if (e.has(c.q) || e.has(c.qd) || e.has(c.qdd)) return true;
-    return false;
-}
 
 /// Whether e holds a vector or a unit of the text (names that are no scalar constants).
 bool has_non_scalar(const GiNaC::ex& e, const LatexContext& ctx) {
@@ -56,7 +51,7 @@ bool check_claimed_solution(const GiNaC::ex& left, const GiNaC::ex& right, const
         std::size_t k = model.dof();
         for (std::size_t i = 0; i < model.dof(); ++i)
             if (q.is_equal(model.coordinates[i].q)) k = i;
-        if (k == model.dof() || !F.has(t) || has_state(F, model) || has_non_scalar(F, ctx)) continue;
+        if (k == model.dof() || !F.has(t) || holds_state(F, model) || has_non_scalar(F, ctx)) continue;
         // The constraint forces must not act along q_k: its equation holds without the multipliers.
         for (const ConstraintEquations& c : eq.constraints)
             if (!GiNaC::normal(c.jacobian[k]).is_zero()) return false;
@@ -76,7 +71,7 @@ bool check_claimed_solution(const GiNaC::ex& left, const GiNaC::ex& right, const
                 const GiNaC::ex g = c.position.expand();
                 if (g.degree(qj) != 1) continue;
                 const GiNaC::ex sol = GiNaC::normal(-g.coeff(qj, 0) / g.coeff(qj, 1));
-                if (has_state(sol, model)) continue;
+                if (holds_state(sol, model)) continue;
                 at[qj] = sol;
                 at[model.coordinates[j].qd] = GiNaC::diff(sol, GiNaC::ex_to<GiNaC::symbol>(t));
                 at[model.coordinates[j].qdd] = GiNaC::diff(sol, GiNaC::ex_to<GiNaC::symbol>(t), 2);
@@ -109,7 +104,7 @@ bool check_claimed_solution(const GiNaC::ex& left, const GiNaC::ex& right, const
         } catch (...) {
             return false;
         }
-        if (has_state(residual, model)) return false;  // the equation still holds other coordinates
+        if (holds_state(residual, model)) return false;  // the equation still holds other coordinates
         const std::string name = "$" + model.coordinates[k].latex + "$";
         const std::string compared = "the equation of motion for " + name +
                                      (at.size() > 3 ? " on the constraints" : "") + ", with this as its solution";

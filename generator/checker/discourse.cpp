@@ -1,5 +1,6 @@
 /** @file discourse.cpp  The conditions, namings, trial solutions and stated frequencies of a text. */
 #include "checker/discourse.hpp"
+#include "checker/state_symbols.hpp"
 
 #include "checker/prose.hpp"
 
@@ -9,12 +10,6 @@
 namespace eomgen::checker {
 
 namespace {
-
-bool depends_on_state(const GiNaC::ex& e, const Model& model) {
-    for (const Coordinate& c : model.coordinates)
-        if (e.has(c.q) || e.has(c.qd) || e.has(c.qdd)) return true;
-    return false;
-}
 
 /// Whether e holds a name the text uses without a known meaning.
 bool has_free_name(const GiNaC::ex& e, const LatexContext& ctx) {
@@ -57,7 +52,7 @@ std::string condition_of(const GiNaC::ex& a, const GiNaC::ex& b, const Model& mo
                          GiNaC::ex* value) {
     for (const auto& [x, y] : {std::pair(a, b), std::pair(b, a)})
         for (const Coordinate& c : model.coordinates)
-            if ((x.is_equal(c.q) || x.is_equal(c.qd)) && !depends_on_state(y, model) && !y.has(model.t)) {
+            if ((x.is_equal(c.q) || x.is_equal(c.qd)) && !holds_state(y, model) && !y.has(model.t)) {
                 if (symbol) *symbol = x;
                 if (value) *value = y;
                 return x.is_equal(c.q) ? c.latex : "\\dot{" + c.latex + "}";
@@ -89,7 +84,7 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
             });
             for (const auto& [a, b] : {std::pair(x.value, y.value), std::pair(y.value, x.value)})
                 for (const Coordinate& c : model.coordinates)
-                    if (a.is_equal(c.qdd) && !depends_on_state(b, model) && !b.has(model.t) &&
+                    if (a.is_equal(c.qdd) && !holds_state(b, model) && !b.has(model.t) &&
                         (steady || std::any_of(conditions_.begin(), conditions_.end(), [&](const Condition& k) {
                              return (k.symbol.is_equal(c.q) || k.symbol.is_equal(c.qd)) && k.from < link.at &&
                                     link.at < k.until;
@@ -102,7 +97,7 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
             const bool parameter = std::any_of(model.parameters.begin(), model.parameters.end(),
                                                [&](const Parameter& q) { return p->value.is_equal(q.symbol); });
             if (!parameter || w->value.has(p->value) || GiNaC::is_a<GiNaC::numeric>(w->value) ||
-                depends_on_state(w->value, model) || w->value.has(model.t) || has_label_or_operator(w->value, labels))
+                holds_state(w->value, model) || w->value.has(model.t) || has_label_or_operator(w->value, labels))
                 continue;
             conditions_.push_back({p->value, w->value, link.at, link.paragraph, line, false});
             assumptions_.insert(link.at);
@@ -129,7 +124,7 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
             if (squared) base = base.op(0);
             const FreeName* fn = ctx.free_name_of(base);
             if (!fn || fn->name.rfind("\\omega", 0) != 0) continue;
-            if (depends_on_state(w->value, model) || w->value.has(model.t) || has_free_name(w->value, ctx)) continue;
+            if (holds_state(w->value, model) || w->value.has(model.t) || has_free_name(w->value, ctx)) continue;
             stated_.push_back({link.at, link.until, squared ? w->value : w->value * w->value, base});
         }
         // A trial solution; those of one coordinate each with one frequency are one. With a frequency the text has
