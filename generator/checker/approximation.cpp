@@ -1,6 +1,7 @@
 /** @file approximation.cpp  Taylor expansions about q = 0 to the order the text keeps. */
 #include "checker/approximation.hpp"
 
+#include "checker/linear_solve.hpp"
 #include "mechanics/pole_free_subs.hpp"
 
 #include <stdexcept>
@@ -170,16 +171,16 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
         if (count == 1 && motion.size() >= 2 && motion.size() <= 4) {
             try {
                 const unsigned n = static_cast<unsigned>(motion.size());
-                GiNaC::matrix Mm(n, n), rhs(n, 1), x(n, 1);
+                GiNaC::matrix Mm(n, n), rhs(n, 1);
                 GiNaC::exmap no_acc;
                 for (const Coordinate& c : model.coordinates) no_acc[c.qdd] = 0;
-                std::vector<GiNaC::symbol> unknowns(n);
                 for (unsigned i = 0; i < n; ++i) {
                     for (unsigned j = 0; j < n; ++j) Mm(i, j) = GiNaC::diff(motion[i], model.coordinates[j].qdd);
                     rhs(i, 0) = -motion[i].subs(no_acc);
-                    x(i, 0) = unknowns[i];
                 }
-                const GiNaC::ex solved = GiNaC::normal(Mm.solve(x, rhs, GiNaC::solve_algo::gauss)(unsigned(only), 0));
+                const std::optional<GiNaC::ex> solved_at = solved_unknown(Mm, rhs, unsigned(only));
+                if (!solved_at) throw std::runtime_error("singular");
+                const GiNaC::ex solved = *solved_at;
                 const GiNaC::symbol& qdd = model.coordinates[only].qdd;
                 const GiNaC::ex E = (qdd - solved).subs(scale);
                 if (const auto Ek = taylor(E, eps, k)) {

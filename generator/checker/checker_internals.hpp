@@ -538,8 +538,6 @@ class Checker : public Comparisons {
     }
     void check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a, const Prepared& b,
                       double tol, EquationCheck& r);
-    /// The multiplier of constraint k solved from the constrained equations (eomgen's sign), when small enough.
-    std::optional<GiNaC::ex> multiplier_value(std::size_t k);
     bool diagnose_solved_acceleration(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
                                       EquationCheck& out);
     void diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,

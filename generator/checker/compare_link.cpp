@@ -495,7 +495,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             r.compared_with = "the equations of motion with the constraint forces";
             r.reason = "it holds on no motion, with either sign of the multiplier (checked at sample states)";
             const PSide* alone = a.value.is_equal(multipliers_[k]) ? &L : (b.value.is_equal(multipliers_[k]) ? &R : nullptr);
-            if (const std::optional<GiNaC::ex> value = multiplier_value(k); alone && value) {
+            if (const std::optional<GiNaC::ex> value = solved_multiplier(model_, eq_, k); alone && value &&
+                                                            expanded_terms(*value) <= kMaxExpandedTerms) {
                 GiNaC::ex shown = *value;
                 for (int round = 0; round < 3 && !numbers_.pinned().empty(); ++round)
                     shown = subs_unless_pole(shown, numbers_.pinned()).value_or(shown);
@@ -784,33 +785,6 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     r.reason =
         "not an identity, and not an equation of this model (a condition or an assumption, such as a "
         "particular value)";
-}
-
-std::optional<GiNaC::ex> Checker::multiplier_value(std::size_t k) {
-    // [M −Aᵀ; A 0] [q̈; λ] = [f + Q; γ], solved by elimination for up to 6 unknowns.
-    const std::size_t n = model_.dof(), m = eq_.constraints.size();
-    if (n + m > 6 || k >= m) return std::nullopt;
-    try {
-        const unsigned size = static_cast<unsigned>(n + m);
-        GiNaC::matrix K(size, size), x(size, 1), rhs(size, 1);
-        std::vector<GiNaC::symbol> unknowns(n + m);
-        for (unsigned i = 0; i < size; ++i) x(i, 0) = unknowns[i];
-        for (unsigned i = 0; i < n; ++i) {
-            for (unsigned j = 0; j < n; ++j) K(i, j) = eq_.M(i, j);
-            for (unsigned c = 0; c < m; ++c) K(i, unsigned(n) + c) = -eq_.constraints[c].jacobian[i];
-            rhs(i, 0) = eq_.f[i] + (i < eq_.generalized_forces.size() ? eq_.generalized_forces[i] : 0);
-        }
-        for (unsigned c = 0; c < m; ++c) {
-            for (unsigned j = 0; j < n; ++j) K(unsigned(n) + c, j) = eq_.constraints[c].jacobian[j];
-            rhs(unsigned(n) + c, 0) = eq_.constraints[c].gamma;
-        }
-        const GiNaC::matrix sol = K.solve(x, rhs, GiNaC::solve_algo::gauss);
-        const GiNaC::ex v = GiNaC::normal(sol(unsigned(n + k), 0));
-        if (expanded_terms(v) > kMaxExpandedTerms) return std::nullopt;
-        return v;
-    } catch (...) {
-        return std::nullopt;
-    }
 }
 
 }  // namespace eomgen::checker::detail

@@ -1,6 +1,8 @@
 /** @file constrained_motion.cpp  q̈ from the constrained equations at sample states, and the residual there. */
 #include "checker/constrained_motion.hpp"
 
+#include "checker/linear_solve.hpp"
+
 #include "mechanics/double_evaluator.hpp"
 
 #include <Eigen/Dense>
@@ -119,6 +121,23 @@ std::optional<bool> holds_on_constrained_motion(const GiNaC::ex& r, const Model&
         if (std::abs(*total) > std::max(tol, 1e-9) * std::max(scale, 1e-12)) return false;
     }
     return true;
+}
+
+std::optional<GiNaC::ex> solved_multiplier(const Model& model, const Equations& eq, std::size_t k) {
+    const std::size_t n = model.dof(), m = eq.constraints.size();
+    if (n + m > 6 || k >= m) return std::nullopt;
+    const unsigned size = static_cast<unsigned>(n + m);
+    GiNaC::matrix K(size, size), rhs(size, 1);
+    for (unsigned i = 0; i < n; ++i) {
+        for (unsigned j = 0; j < n; ++j) K(i, j) = eq.M(i, j);
+        for (unsigned c = 0; c < m; ++c) K(i, unsigned(n) + c) = -eq.constraints[c].jacobian[i];
+        rhs(i, 0) = eq.f[i] + (i < eq.generalized_forces.size() ? eq.generalized_forces[i] : 0);
+    }
+    for (unsigned c = 0; c < m; ++c) {
+        for (unsigned j = 0; j < n; ++j) K(unsigned(n) + c, j) = eq.constraints[c].jacobian[j];
+        rhs(unsigned(n) + c, 0) = eq.constraints[c].gamma;
+    }
+    return solved_unknown(K, rhs, unsigned(n + k));
 }
 
 }  // namespace eomgen::checker

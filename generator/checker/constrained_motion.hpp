@@ -23,6 +23,10 @@ namespace eomgen::checker {
  * `tol` of the size of its terms at every state, false when it is not at one; nothing when r holds a name the
  * model does not know, a state gives no finite value or the system is singular there.
  */
+/// The multiplier of constraint k solved from [M −Aᵀ; A 0][q̈; λ] = [f + Q; γ] (eomgen's sign, M q̈ = f + Aᵀλ), for up
+/// to 6 unknowns; nothing when larger or singular.
+std::optional<GiNaC::ex> solved_multiplier(const Model& model, const Equations& eq, std::size_t k);
+
 std::optional<bool> holds_on_constrained_motion(const GiNaC::ex& r, const Model& model, const Equations& eq,
                                                 double tol, const std::vector<GiNaC::symbol>& multipliers = {},
                                                 int sign = 1, const GiNaC::exmap& assumed = {});

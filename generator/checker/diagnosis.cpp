@@ -1,6 +1,7 @@
 /** @file diagnosis.cpp  What a disagreement says: the groups of terms, the wrong, missing and extra ones, the
  * factor that tells two sides apart, the Euler–Lagrange equation (or solved acceleration) it is closest to. */
 #include "checker/checker_internals.hpp"
+#include "checker/linear_solve.hpp"
 
 namespace eomgen::checker::detail {
 
@@ -503,20 +504,12 @@ bool Checker::diagnose_solved_acceleration(const PSide& left, const PSide& right
     for (const PSide* s : {&left, &right})
         if (s->side->ok && s->side->value.is_equal(qdd)) alone = s;
     if (!alone) return false;
-    GiNaC::ex value;
-    try {
-        GiNaC::matrix x(unsigned(n), 1), rhs(unsigned(n), 1);
-        std::vector<GiNaC::symbol> unknowns(n);
-        for (std::size_t k = 0; k < n; ++k) {
-            x(unsigned(k), 0) = unknowns[k];
-            rhs(unsigned(k), 0) = eq_.f[k];
-        }
-        const GiNaC::matrix sol = eq_.M.solve(x, rhs, GiNaC::solve_algo::gauss);
-        value = GiNaC::normal(sol(unsigned(i), 0));
-        if (!numbers_.pinned().empty()) value = GiNaC::normal(subs_unless_pole(value, numbers_.pinned()).value_or(value));
-    } catch (...) {
-        return false;
-    }
+    GiNaC::matrix rhs(unsigned(n), 1);
+    for (std::size_t k = 0; k < n; ++k) rhs(unsigned(k), 0) = eq_.f[k];
+    const std::optional<GiNaC::ex> solution = solved_unknown(eq_.M, rhs, unsigned(i));
+    if (!solution) return false;
+    GiNaC::ex value = *solution;
+    if (!numbers_.pinned().empty()) value = GiNaC::normal(subs_unless_pole(value, numbers_.pinned()).value_or(value));
     if (expanded_terms(value) > kMaxExpandedTerms) return false;
     const GiNaC::ex truth_r = alone == &left ? GiNaC::ex(qdd - value) : GiNaC::ex(value - qdd);
     out.verdict = Verdict::Disagrees;
