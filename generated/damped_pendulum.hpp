@@ -63,6 +63,16 @@ struct Model {
     static constexpr std::array<const char*, n_params> param_names{"m", "l", "g", "c"};
     static constexpr std::array<const char*, n_conserved> conserved_names{};
     static constexpr std::array<const char*, n_outputs> output_names{};
+    /// The SI unit of each value the runtime writes ("" where the model file declares none): the CSV's
+    /// headers, `psi [rad]`.
+    static constexpr const char* energy_unit = "J";
+    static constexpr std::array<const char*, nx> state_units{"rad", "rad/s"};
+    static constexpr std::array<const char*, n_params> param_units{"kg", "m", "m/s^2", "N m s"};
+    static constexpr std::array<const char*, n_conserved> conserved_units{};
+    static constexpr std::array<const char*, n_outputs> output_units{};
+    /// The units the model file declares, in which a bare number of --set or --init is (`deg`).
+    static constexpr std::array<const char*, n_params> param_declared_units{"kg", "m", "m/s^2", "N m s"};
+    static constexpr std::array<const char*, nq> coordinate_declared_units{"rad"};
 
     /// Sets the parameter called `name`; false when there is none.
     static bool set_param(Params& p_, std::string_view name_, const Scalar& value_) {

@@ -67,6 +67,16 @@ struct Model {
     static constexpr std::array<const char*, n_params> param_names{"m", "l", "M", "a", "g"};
     static constexpr std::array<const char*, n_conserved> conserved_names{"h"};
     static constexpr std::array<const char*, n_outputs> output_names{"x_disk", "y_disk"};
+    /// The SI unit of each value the runtime writes ("" where the model file declares none): the CSV's
+    /// headers, `psi [rad]`.
+    static constexpr const char* energy_unit = "J";
+    static constexpr std::array<const char*, nx> state_units{"rad", "rad", "rad/s", "rad/s"};
+    static constexpr std::array<const char*, n_params> param_units{"kg", "m", "kg", "m", "m/s^2"};
+    static constexpr std::array<const char*, n_conserved> conserved_units{"J"};
+    static constexpr std::array<const char*, n_outputs> output_units{"m", "m"};
+    /// The units the model file declares, in which a bare number of --set or --init is (`deg`).
+    static constexpr std::array<const char*, n_params> param_declared_units{"kg", "m", "kg", "m", "m/s^2"};
+    static constexpr std::array<const char*, nq> coordinate_declared_units{"rad", "rad"};
 
     /// Sets the parameter called `name`; false when there is none.
     static bool set_param(Params& p_, std::string_view name_, const Scalar& value_) {

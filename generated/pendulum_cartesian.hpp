@@ -69,6 +69,17 @@ struct Model {
     static constexpr std::array<const char*, n_outputs> output_names{};
     static constexpr std::array<const char*, n_constraints> constraint_names{"rod"};
     static constexpr std::array<bool, n_constraints> constraint_is_holonomic{true};
+    /// The SI unit of each value the runtime writes ("" where the model file declares none): the CSV's
+    /// headers, `psi [rad]`.
+    static constexpr const char* energy_unit = "J";
+    static constexpr std::array<const char*, nx> state_units{"m", "m", "m/s", "m/s"};
+    static constexpr std::array<const char*, n_params> param_units{"kg", "m", "m/s^2"};
+    static constexpr std::array<const char*, n_conserved> conserved_units{"J"};
+    static constexpr std::array<const char*, n_outputs> output_units{};
+    static constexpr std::array<const char*, n_constraints> multiplier_units{"kg/s^2"};
+    /// The units the model file declares, in which a bare number of --set or --init is (`deg`).
+    static constexpr std::array<const char*, n_params> param_declared_units{"kg", "m", "m/s^2"};
+    static constexpr std::array<const char*, nq> coordinate_declared_units{"m", "m"};
 
     /// Sets the parameter called `name`; false when there is none.
     static bool set_param(Params& p_, std::string_view name_, const Scalar& value_) {

@@ -2,6 +2,7 @@
 #include "table_driver.hpp"  // the driver for TableModel, compiled once (eomgen_table_driver)
 #include "model_list.hpp"
 #include "options.hpp"
+#include "cli/unit_values.hpp"
 #include "output/atomic_file.hpp"
 
 #include <iostream>
@@ -35,8 +36,14 @@ int main(int argc, char** argv) {
     }
     for (const models::Entry& m : models::kAll)
         if (o.model == m.name) {
-            eomgen::TableModel::bind(m.table());
-            return run_reporting<eomgen::TableModel>(o, "eomgen-sim");
+            using eomgen::TableModel;
+            TableModel::bind(m.table());
+            // A bare number of --set and --init in the unit the model file declares (deg), as eomgen run reads it.
+            const eomgen::cli::DeclaredUnits units = eomgen::cli::declared_units(
+                TableModel::param_names, TableModel::param_declared_units, TableModel::coordinate_names,
+                TableModel::coordinate_declared_units);
+            if (!eomgen::cli::options_in_si(units, o.set, o.init, "eomgen-sim")) return kExitUsage;
+            return run_reporting<TableModel>(o, "eomgen-sim");
         }
     std::string all;
     for (const std::string& m : known) all += (all.empty() ? "" : ", ") + m;

@@ -118,6 +118,27 @@ std::vector<std::string> ensemble_columns(const EnsembleDesign& design, const st
     return c;
 }
 
+/// The SI unit of each of ensemble_columns' columns (TableModel bound): the varied values', t's, the state's, h's
+/// and the outputs'; "" for the member, status, stopped and message, and where the model declares none.
+static std::vector<std::string> ensemble_units(const EnsembleDesign& design, std::size_t n_columns) {
+    std::vector<std::string> u{""};
+    for (const EnsembleVariable& v : design.variables()) {
+        const auto& names = v.is_state ? TableModel::state_names : TableModel::param_names;
+        const auto& units = v.is_state ? TableModel::state_units : TableModel::param_units;
+        std::string unit;
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (v.name == names[i]) unit = units[i];
+        u.push_back(unit);
+    }
+    u.insert(u.end(), {"", "", eomgen::time_unit<TableModel>()});
+    u.insert(u.end(), TableModel::state_units.begin(), TableModel::state_units.end());
+    u.push_back(TableModel::energy_unit);
+    u.insert(u.end(), TableModel::output_units.begin(), TableModel::output_units.end());
+    u.push_back("");
+    u.resize(n_columns);
+    return u;
+}
+
 int run_ensemble(const EnsembleRequest& req) {
     int rank = 0;
 #ifdef EOMGEN_HAVE_MPI
@@ -218,7 +239,10 @@ int run_ensemble(const EnsembleRequest& req) {
     std::size_t failed = 0;
     try {
         std::optional<TableSink> table;
-        if (rank == 0) table.emplace(table_path, req.out.empty(), columns);
+        // The CSV's header names each column with its unit ("psi [rad]"); HDF5 gives units as attributes.
+        std::vector<std::string> units = ensemble_units(*design, columns.size()), header;
+        for (std::size_t k = 0; k < columns.size(); ++k) header.push_back(eomgen::with_unit(columns[k], units[k]));
+        if (rank == 0) table.emplace(table_path, req.out.empty(), header);
 #ifdef EOMGEN_HAVE_HDF5
         if (table && is_hdf5(req.out)) {
             std::vector<bool> numeric;
@@ -230,7 +254,7 @@ int run_ensemble(const EnsembleRequest& req) {
             if (req.design.sample >= 0) varied = "--sample " + std::to_string(req.design.sample);
             for (const std::string& v : req.design.dists) varied += " --dist " + v;
             if (req.design.sample >= 0) varied += " --seed " + std::to_string(req.design.seed);
-            table->also_hdf5(Hdf5Table(req.out, columns, numeric,
+            table->also_hdf5(Hdf5Table(req.out, columns, numeric, units,
                                        {{"eomgen_version", EOMGEN_VERSION},
                                         {"model", req.model->name},
                                         {"model_file", req.model_path},

@@ -72,9 +72,11 @@ void write_attribute(hid_t parent, const std::string& name, const std::string& v
 }  // namespace
 
 Hdf5Table::Hdf5Table(std::string path, std::vector<std::string> columns, std::vector<bool> numeric,
-                     std::vector<std::pair<std::string, std::string>> attributes)
-    : path_(std::move(path)), columns_(std::move(columns)), numeric_(std::move(numeric)),
-      attributes_(std::move(attributes)), numbers_(columns_.size()), texts_(columns_.size()) {}
+                     std::vector<std::string> units, std::vector<std::pair<std::string, std::string>> attributes)
+    : path_(std::move(path)), columns_(std::move(columns)), numeric_(std::move(numeric)), units_(std::move(units)),
+      attributes_(std::move(attributes)), numbers_(columns_.size()), texts_(columns_.size()) {
+    units_.resize(columns_.size());
+}
 
 void Hdf5Table::add(const std::vector<std::string>& fields) {
     for (std::size_t k = 0; k < columns_.size(); ++k) {
@@ -117,6 +119,7 @@ void Hdf5Table::commit() {
                      H5Dclose, "create the dataset " + columns_[k]);
             check(H5Dwrite(d, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, numbers_[k].data()),
                   "write the dataset " + columns_[k]);
+            if (!units_[k].empty()) write_attribute(d, "unit", units_[k]);
         }
         check(H5Fflush(file, H5F_SCOPE_GLOBAL), "write " + tmp);
     }

@@ -8,6 +8,7 @@
 #include "codegen/generation_timings.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/lagrangian.hpp"
+#include "mechanics/quantity_units.hpp"
 #include "mechanics/trig_rewrite.hpp"
 #include "model/families.hpp"
 #include "model/model_file.hpp"
@@ -113,8 +114,11 @@ int generate(const std::vector<std::string>& models, const std::vector<std::stri
 
 std::string rule(const std::string& title) { return "\n" + title + "\n" + std::string(title.size(), '-') + "\n"; }
 
+/// "  [J]" after a quantity of unit J; nothing where it has none.
+std::string in_unit(const std::string& unit) { return unit.empty() ? "" : "  [" + unit + "]"; }
+
 void show_constraints(const eomgen::Model& model, const eomgen::Equations& eq, eomgen::codegen::MathPrinter& pr,
-                      const std::vector<GiNaC::symbol>& lambda, std::ostream& os) {
+                      const std::vector<GiNaC::symbol>& lambda, const eomgen::QuantityUnits& units, std::ostream& os) {
     using eomgen::codegen::MathStyle;
     const eomgen::trig::Hints hints = eomgen::trig::model_hints(model);
     pr.prefer_angles(hints.angles);
@@ -122,10 +126,12 @@ void show_constraints(const eomgen::Model& model, const eomgen::Equations& eq, e
         return pr.print(eomgen::trig::readable(e, hints), MathStyle::Text);
     };
     os << rule("Constraints  M q'' = f + A^T lambda,  A q'' = gamma  (c = A q' + b = 0)");
-    for (const eomgen::ConstraintEquations& c : eq.constraints) {
+    for (std::size_t k = 0; k < eq.constraints.size(); ++k) {
+        const eomgen::ConstraintEquations& c = eq.constraints[k];
         const bool holonomic = c.kind == eomgen::ConstraintKind::Holonomic;
         os << "  " << c.name << " (" << (holonomic ? "holonomic" : "nonholonomic") << "): "
-           << P(holonomic ? c.position : c.velocity) << " = 0\n";
+           << P(holonomic ? c.position : c.velocity) << " = 0"
+           << (units.multipliers[k].empty() ? "" : "  (its multiplier in " + units.multipliers[k] + ")") << "\n";
         if (holonomic) os << "    velocity level: " << P(c.velocity) << " = 0\n";
         os << "    A = [";
         for (std::size_t i = 0; i < c.jacobian.size(); ++i) os << (i ? ", " : "") << P(c.jacobian[i]);
@@ -139,7 +145,8 @@ void show_constraints(const eomgen::Model& model, const eomgen::Equations& eq, e
     for (std::size_t i = 0; i < model.dof(); ++i) {
         GiNaC::ex rhs = eq.generalized_forces[i];
         for (std::size_t k = 0; k < eq.constraints.size(); ++k) rhs += eq.constraints[k].jacobian[i] * lambda[k];
-        os << "  [" << model.coordinates[i].name << "]  " << P(eq.euler_lagrange[i]) << " = " << P(rhs) << "\n";
+        os << "  [" << model.coordinates[i].name << "]  " << P(eq.euler_lagrange[i]) << " = " << P(rhs)
+           << in_unit(units.equations[i]) << "\n";
     }
 }
 
@@ -153,6 +160,7 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     auto P = [&pr, &hints](const GiNaC::ex& e) {
         return pr.print(eomgen::trig::readable(e, hints), MathStyle::Text);
     };
+    const eomgen::QuantityUnits units = eomgen::quantity_units(model, eq);
     os << model.name << ": " << model.title;
     if (!model.source.empty()) os << " (" << model.source << ")";
     os << "\n";
@@ -197,11 +205,13 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
                 os << "    N'_" << k + 1 << " = " << P(d.euler_torque(k, 0)) << "\n";
         }
     }
+    const std::string J = in_unit(units.energy);
     os << rule("Energies");
-    os << "  T = " << P(eq.T) << "\n  V = " << P(eq.V) << "\n  L = T - V = " << P(eq.L) << "\n";
+    os << "  T = " << P(eq.T) << J << "\n  V = " << P(eq.V) << J << "\n  L = T - V = " << P(eq.L) << J << "\n";
     os << rule("Euler-Lagrange equations  d/dt(dL/dq') - dL/dq = 0");
     for (std::size_t i = 0; i < model.dof(); ++i)
-        os << "  [" << model.coordinates[i].name << "]  " << P(eq.euler_lagrange[i]) << " = 0\n";
+        os << "  [" << model.coordinates[i].name << "]  " << P(eq.euler_lagrange[i]) << " = 0"
+           << in_unit(units.equations[i]) << "\n";
     os << rule("Mass-matrix form  M(q,t) q'' = f(q,q',t)");
     for (std::size_t i = 0; i < model.dof(); ++i)
         for (std::size_t j = i; j < model.dof(); ++j)
@@ -211,15 +221,15 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
         os << "  f[" << model.coordinates[i].name << "] = " << P(eq.f[i]) << "\n";
     if (!eq.constraints.empty() || std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(),
                                                 [](const GiNaC::ex& q) { return !q.is_zero(); }))
-        show_constraints(model, eq, pr, mt.lambda, os);
+        show_constraints(model, eq, pr, mt.lambda, units, os);
     os << rule("Energy function and momenta");
-    os << "  h = sum q' dL/dq' - L = " << P(eq.energy) << "\n";
+    os << "  h = sum q' dL/dq' - L = " << P(eq.energy) << J << "\n";
     for (std::size_t i = 0; i < model.dof(); ++i)
         os << "  p_" << model.coordinates[i].name << " = dL/d" << model.coordinates[i].name << "' = " << P(eq.momenta[i])
-           << "\n";
+           << in_unit(units.momenta[i]) << "\n";
     os << rule("Hamiltonian  H(q,p,t) = p.q' - L,  Hamilton's equations  q' = dH/dp, p' = -dH/dq (+ Q)");
     if (ham.symbolic) {
-        os << "  H = " << P(ham.H) << "\n";
+        os << "  H = " << P(ham.H) << J << "\n";
         for (std::size_t i = 0; i < model.dof(); ++i) {
             const std::string& q = model.coordinates[i].name;
             os << "  " << q << "' = dH/dp_" << q << " = " << P(ham.qdot[i]) << "\n";
@@ -231,7 +241,8 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     }
     os << rule("Conserved quantities");
     if (eq.conserved.empty()) os << "  none found\n";
-    for (const eomgen::ConservedQuantity& c : eq.conserved) os << "  " << c.name << ": " << c.reason << "\n";
+    for (std::size_t k = 0; k < eq.conserved.size(); ++k)
+        os << "  " << eq.conserved[k].name << (units.conserved[k].empty() ? "" : " [" + units.conserved[k] + "]") << ": " << eq.conserved[k].reason << "\n";
     for (std::size_t i = 0; i < model.dof(); ++i)
         if (!eq.cyclic[i])
             os << "  " << model.coordinates[i].name << " is not cyclic\n";
@@ -251,7 +262,7 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     if (!model.outputs.empty()) {
         os << rule("Outputs  [outputs], recorded beside the state by `eomgen run` and eomgen-sim");
         for (const eomgen::DeclaredOutput& o : model.outputs) {
-            os << "  " << o.name << " = " << P(o.expr.expr) << (o.unit.empty() ? "" : "  [" + o.unit + "]")
+            os << "  " << o.name << " = " << P(o.expr.expr) << in_unit(units.outputs[std::size_t(&o - &model.outputs[0])])
                << "\n";
             if (!o.description.empty()) os << "    " << o.description << "\n";
         }

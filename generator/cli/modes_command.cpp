@@ -1,6 +1,6 @@
 /** @file modes_command.cpp  `eomgen modes`: the equilibria and their normal modes as text, Markdown or JSON. */
 #include "cli/modes_command.hpp"
-#include "cli/unit_values.hpp"
+#include "cli/model_unit_values.hpp"
 
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
@@ -263,21 +263,23 @@ std::string modes_markdown(const Model& model, const ModesResult& result) {
 }
 
 std::vector<std::string> modes_summary(const Model& model, const ModesResult& r) {
-    static_cast<void>(model);
+    const std::string per_second = declares_units(model) ? " 1/s" : "", rad_per_second = declares_units(model) ? " rad/s" : "";
     std::vector<std::string> lines;
     for (const Equilibrium& e : r.equilibria) {
         std::string line;
-        for (std::size_t i = 0; i < e.q.size(); ++i) line += (i ? ", " : "") + r.coordinates[i] + " = " + number(e.q[i]);
+        for (std::size_t i = 0; i < e.q.size(); ++i)
+            line += (i ? ", " : "") + r.coordinates[i] + " = " + number(e.q[i]) + coordinate_unit(model, r.coordinates[i]);
         for (std::size_t c = 0; c < e.multipliers.size(); ++c)
             line += (c ? ", " : " (") + std::string("lambda_") + r.constraints[c] + " = " + number(e.multipliers[c]) +
                     (c + 1 == e.multipliers.size() ? ")" : "");
         line += std::string(": ") + stability_name(e.stability);
-        if (e.stability == Stability::Unstable) line += ", growth rate " + number(e.growth_rate);
+        if (e.stability == Stability::Unstable) line += ", growth rate " + number(e.growth_rate) + per_second;
         if (!e.gyroscopic && !e.damped) {
             line += "; omega =";
             for (std::size_t m = 0; m < e.modes.size(); ++m)
                 line += (m ? ", " : " ") + (e.modes[m].omega2 >= 0 ? number(std::sqrt(e.modes[m].omega2))
                                                                    : "i " + number(std::sqrt(-e.modes[m].omega2)));
+            if (!e.modes.empty()) line += rad_per_second;
         }
         lines.push_back(line);
     }
@@ -326,7 +328,7 @@ int ModesCommand::run() const {
     try {
         for (const std::string& s : set_) {
             try {  // a bare number in the parameter's declared unit, or with its own ("45 deg")
-                options.set.insert(assignment(assignment_in_si(model, s, false, "--set"), "--set"));
+                options.set.insert(assignment(assignment_in_si(declared_units(model), s, false, "--set"), "--set"));
             } catch (const std::invalid_argument& e) {
                 throw ModesError(e.what());
             }

@@ -3,6 +3,8 @@
 
 #include "cli/process.hpp"
 
+#include "eomgen/column_units.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -21,7 +23,8 @@ std::vector<std::string> csv_header(const std::string& csv) {
     if (!std::getline(in, line)) throw std::runtime_error("cannot read " + csv);
     std::vector<std::string> names;
     std::istringstream fields(line);
-    for (std::string f; std::getline(fields, f, ',');) names.push_back(f);
+    // The names without their units ("psi [rad]" is the column psi); the labels take units from the model.
+    for (std::string f; std::getline(fields, f, ',');) names.push_back(eomgen::column_name(f));
     return names;
 }
 

@@ -9,7 +9,7 @@
 #include "cli/latex_equations.hpp"
 #include "cli/modes_command.hpp"
 #include "cli/plot.hpp"
-#include "cli/unit_values.hpp"
+#include "cli/model_unit_values.hpp"
 #include "cli/process.hpp"
 #include "cli/run_command.hpp"
 #include "codegen/cpp_emitter.hpp"
@@ -165,7 +165,7 @@ Modes small_oscillations_of(const Model& model, const Equations& eq, const sim::
     try {
         ModesOptions options;
         for (const std::string& s : o.set)
-            options.set.insert(sim::parse_assignment(assignment_in_si(model, s, false, "--set"), "--set"));
+            options.set.insert(sim::parse_assignment(assignment_in_si(declared_units(model), s, false, "--set"), "--set"));
         m.result = small_oscillations(model, eq, options);
     } catch (const std::exception& e) {
         m.why_not = e.what();
@@ -448,7 +448,7 @@ int ReportCommand::run() {
         eomgen::sim::Options o = options_;
         o.model = model.name;
         // A bare number in the parameter's declared unit, or with its own ("45 deg"); SI for the driver.
-        if (!options_in_si(model, o.set, o.init, "eomgen report")) return 2;
+        if (!options_in_si(declared_units(model), o.set, o.init, "eomgen report")) return 2;
         sim.csv = model.name + ".csv";
         o.csv = (dir / sim.csv).string();
         progress("integrating");

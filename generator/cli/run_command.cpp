@@ -1,7 +1,7 @@
 /** @file run_command.cpp  `eomgen run`: model file → equations → compiled code → trajectory, CSV, plot. */
 #include "cli/run_command.hpp"
 #include "table_driver.hpp"  // the driver for TableModel, compiled once
-#include "cli/unit_values.hpp"
+#include "cli/model_unit_values.hpp"
 
 #include "cli/compiled_model.hpp"
 #include "cli/ensemble_command.hpp"
@@ -144,7 +144,7 @@ int RunCommand::run_model() {
     std::vector<std::pair<PlotColumn, PlotColumn>> xy;
     const bool ensemble = EnsembleDesign::requested(design_);
     // --sweep and --dist values in the declared units (or their own), SI for the ensemble.
-    if (ensemble && !ensemble_in_si(model, design_.sweeps, design_.dists, "eomgen run")) return 2;
+    if (ensemble && !ensemble_in_si(declared_units(model), design_.sweeps, design_.dists, "eomgen run")) return 2;
     if (ensemble) {
         // The design's mistakes before the compiler runs (its columns and plot are checked after).
         EnsembleNames names;
@@ -201,7 +201,7 @@ int RunCommand::run_model() {
     eomgen::sim::Options o = options_;
     o.model = model.name;
     // A bare number in the parameter's declared unit, or with its own ("45 deg"); SI for the driver.
-    if (!options_in_si(model, o.set, o.init, "eomgen run")) return 2;
+    if (!options_in_si(declared_units(model), o.set, o.init, "eomgen run")) return 2;
     if (show_progress)
         o.progress = ::isatty(STDERR_FILENO) ? eomgen::ProgressStyle::Terminal : eomgen::ProgressStyle::Lines;
     std::optional<TempDir> samples_dir;

@@ -20,18 +20,18 @@ struct Declared {
     std::optional<Unit> unit;       ///< its declared unit, if any
 };
 
-Declared declared(const Model& model, const std::string& name, bool state) {
+Declared declared(const DeclaredUnits& units, const std::string& name, bool state) {
     Declared d;
     if (!state) {
-        for (const Parameter& p : model.parameters)
-            if (p.name == name) return {true, p.declared_unit};
+        for (const DeclaredUnits::Entry& p : units.parameters)
+            if (p.name == name) return {true, p.unit};
         return d;
     }
-    for (const Coordinate& c : model.coordinates) {
-        if (c.name == name) return {true, c.declared_unit};
+    for (const DeclaredUnits::Entry& c : units.coordinates) {
+        if (c.name == name) return {true, c.unit};
         if (c.name + "_dot" == name) {
             d.known = true;
-            if (c.declared_unit) d.unit = c.declared_unit->per_second();
+            if (c.unit) d.unit = c.unit->per_second();
             return d;
         }
     }
@@ -47,7 +47,28 @@ std::string number(double x) {
 
 }  // namespace
 
-std::string assignment_in_si(const Model& model, const std::string& text, bool state, const char* option) {
+DeclaredUnits declared_units(const std::vector<const char*>& param_names, const std::vector<const char*>& param_units,
+                             const std::vector<const char*>& coordinate_names,
+                             const std::vector<const char*>& coordinate_units) {
+    auto entries = [](const std::vector<const char*>& names, const std::vector<const char*>& units) {
+        std::vector<DeclaredUnits::Entry> out;
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            DeclaredUnits::Entry e{names[i], std::nullopt};
+            if (i < units.size() && units[i] && *units[i]) {
+                try {
+                    e.unit = parse_unit(units[i]);
+                } catch (const UnitError&) {
+                    // read when the header was generated; unreadable now only with another units database
+                }
+            }
+            out.push_back(std::move(e));
+        }
+        return out;
+    };
+    return {entries(param_names, param_units), entries(coordinate_names, coordinate_units)};
+}
+
+std::string assignment_in_si(const DeclaredUnits& model, const std::string& text, bool state, const char* option) {
     const auto eq = text.find('=');
     if (eq == std::string::npos || eq == 0) return text;  // the runtime says "expected NAME=VALUE"
     const std::string name = text.substr(0, eq), value = text.substr(eq + 1);
@@ -86,11 +107,11 @@ std::string assignment_in_si(const Model& model, const std::string& text, bool s
     return text;  // not a number: the runtime says so
 }
 
-void assignments_in_si(const Model& model, std::vector<std::string>& assignments, bool state, const char* option) {
+void assignments_in_si(const DeclaredUnits& model, std::vector<std::string>& assignments, bool state, const char* option) {
     for (std::string& a : assignments) a = assignment_in_si(model, a, state, option);
 }
 
-bool options_in_si(const Model& model, std::vector<std::string>& set, std::vector<std::string>& init,
+bool options_in_si(const DeclaredUnits& model, std::vector<std::string>& set, std::vector<std::string>& init,
                    const char* program) {
     try {
         assignments_in_si(model, set, false, "--set");
@@ -106,9 +127,9 @@ namespace {
 
 /// One value of NAME (a parameter, else a state) in SI, through assignment_in_si; the text as given when it is no
 /// number (the design reports it).
-std::string value_in_si(const Model& model, const std::string& name, const std::string& value, const char* option) {
+std::string value_in_si(const DeclaredUnits& model, const std::string& name, const std::string& value, const char* option) {
     const bool parameter = std::any_of(model.parameters.begin(), model.parameters.end(),
-                                       [&](const Parameter& p) { return p.name == name; });
+                                       [&](const DeclaredUnits::Entry& p) { return p.name == name; });
     const std::string whole = assignment_in_si(model, name + "=" + value, !parameter, option);
     return whole.substr(name.size() + 1);
 }
@@ -126,7 +147,7 @@ std::vector<std::string> split_on(const std::string& s, char c) {
 
 }  // namespace
 
-bool ensemble_in_si(const Model& model, std::vector<std::string>& sweeps, std::vector<std::string>& dists,
+bool ensemble_in_si(const DeclaredUnits& model, std::vector<std::string>& sweeps, std::vector<std::string>& dists,
                     const char* program) {
     try {
         for (std::string& s : sweeps) {

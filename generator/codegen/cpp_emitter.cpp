@@ -5,6 +5,7 @@
 #include "codegen/tree_emitter.hpp"
 #include "codegen/mass_solve_emitter.hpp"
 #include "codegen/switching_emitter.hpp"
+#include "codegen/units_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/rest_linearization.hpp"
 #include "text/escape.hpp"
@@ -478,6 +479,7 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
             os << (k ? ", " : "") << (eq.constraints[k].kind == ConstraintKind::Holonomic ? "true" : "false");
         os << "};\n";
     }
+    os << emit_unit_arrays(model, eq);
     os << "\n";
     os << "    /// Sets the parameter called `name`; false when there is none.\n";
     os << "    static bool set_param(Params& p_, std::string_view name_, const Scalar& value_) {\n";

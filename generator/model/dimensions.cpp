@@ -1,6 +1,8 @@
 /** @file dimensions.cpp  The dimension of a GiNaC expression from its symbols' (dimensions.hpp). */
 #include "model/dimensions.hpp"
 
+#include "model/model.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -78,6 +80,30 @@ Dims energy_dims() {
     return d;
 }
 
+std::string si_unit_text(const Dims& d) {
+    if (d.dimensionless()) return "";
+    if (d == energy_dims()) return "J";
+    if (d == Dims{{1, 1, -2, 0, 0, 0, 0}}) return "N";
+    if (d == Dims{{1, 2, -3, 0, 0, 0, 0}}) return "W";
+    return d.str();
+}
+
+std::map<GiNaC::ex, Dims, GiNaC::ex_is_less> symbol_dimensions(const Model& model) {
+    std::map<GiNaC::ex, Dims, GiNaC::ex_is_less> dims;
+    const Dims second{{0, 0, 1, 0, 0, 0, 0}};
+    dims[model.t] = second;
+    for (const Parameter& p : model.parameters)
+        if (p.declared_unit) dims[p.symbol] = Dims::of(p.declared_unit->dimension);
+    for (const Coordinate& c : model.coordinates)
+        if (c.declared_unit) {
+            const Dims q = Dims::of(c.declared_unit->dimension);
+            dims[c.q] = q;
+            dims[c.qd] = q - second;
+            dims[c.qdd] = q - second - second;
+        }
+    return dims;
+}
+
 std::optional<Dims> dimension_of(const GiNaC::ex& e, const std::map<GiNaC::ex, Dims, GiNaC::ex_is_less>& symbols) {
     if (e.is_zero()) return std::nullopt;  // 0 has every dimension: "V = 0", a term that cancels
     if (GiNaC::is_a<GiNaC::numeric>(e) || GiNaC::is_a<GiNaC::constant>(e)) return Dims{};
@@ -89,9 +115,13 @@ std::optional<Dims> dimension_of(const GiNaC::ex& e, const std::map<GiNaC::ex, D
     if (GiNaC::is_a<GiNaC::add>(e)) {
         std::optional<Dims> first;
         GiNaC::ex first_term;
+        bool all_known = true;
         for (const GiNaC::ex& term : e) {
-            const std::optional<Dims> d = dimension_of(term, symbols);
-            if (!d) continue;  // unknown: not judged, the others still are
+            const std::optional<Dims> d = dimension_of(term, symbols);  // once per term: sums nest deeply
+            if (!d) {
+                all_known = false;  // unknown: not judged, the others still are
+                continue;
+            }
             if (!first) {
                 first = d;
                 first_term = term;
@@ -100,10 +130,8 @@ std::optional<Dims> dimension_of(const GiNaC::ex& e, const std::map<GiNaC::ex, D
                                      first->str() + ", " + shown(term) + " is " + d->str());
             }
         }
-        if (!first) return std::nullopt;
         // A sum with a term of unknown dimension has the known terms' dimension only if all are known.
-        for (const GiNaC::ex& term : e)
-            if (!dimension_of(term, symbols)) return std::nullopt;
+        if (!first || !all_known) return std::nullopt;
         return first;
     }
     if (GiNaC::is_a<GiNaC::mul>(e)) {

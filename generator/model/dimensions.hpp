@@ -40,6 +40,16 @@ struct Dims {
 /// The energy, kg m² s⁻².
 Dims energy_dims();
 
+/// The SI unit a quantity of dimension d is shown in: J, N and W by name, else the base units ("kg m^2/s",
+/// "m/s"); "" for a dimensionless one (a pure number).
+std::string si_unit_text(const Dims& d);
+
+struct Model;
+
+/// The dimensions of the model's symbols: t a time, each parameter and coordinate with a declared unit its own,
+/// q̇ q's per second, q̈ per second squared. Symbols without a unit are absent (their terms are not judged).
+std::map<GiNaC::ex, Dims, GiNaC::ex_is_less> symbol_dimensions(const Model& model);
+
 /// An inconsistency inside an expression: a sum whose terms differ, the argument of a function that is not
 /// dimensionless. The message names the part and both dimensions.
 struct DimensionError : std::runtime_error {

@@ -366,17 +366,10 @@ class Loader {
             p.value = constant(*parameters[i].table, "value", symbols, 0.0, unit ? &*unit : nullptr, &p.given, &own);
             if (!unit && own) p.unit = own->to_si == 1.0 ? own->text : own->si();
         }
-        dims_[model.t] = Dims{{0, 0, 1, 0, 0, 0, 0}};
-        for (const Parameter& p : model.parameters)
-            if (p.declared_unit) dims_[p.symbol] = Dims::of(p.declared_unit->dimension);
+        dims_ = symbol_dimensions(model);
         for (const Coordinate& c : model.coordinates)
-            if (c.declared_unit) {
-                const Dims q = Dims::of(c.declared_unit->dimension), per_second{{0, 0, -1, 0, 0, 0, 0}};
-                dims_[c.q] = q;
-                dims_[c.qd] = q + per_second;
-                dims_[c.qdd] = q + per_second + per_second;
+            if (c.declared_unit)
                 for (const GiNaC::symbol& x : {c.q, c.qd, c.qdd}) coordinate_dims_.push_back(dims_[x]);
-            }
 
         read_lagrangian(root, symbols, !bodies.empty(), model);
         read_bodies(bodies, symbols, model);

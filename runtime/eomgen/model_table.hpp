@@ -19,6 +19,7 @@
 
 #include "eomgen/errors.hpp"
 #include "eomgen/model_jacobian.hpp"
+#include "eomgen/column_units.hpp"
 #include "eomgen/model_traits.hpp"
 
 #include <Eigen/Core>
@@ -34,7 +35,7 @@
 namespace eomgen {
 
 /// Raised when ModelTable's layout changes: a table of another layout is refused.
-constexpr std::uint32_t kModelTableAbi = 4;
+constexpr std::uint32_t kModelTableAbi = 5;
 
 /// What a table function reports: success, or which of the runtime's errors it caught.
 enum TableStatus : int {
@@ -85,6 +86,16 @@ struct ModelTable {
     int (*switching)(double t, const double* q, const double* qd, const void* p, double* out);
     /// dh/dt = Σ Q_i q'_i − ∂L/∂t (M::power), null where the model has none.
     int (*power)(double t, const double* q, const double* qd, const void* p, double* out);
+    /// The units (column_units.hpp), null where the header declares none: SI for the values written, the model
+    /// file's own for the numbers of --set and --init.
+    const char* energy_unit;
+    const char* const* state_units;                ///< 2 nq
+    const char* const* param_units;                ///< n_params
+    const char* const* conserved_units;            ///< n_conserved
+    const char* const* output_units;               ///< n_outputs
+    const char* const* multiplier_units;           ///< n_constraints
+    const char* const* param_declared_units;       ///< n_params
+    const char* const* coordinate_declared_units;  ///< nq
 };
 
 namespace table_detail {
@@ -306,6 +317,16 @@ const ModelTable& model_table() {
             t.switch_names = M::switch_names.data();
             t.switching = &W::switching;
         }
+        if constexpr (declares_units<M>::value) {
+            t.energy_unit = M::energy_unit;
+            t.state_units = M::state_units.data();
+            t.param_units = M::param_units.data();
+            t.conserved_units = M::conserved_units.data();
+            t.output_units = M::output_units.data();
+            if constexpr (constrained) t.multiplier_units = M::multiplier_units.data();
+            t.param_declared_units = M::param_declared_units.data();
+            t.coordinate_declared_units = M::coordinate_declared_units.data();
+        }
         return t;
     }();
     return table;
@@ -357,6 +378,10 @@ class TableModel {
     static inline std::vector<const char*> switch_names;
     /// Whether the model has power() (dh/dt where h is not conserved).
     static inline bool has_power = false;
+    /// The units (column_units.hpp): "" entries where the table has none.
+    static inline const char* energy_unit = "";
+    static inline std::vector<const char*> state_units, param_units, conserved_units, output_units, multiplier_units,
+        param_declared_units, coordinate_declared_units;
 
     /// Makes `t` the model of every TableModel call; throws std::invalid_argument for a table of another
     /// layout or one this program cannot use.
@@ -386,6 +411,18 @@ class TableModel {
         n_switches = t.switching ? t.n_switches : 0;
         has_power = t.power != nullptr;
         switch_names.assign(t.switch_names, t.switch_names + n_switches);
+        auto units = [](std::vector<const char*>& v, const char* const* from, int n) {
+            if (from) v.assign(from, from + n);
+            else v.assign(std::size_t(n), "");
+        };
+        energy_unit = t.energy_unit ? t.energy_unit : "";
+        units(state_units, t.state_units, 2 * t.nq);
+        units(param_units, t.param_units, t.n_params);
+        units(conserved_units, t.conserved_units, t.n_conserved);
+        units(output_units, t.output_units, t.n_outputs);
+        units(multiplier_units, t.multiplier_units, t.n_constraints);
+        units(param_declared_units, t.param_declared_units, t.n_params);
+        units(coordinate_declared_units, t.coordinate_declared_units, t.nq);
     }
 
     static const ModelTable& table() {

@@ -121,7 +121,8 @@ class AtomicOutputFile {
 };
 
 /**
- * Writes `t,<state names...>,<extra names...>` and then one row per call of write_row, every number at
+ * Writes `t,<state names...>,<extra names...>` (the first column `time_name`, "t" or "t [s]") and then one row
+ * per call of write_row, every number at
  * std::numeric_limits<Scalar>::max_digits10 significant digits (so each value reads back exactly).
  * Atomic as AtomicOutputFile: rows go to `<path>.tmp`, commit() renames it over `path`.
  */
@@ -129,11 +130,11 @@ template <class Scalar>
 class CsvWriter {
   public:
     CsvWriter(const std::string& path, const std::vector<std::string>& state_names,
-              const std::vector<std::string>& extra_names = {})
+              const std::vector<std::string>& extra_names = {}, const std::string& time_name = "t")
         : file_(path), columns_(state_names.size() + extra_names.size()), n_state_(state_names.size()) {
         std::ostream& out = file_.stream();
         out.precision(std::numeric_limits<Scalar>::max_digits10);
-        out << "t";
+        out << csv_field(time_name);
         for (const auto& name : state_names) out << ',' << csv_field(name);
         for (const auto& name : extra_names) out << ',' << csv_field(name);
         out << '\n';
@@ -175,9 +176,10 @@ class CsvWriter {
  */
 template <class Samples, class Extra>
 void write_csv(const std::string& path, const std::vector<std::string>& state_names,
-               const std::vector<std::string>& extra_names, const Samples& samples, Extra&& extra) {
+               const std::vector<std::string>& extra_names, const Samples& samples, Extra&& extra,
+               const std::string& time_name = "t") {
     using Scalar = std::decay_t<decltype(std::begin(samples)->t)>;
-    CsvWriter<Scalar> writer(path, state_names, extra_names);
+    CsvWriter<Scalar> writer(path, state_names, extra_names, time_name);
     for (const auto& sample : samples) writer.write_row(sample.t, sample.x, extra(sample.t, sample.x));
     writer.commit();
 }

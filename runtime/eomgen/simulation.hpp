@@ -5,6 +5,7 @@
  */
 #pragma once
 
+#include "eomgen/column_units.hpp"
 #include "eomgen/constraints.hpp"
 #include "eomgen/integrate.hpp"
 #include "eomgen/sliding.hpp"
@@ -203,20 +204,23 @@ void write_samples(const Options& o, const typename M::Params& params,
     using State = typename M::State;
     using Config = typename M::Config;
     if (o.csv.empty()) return;
-    std::vector<std::string> names(M::state_names.begin(), M::state_names.end());
-    std::vector<std::string> extra{"energy"};
+    // Each column's header with its unit where the model declares one: "psi [rad]", "energy [J]".
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < M::state_names.size(); ++i) names.push_back(with_unit(M::state_names[i], state_unit<M>(i)));
+    std::vector<std::string> extra{with_unit("energy", energy_unit<M>())};
     // Where h is not conserved: the work of the forces, W = ∫ P dt, so that energy − energy(0) − work is the balance.
     const bool with_work = !work.empty() && work.size() == samples.size();
-    if (with_work) extra.push_back("work");
+    if (with_work) extra.push_back(with_unit("work", energy_unit<M>()));
     std::size_t row_index = 0;
-    for (const char* c : M::conserved_names)
-        if (std::string(c) != "h") extra.push_back(c);
+    for (std::size_t k = 0; k < M::conserved_names.size(); ++k)
+        if (std::string(M::conserved_names[k]) != "h") extra.push_back(with_unit(M::conserved_names[k], conserved_unit<M>(k)));
     if constexpr (is_constrained<M>::value)
-        for (const char* c : M::constraint_names) {
-            extra.push_back(std::string("residual_") + c);
-            extra.push_back(std::string("lambda_") + c);
+        for (std::size_t k = 0; k < M::constraint_names.size(); ++k) {
+            const std::string c = M::constraint_names[k];
+            extra.push_back("residual_" + c);  // max(|g|, |c|): of two levels, so no one unit
+            extra.push_back(with_unit("lambda_" + c, multiplier_unit<M>(k)));
         }
-    extra.insert(extra.end(), M::output_names.begin(), M::output_names.end());
+    for (std::size_t k = 0; k < M::output_names.size(); ++k) extra.push_back(with_unit(M::output_names[k], output_unit<M>(k)));
     eomgen::write_csv(o.csv, names, extra, samples, [&params, &work, with_work, &row_index](double t, const State& x) {
         const Config q = positions<M::nq>(x), qd = velocities<M::nq>(x);
         typename M::Conserved c;
@@ -239,7 +243,7 @@ void write_samples(const Options& o, const typename M::Params& params,
         M::outputs(t, q, qd, params, out);
         for (int k = 0; k < M::n_outputs; ++k) row.push_back(out(k));
         return row;
-    });
+    }, with_unit("t", time_unit<M>()));
     std::cout << "csv:     " << o.csv << " (" << samples.size() << " rows)\n";
 }
 
@@ -586,9 +590,10 @@ void report_conserved(const typename M::Params& params, const std::vector<eomgen
         double drift = 0;
         for (const auto& v : values) drift = std::max(drift, std::abs(v[std::size_t(k)] - first));
         if (!absolute) drift /= std::abs(first);
-        os << "conserved " << name << ": " << first << " at t = " << samples.front().t << ", " << last
+        const std::string unit = conserved_unit<M>(std::size_t(k)).empty() ? "" : " " + conserved_unit<M>(std::size_t(k));
+        os << "conserved " << name << ": " << first << unit << " at t = " << samples.front().t << ", " << last << unit
            << " at the end; " << (absolute ? "max |d" + name + "| = " : "max |d" + name + "|/|" + name + "0| = ")
-           << drift << (absolute ? "  (absolute: it starts at 0)" : "") << "\n";
+           << drift << (absolute ? unit + "  (absolute: it starts at 0)" : "") << "\n";
     }
 }
 
@@ -609,24 +614,35 @@ int run(const Options& o) {
     const std::string title = M::title, source = M::source;
     const std::string about = title + (!title.empty() && !source.empty() ? "; " : "") + source;
     std::cout << "model:   " << M::name << (about.empty() ? "" : " (" + about + ")") << "\n";
+    // "params:  m=30 w=0.9", with units "params:  m = 30 kg, w = 0.9 m".
     std::cout << "params: ";
     const auto values = M::param_values(params);
-    for (std::size_t i = 0; i < values.size(); ++i) std::cout << " " << M::param_names[i] << "=" << values[i];
+    bool units = false;
+    for (std::size_t i = 0; i < values.size(); ++i) units = units || !param_unit<M>(i).empty();
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (units)
+            std::cout << (i ? ", " : " ") << M::param_names[i] << " = " << values[i]
+                      << (param_unit<M>(i).empty() ? "" : " " + param_unit<M>(i));
+        else
+            std::cout << " " << M::param_names[i] << "=" << values[i];
+    }
     std::cout << "\n";
 
     const Trajectory<M> r = simulate<M>(o, params, x0, events, true, &std::cout);
     const double h_end = M::energy(r.t, positions<M::nq>(r.x), velocities<M::nq>(r.x), params);
     std::cout.precision(15);
-    std::cout << "t:       " << r.t << "\n";
+    const std::string s = time_unit<M>().empty() ? "" : " s", J = energy_unit<M>().empty() ? "" : " " + energy_unit<M>();
+    std::cout << "t:       " << r.t << s << "\n";
     for (Eigen::Index i = 0; i < r.x.size(); ++i)
-        std::cout << "  " << M::state_names[std::size_t(i)] << " = " << r.x(i) << "\n";
-    std::cout << "energy h: " << r.h0 << " at t = 0, " << h_end << " at the end; "
+        std::cout << "  " << M::state_names[std::size_t(i)] << " = " << r.x(i)
+                  << (state_unit<M>(std::size_t(i)).empty() ? "" : " " + state_unit<M>(std::size_t(i))) << "\n";
+    std::cout << "energy h: " << r.h0 << J << " at t = 0, " << h_end << J << " at the end; "
               << (std::abs(r.h0) < 1e-12 ? "max |dh| = " : "max |dh|/|h0| = ") << r.max_drift
-              << (std::abs(r.h0) < 1e-12 ? "  (absolute: h0 is 0)" : "")
+              << (std::abs(r.h0) < 1e-12 ? J + "  (absolute: h0 is 0)" : "")
               << (M::explicit_time ? "  (L depends on t: h need not be conserved)" : "") << "\n";
     if (!r.work.empty())
-        std::cout << "balance: W = " << r.work.back() << " (the work of the forces, int power dt); max |h - h0 - W| = "
-                  << r.max_imbalance << " over the samples\n";
+        std::cout << "balance: W = " << r.work.back() << J << " (the work of the forces, int power dt); max |h - h0 - W| = "
+                  << r.max_imbalance << J << " over the samples\n";
     report_conserved<M>(params, r.samples, std::cout);
     try {
         write_samples<M>(o, params, r.samples, r.work);

@@ -105,9 +105,16 @@ inline std::vector<std::vector<std::string>> read_csv(const fs::path& p) {
     return rows;
 }
 
+/// The name of a CSV column whose header carries a unit: "psi [rad]" → "psi" (written here, apart from the runtime).
+inline std::string column_name(const std::string& header) {
+    const std::size_t open = header.rfind(" [");
+    return open != std::string::npos && !header.empty() && header.back() == ']' ? header.substr(0, open) : header;
+}
+
+/// The index of column `name` ("psi" finds "psi [rad]" too).
 inline int column(const std::vector<std::string>& header, const std::string& name) {
     for (std::size_t i = 0; i < header.size(); ++i)
-        if (header[i] == name) return int(i);
+        if (header[i] == name || column_name(header[i]) == name) return int(i);
     FAIL("no column " << name);
     return -1;
 }

@@ -313,7 +313,8 @@ w_bob = { expr = "theta'", unit = "rad/s", description = "units are read by UDUN
     REQUIRE(rows.size() == 32);
     // The outputs come after the columns a model without them has, in the model file's order.
     CHECK(rows[0] ==
-          std::vector<std::string>{"t", "theta", "theta_dot", "energy", "x_bob", "y_bob", "v_bob", "w_bob"});
+          std::vector<std::string>{"t", "theta", "theta_dot", "energy", "x_bob [m]", "y_bob [m]", "v_bob [m/s]",
+                                               "w_bob [rad/s]"});
     const double l = 1.5;  // --set reaches the outputs too
     for (std::size_t i = 1; i < rows.size(); ++i) {
         const double theta = std::stod(rows[i][1]), theta_dot = std::stod(rows[i][2]);

@@ -70,7 +70,8 @@ std::vector<std::map<std::string, std::string>> read_table(const fs::path& p) {
     for (std::size_t r = 1; r < rows.size(); ++r) {
         REQUIRE(rows[r].size() == rows[0].size());
         std::map<std::string, std::string> row;
-        for (std::size_t c = 0; c < rows[0].size(); ++c) row[rows[0][c]] = rows[r][c];
+        // Keyed by the column's name: "psi [rad]" is psi (the units are tested on their own).
+        for (std::size_t c = 0; c < rows[0].size(); ++c) row[column_name(rows[0][c])] = rows[r][c];
         table.push_back(row);
     }
     return table;
@@ -206,7 +207,9 @@ TEST_CASE("run --sweep --plot: the closing time against theta as a PNG", "[cli][
     REQUIRE(r.code == 0);
     REQUIRE(read(png).substr(1, 3) == "PNG");
     // Without --out the table goes to stdout.
-    REQUIRE(r.output.find("member,theta,status,stopped,t,psi,psi_dot,energy,z_c,v_edge,message") != std::string::npos);
+    // Each column with its unit where the model file declares one.
+    REQUIRE(r.output.find("member,theta [rad],status,stopped,t [s],psi [rad],psi_dot [rad/s],energy [J],z_c [m],"
+                          "v_edge [m/s],message") != std::string::npos);
 }
 
 TEST_CASE("run --sweep: mistakes on the command line are exit 2 with what is wrong", "[cli][ensemble]") {
@@ -310,7 +313,8 @@ TEST_CASE("run --out FILE.h5: the CSV table's columns as HDF5 datasets, with the
     INFO(r.output);
     REQUIRE(r.code == 0);
     const auto table = read_table(csv);  // 14 members, 7 failed (w = 0: M singular)
-    const std::vector<std::string> header = read_csv(csv)[0];
+    std::vector<std::string> header = read_csv(csv)[0];
+    for (std::string& h : header) h = column_name(h);  // HDF5 names the datasets without units
 
     const hid_t file = H5Fopen(h5.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     REQUIRE(file >= 0);
@@ -336,6 +340,17 @@ TEST_CASE("run --out FILE.h5: the CSV table's columns as HDF5 datasets, with the
             }
         }
     }
+    // Each number's unit, as the CSV's header gives it, is its dataset's attribute `unit`.
+    const std::vector<std::string> with_units = read_csv(csv)[0];
+    for (std::size_t k = 0; k < header.size(); ++k) {
+        const hid_t d = H5Dopen2(group, header[k].c_str(), H5P_DEFAULT);
+        REQUIRE(d >= 0);
+        const bool has_unit = H5Aexists(d, "unit") > 0;
+        REQUIRE(has_unit == (with_units[k] != header[k]));
+        if (has_unit) REQUIRE(header[k] + " [" + read_attribute(d, "unit") + "]" == with_units[k]);
+        H5Dclose(d);
+    }
+    REQUIRE(with_units[1] == "theta [rad]");
     REQUIRE(read_attribute(group, "model") == "door");
     REQUIRE(read_attribute(group, "members") == "14");
     REQUIRE(read_attribute(group, "design") == "grid 7 x 2 over theta, w");
