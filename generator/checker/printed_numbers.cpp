@@ -2,12 +2,14 @@
 #include "checker/printed_numbers.hpp"
 
 #include "checker/units.hpp"
+#include "model/dimensions.hpp"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 namespace eomgen::checker {
@@ -76,6 +78,7 @@ std::optional<double> real_value(const GiNaC::ex& e, const GiNaC::exmap& subs) {
 /// A side made numeric: units replaced by their SI factors.
 struct NumericSide {
     GiNaC::ex value;
+    std::optional<Dims> dims; ///< its dimension, from its units and the parameters' declared units, where known
     bool units = false;       ///< it holds units
     bool parameters = false;  ///< it holds parameters of the model
     bool other = false;       ///< it holds anything else (the state, time, an unknown name)
@@ -92,6 +95,7 @@ std::string known_name(const GiNaC::ex& x, const LatexContext& ctx) {
 NumericSide numeric_side(const GiNaC::ex& e, const Model& model, const LatexContext& ctx) {
     NumericSide s;
     GiNaC::exmap subs;
+    std::map<GiNaC::ex, Dims, GiNaC::ex_is_less> dims = symbol_dimensions(model);
     std::vector<GiNaC::ex> stack{e};
     while (!stack.empty()) {
         const GiNaC::ex x = stack.back();
@@ -108,8 +112,9 @@ NumericSide numeric_side(const GiNaC::ex& e, const Model& model, const LatexCont
         if (f && f->kind == NameKind::Unit) {
             std::string u = f->name;
             if (u.rfind("\\mathrm{", 0) == 0 && u.back() == '}') u = u.substr(8, u.size() - 9);
-            if (const std::optional<double> factor = unit_factor(u)) {
-                subs[x] = GiNaC::numeric(*factor);
+            if (const std::optional<TextUnit> unit = text_unit(u)) {
+                subs[x] = GiNaC::numeric(unit->factor);
+                dims[x] = Dims::of(unit->dimension);
                 s.units = true;
                 continue;
             }
@@ -120,7 +125,39 @@ NumericSide numeric_side(const GiNaC::ex& e, const Model& model, const LatexCont
             s.others.push_back(name);
     }
     s.value = e.subs(subs);
+    try {
+        s.dims = dimension_of(e, dims);  // nothing where a parameter declares no unit
+    } catch (const DimensionError&) {
+        s.dims.reset();  // a sum of a length and a time: its value is judged, not its units
+    }
     return s;
+}
+
+/// What follows a printed number, its unit (`\,\mathrm{sec}`, `^{\circ}`), without the spaces and the
+/// punctuation that end a sentence.
+std::string trim_unit(std::string u) {
+    while (!u.empty() && (u.back() == ' ' || u.back() == '.' || u.back() == ',' || u.back() == ';')) u.pop_back();
+    std::size_t k = 0;
+    while (k < u.size() && u[k] == ' ') ++k;
+    return u.substr(k);
+}
+
+/// A unit as LaTeX, after a number: "kg m^2/s" → `\,\mathrm{kg\,m^{2}/s}`.
+std::string unit_latex(const std::string& unit) {
+    std::string out = "\\,\\mathrm{";
+    for (std::size_t k = 0; k < unit.size(); ++k) {
+        if (unit[k] == ' ') {
+            out += "\\,";
+        } else if (unit[k] == '^') {
+            std::size_t j = k + 1;
+            while (j < unit.size() && (std::isdigit(static_cast<unsigned char>(unit[j])) || unit[j] == '-' || unit[j] == '.')) ++j;
+            out += "^{" + unit.substr(k + 1, j - k - 1) + "}";
+            k = j - 1;
+        } else {
+            out += unit[k];
+        }
+    }
+    return out + "}";
 }
 
 std::size_t paragraph_end(const std::string& text, std::size_t at) {
@@ -290,7 +327,9 @@ bool check_number(const GiNaC::ex& a, const GiNaC::ex& b, const std::pair<std::s
         const auto [v, origin] = values.at(k, at);
         subs[model.parameters[k].symbol] = GiNaC::numeric(v);
         used << (used.tellp() > 0 ? ", " : "") << "$" << latex_of(model.parameters[k]) << " = "
-             << std::setprecision(6) << v << "$";
+             << std::setprecision(6) << v
+             << (model.parameters[k].unit.empty() || model.parameters[k].unit == "1" ? "" : unit_latex(model.parameters[k].unit))
+             << "$";
         if (origins.find(origin) == std::string::npos) origins += (origins.empty() ? "" : "; ") + origin;
     }
     const std::optional<double> computed = real_value(formula.value, subs);
@@ -302,9 +341,30 @@ bool check_number(const GiNaC::ex& a, const GiNaC::ex& b, const std::pair<std::s
     const std::string printed_text =
         (text_value < 0 ? "-" : "") +
         (number_side == 0 ? sources.first : sources.second).substr(printed->begin, printed->end - printed->begin);
-    const std::string value = fixed(mine, std::max(printed->significant + 2, 3));
+    const std::string number_source = number_side == 0 ? sources.first : sources.second;
     r.compared_with = "the value eomgen computes" +
                       (used.tellp() > 0 ? " with " + used.str() + " (" + origins + ")" : std::string(""));
+    // Units: a number printed in a unit of another dimension than the formula's is wrong whatever its digits.
+    if (num.units && num.dims && formula.dims && *num.dims != *formula.dims) {
+        const std::string printed_unit = trim_unit(number_source.substr(printed->end));
+        r.verdict = Verdict::Disagrees;
+        const std::string si = fixed(*computed, std::max(printed->significant, 2)) + unit_latex(si_unit_text(*formula.dims));
+        r.wrong_terms.push_back("the text gives it in $" + printed_unit + "$, which is " + num.dims->str() +
+                                ", but with the parameters' units it is " + formula.dims->str() +
+                                ": eomgen computes $" + si + "$");
+        // The correction: eomgen's value in SI, in place of the number and its unit.
+        const std::string formula_source = number_side == 0 ? sources.second : sources.first;
+        r.corrected = number_side == 0 ? si + " = " + formula_source : formula_source + " = " + si;
+        return true;
+    }
+    // eomgen's value with its unit: the text's where it prints one (`\,\mathrm{sec}`, `\times 10^{-3}\,\mathrm{s}`),
+    // else the SI unit of the formula where the parameters declare theirs.
+    std::string value_unit;
+    if (num.units)
+        value_unit = " " + trim_unit(number_source.substr(printed->end));
+    else if (formula.dims && !formula.dims->dimensionless())
+        value_unit = unit_latex(si_unit_text(*formula.dims));
+    const std::string value = fixed(mine, std::max(printed->significant + 2, 3)) + value_unit;
     // The digit rule: eomgen's value rounded to as many significant digits as the text prints is the printed
     // number (which is not 0: `shown` is not).
     const int digits = printed->significant;
@@ -321,7 +381,7 @@ bool check_number(const GiNaC::ex& a, const GiNaC::ex& b, const std::pair<std::s
     r.verdict = Verdict::Disagrees;
     r.difference = fixed(text_value - mine, std::max(digits, 2));
     r.wrong_terms.push_back("differs by " + percent(rel) + " %: eomgen computes $" + value + "$, which is $" +
-                            rounded + "$ to the printed " +
+                            rounded + value_unit + "$ to the printed " +
                             std::to_string(digits) + " significant digit" + (digits == 1 ? "" : "s") +
                             ", not the printed $" + printed_text + "$");
     std::string fixed_side = number_side == 0 ? sources.first : sources.second;

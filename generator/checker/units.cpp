@@ -4,32 +4,35 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <string>
 
 namespace eomgen::checker {
 
 namespace {
 
-/// The single units (no powers): length, time, mass, angle, and the derived SI units texts print.
-std::optional<double> single_unit(const std::string& u) {
-    static const std::map<std::string, double> factors = {
-        {"m", 1.0},     {"cm", 1e-2},   {"mm", 1e-3}, {"km", 1e3}, {"s", 1.0},  {"sec", 1.0},   {"ms", 1e-3},
-        {"min", 60.0},  {"hr", 3600.0}, {"kg", 1.0},  {"g", 1e-3}, {"N", 1.0},  {"mN", 1e-3},   {"J", 1.0},
-        {"W", 1.0},     {"Hz", 1.0},    {"K", 1.0},   {"Pa", 1.0}, {"rad", 1.0}, {"deg", M_PI / 180.0},
-        {"second", 1.0}, {"seconds", 1.0}, {"degree", M_PI / 180.0}, {"degrees", M_PI / 180.0}};
-    const auto it = factors.find(u);
-    if (it == factors.end()) return std::nullopt;
-    return it->second;
+/// The names a derivation prints as units (with their spellings): each read by UDUNITS-2.
+bool printed_unit_name(const std::string& u) {
+    static const char* const names[] = {"m",   "cm",     "mm",      "km",     "s",       "sec", "ms", "min", "hr",
+                                        "kg",  "g",      "N",       "mN",     "J",       "W",   "Hz", "K",   "Pa",
+                                        "rad", "deg",    "rev",     "rpm",    "ft",      "second", "seconds",
+                                        "degree", "degrees"};
+    for (const char* n : names)
+        if (u == n) return true;
+    return false;
 }
 
 }  // namespace
 
-std::optional<double> unit_factor(std::string_view unit) {
+namespace {
+
+std::optional<TextUnit> read_text_unit(std::string_view unit) {
     std::string u;
     for (char c : unit)
         if (c != '{' && c != '}') u += c == '~' ? ' ' : c;  // `\mathrm{~N~m}` is N·m
-    // Trim, and read "a b/c^2" as factors separated by spaces, '.', '*' and '/'.
-    double factor = 1.0;
+    // Read "a b/c^2" as factors separated by spaces, '.', '*' and '/', each a name of the list; UDUNITS-2 then
+    // reads the whole, rewritten with its own operators.
+    std::string udunits;
     bool any = false, divide = false;
     std::size_t i = 0;
     while (i < u.size()) {
@@ -47,8 +50,8 @@ std::optional<double> unit_factor(std::string_view unit) {
         std::size_t j = i;
         while (j < u.size() && std::isalpha(static_cast<unsigned char>(u[j]))) ++j;
         if (j == i) return std::nullopt;
-        const std::optional<double> f = single_unit(u.substr(i, j - i));
-        if (!f) return std::nullopt;
+        const std::string name = u.substr(i, j - i);
+        if (!printed_unit_name(name)) return std::nullopt;
         int power = 1;
         if (j < u.size() && u[j] == '^') {
             std::size_t k = j + 1;
@@ -59,13 +62,36 @@ std::optional<double> unit_factor(std::string_view unit) {
             if (negative) power = -power;
             j = k + 1;
         }
-        factor *= std::pow(*f, divide ? -power : power);
+        if (divide) power = -power;
+        udunits += (udunits.empty() ? "" : ".") + std::string("(") + name + ")" + (power == 1 ? "" : std::to_string(power));
         divide = false;
         any = true;
         i = j;
     }
     if (!any || divide) return std::nullopt;
-    return factor;
+    try {
+        const Unit parsed = parse_unit(udunits);
+        return TextUnit{parsed.to_si, parsed.dimension};
+    } catch (const UnitError&) {
+        return std::nullopt;
+    }
+}
+
+}  // namespace
+
+std::optional<TextUnit> text_unit(std::string_view unit) {
+    // The parser asks of every \mathrm and \text it meets: each text is read by UDUNITS-2 once.
+    static std::mutex lock;
+    static std::map<std::string, std::optional<TextUnit>, std::less<>> read;
+    const std::lock_guard<std::mutex> guard(lock);
+    if (const auto it = read.find(unit); it != read.end()) return it->second;
+    return read.emplace(std::string(unit), read_text_unit(unit)).first->second;
+}
+
+std::optional<double> unit_factor(std::string_view unit) {
+    const std::optional<TextUnit> u = text_unit(unit);
+    if (!u) return std::nullopt;
+    return u->factor;
 }
 
 bool is_unit(std::string_view unit) {

@@ -2,10 +2,27 @@
  * `\mathrm{m}/\mathrm{s}^{2}`): which names are units, and their factors to SI. */
 #pragma once
 
+#include "model/units.hpp"
+
 #include <optional>
 #include <string_view>
 
 namespace eomgen::checker {
+
+/// A unit as a derivation prints it: its factor to SI and its dimension (UDUNITS-2's, model/units.hpp).
+struct TextUnit {
+    double factor = 1.0;
+    Dimension dimension;
+};
+
+/**
+ * The unit `unit` prints ("cm", "m/s^{2}", "\mathrm{~N~m}"'s argument) with its factor and dimension: the names
+ * derivations print as units (m, cm, mm, km, s, sec, ms, min, hr, kg, g, N, mN, J, W, Hz, K, Pa, rad, deg, rev,
+ * rpm, ft, seconds, degrees) with integer powers, products and one quotient, read by UDUNITS-2. The list keeps
+ * letters that are names (`d` of a differential, `h`, `a`) from being read as units (a day, an hour, a year).
+ * std::nullopt when `unit` is not one.
+ */
+std::optional<TextUnit> text_unit(std::string_view unit);
 
 /**
  * The factor that turns a quantity in `unit` into SI (radians for angles): "cm" → 0.01, "min" → 60, "g" →

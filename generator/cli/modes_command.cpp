@@ -200,7 +200,13 @@ std::string format_json(const Model& model, const ModesResult& r, Printer& p, co
     std::ostringstream js;
     js << "{\"model\": " << json_string(model.name) << ", \"coordinates\": [";
     for (std::size_t i = 0; i < r.coordinates.size(); ++i) js << (i ? ", " : "") << json_string(r.coordinates[i]);
-    js << "], \"reduced\": [";
+    // Each coordinate's SI unit ("rad", "m"), null where the file declares none: the unit of q in "equilibria".
+    js << "], \"units\": {";
+    for (std::size_t i = 0; i < r.coordinates.size(); ++i) {
+        const std::string u = coordinate_unit(model, r.coordinates[i]);
+        js << (i ? ", " : "") << json_string(r.coordinates[i]) << ": " << (u.empty() ? "null" : json_string(u.substr(1)));
+    }
+    js << "}, \"reduced\": [";
     for (std::size_t i = 0; i < r.reduced.size(); ++i) js << (i ? ", " : "") << json_string(r.reduced[i]);
     js << "], \"inputs\": [";
     for (std::size_t i = 0; i < inputs.size(); ++i) js << (i ? ", " : "") << json_string(inputs[i]);

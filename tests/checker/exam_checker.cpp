@@ -307,7 +307,7 @@ TEST_CASE("seed: the slips of 5-20 and Ex. 30 are found", "[checker]") {
     CHECK(explanations(d, 554).find("$\\sqrt{\\sin \\theta}$ times") != std::string::npos);
     CHECK(explanations(d, 560).find("opposite signs") != std::string::npos);
     // 1.51 sqrt(0.9/9.8) = 0.4576 s, which is 0.46 to two digits: the text prints 0.45.
-    CHECK(explanations(d, 566).find("differs by 1.7 %: eomgen computes $0.4576$") != std::string::npos);
+    CHECK(explanations(d, 566).find("differs by 1.7 %: eomgen computes $0.4576 \\mathrm{sec}$") != std::string::npos);
 }
 
 TEST_CASE("checker: never silent: a row with a relation that gives no equation is 'not read', with the reason",

@@ -67,6 +67,19 @@ TEST_CASE("numbers: units and their factors to SI", "[checker][numbers]") {
     CHECK_FALSE(unit_factor("/s"));
     CHECK_FALSE(unit_factor("s^"));
     CHECK_FALSE(unit_factor("theta"));
+    // Factors and dimensions from UDUNITS-2; letters that are names are not units although UDUNITS-2 knows them.
+    using eomgen::checker::text_unit;
+    CHECK(text_unit("rpm")->factor == Approx(M_PI / 30));
+    CHECK(text_unit("rev")->factor == Approx(2 * M_PI));
+    CHECK(text_unit("ft")->factor == Approx(0.3048));
+    CHECK(text_unit("~N~m")->dimension.str() == "kg m^2/s^2");
+    CHECK(text_unit("rad/s")->dimension == text_unit("s^{-1}")->dimension);
+    CHECK(text_unit("km/hr")->dimension == text_unit("m/s")->dimension);
+    CHECK(text_unit("deg")->dimension.dimensionless());
+    for (const char* name : {"d", "h", "a", "e", "L", "t", "T"}) {
+        INFO(name);
+        CHECK_FALSE(text_unit(name));
+    }
     using eomgen::checker::is_unit_command;
     CHECK(is_unit_command("\\mathrm", "~s"));
     CHECK(is_unit_command("\\text", " cm"));
@@ -115,8 +128,10 @@ TEST_CASE("numbers: right numbers agree to their printed digits, with no false a
     CHECK(r.count(Verdict::Agrees) == 9);
     const EquationCheck& t = find(r, "1.51 \\sqrt{w / g} = 0.46 \\mathrm{~s}");
     CHECK(t.verdict == Verdict::Agrees);
-    CHECK(t.compared_with == "the value eomgen computes with $w = 0.9$, $g = 9.8$ (from the model)");
-    CHECK(t.reason == "agrees to the printed digits: eomgen computes $0.4576$, which rounds to the printed $0.46$");
+    // The parameters' values and eomgen's with their units (the text's where it prints one).
+    CHECK(t.compared_with ==
+          "the value eomgen computes with $w = 0.9\\,\\mathrm{m}$, $g = 9.8\\,\\mathrm{m/s^{2}}$ (from the model)");
+    CHECK(t.reason == "agrees to the printed digits: eomgen computes $0.4576 \\mathrm{~s}$, which rounds to the printed $0.46$");
     CHECK(find(r, "2 \\theta = 2.68^{\\circ}").verdict == Verdict::Agrees);
     CHECK(find(r, "\\frac{w}{2} = 45 \\mathrm{~cm}").verdict == Verdict::Agrees);
     CHECK(find(r, "1.51 \\sqrt{w / g} = 7.63 \\times 10^{-3} \\mathrm{~min}").verdict == Verdict::Agrees);
@@ -127,7 +142,8 @@ TEST_CASE("numbers: right numbers agree to their printed digits, with no false a
                            "paragraph use it");
     const EquationCheck& chosen = find(r, "\\frac{m g w}{2} \\sin \\theta = 132 \\mathrm{~N~m}");
     CHECK(chosen.verdict == Verdict::Agrees);
-    CHECK(chosen.compared_with == "the value eomgen computes with $m = 30$, $w = 0.9$, $g = 9.8$, $\\theta = 1.5708$ "
+    CHECK(chosen.compared_with == "the value eomgen computes with $m = 30\\,\\mathrm{kg}$, $w = 0.9\\,\\mathrm{m}$, "
+                                  "$g = 9.8\\,\\mathrm{m/s^{2}}$, $\\theta = 1.5708\\,\\mathrm{rad}$ "
                                   "(from the model; chosen by the text on line 26)");
     CHECK(find(r, "\\frac{m g w}{2} \\sin \\theta = 3.10 \\mathrm{~N~m}").verdict == Verdict::Agrees);
     // A number for a quantity of the state: nothing to compare it with.
@@ -140,7 +156,7 @@ TEST_CASE("numbers: right numbers agree to their printed digits, with no false a
 TEST_CASE("numbers: planted wrong numbers are found on their line", "[checker][numbers]") {
     const CheckReport r = check(kPlanted);
     const std::map<int, std::string> expected = eomgen::test::planted_lines(kPlanted);
-    REQUIRE(expected.size() == 5);
+    REQUIRE(expected.size() == 7);
     std::map<int, int> found;
     for (const EquationCheck& e : r.equations) {
         INFO(describe(e));
@@ -159,13 +175,16 @@ TEST_CASE("numbers: planted wrong numbers are found on their line", "[checker][n
     const EquationCheck& t = find(r, "1.51 \\sqrt{w / g} = 0.45 \\mathrm{sec}");
     CHECK(t.difference == "-0.0076");
     REQUIRE(t.wrong_terms.size() == 1);
-    CHECK(t.wrong_terms[0] == "differs by 1.7 %: eomgen computes $0.4576$, which is $0.46$ to the printed 2 "
-                              "significant digits, not the printed $0.45$");
+    CHECK(t.wrong_terms[0] == "differs by 1.7 %: eomgen computes $0.4576 \\mathrm{sec}$, which is $0.46 \\mathrm{sec}$ "
+                              "to the printed 2 significant digits, not the printed $0.45$");
     CHECK(t.corrected == "1.51 \\sqrt{w / g} = 0.46 \\mathrm{sec}");
     CHECK(find(r, "\\frac{w}{2} = 0.45 \\mathrm{~cm}").corrected == "\\frac{w}{2} = 45 \\mathrm{~cm}");
     CHECK(find(r, "2 \\theta = 0.0468^{\\circ}").corrected == "2 \\theta = 2.68^{\\circ}");
     CHECK(find(r, "1.51 \\sqrt{w / g} = 7.63 \\times 10^{-3} \\mathrm{~s}").corrected ==
           "1.51 \\sqrt{w / g} = 458 \\times 10^{-3} \\mathrm{~s}");
+    // A unit of another dimension: eomgen's value in SI is the correction, digits and unit together.
+    CHECK(find(r, "\\frac{w}{2} = 0.45 \\mathrm{~s}").corrected == "\\frac{w}{2} = 0.45\\,\\mathrm{m}");
+    CHECK(find(r, "m g h = 588 \\mathrm{~N}").corrected == "m g h = 588\\,\\mathrm{J}");
 }
 
 TEST_CASE("numbers: --set replaces the model's value", "[checker][numbers]") {
@@ -175,10 +194,11 @@ TEST_CASE("numbers: --set replaces the model's value", "[checker][numbers]") {
     // 1.51 sqrt(1.0/9.8) = 0.4824: no longer 0.46.
     const EquationCheck& t = find(r, "1.51 \\sqrt{w / g} = 0.46 \\mathrm{~s}");
     CHECK(t.verdict == Verdict::Disagrees);
-    CHECK(t.compared_with == "the value eomgen computes with $w = 1$, $g = 9.8$ (from --set; from the model)");
+    CHECK(t.compared_with ==
+          "the value eomgen computes with $w = 1\\,\\mathrm{m}$, $g = 9.8\\,\\mathrm{m/s^{2}}$ (from --set; from the model)");
     REQUIRE(t.wrong_terms.size() == 1);
-    CHECK(t.wrong_terms[0] == "differs by 4.6 %: eomgen computes $0.4824$, which is $0.48$ to the printed 2 "
-                              "significant digits, not the printed $0.46$");
+    CHECK(t.wrong_terms[0] == "differs by 4.6 %: eomgen computes $0.4824 \\mathrm{~s}$, which is $0.48 \\mathrm{~s}$ "
+                              "to the printed 2 significant digits, not the printed $0.46$");
     // m g h does not use w: unchanged.
     CHECK(find(r, "m g h = 588 \\mathrm{~J}").verdict == Verdict::Agrees);
 }
@@ -208,8 +228,8 @@ TEST_CASE("numbers: signs and an integer's trailing zeros", "[checker][numbers]"
     const EquationCheck& sign = r.equations[1];
     CHECK(sign.verdict == Verdict::Disagrees);
     REQUIRE(sign.wrong_terms.size() == 1);
-    CHECK(sign.wrong_terms[0] == "differs by 201 %: eomgen computes $0.4576$, which is $0.46$ to the printed 2 "
-                                 "significant digits, not the printed $-0.46$");
+    CHECK(sign.wrong_terms[0] == "differs by 201 %: eomgen computes $0.4576 \\text{ s}$, which is $0.46 \\text{ s}$ to "
+                                 "the printed 2 significant digits, not the printed $-0.46$");
     CHECK(sign.corrected == "1.51 \\sqrt{w/g} = 0.46 \\text{ s}");  // the minus goes
     INFO(describe(r.equations[2]));
     CHECK(r.equations[2].verdict == Verdict::Agrees);  // 588 J to two digits
