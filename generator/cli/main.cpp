@@ -174,7 +174,7 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     }
     os << rule("Parameters");
     for (const eomgen::Parameter& p : model.parameters)
-        os << "  " << p.name << " = " << eomgen::codegen::shortest_decimal(p.value) << (p.unit.empty() ? "" : " " + p.unit)
+        os << "  " << p.name << " = " << eomgen::codegen::shortest_decimal(p.value) << (p.unit.empty() || p.unit == "1" ? "" : " " + p.unit)
            << (p.given.empty() ? "" : "  (given as " + p.given + ")")
            << (p.description.empty() ? "" : "  (" + p.description + ")") << "\n";
     if (!eq.bodies.empty()) {
