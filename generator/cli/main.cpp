@@ -10,6 +10,7 @@
 #include "mechanics/lagrangian.hpp"
 #include "mechanics/quantity_units.hpp"
 #include "mechanics/trig_rewrite.hpp"
+#include "model/dimensions.hpp"
 #include "model/families.hpp"
 #include "model/model_file.hpp"
 #include "model/names.hpp"
@@ -93,6 +94,7 @@ int generate(const std::vector<std::string>& models, const std::vector<std::stri
         const eomgen::Equations eq = eomgen::derive_equations(model);
         clock.lap("derive");
         for (const std::string& w : eq.warnings) std::cerr << path << ": warning: " << w << "\n";
+        if (!eomgen::has_declared_units(model)) std::cerr << path << ": " << eomgen::kNoUnitsNote << "\n";
         const std::string header = eomgen::codegen::emit_model_header(
             model, eq, std::filesystem::path(path).filename().string(), timings ? &phases : nullptr);
         if (timings) std::cerr << phases.table(path);
@@ -374,6 +376,7 @@ int main(int argc, char** argv) {
             }
             const eomgen::Model model = eomgen::load_model(show_model);
             const eomgen::Equations eq = eomgen::derive_equations(model);
+            if (!eomgen::has_declared_units(model)) std::cerr << show_model << ": " << eomgen::kNoUnitsNote << "\n";
             if (latex) {
                 const std::string fragment =
                     eomgen::cli::latex_fragment(model, eomgen::cli::latex_equations(model, eq));

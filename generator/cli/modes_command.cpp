@@ -1,6 +1,7 @@
 /** @file modes_command.cpp  `eomgen modes`: the equilibria and their normal modes as text, Markdown or JSON. */
 #include "cli/modes_command.hpp"
 #include "cli/model_unit_values.hpp"
+#include "model/dimensions.hpp"
 
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
@@ -75,11 +76,6 @@ std::string matrix_json(const std::vector<std::vector<double>>& m) {
     return s + "]";
 }
 
-/// Whether the model file declares units (model/units.hpp): then its numbers are SI, and ω is in rad/s.
-bool declares_units(const Model& model) {
-    return std::any_of(model.parameters.begin(), model.parameters.end(), [](const Parameter& p) { return p.declared_unit.has_value(); }) ||
-           std::any_of(model.coordinates.begin(), model.coordinates.end(), [](const Coordinate& c) { return c.declared_unit.has_value(); });
-}
 
 /// " rad" for a coordinate in rad, "" where it has no unit.
 std::string coordinate_unit(const Model& model, const std::string& name) {
@@ -125,7 +121,7 @@ std::string format_text(const Model& model, const ModesResult& r, Printer& p) {
             for (std::size_t m = 0; m < e.modes.size(); ++m) {
                 const NormalMode& mode = e.modes[m];
                 os << "  mode " << m + 1 << ": ";
-                const bool si = declares_units(model);
+                const bool si = has_declared_units(model);
                 if (mode.omega2 > 0 && si)
                     os << "omega = " << number(std::sqrt(mode.omega2)) << " rad/s, period "
                        << number(2 * M_PI / std::sqrt(mode.omega2)) << " s";
@@ -235,7 +231,7 @@ std::string format_json(const Model& model, const ModesResult& r, Printer& p, co
         for (std::size_t m = 0; m < e.modes.size(); ++m) {
             const NormalMode& mode = e.modes[m];
             js << (m ? ", " : "") << "{\"omega\": " << (mode.omega2 >= 0 ? json_number(std::sqrt(mode.omega2)) : "null")
-               << ", \"omega_unit\": " << (declares_units(model) ? "\"rad/s\"" : "null")
+               << ", \"omega_unit\": " << (has_declared_units(model) ? "\"rad/s\"" : "null")
                << ", \"omega2\": " << json_number(mode.omega2) << ", \"omega2_exact\": "
                << (mode.omega2_exact ? json_string(p.latex(*mode.omega2_exact)) : "null") << ", \"shape\": {";
             for (std::size_t i = 0; i < mode.shape.size(); ++i)
@@ -269,7 +265,7 @@ std::string modes_markdown(const Model& model, const ModesResult& result) {
 }
 
 std::vector<std::string> modes_summary(const Model& model, const ModesResult& r) {
-    const std::string per_second = declares_units(model) ? " 1/s" : "", rad_per_second = declares_units(model) ? " rad/s" : "";
+    const std::string per_second = has_declared_units(model) ? " 1/s" : "", rad_per_second = has_declared_units(model) ? " rad/s" : "";
     std::vector<std::string> lines;
     for (const Equilibrium& e : r.equilibria) {
         std::string line;

@@ -88,6 +88,13 @@ std::string si_unit_text(const Dims& d) {
     return d.str();
 }
 
+bool has_declared_units(const Model& model) {
+    return std::any_of(model.parameters.begin(), model.parameters.end(),
+                       [](const Parameter& p) { return p.declared_unit.has_value(); }) ||
+           std::any_of(model.coordinates.begin(), model.coordinates.end(),
+                       [](const Coordinate& c) { return c.declared_unit.has_value(); });
+}
+
 std::map<GiNaC::ex, Dims, GiNaC::ex_is_less> symbol_dimensions(const Model& model) {
     std::map<GiNaC::ex, Dims, GiNaC::ex_is_less> dims;
     const Dims second{{0, 0, 1, 0, 0, 0, 0}};

@@ -46,6 +46,15 @@ std::string si_unit_text(const Dims& d);
 
 struct Model;
 
+/// Whether the model file declares a unit for any parameter or coordinate (else nothing is judged, and the
+/// numbers it shows have no units).
+bool has_declared_units(const Model& model);
+
+/// The note a command gives once for a model without units: its dimensions are not checked.
+inline constexpr const char* kNoUnitsNote =
+    "note: no coordinate or parameter declares a unit, so the dimensions of T, V, the forces and the constraints are "
+    "not checked (give each a `unit`: docs/model_files.md, Units)";
+
 /// The dimensions of the model's symbols: t a time, each parameter and coordinate with a declared unit its own,
 /// q̇ q's per second, q̈ per second squared. Symbols without a unit are absent (their terms are not judged).
 std::map<GiNaC::ex, Dims, GiNaC::ex_is_less> symbol_dimensions(const Model& model);
