@@ -43,7 +43,8 @@ QuantityUnits quantity_units(const Model& model, const Equations& eq) {
         u.state[n + i] = angle ? "rad/s" : si_unit_text(Dims::of(c.declared_unit->dimension) - second);
         if (u.state[i].empty()) u.state[n + i] = "1/s";  // a pure number's rate
     }
-    for (const Parameter& p : model.parameters) u.parameters.push_back(p.declared_unit && p.unit != "1" ? p.unit : "");
+    for (const Parameter& p : model.parameters)
+        u.parameters.push_back((p.declared_unit || p.value_unit) && p.unit != "1" ? p.unit : "");
 
     // h: an energy when every symbol of T and V has a unit (the file reader has checked each of their terms).
     const std::optional<Dims> T = dims_of(eq.T, symbols), V = dims_of(eq.V, symbols);

@@ -90,7 +90,7 @@ std::string si_unit_text(const Dims& d) {
 
 bool has_declared_units(const Model& model) {
     return std::any_of(model.parameters.begin(), model.parameters.end(),
-                       [](const Parameter& p) { return p.declared_unit.has_value(); }) ||
+                       [](const Parameter& p) { return p.declared_unit || p.value_unit; }) ||
            std::any_of(model.coordinates.begin(), model.coordinates.end(),
                        [](const Coordinate& c) { return c.declared_unit.has_value(); });
 }
@@ -99,8 +99,10 @@ std::map<GiNaC::ex, Dims, GiNaC::ex_is_less> symbol_dimensions(const Model& mode
     std::map<GiNaC::ex, Dims, GiNaC::ex_is_less> dims;
     const Dims second{{0, 0, 1, 0, 0, 0, 0}};
     dims[model.t] = second;
-    for (const Parameter& p : model.parameters)
+    for (const Parameter& p : model.parameters) {
         if (p.declared_unit) dims[p.symbol] = Dims::of(p.declared_unit->dimension);
+        else if (p.value_unit) dims[p.symbol] = Dims::of(p.value_unit->dimension);
+    }
     for (const Coordinate& c : model.coordinates)
         if (c.declared_unit) {
             const Dims q = Dims::of(c.declared_unit->dimension);

@@ -56,6 +56,9 @@ struct Parameter {
     std::string unit;         ///< the SI unit `value` is in ("N/m", "rad", "kg m^2"); "" when the file gives none
     std::string given;        ///< the value as the file gives it, where it was converted ("30 deg"); else ""
     std::optional<Unit> declared_unit;  ///< the file's `unit` ("deg"): bare numbers on command lines are in it
+    /// The value's own unit where the file gives no `unit` (`value = "40 N/m"`): the parameter's dimension, for the
+    /// dimensional analysis; bare numbers on command lines stay SI.
+    std::optional<Unit> value_unit;
     std::string description;
     GiNaC::symbol symbol;
     double value = 0.0;       ///< in SI: a file's `value = 30` with `unit = "deg"` is 0.5236 (rad)

@@ -364,7 +364,10 @@ class Loader {
             p.declared_unit = unit;
             std::optional<Unit> own;  // "40 N/m" without a `unit`: the value's own
             p.value = constant(*parameters[i].table, "value", symbols, 0.0, unit ? &*unit : nullptr, &p.given, &own);
-            if (!unit && own) p.unit = own->to_si == 1.0 ? own->text : own->si();
+            if (!unit && own) {
+                p.unit = own->to_si == 1.0 ? own->text : own->si();
+                p.value_unit = own;
+            }
         }
         dims_ = symbol_dimensions(model);
         for (const Coordinate& c : model.coordinates)
