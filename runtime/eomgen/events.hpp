@@ -19,7 +19,7 @@ enum class EventDirection : int { Falling = -1, Both = 0, Rising = 1 };
  * switching surface of f (a kink or a jump: the argument of abs, sign, max … in a model): the step that crossed it
  * is retaken to end at the crossing and the stepper restarts there, so that no step straddles it and the method
  * keeps its order. Switches are reported in IntegrationResult::switches. Steppers without restart() (rk4,
- * radau5) record them and go on.
+ * radau5) record them and go on (or stop there, where stop_at_switch says so, on the dense output).
  */
 enum class EventAction { Stop, Record, Switch };
 

@@ -269,12 +269,20 @@ IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State
 
         Scalar t_stop = tb;
         const Crossing* terminal = nullptr;
-        for (const auto& c : crossings)
-            if (events[c.index].action == EventAction::Stop) {
+        for (const auto& c : crossings) {
+            bool stop = events[c.index].action == EventAction::Stop;
+            // A switch that ends the run (Event::stop_at_switch), asked on the dense output where the steps do not
+            // end at switches (without restart()); the others asked it where they ended their steps, above.
+            if (!can_switch && events[c.index].action == EventAction::Switch && events[c.index].stop_at_switch) {
+                stepper.dense(c.t, x_tmp);
+                stop = events[c.index].stop_at_switch(c.t, x_tmp);
+            }
+            if (stop) {
                 terminal = &c;
                 t_stop = c.t;
                 break;
             }
+        }
         for (const auto& c : crossings) {
             if (!not_after(c.t, t_stop)) break;
             stepper.dense(c.t, x_tmp);

@@ -23,6 +23,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -391,6 +392,41 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
         if (meter.active() && (++rhs_calls & 63u) == 0) meter.at(t);
     };
 
+    // Sticking (Filippov sliding along a jump of f, as friction holding a block to a belt) is followed by the
+    // explicit adaptive methods of unconstrained models (integrate_sliding). rk4 and radau5, and constrained models,
+    // stop where the motion would stick and say so, rather than chatter across the jump or give a wrong answer.
+    const bool constrained_run = constraint_count<M>() > 0 && is_adaptive_method(o.method);
+    const bool follows_sticking = !constrained_run && o.method != "rk4" && o.method != "radau5";
+    std::vector<std::string> sticking_names;
+    if (!follows_sticking)
+        for (eomgen::Event<State>& e : events)
+            if (e.action == eomgen::EventAction::Switch && !e.stop_at_switch) {
+                const auto surface = std::make_shared<eomgen::SlidingSurface<State>>(
+                    [&params](const double& t, const State& x, State& xdot) { M::rhs(t, x, params, xdot); }, e.g);
+                e.stop_at_switch = [surface](const double& t, const State& x) { return surface->attracting(t, x); };
+                sticking_names.push_back(e.name);
+            }
+    const auto refuse = [&](const std::string& surface, double t) {
+        std::ostringstream os;
+        os.precision(15);
+        os << "the motion sticks on " << surface << " at t = " << t
+           << " (both sides of its jump push into it, as static friction holds a block): "
+           << (constrained_run ? "sticking is followed in models without constraints only"
+                               : "--method " + o.method + " does not follow sticking; dopri5, dop853 and adams do")
+           << " (docs/model_files.md, Sticking)";
+        throw eomgen::SimulationError(os.str(), t);
+    };
+    const auto refuse_sticking = [&](const auto& r) {
+        if (r.stop_reason == eomgen::StopReason::TerminalEvent &&
+            std::find(sticking_names.begin(), sticking_names.end(), r.stopped_by) != sticking_names.end())
+            refuse(r.stopped_by, r.t);
+    };
+    // A start on a surface that holds the motion (a door released at rest against its hinges' friction).
+    for (const eomgen::Event<State>& e : events)
+        if (std::find(sticking_names.begin(), sticking_names.end(), e.name) != sticking_names.end() &&
+            e.g(0.0, x0) == 0.0 && e.stop_at_switch(0.0, x0))
+            refuse(e.name, 0.0);
+
     Trajectory<M> out;
     out.x = x0;
     out.h0 = h(0, x0);
@@ -433,6 +469,7 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
                     params, 0.0, x0, sample_times, Method::template options<State>(o), o.project_initial, events,
                     [&meter](const double& t, const State&) { meter.at(t); });
                 meter.finish();
+                refuse_sticking(r.run);
                 // Energy drift from the (possibly projected) start, not from the state given.
                 out.h0 = h(r.run.samples.front().t, r.run.samples.front().x);
                 for (const auto& s : r.run.samples) out.max_drift = std::max(out.max_drift, drift(h(s.t, s.x)));
@@ -521,6 +558,7 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
                        })) {
                 throw UsageError("--method " + o.method + ": expected dopri5, dop853, adams, radau5, rk4 or symplectic");
             }
+            refuse_sticking(r);
             out.t = r.t;
             out.x = split(r.x);
             if (r.stop_reason == eomgen::StopReason::TerminalEvent) out.stopped_by = r.stopped_by;
@@ -562,6 +600,7 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
                    })) {
             throw UsageError("--method " + o.method + ": expected dopri5, dop853, adams, radau5, rk4 or symplectic");
         }
+        refuse_sticking(r);
         finish(r);
         track(r.t, r.x);
         meter.finish();
