@@ -19,6 +19,7 @@
 #include "checker/definitions.hpp"
 #include "checker/discourse.hpp"
 #include "checker/hamiltonian_check.hpp"
+#include "checker/kinks.hpp"
 #include "checker/labels.hpp"
 #include "checker/meanings.hpp"
 #include "checker/prose.hpp"
@@ -570,6 +571,9 @@ class Checker : public Comparisons {
     ExMap<std::vector<Complex>> signatures_;
     TextDefinitions definitions_;   ///< K = ..., used where the text differentiates K
     std::size_t current_offset_ = 0;  ///< file offset of the side being prepared (definitions before it apply)
+    /// Derivatives the side takes that do not exist on a switching surface (kinks.hpp): (surface, variable), found
+    /// while its operators are resolved and said in its notes.
+    mutable std::vector<std::pair<Kink, GiNaC::ex>> kinks_;
     void collect_definitions(const std::vector<FullChain>& chains);
     HamiltonianReading hamilton_;  ///< p_q as variables, H(q, p, t) inside ∂
     ParticularMotions motions_{model_, eq_, ctx_};  ///< [[motions]]: lines that hold on one motion

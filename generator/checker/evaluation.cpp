@@ -28,7 +28,9 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
         if (TextDefinitions::has_vector(inner, ctx_)) return pdiff(inner, e.op(1));
         if (hamilton_.has_hamiltonian(inner)) return hamilton_.derivative(inner, GiNaC::ex_to<GiNaC::symbol>(e.op(1)));
         TextDefinitions::require_defined(inner, ctx_, "partial derivative");
-        return GiNaC::diff(inner, GiNaC::ex_to<GiNaC::symbol>(e.op(1)));
+        const GiNaC::symbol& x = GiNaC::ex_to<GiNaC::symbol>(e.op(1));
+        for (const Kink& k : surfaces_without_derivative(inner, x)) kinks_.emplace_back(k, x);
+        return GiNaC::diff(inner, x);
     }
     if (is_ex_the_function(e, pbracket))
         return hamilton_.poisson(resolve_operators(definitions_.expand(e.op(0), current_offset_)),
@@ -133,7 +135,14 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
         const bool H_inside = hamilton_.has_hamiltonian(v);
         // A Poisson bracket is eomgen's to compute: the side is a reference, like a label.
         if (v.has(pbracket(GiNaC::wild(0), GiNaC::wild(1)))) p.has_truth_label = p.has_momenta = true;
+        kinks_.clear();
         v = resolve_operators(v);
+        // A derivative through a jump or a kink holds away from its surface only: said, with the surface.
+        for (const auto& [kink, x] : kinks_)
+            p.notes.push_back("the derivative in $" + latex(x) + "$ does not exist where $" + latex(kink.surface) +
+                              " = 0$ (" + (kink.jump ? "the function jumps there" : "its slopes on the two sides differ") +
+                              "): the side holds away from it");
+        kinks_.clear();
         for (const std::string& n : definitions_.take_used()) {
             p.notes.push_back(n);
             p.from_definition = true;

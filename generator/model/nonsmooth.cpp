@@ -253,6 +253,29 @@ std::vector<SwitchingSurface> switching_surfaces(const std::vector<ex>& exprs) {
     return out;
 }
 
+ex one_sided(const ex& e, const ex& s, int side) {
+    if (e.nops() == 0) return e;
+    struct Each : GiNaC::map_function {
+        const ex& s;
+        int side;
+        Each(const ex& surface, int which) : s(surface), side(which) {}
+        ex operator()(const ex& x) override { return one_sided(x, s, side); }
+    } each(s, side);
+    const ex inner = e.map(each);  // the arguments first: they may hold functions of the same surface
+    if (!is_nonsmooth_function(inner)) return inner;
+    const bool two = has_serial(inner, max_serial) || has_serial(inner, min_serial);
+    const ex a = two ? inner.op(0) - inner.op(1) : inner.op(0);
+    int sigma = 0;  // the sign of the function's own argument on this side
+    if ((a - s).expand().is_zero()) sigma = side > 0 ? 1 : -1;
+    else if ((a + s).expand().is_zero()) sigma = side > 0 ? -1 : 1;
+    if (sigma == 0) return inner;
+    if (has_serial(inner, sign_serial)) return sigma;
+    if (has_serial(inner, heaviside_serial)) return sigma > 0 ? 1 : 0;
+    if (has_serial(inner, abs_serial)) return sigma * inner.op(0);
+    if (has_serial(inner, max_serial)) return sigma > 0 ? inner.op(0) : inner.op(1);
+    return sigma > 0 ? inner.op(1) : inner.op(0);  // min
+}
+
 bool nonsmooth_in(const ex& e, const std::vector<GiNaC::symbol>& symbols) {
     for (const SwitchingSurface& s : switching_surfaces({e}))
         for (const GiNaC::symbol& x : symbols)

@@ -48,6 +48,11 @@ struct SwitchingSurface {
 /// one surface).
 std::vector<SwitchingSurface> switching_surfaces(const std::vector<GiNaC::ex>& exprs);
 
+/// e on one side of the switching surface s = 0 (side > 0: where s > 0, else where s < 0): each of its non-smooth
+/// functions whose surface is s (or −s) replaced by the smooth expression it equals there — sign s by ±1, |s| by
+/// ±s, heaviside s by 1 or 0, max(a, b) by a or b — and the others kept. Its derivatives are e's one-sided ones.
+GiNaC::ex one_sided(const GiNaC::ex& e, const GiNaC::ex& s, int side);
+
 /// Whether e holds a non-smooth function whose switching surface depends on one of the symbols.
 bool nonsmooth_in(const GiNaC::ex& e, const std::vector<GiNaC::symbol>& symbols);
 
