@@ -1,0 +1,15 @@
+# A program of docs/runtime.md: the page holds the file verbatim, and the program runs with exit 0 and prints EXPECT.
+# -DDOC=... -DSOURCE=... -DPROGRAM=... -DEXPECT=regex
+file(READ "${DOC}" doc)
+file(READ "${SOURCE}" source)
+string(FIND "${doc}" "${source}" at)
+if(at EQUAL -1)
+  message(FATAL_ERROR "${DOC} does not hold ${SOURCE} as it is: copy the file into its code block again")
+endif()
+execute_process(COMMAND "${PROGRAM}" RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "${PROGRAM} exited with ${code}:\n${out}${err}")
+endif()
+if(NOT out MATCHES "${EXPECT}")
+  message(FATAL_ERROR "${PROGRAM}'s output does not match '${EXPECT}':\n${out}")
+endif()
