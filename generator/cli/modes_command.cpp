@@ -110,7 +110,8 @@ std::string format_text(const Model& model, const ModesResult& r, Printer& p) {
         os << "\n  " << stability_name(e.stability);
         if (e.stability == Stability::Unstable) os << ": perturbations grow as exp(" << number(e.growth_rate) << " t)";
         for (std::size_t c = 0; c < e.multipliers.size(); ++c)
-            os << "\n  multiplier lambda_" << r.constraints[c] << " = " << number(e.multipliers[c]);
+            os << "\n  multiplier lambda_" << r.constraints[c] << " = " << number(e.multipliers[c])
+               << (r.multiplier_units[c].empty() ? "" : " " + r.multiplier_units[c]);
         os << "\n  M0 = " << matrix_text(e.M) << "\n  K0 = " << matrix_text(e.K)
            << (e.multipliers.empty() ? "" : "  (with the constraints' curvature: K - sum lambda_k d2g_k/dq2)") << "\n";
         if (!e.multipliers.empty()) os << "  tangent space (columns) = " << matrix_text(e.tangent) << "\n";
@@ -168,7 +169,8 @@ std::string format_markdown(const Model& model, const ModesResult& r, Printer& p
         if (!e.multipliers.empty()) {
             md << "\n| constraint | multiplier λ at rest |\n|---|---|\n";
             for (std::size_t c = 0; c < e.multipliers.size(); ++c)
-                md << "| " << markdown_text(r.constraints[c]) << " | " << number(e.multipliers[c]) << " |\n";
+                md << "| " << markdown_text(r.constraints[c]) << " | " << number(e.multipliers[c])
+                   << (r.multiplier_units[c].empty() ? "" : " " + markdown_text(r.multiplier_units[c])) << " |\n";
         }
         if (!e.gyroscopic && !e.damped) {
             md << "\n| mode | ω | ω² | exact ω² | shape |\n|---|---|---|---|---|\n";
@@ -202,6 +204,10 @@ std::string format_json(const Model& model, const ModesResult& r, Printer& p, co
         const std::string u = coordinate_unit(model, r.coordinates[i]);
         js << (i ? ", " : "") << json_string(r.coordinates[i]) << ": " << (u.empty() ? "null" : json_string(u.substr(1)));
     }
+    js << "}, \"multiplier_units\": {";
+    for (std::size_t c = 0; c < r.constraints.size(); ++c)
+        js << (c ? ", " : "") << json_string(r.constraints[c]) << ": "
+           << (r.multiplier_units[c].empty() ? "null" : json_string(r.multiplier_units[c]));
     js << "}, \"reduced\": [";
     for (std::size_t i = 0; i < r.reduced.size(); ++i) js << (i ? ", " : "") << json_string(r.reduced[i]);
     js << "], \"inputs\": [";
@@ -273,6 +279,7 @@ std::vector<std::string> modes_summary(const Model& model, const ModesResult& r)
             line += (i ? ", " : "") + r.coordinates[i] + " = " + number(e.q[i]) + coordinate_unit(model, r.coordinates[i]);
         for (std::size_t c = 0; c < e.multipliers.size(); ++c)
             line += (c ? ", " : " (") + std::string("lambda_") + r.constraints[c] + " = " + number(e.multipliers[c]) +
+                    (r.multiplier_units[c].empty() ? "" : " " + r.multiplier_units[c]) +
                     (c + 1 == e.multipliers.size() ? ")" : "");
         line += std::string(": ") + stability_name(e.stability);
         if (e.stability == Stability::Unstable) line += ", growth rate " + number(e.growth_rate) + per_second;

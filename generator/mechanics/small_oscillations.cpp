@@ -1,6 +1,8 @@
 /** @file small_oscillations.cpp  Equilibria, linearization, normal modes, stability (small_oscillations.hpp). */
 #include "mechanics/small_oscillations.hpp"
 
+#include "mechanics/quantity_units.hpp"
+
 #include "model/nonsmooth.hpp"
 
 #include "mechanics/constrained_equilibria.hpp"
@@ -673,6 +675,11 @@ ModesResult small_oscillations(const Model& model, const Equations& eq_in, const
     const ManifoldConstraints manifold = manifold_constraints(model, eq, r.q, result.reduced);
     const std::size_t m = manifold.size();
     result.constraints = manifold.names;
+    const QuantityUnits units = quantity_units(model, eq_in);
+    for (const std::string& name : manifold.names)
+        for (std::size_t k = 0; k < eq_in.constraints.size(); ++k)
+            if (eq_in.constraints[k].name == name) result.multiplier_units.push_back(units.multipliers[k]);
+    result.multiplier_units.resize(result.constraints.size());
 
     Values values;
     for (const Parameter& p : model.parameters) {

@@ -83,6 +83,7 @@ struct ModesResult {
     std::vector<std::string> latex;        ///< their LaTeX
     std::vector<std::string> reduced;      ///< the cyclic coordinates reduced away (Routh)
     std::vector<std::string> constraints;  ///< the holonomic constraints the equilibria lie on
+    std::vector<std::string> multiplier_units;  ///< the SI unit of each one's multiplier ("" where none is declared)
     GiNaC::ex V_eff;                       ///< V − T₀, the amended potential after a reduction
     /// The momenta of the reduced coordinates as symbols (p_<q>) in V_eff and the exact forms, with LaTeX.
     std::vector<std::pair<GiNaC::symbol, std::string>> momentum_symbols;
