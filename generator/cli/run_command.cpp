@@ -208,6 +208,7 @@ int RunCommand::run_model() {
     if (!plot_.empty() && o.csv.empty()) {
         samples_dir.emplace(fs::temp_directory_path(), "eomgen-run.");
         o.csv = (samples_dir->path() / "samples.csv").string();
+        o.report_csv = false;  // removed when the plot is made: not a file to point the user to
     }
     progress("integrating");
     eomgen::TableModel::bind(*compiled.table);

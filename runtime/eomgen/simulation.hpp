@@ -91,6 +91,8 @@ struct Options {
     bool switch_events = true;
     /// How far a long integration has come, on stderr (progress.hpp): set by `eomgen run`, not an option here.
     eomgen::ProgressStyle progress = eomgen::ProgressStyle::None;
+    /// Say where the CSV went ("csv: path (N rows)"); off for `eomgen run`'s private one, made for its plot.
+    bool report_csv = true;
 };
 
 /// An adaptive method of --method: the stepper template (integrate_with, integrate_constrained) and its
@@ -245,7 +247,7 @@ void write_samples(const Options& o, const typename M::Params& params,
         for (int k = 0; k < M::n_outputs; ++k) row.push_back(out(k));
         return row;
     }, with_unit("t", time_unit<M>()));
-    std::cout << "csv:     " << o.csv << " (" << samples.size() << " rows)\n";
+    if (o.report_csv) std::cout << "csv:     " << o.csv << " (" << samples.size() << " rows)\n";
 }
 
 /// Why the file `path` that `option` names cannot be written (its directory is missing, it is a directory),
