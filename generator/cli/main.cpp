@@ -263,9 +263,9 @@ void show_text(const eomgen::Model& model, const eomgen::Equations& eq, std::ost
     }
     if (!model.outputs.empty()) {
         os << rule("Outputs  [outputs], recorded beside the state by `eomgen run` and eomgen-sim");
-        for (const eomgen::DeclaredOutput& o : model.outputs) {
-            os << "  " << o.name << " = " << P(o.expr.expr) << in_unit(units.outputs[std::size_t(&o - &model.outputs[0])])
-               << "\n";
+        for (std::size_t k = 0; k < model.outputs.size(); ++k) {
+            const eomgen::DeclaredOutput& o = model.outputs[k];
+            os << "  " << o.name << " = " << P(o.expr.expr) << in_unit(units.outputs[k]) << "\n";
             if (!o.description.empty()) os << "    " << o.description << "\n";
         }
     }

@@ -23,7 +23,6 @@
 #include <iostream>
 #include <limits>
 #include <map>
-#include <memory>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -399,15 +398,11 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
     // stop where the motion would stick and say so, rather than chatter across the jump or give a wrong answer.
     const bool constrained_run = constraint_count<M>() > 0 && is_adaptive_method(o.method);
     const bool follows_sticking = !constrained_run && o.method != "rk4" && o.method != "radau5";
-    std::vector<std::string> sticking_names;
-    if (!follows_sticking)
-        for (eomgen::Event<State>& e : events)
-            if (e.action == eomgen::EventAction::Switch && !e.stop_at_switch) {
-                const auto surface = std::make_shared<eomgen::SlidingSurface<State>>(
-                    [&params](const double& t, const State& x, State& xdot) { M::rhs(t, x, params, xdot); }, e.g);
-                e.stop_at_switch = [surface](const double& t, const State& x) { return surface->attracting(t, x); };
-                sticking_names.push_back(e.name);
-            }
+    const std::vector<std::string> sticking_names =
+        follows_sticking ? std::vector<std::string>{}
+                         : eomgen::stop_where_sliding(events, [&params](const double& t, const State& x, State& xdot) {
+                               M::rhs(t, x, params, xdot);
+                           });
     const auto refuse = [&](const std::string& surface, double t) {
         std::ostringstream os;
         os.precision(15);

@@ -115,6 +115,25 @@ class SlidingSurface {
 };
 
 /**
+ * For a run that does not follow sliding (rk4 and radau5, which cannot restart at a switch; a constrained model):
+ * each Switch event of `events` without a stop_at_switch of its own ends the run where the motion would slide along
+ * it (SlidingSurface::attracting of f); returns those events' names, so that the caller can say why it stopped.
+ */
+template <class State, class Field>
+std::vector<std::string> stop_where_sliding(std::vector<Event<State>>& events, Field f) {
+    using Scalar = typename State::Scalar;
+    std::vector<std::string> names;
+    for (Event<State>& e : events)
+        if (e.action == EventAction::Switch && !e.stop_at_switch) {
+            const auto surface = std::make_shared<SlidingSurface<State>>(
+                [f](const Scalar& t, const State& x, State& xdot) { f(t, x, xdot); }, e.g);
+            e.stop_at_switch = [surface](const Scalar& t, const State& x) { return surface->attracting(t, x); };
+            names.push_back(e.name);
+        }
+    return names;
+}
+
+/**
  * As integrate_with<Method>, where the Switch events of `events` may also be where the motion slides: at each
  * crossing of one, if both sides push into it (SlidingSurface::attracting), the run goes on with Filippov's field
  * until the motion leaves the surface, then with f again. The result holds the whole run; its events include, for
