@@ -7,7 +7,7 @@
 
 namespace eomgen::sim {
 
-/// Adds --t-end, --method, --rtol, --atol, --dt, --set, --init, --until, --csv, --samples, --max-steps and
+/// Adds --t-end, --method, --rtol, --atol, --dt, --set, --init, --until, --sensitivities, --csv, --samples, --max-steps and
 /// --project-initial to `app`, writing into `o`.
 inline void add_options(CLI::App& app, Options& o) {
     app.add_option("--t-end", o.t_end, "End time")->capture_default_str();
@@ -23,6 +23,10 @@ inline void add_options(CLI::App& app, Options& o) {
     app.add_option("--set", o.set, "Parameter value, NAME=VALUE (repeatable; VALUE may use pi: -pi/2)");
     app.add_option("--init", o.init, "Initial state, NAME=VALUE with NAME a coordinate or NAME_dot (repeatable)");
     app.add_option("--until", o.until, "Stop when a state crosses a value, NAME=VALUE (e.g. psi=-pi/2)");
+    app.add_option("--sensitivities", o.sensitivities,
+                   "Integrate dx/d(...) with the state: parameters NAME and initial values x0:STATE, comma-separated "
+                   "(e.g. theta,x0:psi); S at the end on stdout, its columns in the CSV")
+        ->delimiter(',');
     app.add_option("--csv", o.csv, "Write samples (state, energy, conserved quantities) to this CSV file");
     app.add_option("--samples", o.samples, "Number of sample intervals on [0, t_end] for the CSV")->capture_default_str();
     app.add_option("--max-steps", o.max_steps, "Largest number of steps (dopri5, dop853, adams, radau5)")->capture_default_str();

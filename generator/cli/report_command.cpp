@@ -386,6 +386,8 @@ int ReportCommand::run() {
     };
     try {
         eomgen::sim::check_options(options_);
+        if (!options_.sensitivities.empty())
+            throw eomgen::sim::UsageError("--sensitivities is an option of eomgen run (and eomgen-sim), not of the report");
     } catch (const std::exception& e) {
         std::cerr << "eomgen report: " << e.what() << "\n";
         return 2;

@@ -165,14 +165,20 @@ int RunCommand::run_model() {
             return 2;
         }
     }
+    if (ensemble && !options_.sensitivities.empty()) {
+        std::cerr << "eomgen run: --sensitivities of an ensemble's members is not done; run one member with its values\n";
+        return 2;
+    }
+    // The Jacobians ∂ẋ/∂x (radau5) and ∂ẋ/∂p (sensitivities), analytic in the header where the model allows.
+    const bool jacobians = options_.method == "radau5" || !options_.sensitivities.empty();
     auto header = [&] {
         progress("deriving " + model_path_);
         const Equations eq = derive_equations(model);
         for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
-        return header_to_compile(model, eq, fs::path(model_path_).filename().string(), options_.method == "radau5");
+        return header_to_compile(model, eq, fs::path(model_path_).filename().string(), jacobians);
     };
     CompileRequest request{text, model.name, header, !no_cache_, progress};
-    request.jacobian = options_.method == "radau5";
+    request.jacobian = jacobians;
     const CompiledModel compiled = compile_model(request);
     progress(compiled.from_cache ? "loaded from the cache: " + compiled.path
                                  : "compiled in " + std::to_string(compiled.compile_seconds).substr(0, 4) + " s");

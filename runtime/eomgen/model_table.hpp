@@ -35,7 +35,7 @@
 namespace eomgen {
 
 /// Raised when ModelTable's layout changes: a table of another layout is refused.
-constexpr std::uint32_t kModelTableAbi = 5;
+constexpr std::uint32_t kModelTableAbi = 6;
 
 /// What a table function reports: success, or which of the runtime's errors it caught.
 enum TableStatus : int {
@@ -78,6 +78,9 @@ struct ModelTable {
     /// J = ∂ẋ/∂x (2 nq × 2 nq, column-major), by forward differentiation in the shared object (model_jacobian.hpp);
     /// null unless the table was made by model_table<M, true>.
     int (*jacobian)(double t, const double* x, const void* p, double* J);
+    /// Jp = ∂ẋ/∂p (2 nq × n_params, column-major), for sensitivities (sensitivities.hpp): the header's analytic one
+    /// where it has one, else by forward differentiation in the shared object; null as `jacobian` is.
+    int (*parameter_jacobian)(double t, const double* x, const void* p, double* Jp);
     /// The message of the last error on this thread, and its time in *t.
     const char* (*error_message)(double* t);
     /// The switching surfaces of rhs() (abs, sign, heaviside, max, min): n_switches values s_k, 0 and null when none.
@@ -251,11 +254,30 @@ struct Wrappers {
             }
         });
     }
+    // J and Jp: the header's analytic ones where it has them, else both from one forward differentiation
+    // (linearize(), one instantiation of the model's template for the two).
     static int jacobian(double t, const double* x, const void* p, double* J) {
         return guarded([&] {
             Eigen::Matrix<double, M::nx, M::nx> j;
-            model_jacobian<M>(t, read<State>(x), params(p), j);
+            if constexpr (has_analytic_jacobian<M>::value) {
+                M::state_jacobian(t, read<State>(x), params(p), j);
+            } else {
+                Eigen::Matrix<double, M::nx, M::n_params> jp;
+                linearize<detail::model_template<M>::template type>(t, read<State>(x), params(p), j, jp);
+            }
             write(j, J);
+        });
+    }
+    static int parameter_jacobian(double t, const double* x, const void* p, double* Jp) {
+        return guarded([&] {
+            Eigen::Matrix<double, M::nx, M::n_params> jp;
+            if constexpr (has_parameter_jacobian<M>::value) {
+                M::parameter_jacobian(t, read<State>(x), params(p), jp);
+            } else {
+                Eigen::Matrix<double, M::nx, M::nx> j;
+                linearize<detail::model_template<M>::template type>(t, read<State>(x), params(p), j, jp);
+            }
+            write(jp, Jp);
         });
     }
     static const char* error_message(double* t) {
@@ -267,7 +289,8 @@ struct Wrappers {
 }  // namespace table_detail
 
 /// The table of generated model M (a Model<double> of a generated header). With `WithJacobian` the table's
-/// `jacobian` is filled (forward differentiation: it doubles the shared object's compile time), else null.
+/// `jacobian` and `parameter_jacobian` are filled (one forward differentiation through rhs() for both where the
+/// header has no analytic ones: it doubles the shared object's compile time), else null.
 template <class M, bool WithJacobian = false>
 const ModelTable& model_table() {
     using W = table_detail::Wrappers<M>;
@@ -309,7 +332,10 @@ const ModelTable& model_table() {
         t.mass_matrix = &W::mass_matrix;
         t.momenta = &W::momenta;
         t.lagrangian_gradient = &W::lagrangian_gradient;
-        if constexpr (WithJacobian) t.jacobian = &W::jacobian;
+        if constexpr (WithJacobian) {
+            t.jacobian = &W::jacobian;
+            t.parameter_jacobian = &W::parameter_jacobian;
+        }
         t.error_message = &W::error_message;
         if constexpr (declares_power<M>::value) t.power = &W::power;
         if constexpr (has_switching<M>::value) {
@@ -508,6 +534,14 @@ class TableModel {
             throw std::logic_error("the compiled model has no Jacobian (model_table<M, true> compiles one)");
         J.resize(x.size(), x.size());
         check(table().jacobian(t, x.data(), p.data(), J.data()));
+    }
+
+    /// Jp = ∂ẋ/∂p (columns in param_names order), computed in the shared object (sensitivities.hpp asks for it).
+    static void parameter_jacobian(double t, const State& x, const Params& p, Eigen::MatrixXd& Jp) {
+        if (!table().parameter_jacobian)
+            throw std::logic_error("the compiled model has no Jacobians (model_table<M, true> compiles them)");
+        Jp.resize(x.size(), n_params);
+        check(table().parameter_jacobian(t, x.data(), p.data(), Jp.data()));
     }
 
   private:

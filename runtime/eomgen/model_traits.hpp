@@ -29,6 +29,16 @@ struct has_analytic_jacobian<M, std::void_t<decltype(M::state_jacobian(
                                     std::declval<const typename M::Params&>(), std::declval<Eigen::MatrixXd&>()))>>
     : std::true_type {};
 
+/// Models with their own Jp = ∂ẋ/∂p, parameter_jacobian(t, x, p, Jp): an unconstrained generated model with analytic
+/// Jacobians, a compiled table (model_table.hpp); the others are differentiated forward (sensitivities.hpp).
+template <class M, class = void>
+struct has_parameter_jacobian : std::false_type {};
+template <class M>
+struct has_parameter_jacobian<M, std::void_t<decltype(M::parameter_jacobian(
+                                     0.0, std::declval<const typename M::State&>(),
+                                     std::declval<const typename M::Params&>(), std::declval<Eigen::MatrixXd&>()))>>
+    : std::true_type {};
+
 /// Models whose rhs() has kinks or jumps (abs, sign, heaviside, max, min in the model file) declare n_switches,
 /// switch_names and switching(t, q, q', p, s): the integrators stop their steps at each s_k = 0
 /// (EventAction::Switch).

@@ -1,0 +1,412 @@
+/**
+ * @file sensitivities.hpp  Forward sensitivities of a model's trajectory, S(t) = ∂x(t)/∂(p_k, x0_i), integrated
+ * with the state: the variational equations
+ *
+ *     Ṡ = J(t, x) S + Jp(t, x),    J = ∂ẋ/∂x,  Jp = ∂ẋ/∂p (the selected parameters' columns; 0 for x0's),
+ *     S(t0) = [0 … 0 | e_i …]      (a parameter's column starts at 0, an initial value's at its unit vector),
+ *
+ * as one augmented system z = [x, vec(S)] under one error control (state and sensitivities, as CVODES's
+ * errconS = true), by any adaptive method of integrate_with (Dopri5, Dop853, Adams) or by Radau5 (its Newton
+ * matrix block-diagonal, I − hγ diag(J, …, J): the coupling ∂(J S)/∂x is left out of the iteration matrix only,
+ * which slows Newton's convergence a little and changes nothing of the result's accuracy).
+ *
+ *     std::vector<eomgen::SensitivityColumn> cols{eomgen::parameter_column(M::param_names, "theta"),
+ *                                                 eomgen::initial_column(M::state_names, "psi")};
+ *     auto r = eomgen::integrate_sensitivities<M>(params, 0.0, x0, 3.0, cols, opts, events, sample_times);
+ *     r.S            // nx × 2: ∂x(3)/∂θ and ∂x(3)/∂ψ0
+ *     r.events[0].dt // ∂t⁎/∂θ, ∂t⁎/∂ψ0 of a terminal event, −(g_x S + g_p)/(g_t + g_x ẋ) at t*
+ *
+ * J and Jp are exact: a generated unconstrained model with analytic Jacobians ([generate] jacobians = true)
+ * gives them (state_jacobian, parameter_jacobian); a compiled table (eomgen run) gives its own; any other generated
+ * model is differentiated forward through its rhs() (linearize.hpp), constrained solve included.
+ *
+ * What is refused (std::invalid_argument), because the answer would be wrong rather than approximate:
+ *  - a model with switching surfaces (abs, sign, … in its file): S jumps where a trajectory crosses one (the
+ *    saltation matrix), which is not done;
+ *  - for a constrained model, an initial value's column (a change of one coordinate leaves the constraints)
+ *    and a parameter the constraints depend on (the consistent initial state moves with it): the integration
+ *    is of the index-1 equations without projection, whose sensitivities are the constrained motion's only when
+ *    the perturbed motion starts on the same constraints.
+ */
+#pragma once
+
+#include "eomgen/errors.hpp"
+#include "eomgen/integrate.hpp"
+#include "eomgen/linearize.hpp"
+#include "eomgen/model_jacobian.hpp"
+#include "eomgen/model_traits.hpp"
+#include "eomgen/radau5.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace eomgen {
+
+/// One column of S: the derivative with respect to a parameter (index in param_names) or to an initial value
+/// (index in state_names: q, then q̇).
+struct SensitivityColumn {
+    enum class Kind { Parameter, InitialValue };
+    Kind kind = Kind::Parameter;
+    int index = 0;
+};
+
+/// The column of parameter `name` (std::invalid_argument when `names` has none).
+template <class Names>
+SensitivityColumn parameter_column(const Names& names, const std::string& name) {
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (name == names[i]) return {SensitivityColumn::Kind::Parameter, int(i)};
+    throw std::invalid_argument("no parameter '" + name + "'");
+}
+
+/// The column of the initial value of state `name` (a coordinate or NAME_dot).
+template <class Names>
+SensitivityColumn initial_column(const Names& names, const std::string& name) {
+    for (std::size_t i = 0; i < names.size(); ++i)
+        if (name == names[i]) return {SensitivityColumn::Kind::InitialValue, int(i)};
+    throw std::invalid_argument("no state '" + name + "'");
+}
+
+/**
+ * An event for integrate_sensitivities: `event.g(t, x)` of the model's state, and, where it is known, its
+ * gradient (g_t, g_x) at (t, x) for the event time's sensitivity. Without one, g_t and g_x are taken by central
+ * differences (steps of 1e-5 relative: about 1e-10 relative error for a smooth g).
+ */
+struct SensitivityEvent {
+    Event<Eigen::VectorXd> event;
+    std::function<void(double t, const Eigen::VectorXd& x, double& g_t, Eigen::RowVectorXd& g_x)> gradient = {};
+};
+
+/// The event where state i crosses `value` (g = x_i − value), with its exact gradient.
+inline SensitivityEvent state_crossing(std::string name, int i, double value,
+                                       EventDirection direction = EventDirection::Both,
+                                       EventAction action = EventAction::Stop) {
+    SensitivityEvent e;
+    e.event = {std::move(name), [i, value](const double&, const Eigen::VectorXd& x) { return x(i) - value; },
+               direction, action};
+    e.gradient = [i](double, const Eigen::VectorXd& x, double& g_t, Eigen::RowVectorXd& g_x) {
+        g_t = 0;
+        g_x = Eigen::RowVectorXd::Zero(x.size());
+        g_x(i) = 1;
+    };
+    return e;
+}
+
+/// The state and S at a requested time.
+struct SensitivitySample {
+    double t = 0;
+    Eigen::VectorXd x;
+    Eigen::MatrixXd S;  ///< nx × columns
+};
+
+/// A located event with the sensitivities of its time and of the state there.
+struct SensitivityEventHit {
+    std::string name;
+    double t = 0;
+    Eigen::VectorXd x;
+    Eigen::MatrixXd S;       ///< ∂x/∂(columns) at fixed t = t*
+    Eigen::RowVectorXd dt;   ///< ∂t⁎/∂(columns) = −g_x S / (g_t + g_x ẋ) (g does not depend on p)
+    Eigen::MatrixXd dx;      ///< the total derivative of the state at the event, S + ẋ dt
+};
+
+/// What integrate_sensitivities returns: integrate()'s result for the state, with S beside it.
+struct SensitivityResult {
+    double t = 0;
+    Eigen::VectorXd x;
+    Eigen::MatrixXd S;
+    std::vector<SensitivitySample> samples;
+    std::vector<SensitivityEventHit> events;
+    StopReason stop_reason = StopReason::ReachedEnd;
+    std::string stopped_by;
+    std::size_t accepted_steps = 0, rejected_steps = 0, rhs_evaluations = 0;
+    std::size_t jacobian_evaluations = 0;  ///< of J and Jp (each rhs evaluation of the augmented system has one)
+};
+
+namespace detail {
+
+/// The model's state type from a dynamic vector (a generated model's State has a fixed size).
+template <class M>
+typename M::State model_state(const Eigen::VectorXd& x) {
+    return typename M::State(x);
+}
+
+}  // namespace detail
+
+/**
+ * J = ∂ẋ/∂x and Jp = ∂ẋ/∂p (all parameters, param_names order) of Model M at (t, x; p): M's own
+ * parameter_jacobian with model_jacobian where M has one (a compiled table, an unconstrained generated model
+ * with analytic Jacobians), else both by one forward differentiation of M's template (linearize()).
+ */
+template <class M>
+void sensitivity_jacobians(double t, const typename M::State& x, const typename M::Params& p, Eigen::MatrixXd& J,
+                           Eigen::MatrixXd& Jp) {
+    if constexpr (has_parameter_jacobian<M>::value) {
+        model_jacobian<M>(t, x, p, J);
+        M::parameter_jacobian(t, x, p, Jp);
+    } else {
+        linearize<detail::model_template<M>::template type>(t, x, p, J, Jp);
+    }
+}
+
+/**
+ * The augmented right-hand side z' = [ẋ, vec(J S + Jp_sel)] of Model M with parameters p and the given columns;
+ * also the Newton matrix's approximation diag(J, …, J) for Radau5.
+ */
+template <class M>
+class SensitivitySystem {
+  public:
+    SensitivitySystem(const typename M::Params& p, Eigen::Index nx, std::vector<SensitivityColumn> columns)
+        : p_(p), nx_(nx), columns_(std::move(columns)) {}
+
+    Eigen::Index nx() const { return nx_; }
+    Eigen::Index size() const { return nx_ * (1 + Eigen::Index(columns_.size())); }
+    std::size_t jacobian_evaluations() const { return jacobian_evaluations_; }
+
+    void operator()(const double& t, const Eigen::VectorXd& z, Eigen::VectorXd& zdot) {
+        const Eigen::Index k = Eigen::Index(columns_.size());
+        const typename M::State x = detail::model_state<M>(z.head(nx_));
+        typename M::State xdot = x;
+        M::rhs(t, x, p_, xdot);
+        sensitivity_jacobians<M>(t, x, p_, J_, Jp_);
+        ++jacobian_evaluations_;
+        zdot.resize(z.size());
+        zdot.head(nx_) = xdot;
+        const Eigen::Map<const Eigen::MatrixXd> S(z.data() + nx_, nx_, k);
+        Eigen::Map<Eigen::MatrixXd> Sdot(zdot.data() + nx_, nx_, k);
+        Sdot.noalias() = J_ * S;
+        for (Eigen::Index c = 0; c < k; ++c)
+            if (columns_[std::size_t(c)].kind == SensitivityColumn::Kind::Parameter)
+                Sdot.col(c) += Jp_.col(columns_[std::size_t(c)].index);
+        if (!zdot.allFinite())
+            throw NonFiniteState(describe_state("the sensitivities are not finite", t, x), t);
+    }
+
+    /// diag(J, …, J) at (t, x(z)): Radau5's Newton matrix.
+    void newton_jacobian(const double& t, const Eigen::VectorXd& z, Eigen::MatrixXd& Jz) {
+        const typename M::State x = detail::model_state<M>(z.head(nx_));
+        Eigen::MatrixXd J;
+        model_jacobian<M>(t, x, p_, J);
+        Jz.setZero(z.size(), z.size());
+        for (Eigen::Index b = 0; b <= Eigen::Index(columns_.size()); ++b) Jz.block(b * nx_, b * nx_, nx_, nx_) = J;
+    }
+
+    /// ẋ at (t, x).
+    Eigen::VectorXd state_rate(double t, const Eigen::VectorXd& x) const {
+        const typename M::State xs = detail::model_state<M>(x);
+        typename M::State xdot = xs;
+        M::rhs(t, xs, p_, xdot);
+        return Eigen::VectorXd(xdot);
+    }
+
+  private:
+    typename M::Params p_;
+    Eigen::Index nx_;
+    std::vector<SensitivityColumn> columns_;
+    Eigen::MatrixXd J_, Jp_;
+    std::size_t jacobian_evaluations_ = 0;
+};
+
+/// g_t and g_x of event e at (t, x): its gradient where given, else central differences.
+inline void event_gradient(const SensitivityEvent& e, double t, const Eigen::VectorXd& x, double& g_t,
+                           Eigen::RowVectorXd& g_x) {
+    if (e.gradient) {
+        e.gradient(t, x, g_t, g_x);
+        return;
+    }
+    const auto step = [](double v) { return 1e-5 * std::max(1.0, std::abs(v)); };
+    const double ht = step(t);
+    g_t = (e.event.g(t + ht, x) - e.event.g(t - ht, x)) / (2 * ht);
+    g_x.resize(x.size());
+    Eigen::VectorXd xp = x, xm = x;
+    for (Eigen::Index i = 0; i < x.size(); ++i) {
+        const double h = step(x(i));
+        xp(i) = x(i) + h;
+        xm(i) = x(i) - h;
+        g_x(i) = (e.event.g(t, xp) - e.event.g(t, xm)) / (2 * h);
+        xp(i) = xm(i) = x(i);
+    }
+}
+
+/// Checks what integrate_sensitivities refuses (see the file's comment), with the model's names in the message.
+template <class M>
+void check_sensitivity_columns(double t0, const typename M::State& x0, const typename M::Params& p,
+                               const std::vector<SensitivityColumn>& columns) {
+    const Eigen::Index nx = x0.size();
+    for (const SensitivityColumn& c : columns) {
+        const bool parameter = c.kind == SensitivityColumn::Kind::Parameter;
+        if (c.index < 0 || c.index >= (parameter ? Eigen::Index(M::param_names.size()) : nx))
+            throw std::invalid_argument("integrate_sensitivities: a column's index is out of range");
+    }
+    if constexpr (has_switching<M>::value) {
+        if (M::n_switches > 0)
+            throw std::invalid_argument(
+                std::string(M::name) +
+                " has switching surfaces (abs, sign, heaviside, max or min in its file): its sensitivities jump where a "
+                "motion crosses one (the saltation matrix), which is not done");
+    }
+    if constexpr (is_constrained<M>::value) {
+        if (M::n_constraints == 0) return;
+        // The parameters the constraints depend on: g, c, A and γ at x0 and at a second state, with p_k moved.
+        const auto probe = [&](const typename M::Params& q, const typename M::State& x) {
+            typename M::ConstraintVector g, v, gamma;
+            typename M::ConstraintJacobian A;
+            M::constraint_residuals(t0, positions<M::nq>(x), velocities<M::nq>(x), q, g, v);
+            M::constraints(t0, positions<M::nq>(x), velocities<M::nq>(x), q, A, gamma);
+            std::vector<double> all(g.data(), g.data() + g.size());
+            all.insert(all.end(), v.data(), v.data() + v.size());
+            all.insert(all.end(), A.data(), A.data() + A.size());
+            all.insert(all.end(), gamma.data(), gamma.data() + gamma.size());
+            return all;
+        };
+        typename M::State x1 = x0;
+        for (Eigen::Index i = 0; i < nx; ++i) x1(i) += 0.1 + 0.037 * double(i);
+        const auto values = M::param_values(p);
+        for (const SensitivityColumn& c : columns) {
+            if (c.kind == SensitivityColumn::Kind::InitialValue)
+                throw std::invalid_argument(
+                    "the sensitivity to the initial value of " + std::string(M::state_names[std::size_t(c.index)]) +
+                    " of a constrained model is not done: a change of one state leaves the constraints");
+            const std::string name = M::param_names[std::size_t(c.index)];
+            typename M::Params moved = p;
+            const double v = values[std::size_t(c.index)];
+            M::set_param(moved, name, v + 1e-3 * std::max(1.0, std::abs(v)));
+            for (const typename M::State* x : {&x0, static_cast<const typename M::State*>(&x1)})
+                if (probe(p, *x) != probe(moved, *x))
+                    throw std::invalid_argument("the sensitivity to " + name + ", which the constraints of " +
+                                                std::string(M::name) +
+                                                " depend on, is not done: the consistent initial state moves with it");
+        }
+    }
+}
+
+/**
+ * Integrates Model M from (t0, x0) to t_end with the sensitivities of the given columns, by the adaptive
+ * method Method (Dopri5, Dop853, Adams) with `options`, stopping at a terminal event. Samples (state and S) at
+ * `sample_times`; every located event with ∂t⁎/∂(columns). Throws std::invalid_argument for what is refused (see
+ * the file's comment) and the runtime's SimulationError when the integration fails.
+ */
+template <class M, template <class> class Method = Dop853>
+SensitivityResult integrate_sensitivities(const typename M::Params& p, double t0, const typename M::State& x0,
+                                          double t_end, const std::vector<SensitivityColumn>& columns,
+                                          const typename Method<Eigen::VectorXd>::Options& options = {},
+                                          const std::vector<SensitivityEvent>& events = {},
+                                          const std::vector<double>& sample_times = {});
+
+/// The same by Radau5 (implicit), with the block-diagonal Newton matrix diag(J, …, J).
+template <class M>
+SensitivityResult integrate_sensitivities_radau5(const typename M::Params& p, double t0, const typename M::State& x0,
+                                                 double t_end, const std::vector<SensitivityColumn>& columns,
+                                                 const Radau5Options<double>& options = {},
+                                                 const std::vector<SensitivityEvent>& events = {},
+                                                 const std::vector<double>& sample_times = {});
+
+namespace detail {
+
+/// The augmented system's start, its events, and the result from the augmented run's.
+template <class M>
+struct SensitivityRun {
+    SensitivitySystem<M> system;
+    std::vector<SensitivityEvent> events;
+    Eigen::VectorXd z0;
+    std::vector<Event<Eigen::VectorXd>> augmented_events;
+    std::vector<SensitivitySample> samples;
+
+    SensitivityRun(const typename M::Params& p, double t0, const typename M::State& x0,
+                   const std::vector<SensitivityColumn>& columns, const std::vector<SensitivityEvent>& given)
+        : system(p, x0.size(), columns), events(given) {
+        check_sensitivity_columns<M>(t0, x0, p, columns);
+        const Eigen::Index nx = x0.size(), k = Eigen::Index(columns.size());
+        z0 = Eigen::VectorXd::Zero(system.size());
+        z0.head(nx) = x0;
+        for (Eigen::Index c = 0; c < k; ++c)
+            if (columns[std::size_t(c)].kind == SensitivityColumn::Kind::InitialValue)
+                z0(nx + c * nx + columns[std::size_t(c)].index) = 1;
+        for (const SensitivityEvent& e : events)
+            augmented_events.push_back({e.event.name,
+                                        [g = e.event.g, nx](const double& t, const Eigen::VectorXd& z) {
+                                            return g(t, Eigen::VectorXd(z.head(nx)));
+                                        },
+                                        e.event.direction, e.event.action});
+    }
+
+    Observer<Eigen::VectorXd> observer() {
+        return [this](const double& t, const Eigen::VectorXd& z) { samples.push_back(split(t, z)); };
+    }
+
+    SensitivitySample split(double t, const Eigen::VectorXd& z) const {
+        const Eigen::Index nx = system.nx();
+        return {t, z.head(nx), Eigen::Map<const Eigen::MatrixXd>(z.data() + nx, nx, (z.size() - nx) / nx)};
+    }
+
+    SensitivityResult finish(const IntegrationResult<Eigen::VectorXd>& r) {
+        SensitivityResult out;
+        const SensitivitySample end = split(r.t, r.x);
+        out.t = r.t;
+        out.x = end.x;
+        out.S = end.S;
+        out.samples = std::move(samples);
+        out.stop_reason = r.stop_reason;
+        out.stopped_by = r.stopped_by;
+        out.accepted_steps = r.accepted_steps;
+        out.rejected_steps = r.rejected_steps;
+        out.rhs_evaluations = r.rhs_evaluations;
+        out.jacobian_evaluations = system.jacobian_evaluations();
+        for (const auto& hit : r.events) {
+            const SensitivitySample s = split(hit.t, hit.x);
+            const auto it = std::find_if(events.begin(), events.end(),
+                                         [&](const SensitivityEvent& e) { return e.event.name == hit.name; });
+            SensitivityEventHit h{hit.name, hit.t, s.x, s.S, {}, {}};
+            double g_t = 0;
+            Eigen::RowVectorXd g_x;
+            event_gradient(*it, hit.t, s.x, g_t, g_x);
+            const Eigen::VectorXd xdot = system.state_rate(hit.t, s.x);
+            const double rate = g_t + g_x.dot(xdot);
+            // A grazing crossing (ġ = 0) has no derivative of its time: NaN says so rather than a huge number.
+            h.dt = rate != 0 ? Eigen::RowVectorXd(-(g_x * s.S) / rate)
+                             : Eigen::RowVectorXd::Constant(s.S.cols(), std::numeric_limits<double>::quiet_NaN());
+            h.dx = s.S + xdot * h.dt;
+            out.events.push_back(std::move(h));
+        }
+        return out;
+    }
+};
+
+}  // namespace detail
+
+template <class M, template <class> class Method>
+SensitivityResult integrate_sensitivities(const typename M::Params& p, double t0, const typename M::State& x0,
+                                          double t_end, const std::vector<SensitivityColumn>& columns,
+                                          const typename Method<Eigen::VectorXd>::Options& options,
+                                          const std::vector<SensitivityEvent>& events,
+                                          const std::vector<double>& sample_times) {
+    detail::SensitivityRun<M> run(p, t0, x0, columns, events);
+    const auto r = integrate_with<Method>(run.system, t0, run.z0, t_end, options, run.augmented_events, sample_times,
+                                          run.observer());
+    return run.finish(r);
+}
+
+template <class M>
+SensitivityResult integrate_sensitivities_radau5(const typename M::Params& p, double t0, const typename M::State& x0,
+                                                 double t_end, const std::vector<SensitivityColumn>& columns,
+                                                 const Radau5Options<double>& options,
+                                                 const std::vector<SensitivityEvent>& events,
+                                                 const std::vector<double>& sample_times) {
+    detail::SensitivityRun<M> run(p, t0, x0, columns, events);
+    auto jac = [&run](const double& t, const Eigen::VectorXd& z, Eigen::MatrixXd& J) {
+        run.system.newton_jacobian(t, z, J);
+    };
+    const auto r = integrate_radau5(run.system, jac, t0, run.z0, t_end, options, run.augmented_events, sample_times,
+                                    run.observer());
+    return run.finish(r);
+}
+
+}  // namespace eomgen

@@ -1,0 +1,187 @@
+/**
+ * @file sensitivity_run.hpp  `eomgen run MODEL --sensitivities theta,x0:psi` (and eomgen-sim's): the trajectory
+ * with S = ∂x/∂(θ, ψ(0)) integrated beside it (sensitivities.hpp), S at the end on stdout, a terminal event's
+ * ∂t⁎/∂(…), and S's columns in the CSV after the usual ones: `dpsi/dtheta [rad/rad]`, `dpsi_dot/dpsi(0) [1/s]`.
+ */
+#pragma once
+
+#include "eomgen/column_units.hpp"
+#include "eomgen/constraints.hpp"
+#include "eomgen/sample_csv.hpp"
+#include "eomgen/sensitivities.hpp"
+#include "eomgen/simulation_options.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <iostream>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace eomgen::sim {
+
+/// One requested column: what it differentiates by, its name in headers ("theta", "psi(0)") and that name's unit.
+struct SensitivityLabel {
+    SensitivityColumn column;
+    std::string name, unit;
+};
+
+/// "a/b" of two units, "" where either is unknown: "1" where they are the same, "1/s" for rad/s over rad, b in
+/// parentheses when compound.
+inline std::string unit_ratio(const std::string& a, const std::string& b) {
+    if (a.empty() || b.empty()) return "";
+    if (a == b) return "1";
+    if (a.rfind(b + "/", 0) == 0 && a.find_first_of("/* ", b.size() + 1) == std::string::npos)
+        return "1/" + a.substr(b.size() + 1);
+    const bool compound = b.find_first_of("/* ") != std::string::npos;
+    return a + "/" + (compound ? "(" + b + ")" : b);
+}
+
+/// The columns of --sensitivities: NAME a parameter, x0:NAME an initial value (a coordinate or NAME_dot).
+/// UsageError for an unknown name or one given twice.
+template <class M>
+std::vector<SensitivityLabel> sensitivity_labels(const Options& o) {
+    std::vector<SensitivityLabel> labels;
+    std::set<std::string> seen;
+    for (const std::string& given : o.sensitivities) {
+        std::string spec = given;
+        spec.erase(0, spec.find_first_not_of(' '));
+        spec.erase(spec.find_last_not_of(' ') + 1);
+        if (spec.empty()) throw UsageError("--sensitivities: an empty name (expected NAME or x0:NAME, comma-separated)");
+        if (!seen.insert(spec).second) throw UsageError("--sensitivities " + spec + ": given twice");
+        if (spec.rfind("x0:", 0) == 0) {
+            const std::string name = spec.substr(3);
+            const int i = index_of(M::state_names, name);
+            if (i < 0)
+                throw UsageError("--sensitivities " + spec + ": no state '" + name + "'" +
+                                 did_you_mean(name, M::state_names) + " (states: " + list(M::state_names) + ")");
+            labels.push_back({{SensitivityColumn::Kind::InitialValue, i}, name + "(0)", state_unit<M>(std::size_t(i))});
+        } else {
+            const int k = index_of(M::param_names, spec);
+            if (k < 0)
+                throw UsageError("--sensitivities " + spec + ": " + std::string(M::name) + " has no parameter '" + spec +
+                                 "'" + did_you_mean(spec, M::param_names) + " (it has " + list(M::param_names) +
+                                 "; an initial value is x0:NAME)");
+            labels.push_back({{SensitivityColumn::Kind::Parameter, k}, spec, param_unit<M>(std::size_t(k))});
+        }
+    }
+    return labels;
+}
+
+/// One run with sensitivities: what run() does, with S beside the state. Returns kExitOk; throws as run() does.
+template <class M>
+int run_sensitivities(const Options& o) {
+    using State = typename M::State;
+    check_options(o);
+    if (!is_adaptive_method(o.method) && o.method != "radau5")
+        throw UsageError("--sensitivities needs a method with error control (dopri5, dop853, adams or radau5), not " +
+                         o.method);
+    check_method_for<M>(o);
+    typename M::Params params;
+    State x0 = M::default_state();
+    apply_settings<M>(o, params, x0);
+    const std::vector<SensitivityLabel> labels = sensitivity_labels<M>(o);
+    std::vector<SensitivityColumn> columns;
+    for (const auto& l : labels) columns.push_back(l.column);
+
+    std::vector<SensitivityEvent> events;
+    if (!o.until.empty()) {
+        const auto [name, value] = parse_assignment(o.until, "--until");
+        const int i = index_of(M::state_names, name);
+        if (i < 0)
+            throw UsageError("--until " + o.until + ": no state '" + name + "'" + did_you_mean(name, M::state_names) +
+                             " (states: " + list(M::state_names) + ")");
+        events.push_back(state_crossing(o.until, i, value));
+    }
+    std::vector<double> sample_times;
+    for (int k = 0; k <= o.samples; ++k) sample_times.push_back(o.t_end * double(k) / double(o.samples));
+
+    try {
+        check_sensitivity_columns<M>(0.0, x0, params, columns);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--sensitivities: ") + e.what());
+    }
+    print_heading<M>(params, std::cout);
+    SensitivityResult r;
+    try {
+        if (o.method == "radau5") {
+            Radau5Options<double> opt;
+            opt.rtol = o.rtol;
+            opt.atol = o.atol;
+            opt.max_steps = o.max_steps;
+            r = integrate_sensitivities_radau5<M>(params, 0.0, x0, o.t_end, columns, opt, events, sample_times);
+        } else {
+            with_adaptive_method(o.method, [&](auto method) {
+                using Method = decltype(method);
+                r = integrate_sensitivities<M, Method::template type>(params, 0.0, x0, o.t_end, columns,
+                                                                      Method::template options<Eigen::VectorXd>(o),
+                                                                      events, sample_times);
+            });
+        }
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("--sensitivities: ") + e.what());
+    }
+
+    std::cout << "method:  " << o.method << " with the sensitivities of " << labels.size() << " column"
+              << (labels.size() == 1 ? "" : "s") << " under the same error control, rtol " << o.rtol << ", atol "
+              << o.atol << (constraint_count<M>() > 0 ? "; no projection onto the constraints" : "") << "\n";
+    std::cout << "steps:   " << r.accepted_steps << " accepted, " << r.rejected_steps << " rejected, "
+              << r.rhs_evaluations << " right-hand sides (each with J and Jp)\n";
+    const std::string s = time_unit<M>().empty() ? "" : " s";
+    std::cout << "t:       " << r.t << s << "\n";
+    for (Eigen::Index i = 0; i < r.x.size(); ++i)
+        std::cout << "  " << M::state_names[std::size_t(i)] << " = " << r.x(i)
+                  << (state_unit<M>(std::size_t(i)).empty() ? "" : " " + state_unit<M>(std::size_t(i))) << "\n";
+    if constexpr (is_constrained<M>::value) {
+        if (M::n_constraints > 0) {
+            const auto c = constraint_residual<M>(r.t, State(r.x), params);
+            std::cout << "constraint residuals at the end: position " << c.position << ", velocity " << c.velocity
+                      << "\n";
+        }
+    }
+    std::cout << "sensitivities at t = " << r.t << s << ":\n";
+    for (Eigen::Index i = 0; i < r.x.size(); ++i) {
+        const std::string state = M::state_names[std::size_t(i)];
+        std::cout << "  ";
+        for (std::size_t c = 0; c < labels.size(); ++c) {
+            const std::string unit = unit_ratio(state_unit<M>(std::size_t(i)), labels[c].unit);
+            std::cout << (c ? ", " : "") << "d" << state << "/d" << labels[c].name << " = " << r.S(i, Eigen::Index(c))
+                      << (unit.empty() || unit == "1" ? "" : " " + unit);
+        }
+        std::cout << "\n";
+    }
+    for (const auto& e : r.events) {
+        std::cout << "event:   " << e.name << " at t = " << e.t << s << ";";
+        for (std::size_t c = 0; c < labels.size(); ++c) {
+            const std::string unit = unit_ratio(time_unit<M>(), labels[c].unit);
+            std::cout << (c ? "," : "") << " dt/d" << labels[c].name << " = " << e.dt(Eigen::Index(c))
+                      << (unit.empty() || unit == "1" ? "" : " " + unit);
+        }
+        std::cout << "\n";
+    }
+    std::cout << "stopped: " << (r.stop_reason == StopReason::TerminalEvent ? "at event " + r.stopped_by : "at t_end")
+              << "\n";
+
+    if (o.csv.empty()) return kExitOk;
+    std::vector<std::string> names;
+    for (std::size_t c = 0; c < labels.size(); ++c)
+        for (std::size_t i = 0; i < M::state_names.size(); ++i)
+            names.push_back(with_unit("d" + std::string(M::state_names[i]) + "/d" + labels[c].name,
+                                      unit_ratio(state_unit<M>(i), labels[c].unit)));
+    std::vector<Sample<State>> samples;
+    std::vector<std::vector<double>> rows;
+    for (const auto& sample : r.samples) {
+        samples.push_back({sample.t, State(sample.x)});
+        rows.emplace_back(sample.S.data(), sample.S.data() + sample.S.size());  // column-major: by column, then state
+    }
+    try {
+        write_samples<M>(o, params, samples, {}, names, rows);
+    } catch (const std::runtime_error& e) {
+        throw OutputError(std::string("cannot write the CSV: ") + e.what());
+    }
+    return kExitOk;
+}
+
+}  // namespace eomgen::sim

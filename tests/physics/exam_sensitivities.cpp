@@ -1,0 +1,249 @@
+/**
+ * @file exam_sensitivities.cpp  Forward sensitivities (sensitivities.hpp) against central differences of whole
+ * trajectories on five models — unconstrained (analytic Jacobians and forward AD), constrained, rheonomic, damped
+ * and driven, stiff under radau5 — and the door's closing-time sensitivity against its closed form; what is refused.
+ */
+#include "../approx.hpp"
+
+#include "eomgen/integrate.hpp"
+#include "eomgen/models/bead_on_hoop.hpp"
+#include "eomgen/models/door.hpp"
+#include "eomgen/models/driven_chain4.hpp"
+#include "eomgen/models/friction_door.hpp"
+#include "eomgen/models/hoop_driven.hpp"
+#include "eomgen/models/pendulum_5_20.hpp"
+#include "eomgen/models/pendulum_cartesian.hpp"
+#include "eomgen/models/stiff_spring_pendulum.hpp"
+#include "eomgen/radau5.hpp"
+#include "eomgen/sensitivities.hpp"
+
+#include <Eigen/Core>
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace {
+
+using eomgen::SensitivityColumn;
+
+/// Whether to integrate by radau5 (the stiff model) or dop853.
+enum class By { Dop853, Radau5 };
+
+constexpr double kRtol = 1e-12, kAtol = 1e-14;
+
+/// x(t_end) of M from x0 with parameters p, tightly.
+template <class M>
+Eigen::VectorXd end_state(const typename M::Params& p, const typename M::State& x0, double t_end, By by) {
+    auto f = [&p](const double& t, const typename M::State& x, typename M::State& xd) { M::rhs(t, x, p, xd); };
+    if (by == By::Radau5) {
+        eomgen::Radau5Options<double> o;
+        o.rtol = kRtol;
+        o.atol = kAtol;
+        o.max_steps = 2000000;
+        auto jac = [&p](const double& t, const typename M::State& x, auto& J) { eomgen::model_jacobian<M>(t, x, p, J); };
+        return eomgen::integrate_radau5(f, jac, 0.0, x0, t_end, o).x;
+    }
+    eomgen::Dop853Options<double> o;
+    o.rtol = kRtol;
+    o.atol = kAtol;
+    o.max_steps = 2000000;
+    return eomgen::integrate_dop853(f, 0.0, x0, t_end, o).x;
+}
+
+/// ∂x(t_end)/∂(column) by fourth-order central differences of whole trajectories (steps of 2e-4 relative: with
+/// 1e-3 the truncation error was 5e-6 on the double pendulum's a; the integrations' error over the step is about 1e-9).
+template <class M>
+Eigen::VectorXd difference(const typename M::Params& p, const typename M::State& x0, double t_end,
+                           const SensitivityColumn& c, By by, double step) {
+    const auto values = M::param_values(p);
+    const double v = c.kind == SensitivityColumn::Kind::Parameter ? values[std::size_t(c.index)] : x0(c.index);
+    const double h = step * std::max(1.0, std::abs(v));
+    auto at = [&](double offset) {
+        typename M::Params q = p;
+        typename M::State y = x0;
+        if (c.kind == SensitivityColumn::Kind::Parameter)
+            M::set_param(q, M::param_names[std::size_t(c.index)], v + offset);
+        else
+            y(c.index) = v + offset;
+        return end_state<M>(q, y, t_end, by);
+    };
+    return (-at(2 * h) + 8 * at(h) - 8 * at(-h) + at(-2 * h)) / (12 * h);
+}
+
+/// Integrates S of every column and compares each with central differences: the largest difference relative to
+/// the column's largest entry. Returns the worst over the columns.
+template <class M>
+double worst_relative_error(const typename M::Params& p, const typename M::State& x0, double t_end,
+                            const std::vector<SensitivityColumn>& columns, By by, double step = 2e-4) {
+    eomgen::SensitivityResult r;
+    if (by == By::Radau5) {
+        eomgen::Radau5Options<double> o;
+        o.rtol = kRtol;
+        o.atol = kAtol;
+        o.max_steps = 2000000;
+        r = eomgen::integrate_sensitivities_radau5<M>(p, 0.0, x0, t_end, columns, o);
+    } else {
+        eomgen::Dop853Options<double> o;
+        o.rtol = kRtol;
+        o.atol = kAtol;
+        o.max_steps = 2000000;
+        r = eomgen::integrate_sensitivities<M, eomgen::Dop853>(p, 0.0, x0, t_end, columns, o);
+    }
+    REQUIRE(r.t == Approx(t_end));
+    REQUIRE((r.x - end_state<M>(p, x0, t_end, by)).cwiseAbs().maxCoeff() < 1e-9 * std::max(1.0, r.x.norm()));
+    double worst = 0;
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        const Eigen::VectorXd fd = difference<M>(p, x0, t_end, columns[k], by, step);
+        const double scale = fd.cwiseAbs().maxCoeff();
+        const double difference_max = (r.S.col(Eigen::Index(k)) - fd).cwiseAbs().maxCoeff();
+        // A column that vanishes (a mass that cancels from the motion) has no relative error: both sides must be
+        // 0 to the differences' round-off (1e-13 over a step of 2e-4: about 1e-9) instead.
+        const double e = scale < 1e-9 ? (difference_max < 1e-9 ? 0.0 : 1.0) : difference_max / scale;
+        INFO(M::name << " column " << k << ": S = " << r.S.col(Eigen::Index(k)).transpose()
+                     << "\n differences = " << fd.transpose());
+        CHECK(e < 1e-7);
+        worst = std::max(worst, e);
+    }
+    return worst;
+}
+
+template <class M>
+std::vector<SensitivityColumn> every_column(bool with_initial) {
+    std::vector<SensitivityColumn> c;
+    for (int k = 0; k < M::n_params; ++k) c.push_back({SensitivityColumn::Kind::Parameter, k});
+    if (with_initial)
+        for (int i = 0; i < M::nx; ++i) c.push_back({SensitivityColumn::Kind::InitialValue, i});
+    return c;
+}
+
+}  // namespace
+
+TEST_CASE("sensitivities of an unconstrained model agree with central differences: analytic Jacobians and AD",
+          "[sensitivities]") {
+    using P = eomgen::models::pendulum_5_20::Model<double>;  // analytic state_jacobian and parameter_jacobian
+    static_assert(eomgen::has_parameter_jacobian<P>::value);
+    P::State x0 = P::default_state();
+    x0 << 0.4, -0.3, 0.2, 0.5;
+    CHECK(worst_relative_error<P>(P::Params{}, x0, 3.0, every_column<P>(true), By::Dop853) < 1e-7);
+
+    using B = eomgen::models::bead_on_hoop::Model<double>;  // no analytic Jacobians: forward AD through rhs()
+    static_assert(!eomgen::has_parameter_jacobian<B>::value);
+    B::State y0;
+    y0 << 0.7, 0.3;
+    CHECK(worst_relative_error<B>(B::Params{}, y0, 4.0, every_column<B>(true), By::Dop853) < 1e-7);
+}
+
+TEST_CASE("sensitivities of a constrained model go through the multipliers' solve", "[sensitivities]") {
+    using C = eomgen::models::pendulum_cartesian::Model<double>;
+    C::Params p;
+    const double l = C::param_values(p)[1];
+    C::State x0;
+    x0 << l * std::sin(0.6), -l * std::cos(0.6), 0.8 * std::cos(0.6), 0.8 * std::sin(0.6);  // on the rod, moving along it
+    const std::vector<SensitivityColumn> columns{eomgen::parameter_column(C::param_names, "m"),
+                                                 eomgen::parameter_column(C::param_names, "g")};
+    CHECK(worst_relative_error<C>(p, x0, 3.0, columns, By::Dop853) < 1e-7);
+
+    // A rheonomic constraint (the hoop's spin phi = w t): g and m do not enter it.
+    using H = eomgen::models::hoop_driven::Model<double>;
+    H::Params q;
+    H::State z0 = H::default_state();
+    CHECK(worst_relative_error<H>(q, z0, 2.0,
+                                  {eomgen::parameter_column(H::param_names, "g"),
+                                   eomgen::parameter_column(H::param_names, "R")},
+                                  By::Dop853) < 1e-7);
+}
+
+TEST_CASE("sensitivities of a rheonomic, damped and driven model (a chain on a shaken support)", "[sensitivities]") {
+    using D = eomgen::models::driven_chain4::Model<double>;
+    D::State x0 = D::default_state();
+    for (int i = 0; i < D::nq; ++i) x0(i) = 0.3 - 0.1 * i;
+    CHECK(worst_relative_error<D>(D::Params{}, x0, 2.0,
+                                  {eomgen::parameter_column(D::param_names, "c"),
+                                   eomgen::parameter_column(D::param_names, "tau"),
+                                   eomgen::parameter_column(D::param_names, "A"),
+                                   eomgen::parameter_column(D::param_names, "w"),
+                                   eomgen::initial_column(D::state_names, "th1"),
+                                   eomgen::initial_column(D::state_names, "th3_dot")},
+                                  By::Dop853) < 1e-7);
+}
+
+TEST_CASE("sensitivities of the stiff spring pendulum under radau5", "[sensitivities]") {
+    // The motion hardly depends on the stiff spring's k and c (S of order 1e-9): the differences take steps of
+    // 5e-3 relative so that the integrations' error divided by the step stays below 1e-7 of that.
+    using S = eomgen::models::stiff_spring_pendulum::Model<double>;
+    S::Params p;
+    S::State x0 = S::default_state();
+    CHECK(worst_relative_error<S>(p, x0, 1.0,
+                                  {eomgen::parameter_column(S::param_names, "k"),
+                                   eomgen::parameter_column(S::param_names, "c"),
+                                   eomgen::parameter_column(S::param_names, "g"),
+                                   eomgen::initial_column(S::state_names, "theta")},
+                                  By::Radau5, 5e-3) < 1e-7);
+}
+
+TEST_CASE("the door's closing-time sensitivity against the closed form T = K sqrt(w/(g sin theta))",
+          "[sensitivities]") {
+    // T ∝ (sin θ)^(-1/2) w^(1/2) g^(-1/2), whatever the constant K: dT/dθ = −T cot θ / 2, dT/dw = T/(2w),
+    // dT/dg = −T/(2g), dT/dm = dT/dh = 0.
+    using D = eomgen::models::door::Model<double>;
+    D::Params p;
+    const auto values = D::param_values(p);
+    const double w = values[1], g = values[3], theta = values[4];
+    eomgen::Dop853Options<double> o;
+    o.rtol = kRtol;
+    o.atol = kAtol;
+    const auto r = eomgen::integrate_sensitivities<D, eomgen::Dop853>(
+        p, 0.0, D::default_state(), 10.0, every_column<D>(false), o,
+        {eomgen::state_crossing("shut", 0, -M_PI / 2)});
+    REQUIRE(r.events.size() == 1);
+    REQUIRE(r.stopped_by == "shut");
+    const double T = r.events[0].t;
+    const Eigen::RowVectorXd& dT = r.events[0].dt;
+    CHECK(dT(4) == Approx(-T / (2 * std::tan(theta))).epsilon(1e-9));
+    CHECK(dT(1) == Approx(T / (2 * w)).epsilon(1e-9));
+    CHECK(dT(3) == Approx(-T / (2 * g)).epsilon(1e-9));
+    CHECK(std::abs(dT(0)) < 1e-9 * T);
+    CHECK(std::abs(dT(2)) < 1e-9 * T);
+    // At the event the state's total derivative keeps psi on the event surface: d psi(T)/dp = 0.
+    CHECK(r.events[0].dx.row(0).cwiseAbs().maxCoeff() < 1e-9);
+
+    // Without the gradient (central differences of g), the same to their error.
+    eomgen::SensitivityEvent plain{eomgen::state_crossing("shut", 0, -M_PI / 2).event, {}};
+    const auto q = eomgen::integrate_sensitivities<D, eomgen::Dop853>(p, 0.0, D::default_state(), 10.0,
+                                                                      every_column<D>(false), o, {plain});
+    REQUIRE(q.events.size() == 1);
+    CHECK(q.events[0].dt(4) == Approx(dT(4)).epsilon(1e-8));
+}
+
+TEST_CASE("samples carry S, and S at t0 is the columns' start", "[sensitivities]") {
+    using D = eomgen::models::door::Model<double>;
+    const auto r = eomgen::integrate_sensitivities<D, eomgen::Dopri5>(
+        D::Params{}, 0.0, D::default_state(), 1.0,
+        {eomgen::parameter_column(D::param_names, "theta"), eomgen::initial_column(D::state_names, "psi_dot")}, {},
+        {}, {0.0, 0.5, 1.0});
+    REQUIRE(r.samples.size() == 3);
+    CHECK(r.samples[0].S.col(0).isZero());
+    CHECK(r.samples[0].S.col(1) == Eigen::Vector2d(0, 1));
+    CHECK(r.samples[2].S == r.S);
+    CHECK(r.jacobian_evaluations == r.rhs_evaluations);
+}
+
+TEST_CASE("what sensitivities refuse: switching surfaces, constrained initial values, parameters in constraints",
+          "[sensitivities]") {
+    using F = eomgen::models::friction_door::Model<double>;
+    CHECK_THROWS_WITH((eomgen::integrate_sensitivities<F, eomgen::Dop853>(F::Params{}, 0.0, F::default_state(), 1.0,
+                                                                          every_column<F>(false))),
+                      Catch::Contains("switching surfaces") && Catch::Contains("saltation"));
+    using C = eomgen::models::pendulum_cartesian::Model<double>;
+    C::State x0 = C::default_state();
+    CHECK_THROWS_WITH((eomgen::integrate_sensitivities<C, eomgen::Dop853>(
+                          C::Params{}, 0.0, x0, 1.0, {eomgen::parameter_column(C::param_names, "l")})),
+                      Catch::Contains("the constraints of pendulum_cartesian depend on"));
+    CHECK_THROWS_WITH((eomgen::integrate_sensitivities<C, eomgen::Dop853>(
+                          C::Params{}, 0.0, x0, 1.0, {eomgen::initial_column(C::state_names, "x")})),
+                      Catch::Contains("initial value of x") && Catch::Contains("leaves the constraints"));
+    CHECK_THROWS_AS(eomgen::parameter_column(C::param_names, "mass"), std::invalid_argument);
+}
