@@ -10,6 +10,7 @@ source scripts/ccache_env.sh
 packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2 libtomlplusplus-dev
           libcli11-dev libfmt-dev libbenchmark-dev libboost-dev gnuplot-nox
           libudunits2-dev              # the units of the model files' values (generator/model/units.hpp)
+          libceres-dev                 # optional for eomgen: eomgen fit, least squares (generator/cli/fit_solve.hpp)
           ccache                       # optional: recompiles only what changed, across checkouts (CMakeLists.txt)
           dpkg-dev file   # cpack -G DEB (dpkg-shlibdeps, and file to find the binaries)
           libopenmpi-dev openmpi-bin   # optional for eomgen: ensembles across MPI ranks (mpirun), and its test

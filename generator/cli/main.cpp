@@ -1,5 +1,6 @@
 /** @file main.cpp  The `eomgen` command: generate C++ from model files, show the derived mechanics. */
 #include "checker/check_command.hpp"
+#include "cli/fit_command.hpp"
 #include "cli/latex_equations.hpp"
 #include "cli/modes_command.hpp"
 #include "cli/report_command.hpp"
@@ -330,6 +331,13 @@ int main(int argc, char** argv) {
     eomgen::cli::RunCommand run(app);               // `eomgen run MODEL.toml`, `eomgen cache clear`
     eomgen::cli::ReportCommand report(app);         // `eomgen report MODEL.toml`
     const eomgen::cli::ModesCommand modes(app);     // `eomgen modes MODEL.toml`
+#if EOMGEN_HAVE_CERES
+    eomgen::cli::FitCommand fit(app);               // `eomgen fit MODEL.toml DATA.csv --free NAME`
+#else
+    // Without Ceres: the command is known, and says why it cannot run.
+    CLI::App* fit_missing = app.add_subcommand("fit", "Fit a model file to measured data (needs Ceres: libceres-dev)");
+    fit_missing->allow_extras();
+#endif
 
     // A mistyped command: name it, with the closest one (CLI11 would say only "A subcommand is required").
     if (argc >= 2 && argv[1][0] != '-') {
@@ -390,6 +398,14 @@ int main(int argc, char** argv) {
         if (run.selected()) return run.run();
         if (report.selected()) return report.run();
         if (modes.selected()) return modes.run();
+#if EOMGEN_HAVE_CERES
+        if (fit.selected()) return fit.run();
+#else
+        if (fit_missing->parsed()) {
+            std::cerr << "eomgen fit: this eomgen was built without Ceres (install libceres-dev and build again)\n";
+            return kExitUsage;
+        }
+#endif
     } catch (const eomgen::ModelError& e) {
         std::cerr << e.what() << "\n";
         return kExitModelError;

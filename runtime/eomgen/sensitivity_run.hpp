@@ -70,6 +70,33 @@ std::vector<SensitivityLabel> sensitivity_labels(const Options& o) {
     return labels;
 }
 
+/// integrate_sensitivities (or its radau5 form) by o's method, tolerances and steps; the method must be one with
+/// error control (dopri5, dop853, adams, radau5: UsageError otherwise).
+template <class M>
+SensitivityResult integrate_sensitivities_by(const Options& o, const typename M::Params& params,
+                                             const typename M::State& x0, double t_end,
+                                             const std::vector<SensitivityColumn>& columns,
+                                             const std::vector<SensitivityEvent>& events,
+                                             const std::vector<double>& sample_times) {
+    if (o.method == "radau5") {
+        Radau5Options<double> opt;
+        opt.rtol = o.rtol;
+        opt.atol = o.atol;
+        opt.max_steps = o.max_steps;
+        return integrate_sensitivities_radau5<M>(params, 0.0, x0, t_end, columns, opt, events, sample_times);
+    }
+    SensitivityResult r;
+    if (!with_adaptive_method(o.method, [&](auto method) {
+            using Method = decltype(method);
+            r = integrate_sensitivities<M, Method::template type>(params, 0.0, x0, t_end, columns,
+                                                                  Method::template options<Eigen::VectorXd>(o), events,
+                                                                  sample_times);
+        }))
+        throw UsageError("sensitivities need a method with error control (dopri5, dop853, adams or radau5), not " +
+                         o.method);
+    return r;
+}
+
 /// One run with sensitivities: what run() does, with S beside the state. Returns kExitOk; throws as run() does.
 template <class M>
 int run_sensitivities(const Options& o) {
@@ -106,20 +133,7 @@ int run_sensitivities(const Options& o) {
     print_heading<M>(params, std::cout);
     SensitivityResult r;
     try {
-        if (o.method == "radau5") {
-            Radau5Options<double> opt;
-            opt.rtol = o.rtol;
-            opt.atol = o.atol;
-            opt.max_steps = o.max_steps;
-            r = integrate_sensitivities_radau5<M>(params, 0.0, x0, o.t_end, columns, opt, events, sample_times);
-        } else {
-            with_adaptive_method(o.method, [&](auto method) {
-                using Method = decltype(method);
-                r = integrate_sensitivities<M, Method::template type>(params, 0.0, x0, o.t_end, columns,
-                                                                      Method::template options<Eigen::VectorXd>(o),
-                                                                      events, sample_times);
-            });
-        }
+        r = integrate_sensitivities_by<M>(o, params, x0, o.t_end, columns, events, sample_times);
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--sensitivities: ") + e.what());
     }

@@ -1,0 +1,312 @@
+/** @file fit_command.cpp  `eomgen fit`: model file and measured data → estimates, standard errors, correlations. */
+#include "cli/fit_command.hpp"
+
+#include "cli/compiled_model.hpp"
+#include "cli/fit_data.hpp"
+#include "cli/fit_solve.hpp"
+#include "cli/model_unit_values.hpp"
+#include "cli/process.hpp"
+#include "cli/run_command.hpp"
+#include "eomgen/column_units.hpp"
+#include "mechanics/lagrangian.hpp"
+#include "model/model_file.hpp"
+#include "output/atomic_file.hpp"
+#include "text/escape.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace eomgen::cli {
+namespace fs = std::filesystem;
+
+namespace {
+
+using output::write_atomically;
+using text::csv_field;
+using text::json_string;
+
+constexpr int kExitNotConverged = 5;
+
+/// "1.2345 m" with 10 significant digits; "-" for NaN.
+std::string value(double v, const std::string& unit = "") {
+    if (std::isnan(v)) return "-";
+    std::ostringstream os;
+    os << std::setprecision(10) << v;
+    return os.str() + (unit.empty() ? "" : " " + unit);
+}
+
+std::string json_number(double v) {
+    if (!std::isfinite(v)) return "null";
+    std::ostringstream os;
+    os << std::setprecision(17) << v;
+    return os.str();
+}
+
+std::string unit_of(const FreeValue& f) {
+    return f.column.kind == SensitivityColumn::Kind::Parameter ? param_unit<TableModel>(std::size_t(f.column.index))
+                                                               : state_unit<TableModel>(std::size_t(f.column.index));
+}
+
+/// "dm/m = +0.707, dg/g = -0.707": a direction of relative changes that the data do not see.
+std::string direction(const std::vector<FreeValue>& free, const Eigen::VectorXd& v) {
+    std::ostringstream os;
+    os << std::showpos << std::setprecision(3);
+    bool first = true;
+    for (std::size_t i = 0; i < free.size(); ++i) {
+        if (std::abs(v(Eigen::Index(i))) <= 1e-3) continue;
+        os << (first ? "" : ", ") << "d" << free[i].name << "/" << free[i].name << " = " << v(Eigen::Index(i));
+        first = false;
+    }
+    return os.str();
+}
+
+/// "model:   damped_pendulum (…)" and the parameters held fixed, "fixed:   m = 1 kg, g = 9.81 m/s^2".
+void print_heading(const TableModel::Params& params, const std::vector<FreeValue>& free, std::ostream& os) {
+    const std::string title = TableModel::title, source = TableModel::source;
+    const std::string about = title + (!title.empty() && !source.empty() ? "; " : "") + source;
+    os << "model:   " << TableModel::name << (about.empty() ? "" : " (" + about + ")") << "\n";
+    const auto values = TableModel::param_values(params);
+    std::string fixed;
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        bool is_free = false;
+        for (const FreeValue& f : free)
+            is_free = is_free || (f.column.kind == SensitivityColumn::Kind::Parameter && f.column.index == int(i));
+        if (is_free) continue;
+        const std::string unit = param_unit<TableModel>(i);
+        fixed += (fixed.empty() ? "" : ", ") + std::string(TableModel::param_names[i]) + " = " + value(values[i], unit);
+    }
+    os << "fixed:   " << (fixed.empty() ? "(every parameter is free)" : fixed) << "\n";
+}
+
+void print_text(const std::vector<FreeValue>& free, const MeasuredSeries& data, const FitOutcome& r,
+                const sim::Options& o, const std::string& jacobian, std::ostream& os) {
+    std::string columns;
+    for (const auto& n : data.names) columns += (columns.empty() ? "" : ", ") + n;
+    os << "data:    " << data.path << ": " << data.t.size() << " times x " << data.names.size() << " column"
+       << (data.names.size() == 1 ? "" : "s") << " (" << columns << "), " << r.residuals << " measurements\n";
+    os << "solver:  Levenberg-Marquardt (Ceres), " << r.iterations << " iterations (" << r.trajectories
+       << " integrations, " << std::setprecision(3) << r.solve_seconds << " s), "
+       << (r.converged ? "converged" : "NOT converged") << ": " << r.termination << "\n";
+    os << "         the Jacobian from " << (jacobian == "differences" ? "central differences of trajectories" : "the sensitivities")
+       << ", " << o.method << " at rtol " << o.rtol << ", atol " << o.atol
+       << "\n";
+    os << "estimates (+- standard error, from J at the solution and the residuals' variance):\n";
+    for (std::size_t i = 0; i < free.size(); ++i) {
+        const std::string unit = unit_of(free[i]);
+        os << "  " << free[i].name << " = " << value(r.estimate[i], unit);
+        if (std::isnan(r.standard_error[i]))
+            os << " +- (not determined by the data)";
+        else
+            os << " +- " << value(r.standard_error[i], unit);
+        os << "   (start " << value(free[i].start) << ")\n";
+    }
+    os << "residuals: RMS " << value(r.rms) << ", s = " << value(r.residual_sigma) << " with "
+       << r.residuals - free.size() << " degrees of freedom\n";
+    if (free.size() > 1) {
+        os << "correlation:\n" << std::setw(14) << "";
+        for (const auto& f : free) os << std::setw(12) << f.name;
+        os << "\n";
+        for (std::size_t a = 0; a < free.size(); ++a) {
+            os << "  " << std::setw(12) << std::left << free[a].name << std::right;
+            for (std::size_t b = 0; b < free.size(); ++b) {
+                const double c = r.correlation(Eigen::Index(a), Eigen::Index(b));
+                std::ostringstream cell;
+                if (std::isnan(c))
+                    cell << "-";
+                else
+                    cell << std::fixed << std::setprecision(4) << c;
+                os << std::setw(12) << cell.str();
+            }
+            os << "\n";
+        }
+    }
+    for (const Eigen::VectorXd& v : r.undetermined)
+        os << "not determined: changing the values along " << direction(free, v)
+           << " (relative changes) leaves every residual unchanged to first order: the data fix only a combination "
+              "of them; fix one with --set, or add data that separate them\n";
+}
+
+void print_json(const std::vector<FreeValue>& free, const MeasuredSeries& data, const FitOutcome& r,
+                std::ostream& os) {
+    os << "{\n  \"model\": " << json_string(TableModel::name) << ",\n  \"data\": " << json_string(data.path)
+       << ",\n  \"measurements\": " << r.residuals << ",\n  \"converged\": " << (r.converged ? "true" : "false")
+       << ",\n  \"iterations\": " << r.iterations << ",\n  \"integrations\": " << r.trajectories
+       << ",\n  \"solve_seconds\": " << json_number(r.solve_seconds) << ",\n  \"termination\": " << json_string(r.termination)
+       << ",\n  \"estimates\": [";
+    for (std::size_t i = 0; i < free.size(); ++i)
+        os << (i ? "," : "") << "\n    {\"name\": " << json_string(free[i].name)
+           << ", \"value\": " << json_number(r.estimate[i]) << ", \"standard_error\": " << json_number(r.standard_error[i])
+           << ", \"unit\": " << json_string(unit_of(free[i])) << ", \"start\": " << json_number(free[i].start) << "}";
+    os << "\n  ],\n  \"correlation\": [";
+    for (std::size_t a = 0; a < free.size(); ++a) {
+        os << (a ? ", " : "") << "[";
+        for (std::size_t b = 0; b < free.size(); ++b)
+            os << (b ? ", " : "") << json_number(r.correlation(Eigen::Index(a), Eigen::Index(b)));
+        os << "]";
+    }
+    os << "],\n  \"rms\": " << json_number(r.rms) << ",\n  \"residual_sigma\": " << json_number(r.residual_sigma)
+       << ",\n  \"undetermined\": [";
+    for (std::size_t u = 0; u < r.undetermined.size(); ++u) {
+        os << (u ? ", " : "") << "{";
+        bool first = true;
+        for (std::size_t i = 0; i < free.size(); ++i) {
+            os << (first ? "" : ", ") << json_string(free[i].name) << ": " << json_number(r.undetermined[u](Eigen::Index(i)));
+            first = false;
+        }
+        os << "}";
+    }
+    os << "]\n}\n";
+}
+
+/// t, then per measured column the data, the fitted model and the residual (model − data).
+std::string fitted_csv(const MeasuredSeries& data, const FitOutcome& r) {
+    std::ostringstream os;
+    os << std::setprecision(17) << with_unit("t", time_unit<TableModel>());
+    for (std::size_t c = 0; c < data.names.size(); ++c) {
+        const std::string unit = state_unit<TableModel>(std::size_t(data.state_index[c]));
+        for (const char* suffix : {"", "_model", "_residual"})
+            os << "," << csv_field(with_unit(data.names[c] + suffix, unit));
+    }
+    os << "\n";
+    for (Eigen::Index j = 0; j < data.y.rows(); ++j) {
+        os << data.t[std::size_t(j)];
+        for (Eigen::Index c = 0; c < data.y.cols(); ++c)
+            os << "," << data.y(j, c) << "," << r.model(j, c) << "," << r.model(j, c) - data.y(j, c);
+        os << "\n";
+    }
+    return os.str();
+}
+
+}  // namespace
+
+FitCommand::FitCommand(CLI::App& app) {
+    fit_ = app.add_subcommand("fit", "Fit parameters and initial values of a model file to measured time series "
+                                     "(least squares, Ceres; standard errors and correlations)");
+    fit_->add_option("model", model_path_, "Model file (.toml)")->required()->check(CLI::ExistingFile);
+    fit_->add_option("data", data_path_, "CSV: t, then measured states (coordinates or NAME_dot) in their SI units")
+        ->required()
+        ->check(CLI::ExistingFile);
+    fit_->add_option("--free", free_, "An unknown: NAME[=start][:lo:hi] (a parameter) or x0:STATE[=start][:lo:hi], "
+                                      "in SI; repeatable")
+        ->required();
+    fit_->add_option("--weight", weights_, "COLUMN=W: the measured column's residuals times W (default 1); repeatable");
+    fit_->add_option("--format", format_, "text or json")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
+    fit_->add_option("--csv", csv_, "Write t, each measured column, the fitted model and the residual to this CSV");
+    fit_->add_option("--max-iterations", max_iterations_, "Largest number of Levenberg-Marquardt iterations")
+        ->capture_default_str();
+    fit_->add_option("--set", options_.set, "Parameter value, NAME=VALUE (the fixed values; repeatable)");
+    fit_->add_option("--init", options_.init, "Initial state, NAME=VALUE (repeatable)");
+    fit_->add_option("--method", options_.method, "dopri5, dop853, adams or radau5")->capture_default_str();
+    fit_->add_option("--rtol", options_.rtol, "Relative tolerance of the integrations")->capture_default_str();
+    fit_->add_option("--atol", options_.atol, "Absolute tolerance of the integrations")->capture_default_str();
+    fit_->add_option("--max-steps", options_.max_steps, "Largest number of steps of one integration")->capture_default_str();
+    fit_->add_option("--jacobian", jacobian_,
+                     "sensitivities (exact, integrated with the trajectory) or differences (Ceres' central differences "
+                     "of whole trajectories: for comparison)")
+        ->check(CLI::IsMember({"sensitivities", "differences"}))
+        ->capture_default_str();
+    fit_->add_flag("--no-cache", no_cache_, "Compile afresh and keep nothing in the cache");
+    fit_->add_flag("--quiet", quiet_, "No progress messages on stderr");
+}
+
+bool FitCommand::selected() const { return fit_->parsed(); }
+
+int FitCommand::run() {
+    try {
+        return fit_model();
+    } catch (const CompileError& e) {
+        std::cerr << "eomgen fit: " << e.what() << "\n  command: " << e.command << "\n  log: " << e.log << "\n";
+        return kExitCompiler;
+    } catch (const CacheError& e) {
+        std::cerr << "eomgen fit: " << e.what() << "\n";
+        return 3;
+    } catch (const TempDirError& e) {
+        std::cerr << "eomgen fit: " << e.what() << "\n";
+        return 3;
+    } catch (const FitDataError& e) {
+        std::cerr << "eomgen fit: " << e.what() << "\n";
+        return 2;
+    } catch (const sim::UsageError& e) {
+        std::cerr << "eomgen fit: " << e.what() << "\n";
+        return 2;
+    } catch (const SimulationError& e) {
+        std::cerr << "eomgen fit: simulation failed: " << e.what() << "\n";
+        return 2;
+    }
+}
+
+int FitCommand::fit_model() {
+    const bool show_progress = !quiet_ && ::isatty(STDERR_FILENO);
+    auto progress = [&](const std::string& what) {
+        if (show_progress) std::fprintf(stderr, "eomgen fit: %s\n", what.c_str());
+    };
+    if (!csv_.empty())
+        if (const std::string problem = sim::output_path_problem("--csv", csv_); !problem.empty()) {
+            std::cerr << "eomgen fit: " << problem << "\n";
+            return 3;
+        }
+    std::map<std::string, double> weights;
+    for (const std::string& w : weights_) {
+        const auto [name, v] = sim::parse_assignment(w, "--weight");
+        weights[name] = v;
+    }
+    const std::string text = read_model_file(model_path_);
+    const Model model = parse_model(text, model_path_);
+    sim::Options o = options_;
+    o.model = model.name;
+    if (!options_in_si(declared_units(model), o.set, o.init, "eomgen fit")) return 2;
+    auto header = [&] {
+        progress("deriving " + model_path_);
+        const Equations eq = derive_equations(model);
+        for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
+        return header_to_compile(model, eq, fs::path(model_path_).filename().string(), true);
+    };
+    CompileRequest request{text, model.name, header, !no_cache_, progress};
+    request.jacobian = true;
+    const CompiledModel compiled = compile_model(request);
+    TableModel::bind(*compiled.table);
+
+    TableModel::Params params;
+    TableModel::State x0 = TableModel::default_state();
+    sim::apply_settings<TableModel>(o, params, x0);
+    std::vector<std::string> state_names, state_units;
+    for (std::size_t i = 0; i < TableModel::state_names.size(); ++i) {
+        state_names.push_back(TableModel::state_names[i]);
+        state_units.push_back(state_unit<TableModel>(i));
+    }
+    const MeasuredSeries data = read_measured(data_path_, state_names, state_units);
+    const std::vector<FreeValue> free = parse_free(free_, params, x0);
+    progress("fitting");
+    const FitOutcome r = fit(o, params, x0, free, data, weights, max_iterations_,
+                             jacobian_ == "differences" ? FitJacobian::Differences : FitJacobian::Sensitivities);
+
+    std::ostringstream report;
+    if (format_ == "json") {
+        print_json(free, data, r, report);
+    } else {
+        print_heading(params, free, report);
+        print_text(free, data, r, o, jacobian_, report);
+    }
+    if (!csv_.empty()) {
+        try {
+            write_atomically(csv_, fitted_csv(data, r));
+        } catch (const std::exception& e) {
+            std::cerr << "eomgen fit: cannot write " << csv_ << ": " << e.what() << "\n";
+            return 3;
+        }
+        if (format_ == "text") report << "csv:     " << csv_ << " (data, fitted model, residuals)\n";
+    }
+    std::cout << report.str();
+    return r.converged ? 0 : kExitNotConverged;
+}
+
+}  // namespace eomgen::cli

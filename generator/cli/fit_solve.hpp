@@ -1,0 +1,68 @@
+/**
+ * @file fit_solve.hpp  The least-squares problem of `eomgen fit`: the free parameters and initial values that make
+ * the model's trajectory (the bound eomgen::TableModel) pass closest to a measured series, weighted, solved by
+ * Ceres' Levenberg–Marquardt with the exact Jacobian from the forward sensitivities (sensitivities.hpp); then the
+ * standard errors and correlations from J at the solution scaled by the residuals' variance, and the directions
+ * the data do not determine (a rank-deficient J).
+ */
+#pragma once
+
+#include "cli/fit_data.hpp"
+#include "eomgen/model_table.hpp"
+#include "eomgen/sensitivities.hpp"
+#include "eomgen/simulation_options.hpp"
+
+#include <Eigen/Core>
+
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace eomgen::cli {
+
+/// One unknown of the fit: a parameter or an initial value, its start and its bounds.
+struct FreeValue {
+    std::string name;  ///< as given: "l", "x0:phi"
+    SensitivityColumn column;
+    double start = 0;
+    double lower = -std::numeric_limits<double>::infinity(), upper = std::numeric_limits<double>::infinity();
+};
+
+/// What the fit found.
+struct FitOutcome {
+    std::vector<double> estimate;
+    std::vector<double> standard_error;  ///< NaN for a value the data do not determine
+    Eigen::MatrixXd correlation;         ///< NaN rows and columns where not determined
+    /// Directions of the unknowns (in relative changes δθᵢ/θᵢ, unit length) that leave the residuals unchanged to
+    /// first order: one per missing rank of J.
+    std::vector<Eigen::VectorXd> undetermined;
+    Eigen::VectorXd singular_values;  ///< of J with its columns scaled by the estimates (relative sensitivities)
+    double solve_seconds = 0;        ///< Ceres' time, the integrations included
+    double rms = 0;                   ///< sqrt(Σ r² / n) of the weighted residuals at the solution
+    double residual_sigma = 0;        ///< sqrt(Σ r² / (n − k)): the residuals' standard deviation
+    std::size_t residuals = 0, iterations = 0;
+    std::size_t trajectories = 0;  ///< the solver's integrations (with sensitivities, or without for differences)
+    bool converged = false;
+    std::string termination;  ///< Ceres' message
+    Eigen::MatrixXd model;    ///< the fitted trajectory at the data's times, the measured columns
+};
+
+/// The unknowns given as --free NAME[=start][:lo:hi] (UsageError for an unknown name, a bad number, lo >= hi, a start
+/// outside the bounds); the start defaults to the model's value (after --set and --init).
+std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const TableModel::Params& params,
+                                  const TableModel::State& x0);
+
+/// Where the solver's Jacobian comes from: the sensitivities (exact), or central differences of whole trajectories
+/// (Ceres' numeric differentiation; for comparison, docs/benchmarks.md section 10).
+enum class FitJacobian { Sensitivities, Differences };
+
+/// Fits the bound TableModel to `data` with the run's options (method, tolerances; params and x0 after --set and
+/// --init), each column weighted by weights[name] (default 1). Throws sim::UsageError for a problem with more unknowns
+/// than residuals or a method without error control, and what integrate_sensitivities refuses.
+FitOutcome fit(const sim::Options& options, const TableModel::Params& params, const TableModel::State& x0,
+               const std::vector<FreeValue>& free, const MeasuredSeries& data,
+               const std::map<std::string, double>& weights, std::size_t max_iterations,
+               FitJacobian jacobian = FitJacobian::Sensitivities);
+
+}  // namespace eomgen::cli

@@ -1,0 +1,128 @@
+// `eomgen fit` as a user runs it: the worked example of docs/sensitivities.md (the damped pendulum's l and c from
+// 1,000 noisy samples, examples/fit/), the estimates within their standard errors of the values the data were made
+// with, a combination the data cannot separate, and the data and options a user gets wrong.
+#include "cli/eomgen_process.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <regex>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using namespace eomgen_test;
+
+namespace {
+
+const fs::path kWork = fs::path(EOMGEN_BINARY_DIR) / "tests" / "cli" / "work" / "fit";
+const std::string kModel = std::string(EOMGEN_SOURCE_DIR) + "/models/damped_pendulum.toml";
+const std::string kData = std::string(EOMGEN_SOURCE_DIR) + "/examples/fit/damped_pendulum_data.csv";
+
+Result eomgen(const std::vector<std::string>& args) { return run_eomgen(kWork, args); }
+
+/// The number after `"name": "NAME", "value": ` (or standard_error) in eomgen fit's JSON.
+double json_field(const std::string& json, const std::string& name, const std::string& field) {
+    const std::regex re("\"name\": \"" + name + "\", \"value\": ([-0-9.e+]+), \"standard_error\": ([-0-9.e+]+|null)");
+    std::smatch m;
+    REQUIRE(std::regex_search(json, m, re));
+    const std::string text = field == "value" ? m[1].str() : m[2].str();
+    return text == "null" ? std::nan("") : std::stod(text);
+}
+
+}  // namespace
+
+TEST_CASE("eomgen fit recovers the damped pendulum's l and c within their standard errors", "[fit]") {
+    // examples/fit/make_data.py made the data with l = 1 m, c = 0.2 N m s and noise of 0.01 rad.
+    const fs::path csv = kWork / "fitted.csv";
+    const Result f = eomgen({"fit", kModel, kData, "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2", "--format",
+                             "json", "--csv", csv.string(), "--quiet"});
+    INFO(f.output);
+    REQUIRE(f.code == 0);
+    CHECK(f.output.find("\"converged\": true") != std::string::npos);
+    const double l = json_field(f.output, "l", "value"), sl = json_field(f.output, "l", "standard_error");
+    const double c = json_field(f.output, "c", "value"), sc = json_field(f.output, "c", "standard_error");
+    // Noise of 0.01 rad over 1,000 samples: standard errors of order 1e-4; the truth within 3 of them.
+    CHECK(sl > 2e-5);
+    CHECK(sl < 1e-3);
+    CHECK(sc > 5e-5);
+    CHECK(sc < 3e-3);
+    CHECK(std::abs(l - 1.0) < 3 * sl);
+    CHECK(std::abs(c - 0.2) < 3 * sc);
+    // The residuals' RMS is the noise's 0.01.
+    const std::regex rms("\"rms\": ([0-9.e-]+)");
+    std::smatch m;
+    REQUIRE(std::regex_search(f.output, m, rms));
+    CHECK(std::stod(m[1].str()) == Approx(0.01).epsilon(0.05));
+
+    // The CSV: t, the data, the fitted model and the residual, the last = model − data.
+    const auto rows = read_csv(csv);
+    REQUIRE(rows.size() == 1001);
+    CHECK(rows[0] == std::vector<std::string>{"t [s]", "phi [rad]", "phi_model [rad]", "phi_residual [rad]"});
+    const auto& row = rows[500];
+    CHECK(std::stod(row[3]) == Approx(std::stod(row[2]) - std::stod(row[1])).margin(1e-15));
+
+    // The same fit in text, with the initial angle free as well.
+    const Result t = eomgen({"fit", kModel, kData, "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2", "--free",
+                             "x0:phi=0.9", "--quiet"});
+    INFO(t.output);
+    REQUIRE(t.code == 0);
+    CHECK(t.output.find("fixed:   m = 1 kg, g = 9.81 m/s^2") != std::string::npos);
+    CHECK(std::regex_search(t.output, std::regex("x0:phi = 1\\.00[0-9]* rad \\+- 0\\.00[0-9]* rad")));
+    CHECK(t.output.find("correlation:") != std::string::npos);
+}
+
+TEST_CASE("eomgen fit says which combination the data do not determine", "[fit]") {
+    // phi'' + c/(m l^2) phi' + (g/l) sin phi = 0: with l, g and c free only g/l and c/l^2 are seen.
+    const Result f = eomgen({"fit", kModel, kData, "--free", "l", "--free", "g", "--free", "c", "--quiet"});
+    INFO(f.output);
+    REQUIRE(f.code == 0);
+    CHECK(f.output.find("l = ") != std::string::npos);
+    CHECK(f.output.find("+- (not determined by the data)") != std::string::npos);
+    CHECK(std::regex_search(f.output, std::regex("not determined: changing the values along dl/l = [+-]0\\.408, "
+                                                 "dg/g = [+-]0\\.408, dc/c = [+-]0\\.816")));
+    const Result j = eomgen({"fit", kModel, kData, "--free", "l", "--free", "g", "--free", "c", "--format", "json",
+                             "--quiet"});
+    CHECK(j.output.find("\"standard_error\": null") != std::string::npos);
+}
+
+TEST_CASE("eomgen fit: data and options that do not fit the model file", "[fit]") {
+    const auto data = [](const std::string& name, const std::string& text) {
+        return write_whole(kWork, name, text).string();
+    };
+    struct Case {
+        std::string data;
+        std::vector<std::string> options;
+        std::string message;
+    };
+    const std::vector<Case> cases{
+        {data("theta.csv", "t,theta\n0,1\n0.1,0.9\n"), {"--free", "l"}, "theta.csv:1:3: 'theta' is not a state of the model (its states: phi, phi_dot)"},
+        {data("order.csv", "t,phi\n0,1\n0.2,0.9\n0.1,0.8\n"), {"--free", "l"}, "order.csv:4:1: t = 0.1 does not come after"},
+        {data("nan.csv", "t,phi\n0,1\n0.1,nan\n0.2,0.8\n"), {"--free", "l"}, "nan.csv:3:5: 'nan' is not a finite number"},
+        {data("empty_cell.csv", "t,phi\n0,1\n0.1,\n"), {"--free", "l"}, "empty_cell.csv:3:5: '' is not a finite number"},
+        {data("unit.csv", "t,phi [deg]\n0,57\n0.1,50\n"), {"--free", "l"}, "unit.csv:1:3: phi is in rad (the unit eomgen run writes), not deg"},
+        {data("first.csv", "time,phi\n0,1\n"), {"--free", "l"}, "first.csv:1:1: the first column must be t"},
+        {data("negative.csv", "t,phi\n-1,1\n0,1\n"), {"--free", "l"}, "negative.csv:2:1: t < 0"},
+        {data("short.csv", "t,phi\n0,1\n"), {"--free", "l", "--free", "c"}, "1 measurements for 2 unknowns"},
+        {kData, {"--free", "ll"}, "has no parameter 'll'; did you mean 'l'?"},
+        {kData, {"--free", "l=2:3:1"}, "the lower bound must be below the upper"},
+        {kData, {"--free", "l=5:0.1:2"}, "is outside"},
+        {kData, {"--free", "l", "--weight", "theta=2"}, "no measured column 'theta'"},
+        {kData, {"--free", "l", "--method", "rk4"}, "needs a method with error control"},
+    };
+    for (const Case& c : cases) {
+        std::vector<std::string> args{"fit", kModel, c.data, "--quiet"};
+        args.insert(args.end(), c.options.begin(), c.options.end());
+        const Result r = eomgen(args);
+        INFO(r.output);
+        CHECK(r.code == 2);
+        CHECK(r.output.find(c.message) != std::string::npos);
+    }
+    // A model whose motion has switching surfaces cannot give sensitivities: said before anything is fitted.
+    const Result friction = eomgen({"fit", std::string(EOMGEN_SOURCE_DIR) + "/examples/friction_door.toml",
+                                    data("door.csv", "t,psi\n0,0\n0.5,-0.1\n1,-0.3\n"), "--free", "tau_f", "--quiet"});
+    INFO(friction.output);
+    CHECK(friction.code == 2);
+    CHECK(friction.output.find("switching surfaces") != std::string::npos);
+}
