@@ -36,11 +36,11 @@ using text::json_string;
 
 constexpr int kExitNotConverged = 5;
 
-/// "1.2345 m" with 10 significant digits; "-" for NaN.
-std::string value(double v, const std::string& unit = "") {
+/// "1.2345 m" with `digits` significant digits (10: an estimate; 3: its standard error); "-" for NaN.
+std::string value(double v, const std::string& unit = "", int digits = 10) {
     if (std::isnan(v)) return "-";
     std::ostringstream os;
-    os << std::setprecision(10) << v;
+    os << std::setprecision(digits) << v;
     return os.str() + (unit.empty() ? "" : " " + unit);
 }
 
@@ -106,10 +106,10 @@ void print_text(const std::vector<FreeValue>& free, const MeasuredSeries& data, 
         if (std::isnan(r.standard_error[i]))
             os << " +- (not determined by the data)";
         else
-            os << " +- " << value(r.standard_error[i], unit);
+            os << " +- " << value(r.standard_error[i], unit, 3);
         os << "   (start " << value(free[i].start) << ")\n";
     }
-    os << "residuals: RMS " << value(r.rms) << ", s = " << value(r.residual_sigma) << " with "
+    os << "residuals: RMS " << value(r.rms, "", 4) << ", s = " << value(r.residual_sigma, "", 4) << " with "
        << r.residuals - free.size() << " degrees of freedom\n";
     if (free.size() > 1) {
         os << "correlation:\n" << std::setw(14) << "";
