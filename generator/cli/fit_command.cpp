@@ -3,6 +3,7 @@
 
 #include "cli/compiled_model.hpp"
 #include "cli/fit_data.hpp"
+#include "cli/fit_plot.hpp"
 #include "cli/fit_solve.hpp"
 #include "cli/model_unit_values.hpp"
 #include "cli/process.hpp"
@@ -15,12 +16,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <unistd.h>
@@ -87,12 +90,17 @@ void print_heading(const TableModel::Params& params, const std::vector<FreeValue
     os << "fixed:   " << (fixed.empty() ? "(every parameter is free)" : fixed) << "\n";
 }
 
-void print_text(const std::vector<FreeValue>& free, const MeasuredSeries& data, const FitOutcome& r,
-                const sim::Options& o, const std::string& jacobian, std::ostream& os) {
-    std::string columns;
-    for (const auto& n : data.names) columns += (columns.empty() ? "" : ", ") + n;
-    os << "data:    " << data.path << ": " << data.t.size() << " times x " << data.names.size() << " column"
-       << (data.names.size() == 1 ? "" : "s") << " (" << columns << "), " << r.residuals << " measurements\n";
+void print_text(const std::vector<FreeValue>& free, const std::vector<MeasuredSeries>& experiments,
+                const FitOutcome& r, const sim::Options& o, const std::string& jacobian, std::ostream& os) {
+    for (std::size_t e = 0; e < experiments.size(); ++e) {
+        const MeasuredSeries& data = experiments[e];
+        std::string columns;
+        for (const auto& n : data.names) columns += (columns.empty() ? "" : ", ") + n;
+        os << "data:    " << (experiments.size() > 1 ? "[" + std::to_string(e + 1) + "] " : "") << data.path << ": "
+           << data.t.size() << " times x " << data.names.size() << " column" << (data.names.size() == 1 ? "" : "s")
+           << " (" << columns << ")\n";
+    }
+    os << "         " << r.residuals << " measurements, " << free.size() << " unknowns\n";
     os << "solver:  Levenberg-Marquardt (Ceres), " << r.iterations << " iterations (" << r.trajectories
        << " integrations, " << std::setprecision(3) << r.solve_seconds << " s), "
        << (r.converged ? "converged" : "NOT converged") << ": " << r.termination << "\n";
@@ -135,9 +143,11 @@ void print_text(const std::vector<FreeValue>& free, const MeasuredSeries& data, 
               "of them; fix one with --set, or add data that separate them\n";
 }
 
-void print_json(const std::vector<FreeValue>& free, const MeasuredSeries& data, const FitOutcome& r,
-                std::ostream& os) {
-    os << "{\n  \"model\": " << json_string(TableModel::name) << ",\n  \"data\": " << json_string(data.path)
+void print_json(const std::vector<FreeValue>& free, const std::vector<MeasuredSeries>& experiments,
+                const FitOutcome& r, std::ostream& os) {
+    std::string paths;
+    for (const MeasuredSeries& d : experiments) paths += (paths.empty() ? "" : ", ") + json_string(d.path);
+    os << "{\n  \"model\": " << json_string(TableModel::name) << ",\n  \"data\": [" << paths << "]"
        << ",\n  \"measurements\": " << r.residuals << ",\n  \"converged\": " << (r.converged ? "true" : "false")
        << ",\n  \"iterations\": " << r.iterations << ",\n  \"integrations\": " << r.trajectories
        << ",\n  \"solve_seconds\": " << json_number(r.solve_seconds) << ",\n  \"termination\": " << json_string(r.termination)
@@ -167,21 +177,37 @@ void print_json(const std::vector<FreeValue>& free, const MeasuredSeries& data, 
     os << "]\n}\n";
 }
 
-/// t, then per measured column the data, the fitted model and the residual (model − data).
-std::string fitted_csv(const MeasuredSeries& data, const FitOutcome& r) {
+/// t, then per measured column the data, the fitted model and the residual (model − data); with several
+/// experiments a first column `experiment` (1, 2, ...) and the columns of every experiment (empty where it has none).
+std::string fitted_csv(const std::vector<MeasuredSeries>& experiments, const FitOutcome& r) {
+    std::vector<std::pair<std::string, int>> columns;  // name, state index
+    for (const MeasuredSeries& d : experiments)
+        for (std::size_t c = 0; c < d.names.size(); ++c)
+            if (std::none_of(columns.begin(), columns.end(), [&](const auto& k) { return k.first == d.names[c]; }))
+                columns.emplace_back(d.names[c], d.state_index[c]);
+    const bool several = experiments.size() > 1;
     std::ostringstream os;
-    os << std::setprecision(17) << with_unit("t", time_unit<TableModel>());
-    for (std::size_t c = 0; c < data.names.size(); ++c) {
-        const std::string unit = state_unit<TableModel>(std::size_t(data.state_index[c]));
+    os << std::setprecision(17) << (several ? "experiment," : "") << with_unit("t", time_unit<TableModel>());
+    for (const auto& [name, state] : columns)
         for (const char* suffix : {"", "_model", "_residual"})
-            os << "," << csv_field(with_unit(data.names[c] + suffix, unit));
-    }
+            os << "," << csv_field(with_unit(name + suffix, state_unit<TableModel>(std::size_t(state))));
     os << "\n";
-    for (Eigen::Index j = 0; j < data.y.rows(); ++j) {
-        os << data.t[std::size_t(j)];
-        for (Eigen::Index c = 0; c < data.y.cols(); ++c)
-            os << "," << data.y(j, c) << "," << r.model(j, c) << "," << r.model(j, c) - data.y(j, c);
-        os << "\n";
+    for (std::size_t e = 0; e < experiments.size(); ++e) {
+        const MeasuredSeries& d = experiments[e];
+        for (Eigen::Index j = 0; j < d.y.rows(); ++j) {
+            if (several) os << e + 1 << ",";
+            os << d.t[std::size_t(j)];
+            for (const auto& column : columns) {
+                const auto it = std::find(d.names.begin(), d.names.end(), column.first);
+                if (it == d.names.end()) {
+                    os << ",,,";
+                    continue;
+                }
+                const Eigen::Index c = Eigen::Index(it - d.names.begin());
+                os << "," << d.y(j, c) << "," << r.model[e](j, c) << "," << r.model[e](j, c) - d.y(j, c);
+            }
+            os << "\n";
+        }
     }
     return os.str();
 }
@@ -192,7 +218,9 @@ FitCommand::FitCommand(CLI::App& app) {
     fit_ = app.add_subcommand("fit", "Fit parameters and initial values of a model file to measured time series "
                                      "(least squares, Ceres; standard errors and correlations)");
     fit_->add_option("model", model_path_, "Model file (.toml)")->required()->check(CLI::ExistingFile);
-    fit_->add_option("data", data_path_, "CSV: t, then measured states (coordinates or NAME_dot) in their SI units")
+    fit_->add_option("data", data_paths_,
+                     "CSV: t, then measured states (coordinates or NAME_dot) in their SI units; several files are "
+                     "several experiments (each with its own free initial values)")
         ->required()
         ->check(CLI::ExistingFile);
     fit_->add_option("--free", free_, "An unknown: NAME[=start][:lo:hi] (a parameter) or x0:STATE[=start][:lo:hi], "
@@ -201,6 +229,7 @@ FitCommand::FitCommand(CLI::App& app) {
     fit_->add_option("--weight", weights_, "COLUMN=W: the measured column's residuals times W (default 1); repeatable");
     fit_->add_option("--format", format_, "text or json")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
     fit_->add_option("--csv", csv_, "Write t, each measured column, the fitted model and the residual to this CSV");
+    fit_->add_option("--plot", plot_, "Plot the data against the fit and the residuals to FILE.png or FILE.svg (gnuplot)");
     fit_->add_option("--max-iterations", max_iterations_, "Largest number of Levenberg-Marquardt iterations")
         ->capture_default_str();
     fit_->add_option("--set", options_.set, "Parameter value, NAME=VALUE (the fixed values; repeatable)");
@@ -254,6 +283,11 @@ int FitCommand::fit_model() {
             std::cerr << "eomgen fit: " << problem << "\n";
             return 3;
         }
+    if (!plot_.empty())
+        if (const std::string problem = plot_format_problem(plot_); !problem.empty()) {
+            std::cerr << "eomgen fit: " << problem << "\n";
+            return 2;
+        }
     std::map<std::string, double> weights;
     for (const std::string& w : weights_) {
         const auto [name, v] = sim::parse_assignment(w, "--weight");
@@ -283,8 +317,9 @@ int FitCommand::fit_model() {
         state_names.push_back(TableModel::state_names[i]);
         state_units.push_back(state_unit<TableModel>(i));
     }
-    const MeasuredSeries data = read_measured(data_path_, state_names, state_units);
-    const std::vector<FreeValue> free = parse_free(free_, params, x0);
+    std::vector<MeasuredSeries> data;
+    for (const std::string& path : data_paths_) data.push_back(read_measured(path, state_names, state_units));
+    const std::vector<FreeValue> free = parse_free(free_, params, x0, data.size());
     progress("fitting");
     const FitOutcome r = fit(o, params, x0, free, data, weights, max_iterations_,
                              jacobian_ == "differences" ? FitJacobian::Differences : FitJacobian::Sensitivities);
@@ -296,14 +331,39 @@ int FitCommand::fit_model() {
         print_heading(params, free, report);
         print_text(free, data, r, o, jacobian_, report);
     }
-    if (!csv_.empty()) {
+    // The plot reads the fitted CSV: --csv's, or a private temporary one.
+    std::optional<TempDir> plot_dir;
+    std::string csv = csv_;
+    if (!plot_.empty() && csv.empty()) {
+        plot_dir.emplace(fs::temp_directory_path(), "eomgen-fit.");
+        csv = (plot_dir->path() / "fitted.csv").string();
+    }
+    if (!csv.empty()) {
         try {
-            write_atomically(csv_, fitted_csv(data, r));
+            write_atomically(csv, fitted_csv(data, r));
         } catch (const std::exception& e) {
-            std::cerr << "eomgen fit: cannot write " << csv_ << ": " << e.what() << "\n";
+            std::cerr << "eomgen fit: cannot write " << csv << ": " << e.what() << "\n";
             return 3;
         }
-        if (format_ == "text") report << "csv:     " << csv_ << " (data, fitted model, residuals)\n";
+        if (format_ == "text" && !csv_.empty()) report << "csv:     " << csv_ << " (data, fitted model, residuals)\n";
+    }
+    if (!plot_.empty()) {
+        FitPlotRequest p{csv, plot_, model.title.empty() ? model.name : model.title, {}, data.size(),
+                         time_unit<TableModel>()};
+        std::vector<std::string> seen;
+        for (const MeasuredSeries& d : data)
+            for (std::size_t c = 0; c < d.names.size(); ++c)
+                if (std::find(seen.begin(), seen.end(), d.names[c]) == seen.end()) {
+                    seen.push_back(d.names[c]);
+                    p.columns.push_back({d.names[c], state_unit<TableModel>(std::size_t(d.state_index[c]))});
+                }
+        try {
+            plot_fit(p);
+        } catch (const std::exception& e) {
+            std::cerr << "eomgen fit: " << e.what() << "\n";
+            return 3;
+        }
+        if (format_ == "text") report << "plot:    " << plot_ << "\n";
     }
     std::cout << report.str();
     return r.converged ? 0 : kExitNotConverged;

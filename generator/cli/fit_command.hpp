@@ -15,10 +15,12 @@ namespace eomgen::cli {
 /**
  * Registers `fit` on the `eomgen` command line:
  *
- *     eomgen fit MODEL.toml DATA.csv --free NAME[=start][:lo:hi] ... [--weight COLUMN=W ...] [--format text|json]
- *                [--csv FILE] [--max-iterations N] [--set ...] [--init ...] [--method M] [--rtol R] [--atol A]
+ *     eomgen fit MODEL.toml DATA.csv [DATA2.csv ...] --free NAME[=start][:lo:hi] ... [--weight COLUMN=W ...] [--format text|json]
+ *                [--csv FILE] [--plot FILE.png|FILE.svg] [--max-iterations N] [--set ...] [--init ...] [--method M] [--rtol R] [--atol A]
  *                [--max-steps N] [--jacobian sensitivities|differences] [--no-cache] [--quiet]
  *
+ * Each data file is one experiment: the same parameters, the same initial state except the initial values freed
+ * with --free x0:STATE, which are fitted per experiment.
  * run() compiles the model with its Jacobians (as `eomgen run --sensitivities`), reads the data (fit_data.hpp), fits
  * (fit_solve.hpp) and prints the estimates with their standard errors, the correlations, the residuals' RMS and
  * the directions the data do not determine. Returns 0; 1 for a model error; 2 for a bad option, data that do not
@@ -34,8 +36,8 @@ class FitCommand {
   private:
     int fit_model();
     CLI::App* fit_ = nullptr;
-    std::string model_path_, data_path_, format_ = "text", csv_, jacobian_ = "sensitivities";
-    std::vector<std::string> free_, weights_;
+    std::string model_path_, format_ = "text", csv_, plot_, jacobian_ = "sensitivities";
+    std::vector<std::string> data_paths_, free_, weights_;
     eomgen::sim::Options options_;
     std::size_t max_iterations_ = 100;
     bool no_cache_ = false, quiet_ = false;

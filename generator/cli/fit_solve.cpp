@@ -31,17 +31,6 @@ double number(const std::string& text, const std::string& spec) {
     }
 }
 
-/// The unknowns θ applied to the run's parameters and initial state.
-void apply(const std::vector<FreeValue>& free, const double* theta, TableModel::Params& p, TableModel::State& x0) {
-    for (std::size_t k = 0; k < free.size(); ++k) {
-        const SensitivityColumn& c = free[k].column;
-        if (c.kind == SensitivityColumn::Kind::Parameter)
-            TableModel::set_param(p, TableModel::param_names[std::size_t(c.index)], theta[k]);
-        else
-            x0(c.index) = theta[k];
-    }
-}
-
 /// The trajectory and its sensitivities at the data's times, by the run's method; false (with the message) when the
 /// integration fails at these values (Ceres then tries a shorter step).
 bool trajectory(const sim::Options& o, const TableModel::Params& p, const TableModel::State& x0,
@@ -56,8 +45,8 @@ bool trajectory(const sim::Options& o, const TableModel::Params& p, const TableM
     return r.samples.size() == times.size();
 }
 
-/// What both costs of the series hold: the run's options and fixed values, the unknowns, the data, the weights, and
-/// the count of integrations.
+/// What both costs of one experiment hold: the run's options and fixed values, every unknown and which of them
+/// this experiment sees, its data and weights, and the count of integrations.
 struct Series {
     const sim::Options& o;
     const TableModel::Params& p;
@@ -66,21 +55,37 @@ struct Series {
     const MeasuredSeries& data;
     Eigen::VectorXd w;
     std::size_t* count;
+    std::vector<std::size_t> mine;  ///< indices into `free`: the parameters and this experiment's initial values
+
+    Series(const sim::Options& o, const TableModel::Params& p, const TableModel::State& x0,
+           const std::vector<FreeValue>& free, const MeasuredSeries& data, Eigen::VectorXd w, std::size_t* count,
+           int experiment)
+        : o(o), p(p), x0(x0), free(free), data(data), w(std::move(w)), count(count) {
+        for (std::size_t i = 0; i < free.size(); ++i)
+            if (free[i].experiment < 0 || free[i].experiment == experiment) mine.push_back(i);
+    }
 
     /// The parameters and initial state at the unknowns θ, counting one integration.
     void at(const double* theta, TableModel::Params& params, TableModel::State& start) const {
         params = p;
         start = x0;
-        apply(free, theta, params, start);
+        for (std::size_t i : mine) {
+            const SensitivityColumn& c = free[i].column;
+            if (c.kind == SensitivityColumn::Kind::Parameter)
+                TableModel::set_param(params, TableModel::param_names[std::size_t(c.index)], theta[i]);
+            else
+                start(c.index) = theta[i];
+        }
         ++*count;
     }
 };
 
-/// r = w (x(t_j) − y_j) over the samples and measured columns, J = w S: Ceres' cost of the whole series.
+/// r = w (x(t_j) − y_j) over one experiment's samples and measured columns, J = w S in the columns of its unknowns
+/// (0 in the other experiments' initial values): Ceres' cost of one whole series.
 class SeriesCost : public ceres::CostFunction {
   public:
     explicit SeriesCost(Series s) : s_(std::move(s)) {
-        for (const FreeValue& f : s_.free) columns_.push_back(f.column);
+        for (std::size_t i : s_.mine) columns_.push_back(s_.free[i].column);
         set_num_residuals(int(s_.data.y.size()));
         mutable_parameter_block_sizes()->push_back(int(s_.free.size()));
     }
@@ -89,20 +94,21 @@ class SeriesCost : public ceres::CostFunction {
         TableModel::Params p;
         TableModel::State x0;
         s_.at(parameters[0], p, x0);
-        const sim::Options& o_ = s_.o;
-        const MeasuredSeries& data_ = s_.data;
-        const Eigen::VectorXd& w_ = s_.w;
+        const MeasuredSeries& data = s_.data;
         SensitivityResult r;
-        if (!trajectory(o_, p, x0, columns_, data_.t, r, last_failure_)) return false;
-        const Eigen::Index m = data_.y.cols(), k = Eigen::Index(s_.free.size());
-        for (Eigen::Index j = 0; j < data_.y.rows(); ++j)
+        if (!trajectory(s_.o, p, x0, columns_, data.t, r, last_failure_)) return false;
+        const Eigen::Index m = data.y.cols(), k = Eigen::Index(s_.free.size());
+        for (Eigen::Index j = 0; j < data.y.rows(); ++j)
             for (Eigen::Index c = 0; c < m; ++c) {
-                const int s = data_.state_index[std::size_t(c)];
+                const int s = data.state_index[std::size_t(c)];
                 const Eigen::Index row = j * m + c;
-                residuals[row] = w_(c) * (r.samples[std::size_t(j)].x(s) - data_.y(j, c));
-                if (jacobians && jacobians[0])
-                    for (Eigen::Index i = 0; i < k; ++i)
-                        jacobians[0][row * k + i] = w_(c) * r.samples[std::size_t(j)].S(s, i);
+                residuals[row] = s_.w(c) * (r.samples[std::size_t(j)].x(s) - data.y(j, c));
+                if (jacobians && jacobians[0]) {
+                    for (Eigen::Index i = 0; i < k; ++i) jacobians[0][row * k + i] = 0;
+                    for (std::size_t i = 0; i < s_.mine.size(); ++i)
+                        jacobians[0][row * k + Eigen::Index(s_.mine[i])] =
+                            s_.w(c) * r.samples[std::size_t(j)].S(s, Eigen::Index(i));
+                }
             }
         return true;
     }
@@ -124,39 +130,38 @@ class SeriesResiduals {
         TableModel::Params p;
         TableModel::State x0;
         s_.at(parameters[0], p, x0);
-        const sim::Options& o_ = s_.o;
-        const MeasuredSeries& data_ = s_.data;
-        const Eigen::VectorXd& w_ = s_.w;
+        const MeasuredSeries& data = s_.data;
         const auto f = [&p](const double& t, const TableModel::State& x, TableModel::State& xdot) {
             TableModel::rhs(t, x, p, xdot);
         };
+        const sim::Options& o = s_.o;
         IntegrationResult<TableModel::State> r;
         try {
-            if (o_.method == "radau5") {
+            if (o.method == "radau5") {
                 Radau5Options<double> opt;
-                opt.rtol = o_.rtol;
-                opt.atol = o_.atol;
-                opt.max_steps = o_.max_steps;
+                opt.rtol = o.rtol;
+                opt.atol = o.atol;
+                opt.max_steps = o.max_steps;
                 const auto jac = [&p](const double& t, const TableModel::State& x, Eigen::MatrixXd& J) {
                     model_jacobian<TableModel>(t, x, p, J);
                 };
-                r = integrate_radau5(f, jac, 0.0, x0, data_.t.back(), opt, {}, data_.t);
+                r = integrate_radau5(f, jac, 0.0, x0, data.t.back(), opt, {}, data.t);
             } else {
-                sim::with_adaptive_method(o_.method, [&](auto method) {
+                sim::with_adaptive_method(o.method, [&](auto method) {
                     using Method = decltype(method);
-                    r = integrate_with<Method::template type>(f, 0.0, x0, data_.t.back(),
-                                                              Method::template options<TableModel::State>(o_), {}, data_.t);
+                    r = integrate_with<Method::template type>(f, 0.0, x0, data.t.back(),
+                                                              Method::template options<TableModel::State>(o), {}, data.t);
                 });
             }
         } catch (const SimulationError&) {
             return false;
         }
-        if (r.samples.size() != data_.t.size()) return false;
-        const Eigen::Index m = data_.y.cols();
-        for (Eigen::Index j = 0; j < data_.y.rows(); ++j)
+        if (r.samples.size() != data.t.size()) return false;
+        const Eigen::Index m = data.y.cols();
+        for (Eigen::Index j = 0; j < data.y.rows(); ++j)
             for (Eigen::Index c = 0; c < m; ++c)
                 residuals[j * m + c] =
-                    w_(c) * (r.samples[std::size_t(j)].x(data_.state_index[std::size_t(c)]) - data_.y(j, c));
+                    s_.w(c) * (r.samples[std::size_t(j)].x(data.state_index[std::size_t(c)]) - data.y(j, c));
         return true;
     }
 
@@ -167,7 +172,7 @@ class SeriesResiduals {
 }  // namespace
 
 std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const TableModel::Params& params,
-                                  const TableModel::State& x0) {
+                                  const TableModel::State& x0, std::size_t experiments) {
     std::vector<FreeValue> free;
     std::set<std::string> seen;
     const auto values = TableModel::param_values(params);
@@ -218,32 +223,50 @@ std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const T
         free.push_back(f);
     }
     if (free.empty()) throw UsageError("give the unknowns with --free NAME (a parameter) or --free x0:STATE");
-    return free;
+    // The parameters first, then each experiment's initial values.
+    std::vector<FreeValue> unknowns;
+    for (const FreeValue& f : free)
+        if (f.column.kind == SensitivityColumn::Kind::Parameter) unknowns.push_back(f);
+    for (std::size_t e = 0; e < experiments; ++e)
+        for (FreeValue f : free)
+            if (f.column.kind == SensitivityColumn::Kind::InitialValue) {
+                f.experiment = int(e);
+                if (experiments > 1) f.name += "[" + std::to_string(e + 1) + "]";
+                unknowns.push_back(f);
+            }
+    return unknowns;
 }
 
 FitOutcome fit(const sim::Options& options, const TableModel::Params& params, const TableModel::State& x0,
-               const std::vector<FreeValue>& free, const MeasuredSeries& data,
+               const std::vector<FreeValue>& free, const std::vector<MeasuredSeries>& data,
                const std::map<std::string, double>& weights, std::size_t max_iterations, FitJacobian jacobian) {
-    const std::size_t k = free.size(), n = std::size_t(data.y.size());
+    const std::size_t k = free.size();
+    std::size_t n = 0;
+    for (const MeasuredSeries& d : data) n += std::size_t(d.y.size());
     if (n <= k)
         throw UsageError("the data give " + std::to_string(n) + " measurements for " + std::to_string(k) +
                          " unknowns: a fit needs more measurements than unknowns");
     if (!sim::is_adaptive_method(options.method) && options.method != "radau5")
         throw UsageError("eomgen fit needs a method with error control (dopri5, dop853, adams or radau5), not " +
                          options.method);
-    Eigen::VectorXd w = Eigen::VectorXd::Ones(data.y.cols());
+    std::vector<Eigen::VectorXd> w;
+    for (const MeasuredSeries& d : data) w.push_back(Eigen::VectorXd::Ones(d.y.cols()));
     for (const auto& [name, value] : weights) {
-        std::size_t c = 0;
-        while (c < data.names.size() && data.names[c] != name) ++c;
-        if (c == data.names.size())
-            throw UsageError("--weight " + name + ": no measured column '" + name + "' in " + data.path);
         if (!(value > 0) || !std::isfinite(value)) throw UsageError("--weight " + name + ": must be a positive number");
-        w(Eigen::Index(c)) = value;
+        bool found = false;
+        for (std::size_t e = 0; e < data.size(); ++e)
+            for (std::size_t c = 0; c < data[e].names.size(); ++c)
+                if (data[e].names[c] == name) {
+                    w[e](Eigen::Index(c)) = value;
+                    found = true;
+                }
+        if (!found) throw UsageError("--weight " + name + ": no measured column '" + name + "' in the data");
     }
     // What integrate_sensitivities refuses is said before Ceres starts.
     {
         std::vector<SensitivityColumn> columns;
-        for (const FreeValue& f : free) columns.push_back(f.column);
+        for (const FreeValue& f : free)
+            if (f.experiment <= 0) columns.push_back(f.column);
         try {
             check_sensitivity_columns<TableModel>(0.0, x0, params, columns);
         } catch (const std::invalid_argument& e) {
@@ -253,22 +276,27 @@ FitOutcome fit(const sim::Options& options, const TableModel::Params& params, co
 
     std::vector<double> theta;
     for (const FreeValue& f : free) theta.push_back(f.start);
-    // The exact cost also gives J at the solution for the statistics, whichever Jacobian the solver used.
+    // The exact costs also give J at the solution for the statistics, whichever Jacobian the solver used.
     std::size_t integrations = 0;
-    const Series series{options, params, x0, free, data, w, &integrations};
-    SeriesCost exact(series);
+    std::vector<std::unique_ptr<SeriesCost>> exact;
+    std::vector<std::unique_ptr<ceres::CostFunction>> differences;
     ceres::Problem::Options po;
     po.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem problem(po);
-    std::unique_ptr<ceres::CostFunction> differences;
-    if (jacobian == FitJacobian::Differences) {
-        auto* numeric = new ceres::DynamicNumericDiffCostFunction<SeriesResiduals, ceres::CENTRAL>(
-            new SeriesResiduals(series));
-        numeric->AddParameterBlock(int(k));
-        numeric->SetNumResiduals(int(n));
-        differences.reset(numeric);
+    for (std::size_t e = 0; e < data.size(); ++e) {
+        const Series series(options, params, x0, free, data[e], w[e], &integrations, int(e));
+        exact.push_back(std::make_unique<SeriesCost>(series));
+        ceres::CostFunction* cost = exact.back().get();
+        if (jacobian == FitJacobian::Differences) {
+            auto* numeric =
+                new ceres::DynamicNumericDiffCostFunction<SeriesResiduals, ceres::CENTRAL>(new SeriesResiduals(series));
+            numeric->AddParameterBlock(int(k));
+            numeric->SetNumResiduals(int(data[e].y.size()));
+            differences.emplace_back(numeric);
+            cost = numeric;
+        }
+        problem.AddResidualBlock(cost, nullptr, theta.data());
     }
-    problem.AddResidualBlock(differences ? differences.get() : &exact, nullptr, theta.data());
     for (std::size_t i = 0; i < k; ++i) {
         if (std::isfinite(free[i].lower)) problem.SetParameterLowerBound(theta.data(), int(i), free[i].lower);
         if (std::isfinite(free[i].upper)) problem.SetParameterUpperBound(theta.data(), int(i), free[i].upper);
@@ -295,21 +323,30 @@ FitOutcome fit(const sim::Options& options, const TableModel::Params& params, co
     out.trajectories = integrations;
     out.solve_seconds = summary.total_time_in_seconds;
 
-    // J and r at the solution.
+    // J and r at the solution, the experiments' rows one after another; the fitted trajectories (unweighted).
     Eigen::VectorXd r(static_cast<Eigen::Index>(n));
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> J(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(k));
-    const double* blocks[] = {theta.data()};
-    double* jac[] = {J.data()};
-    if (!exact.Evaluate(blocks, r.data(), jac))
-        throw SimulationError("the model cannot be integrated at the fit's estimates: " + exact.last_failure(), 0);
+    Eigen::MatrixXd J(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(k));
+    Eigen::Index row = 0;
+    for (std::size_t e = 0; e < data.size(); ++e) {
+        const Eigen::Index rows = data[e].y.size();
+        Eigen::VectorXd re(rows);
+        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Je(rows, Eigen::Index(k));
+        const double* blocks[] = {theta.data()};
+        double* jac[] = {Je.data()};
+        if (!exact[e]->Evaluate(blocks, re.data(), jac))
+            throw SimulationError("the model cannot be integrated at the fit's estimates: " + exact[e]->last_failure(), 0);
+        r.segment(row, rows) = re;
+        J.middleRows(row, rows) = Je;
+        row += rows;
+        const MeasuredSeries& d = data[e];
+        Eigen::MatrixXd model(d.y.rows(), d.y.cols());
+        for (Eigen::Index j = 0; j < d.y.rows(); ++j)
+            for (Eigen::Index c = 0; c < d.y.cols(); ++c) model(j, c) = re(j * d.y.cols() + c) / w[e](c) + d.y(j, c);
+        out.model.push_back(std::move(model));
+    }
     const double rss = r.squaredNorm();
     out.rms = std::sqrt(rss / double(n));
     out.residual_sigma = std::sqrt(rss / double(n - k));
-
-    // The fitted trajectory at the data's times (unweighted): the residual is model − data.
-    out.model.resize(data.y.rows(), data.y.cols());
-    for (Eigen::Index j = 0; j < data.y.rows(); ++j)
-        for (Eigen::Index c = 0; c < data.y.cols(); ++c) out.model(j, c) = r(j * data.y.cols() + c) / w(c) + data.y(j, c);
 
     // Relative sensitivities: J's columns times |θ| (1 where θ = 0), so that the rank test does not depend on units.
     Eigen::VectorXd scale(static_cast<Eigen::Index>(k));

@@ -21,10 +21,12 @@
 
 namespace eomgen::cli {
 
-/// One unknown of the fit: a parameter or an initial value, its start and its bounds.
+/// One unknown of the fit: a parameter (shared by every experiment) or an initial value (one experiment's), its
+/// start and its bounds.
 struct FreeValue {
-    std::string name;  ///< as given: "l", "x0:phi"
+    std::string name;  ///< as given, "l", "x0:phi"; an initial value of one of several experiments "x0:phi[2]"
     SensitivityColumn column;
+    int experiment = -1;  ///< the experiment (index into the data) an initial value belongs to; -1: a parameter
     double start = 0;
     double lower = -std::numeric_limits<double>::infinity(), upper = std::numeric_limits<double>::infinity();
 };
@@ -45,23 +47,25 @@ struct FitOutcome {
     std::size_t trajectories = 0;  ///< the solver's integrations (with sensitivities, or without for differences)
     bool converged = false;
     std::string termination;  ///< Ceres' message
-    Eigen::MatrixXd model;    ///< the fitted trajectory at the data's times, the measured columns
+    std::vector<Eigen::MatrixXd> model;  ///< per experiment, the fitted trajectory at its data's times and columns
 };
 
 /// The unknowns given as --free NAME[=start][:lo:hi] (UsageError for an unknown name, a bad number, lo >= hi, a start
-/// outside the bounds); the start defaults to the model's value (after --set and --init).
+/// outside the bounds); the start defaults to the model's value (after --set and --init). With several experiments
+/// an initial value x0:STATE is one unknown per experiment, named x0:STATE[e] (e from 1), after the parameters.
 std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const TableModel::Params& params,
-                                  const TableModel::State& x0);
+                                  const TableModel::State& x0, std::size_t experiments = 1);
 
 /// Where the solver's Jacobian comes from: the sensitivities (exact), or central differences of whole trajectories
 /// (Ceres' numeric differentiation; for comparison, docs/benchmarks.md section 10).
 enum class FitJacobian { Sensitivities, Differences };
 
-/// Fits the bound TableModel to `data` with the run's options (method, tolerances; params and x0 after --set and
-/// --init), each column weighted by weights[name] (default 1). Throws sim::UsageError for a problem with more unknowns
-/// than residuals or a method without error control, and what integrate_sensitivities refuses.
+/// Fits the bound TableModel to the experiments `data` (each from x0 but for its own free initial values) with the
+/// run's options (method, tolerances; params and x0 after --set and --init), each column weighted by weights[name]
+/// (default 1). Throws sim::UsageError for a problem with more unknowns than residuals or a method without error
+/// control, and what integrate_sensitivities refuses.
 FitOutcome fit(const sim::Options& options, const TableModel::Params& params, const TableModel::State& x0,
-               const std::vector<FreeValue>& free, const MeasuredSeries& data,
+               const std::vector<FreeValue>& free, const std::vector<MeasuredSeries>& data,
                const std::map<std::string, double>& weights, std::size_t max_iterations,
                FitJacobian jacobian = FitJacobian::Sensitivities);
 

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <random>
 #include <regex>
 #include <string>
 #include <vector>
@@ -71,6 +72,55 @@ TEST_CASE("eomgen fit recovers the damped pendulum's l and c within their standa
     CHECK(t.output.find("fixed:   m = 1 kg, g = 9.81 m/s^2") != std::string::npos);
     CHECK(std::regex_search(t.output, std::regex("x0:phi = 1\\.00[0-9]* rad \\+- 0\\.00[0-9]* rad")));
     CHECK(t.output.find("correlation:") != std::string::npos);
+}
+
+TEST_CASE("eomgen fit: two experiments share l and c, each with its own initial angle", "[fit]") {
+    // The second experiment starts at phi = 0.5 (the first at the file's 1.0); its data are made here, with noise
+    // of 0.01 rad from a seeded generator.
+    const fs::path truth = kWork / "truth_half.csv";
+    const Result made = eomgen({"run", kModel, "--init", "phi=0.5", "--t-end", "6", "--samples", "300", "--rtol",
+                                "1e-12", "--atol", "1e-14", "--csv", truth.string(), "--quiet"});
+    INFO(made.output);
+    REQUIRE(made.code == 0);
+    const auto rows = read_csv(truth);
+    std::mt19937 rng(7);
+    std::normal_distribution<double> noise(0.0, 0.01);
+    std::string text = "t [s],phi [rad]\n";
+    for (std::size_t i = 1; i < rows.size(); ++i)
+        text += rows[i][0] + "," + std::to_string(std::stod(rows[i][std::size_t(column(rows[0], "phi"))]) + noise(rng)) +
+                "\n";
+    const fs::path second = write_whole(kWork, "half.csv", text);
+    const fs::path csv = kWork / "two.csv";
+    const Result f = eomgen({"fit", kModel, kData, second.string(), "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2",
+                             "--free", "x0:phi=0.8", "--format", "json", "--csv", csv.string(), "--quiet"});
+    INFO(f.output);
+    REQUIRE(f.code == 0);
+    const double l = json_field(f.output, "l", "value"), sl = json_field(f.output, "l", "standard_error");
+    const double a = json_field(f.output, "x0:phi\\[1\\]", "value"), sa = json_field(f.output, "x0:phi\\[1\\]", "standard_error");
+    const double b = json_field(f.output, "x0:phi\\[2\\]", "value"), sb = json_field(f.output, "x0:phi\\[2\\]", "standard_error");
+    CHECK(std::abs(l - 1.0) < 4 * sl);
+    CHECK(std::abs(a - 1.0) < 4 * sa);
+    CHECK(std::abs(b - 0.5) < 4 * sb);
+    CHECK(sa < 0.01);
+    CHECK(sb < 0.01);
+    // The plot of both experiments against the fit, and their residuals.
+    const fs::path svg = kWork / "two.svg";
+    const Result p = eomgen({"fit", kModel, kData, second.string(), "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2",
+                             "--free", "x0:phi=0.8", "--plot", svg.string(), "--quiet"});
+    INFO(p.output);
+    REQUIRE(p.code == 0);
+    const std::string drawn = read(svg);
+    CHECK(drawn.find("data [2]") != std::string::npos);
+    CHECK(drawn.find("residual (model - data)") != std::string::npos);
+    const Result bad = eomgen({"fit", kModel, kData, "--free", "l", "--plot", (kWork / "fit.pdf").string(), "--quiet"});
+    CHECK(bad.code == 2);
+    CHECK(bad.output.find(".png or .svg") != std::string::npos);
+
+    const auto out = read_csv(csv);
+    REQUIRE(out.size() == 1 + 1000 + 301);
+    CHECK(out[0][0] == "experiment");
+    CHECK(out[1][0] == "1");
+    CHECK(out.back()[0] == "2");
 }
 
 TEST_CASE("eomgen fit says which combination the data do not determine", "[fit]") {
