@@ -54,6 +54,13 @@ std::string json_number(double v) {
     return os.str();
 }
 
+/// The SI unit of a measurable column: state i below 2 nq, else output i − 2 nq.
+std::string measured_unit(int i) {
+    const std::size_t states = TableModel::state_names.size();
+    return std::size_t(i) < states ? state_unit<TableModel>(std::size_t(i))
+                                   : output_unit<TableModel>(std::size_t(i) - states);
+}
+
 std::string unit_of(const FreeValue& f) {
     return f.column.kind == SensitivityColumn::Kind::Parameter ? param_unit<TableModel>(std::size_t(f.column.index))
                                                                : state_unit<TableModel>(std::size_t(f.column.index));
@@ -184,13 +191,13 @@ std::string fitted_csv(const std::vector<MeasuredSeries>& experiments, const Fit
     for (const MeasuredSeries& d : experiments)
         for (std::size_t c = 0; c < d.names.size(); ++c)
             if (std::none_of(columns.begin(), columns.end(), [&](const auto& k) { return k.first == d.names[c]; }))
-                columns.emplace_back(d.names[c], d.state_index[c]);
+                columns.emplace_back(d.names[c], d.index[c]);
     const bool several = experiments.size() > 1;
     std::ostringstream os;
     os << std::setprecision(17) << (several ? "experiment," : "") << with_unit("t", time_unit<TableModel>());
     for (const auto& [name, state] : columns)
         for (const char* suffix : {"", "_model", "_residual"})
-            os << "," << csv_field(with_unit(name + suffix, state_unit<TableModel>(std::size_t(state))));
+            os << "," << csv_field(with_unit(name + suffix, measured_unit(state)));
     os << "\n";
     for (std::size_t e = 0; e < experiments.size(); ++e) {
         const MeasuredSeries& d = experiments[e];
@@ -312,13 +319,15 @@ int FitCommand::fit_model() {
     TableModel::Params params;
     TableModel::State x0 = TableModel::default_state();
     sim::apply_settings<TableModel>(o, params, x0);
-    std::vector<std::string> state_names, state_units;
-    for (std::size_t i = 0; i < TableModel::state_names.size(); ++i) {
-        state_names.push_back(TableModel::state_names[i]);
-        state_units.push_back(state_unit<TableModel>(i));
+    Measurable measurable;
+    measurable.states = TableModel::state_names.size();
+    for (std::size_t i = 0; i < measurable.states + std::size_t(TableModel::n_outputs); ++i) {
+        const bool state = i < measurable.states;
+        measurable.names.push_back(state ? TableModel::state_names[i] : TableModel::output_names[i - measurable.states]);
+        measurable.units.push_back(measured_unit(int(i)));
     }
     std::vector<MeasuredSeries> data;
-    for (const std::string& path : data_paths_) data.push_back(read_measured(path, state_names, state_units));
+    for (const std::string& path : data_paths_) data.push_back(read_measured(path, measurable));
     const std::vector<FreeValue> free = parse_free(free_, params, x0, data.size());
     progress("fitting");
     const FitOutcome r = fit(o, params, x0, free, data, weights, max_iterations_,
@@ -355,7 +364,7 @@ int FitCommand::fit_model() {
             for (std::size_t c = 0; c < d.names.size(); ++c)
                 if (std::find(seen.begin(), seen.end(), d.names[c]) == seen.end()) {
                     seen.push_back(d.names[c]);
-                    p.columns.push_back({d.names[c], state_unit<TableModel>(std::size_t(d.state_index[c]))});
+                    p.columns.push_back({d.names[c], measured_unit(d.index[c])});
                 }
         try {
             plot_fit(p);

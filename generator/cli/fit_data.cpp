@@ -45,8 +45,8 @@ std::string place(const std::string& path, int line, int col) {
 
 }  // namespace
 
-MeasuredSeries read_measured(const std::string& path, const std::vector<std::string>& state_names,
-                             const std::vector<std::string>& state_units) {
+MeasuredSeries read_measured(const std::string& path, const Measurable& measurable) {
+    const std::vector<std::string>& names = measurable.names;
     std::ifstream in(path);
     if (!in) throw FitDataError(path + ": cannot read the data file");
     MeasuredSeries s;
@@ -66,17 +66,20 @@ MeasuredSeries read_measured(const std::string& path, const std::vector<std::str
         throw FitDataError(place(path, line_no, header[0].col) + "the first column must be t, not '" + shown + "'");
     if (header.size() < 2)
         throw FitDataError(place(path, line_no, header[0].col) + "no measured column after t (expected states such as " +
-                           state_names.front() + ")");
+                           names.front() + ")");
     for (std::size_t c = 1; c < header.size(); ++c) {
         const std::string name = column_name(header[c].text);
         int index = -1;
-        for (std::size_t i = 0; i < state_names.size(); ++i)
-            if (state_names[i] == name) index = int(i);
+        for (std::size_t i = 0; i < names.size(); ++i)
+            if (names[i] == name) index = int(i);
         if (index < 0) {
-            std::string known;
-            for (const auto& n : state_names) known += (known.empty() ? "" : ", ") + n;
+            std::string states, outputs;
+            for (std::size_t i = 0; i < names.size(); ++i)
+                (i < measurable.states ? states : outputs) +=
+                    ((i < measurable.states ? states : outputs).empty() ? "" : ", ") + names[i];
             throw FitDataError(place(path, line_no, header[c].col) + "'" + valid_utf8(name) +
-                               "' is not a state of the model (its states: " + known + ")");
+                               "' is neither a state nor a declared output of the model (states: " + states +
+                               (outputs.empty() ? "" : "; outputs: " + outputs) + ")");
         }
         for (const std::string& earlier : s.names)
             if (earlier == name)
@@ -84,14 +87,14 @@ MeasuredSeries read_measured(const std::string& path, const std::vector<std::str
         const std::string unit = header[c].text.size() > name.size() ? header[c].text.substr(name.size()) : "";
         if (!unit.empty()) {
             const std::string given = unit.size() > 3 ? unit.substr(2, unit.size() - 3) : "";
-            const std::string& expected = state_units[std::size_t(index)];
+            const std::string& expected = measurable.units[std::size_t(index)];
             if (given != expected)
                 throw FitDataError(place(path, line_no, header[c].col) + name + " is in " +
                                    (expected.empty() ? "no declared unit" : expected) + " (the unit eomgen run writes), not " +
                                    valid_utf8(given));
         }
         s.names.push_back(name);
-        s.state_index.push_back(index);
+        s.index.push_back(index);
     }
     std::vector<std::vector<double>> rows;
     while (std::getline(in, line)) {

@@ -20,17 +20,23 @@ struct FitDataError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-/// One experiment's measurements: y(j, c) is column c (state state_index[c]) at t[j].
+/// What a data file's columns may be: the model's states, then its declared outputs, with their SI units ("" where
+/// none is declared).
+struct Measurable {
+    std::vector<std::string> names, units;
+    std::size_t states = 0;  ///< names[i] is a state for i < states, output i − states after
+};
+
+/// One experiment's measurements: y(j, c) is column c (Measurable index[c]) at t[j].
 struct MeasuredSeries {
     std::string path;
     std::vector<double> t;
     std::vector<std::string> names;
-    std::vector<int> state_index;
+    std::vector<int> index;
     Eigen::MatrixXd y;
 };
 
-/// Reads `path` against the model's state names and their SI units ("" where none is declared).
-MeasuredSeries read_measured(const std::string& path, const std::vector<std::string>& state_names,
-                             const std::vector<std::string>& state_units);
+/// Reads `path` against what the model can be measured by.
+MeasuredSeries read_measured(const std::string& path, const Measurable& measurable);
 
 }  // namespace eomgen::cli

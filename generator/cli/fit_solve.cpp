@@ -100,14 +100,17 @@ class SeriesCost : public ceres::CostFunction {
         const Eigen::Index m = data.y.cols(), k = Eigen::Index(s_.free.size());
         for (Eigen::Index j = 0; j < data.y.rows(); ++j)
             for (Eigen::Index c = 0; c < m; ++c) {
-                const int s = data.state_index[std::size_t(c)];
+                // A state's value and row of S, or an output's and its row of Yx S + Yp.
+                const SensitivitySample& sample = r.samples[std::size_t(j)];
+                const Eigen::Index nx = sample.x.size(), s = data.index[std::size_t(c)];
+                const bool state = s < nx;
                 const Eigen::Index row = j * m + c;
-                residuals[row] = s_.w(c) * (r.samples[std::size_t(j)].x(s) - data.y(j, c));
+                residuals[row] = s_.w(c) * ((state ? sample.x(s) : sample.y(s - nx)) - data.y(j, c));
                 if (jacobians && jacobians[0]) {
                     for (Eigen::Index i = 0; i < k; ++i) jacobians[0][row * k + i] = 0;
                     for (std::size_t i = 0; i < s_.mine.size(); ++i)
                         jacobians[0][row * k + Eigen::Index(s_.mine[i])] =
-                            s_.w(c) * r.samples[std::size_t(j)].S(s, Eigen::Index(i));
+                            s_.w(c) * (state ? sample.S(s, Eigen::Index(i)) : sample.Y(s - nx, Eigen::Index(i)));
                 }
             }
         return true;
@@ -158,10 +161,17 @@ class SeriesResiduals {
         }
         if (r.samples.size() != data.t.size()) return false;
         const Eigen::Index m = data.y.cols();
-        for (Eigen::Index j = 0; j < data.y.rows(); ++j)
-            for (Eigen::Index c = 0; c < m; ++c)
-                residuals[j * m + c] =
-                    s_.w(c) * (r.samples[std::size_t(j)].x(data.state_index[std::size_t(c)]) - data.y(j, c));
+        for (Eigen::Index j = 0; j < data.y.rows(); ++j) {
+            const auto& sample = r.samples[std::size_t(j)];
+            const Eigen::Index nx = sample.x.size();
+            TableModel::Outputs y;
+            if (TableModel::n_outputs > 0)
+                TableModel::outputs(sample.t, sample.x.head(nx / 2), sample.x.tail(nx / 2), p, y);
+            for (Eigen::Index c = 0; c < m; ++c) {
+                const Eigen::Index s = data.index[std::size_t(c)];
+                residuals[j * m + c] = s_.w(c) * ((s < nx ? sample.x(s) : y(s - nx)) - data.y(j, c));
+            }
+        }
         return true;
     }
 

@@ -59,4 +59,33 @@ void linearize(double t, const typename ModelT<double>::State& x, const typename
     }
 }
 
+/// Yx = ∂y/∂x and Yp = ∂y/∂p (param_names order) of a generated model's declared outputs y(t, q, q̇; p) ([outputs]
+/// of its file) at (t, x; p), by the same forward differentiation: the outputs' sensitivities are Yx S + Yp.
+template <template <class> class ModelT, class MatX, class MatP>
+void linearize_outputs(double t, const typename ModelT<double>::State& x, const typename ModelT<double>::Params& p,
+                       MatX& Yx, MatP& Yp) {
+    using D = ModelT<double>;
+    constexpr int nq = D::nq, nx = D::nx, np = D::n_params, ny = D::n_outputs, N = nx + np;
+    using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
+    using M = ModelT<AD>;
+    typename M::Config q, qd;
+    for (int i = 0; i < nq; ++i) {
+        q(i) = AD(x(i), N, i);
+        qd(i) = AD(x(nq + i), N, nq + i);
+    }
+    typename M::Params pa;
+    const auto values = D::param_values(p);
+    for (int k = 0; k < np; ++k) M::set_param(pa, D::param_names[std::size_t(k)], AD(values[std::size_t(k)], N, nx + k));
+    typename M::Outputs y;
+    M::outputs(AD(t), q, qd, pa, y);
+    Yx.resize(ny, nx);
+    Yp.resize(ny, np);
+    for (int i = 0; i < ny; ++i) {
+        // An output that does not depend on anything has an empty derivative vector.
+        const bool constant = y(i).derivatives().size() == 0;
+        for (int j = 0; j < nx; ++j) Yx(i, j) = constant ? 0.0 : y(i).derivatives()(j);
+        for (int k = 0; k < np; ++k) Yp(i, k) = constant ? 0.0 : y(i).derivatives()(nx + k);
+    }
+}
+
 }  // namespace eomgen

@@ -81,6 +81,9 @@ struct ModelTable {
     /// Jp = ∂ẋ/∂p (2 nq × n_params, column-major), for sensitivities (sensitivities.hpp): the header's analytic one
     /// where it has one, else by forward differentiation in the shared object; null as `jacobian` is.
     int (*parameter_jacobian)(double t, const double* x, const void* p, double* Jp);
+    /// Yx = ∂y/∂x (n_outputs × 2 nq) and Yp = ∂y/∂p (n_outputs × n_params) of the declared outputs, column-major, by
+    /// forward differentiation in the shared object (linearize_outputs); null as `jacobian` is.
+    int (*output_jacobian)(double t, const double* x, const void* p, double* Yx, double* Yp);
     /// The message of the last error on this thread, and its time in *t.
     const char* (*error_message)(double* t);
     /// The switching surfaces of rhs() (abs, sign, heaviside, max, min): n_switches values s_k, 0 and null when none.
@@ -280,6 +283,15 @@ struct Wrappers {
             write(jp, Jp);
         });
     }
+    static int output_jacobian(double t, const double* x, const void* p, double* Yx, double* Yp) {
+        return guarded([&] {
+            Eigen::Matrix<double, M::n_outputs, M::nx> yx;
+            Eigen::Matrix<double, M::n_outputs, M::n_params> yp;
+            linearize_outputs<detail::model_template<M>::template type>(t, read<State>(x), params(p), yx, yp);
+            write(yx, Yx);
+            write(yp, Yp);
+        });
+    }
     static const char* error_message(double* t) {
         if (t) *t = last_error().t;
         return last_error().message.c_str();
@@ -335,6 +347,7 @@ const ModelTable& model_table() {
         if constexpr (WithJacobian) {
             t.jacobian = &W::jacobian;
             t.parameter_jacobian = &W::parameter_jacobian;
+            t.output_jacobian = &W::output_jacobian;
         }
         t.error_message = &W::error_message;
         if constexpr (declares_power<M>::value) t.power = &W::power;
@@ -534,6 +547,15 @@ class TableModel {
             throw std::logic_error("the compiled model has no Jacobian (model_table<M, true> compiles one)");
         J.resize(x.size(), x.size());
         check(table().jacobian(t, x.data(), p.data(), J.data()));
+    }
+
+    /// Yx = ∂y/∂x and Yp = ∂y/∂p of the declared outputs, computed in the shared object (sensitivities.hpp).
+    static void output_jacobian(double t, const State& x, const Params& p, Eigen::MatrixXd& Yx, Eigen::MatrixXd& Yp) {
+        if (!table().output_jacobian)
+            throw std::logic_error("the compiled model has no Jacobians (model_table<M, true> compiles them)");
+        Yx.resize(n_outputs, x.size());
+        Yp.resize(n_outputs, n_params);
+        if (n_outputs > 0) check(table().output_jacobian(t, x.data(), p.data(), Yx.data(), Yp.data()));
     }
 
     /// Jp = ∂ẋ/∂p (columns in param_names order), computed in the shared object (sensitivities.hpp asks for it).

@@ -16,6 +16,9 @@
  *     r.S            // nx × 2: ∂x(3)/∂θ and ∂x(3)/∂ψ0
  *     r.events[0].dt // ∂t⁎/∂θ, ∂t⁎/∂ψ0 of a terminal event, −(g_x S + g_p)/(g_t + g_x ẋ) at t*
  *
+ * Each sample also carries the declared outputs y ([outputs] of the model file) and their sensitivities
+ * Yx S + Yp, with Yx and Yp by forward differentiation of the outputs.
+ *
  * J and Jp are exact: a generated unconstrained model with analytic Jacobians ([generate] jacobians = true)
  * gives them (state_jacobian, parameter_jacobian); a compiled table (eomgen run) gives its own; any other generated
  * model is differentiated forward through its rhs() (linearize.hpp), constrained solve included.
@@ -101,11 +104,13 @@ inline SensitivityEvent state_crossing(std::string name, int i, double value,
     return e;
 }
 
-/// The state and S at a requested time.
+/// The state and S at a requested time, and the declared outputs with theirs.
 struct SensitivitySample {
     double t = 0;
     Eigen::VectorXd x;
     Eigen::MatrixXd S;  ///< nx × columns
+    Eigen::VectorXd y;  ///< the declared outputs ([outputs] of the model file): empty where there are none
+    Eigen::MatrixXd Y;  ///< ∂y/∂(columns) = Yx S + Yp (n_outputs × columns)
 };
 
 /// A located event with the sensitivities of its time and of the state there.
@@ -133,6 +138,14 @@ struct SensitivityResult {
 
 namespace detail {
 
+template <class M, class = void>
+struct has_output_jacobian : std::false_type {};
+template <class M>
+struct has_output_jacobian<M, std::void_t<decltype(M::output_jacobian(
+                                  0.0, std::declval<const typename M::State&>(), std::declval<const typename M::Params&>(),
+                                  std::declval<Eigen::MatrixXd&>(), std::declval<Eigen::MatrixXd&>()))>>
+    : std::true_type {};
+
 /// The model's state type from a dynamic vector (a generated model's State has a fixed size).
 template <class M>
 typename M::State model_state(const Eigen::VectorXd& x) {
@@ -155,6 +168,17 @@ void sensitivity_jacobians(double t, const typename M::State& x, const typename 
     } else {
         linearize<detail::model_template<M>::template type>(t, x, p, J, Jp);
     }
+}
+
+/// Yx = ∂y/∂x and Yp = ∂y/∂p of Model M's declared outputs at (t, x; p): M's own where it has them (a compiled
+/// table), else by forward differentiation of M's template (linearize_outputs()).
+template <class M>
+void output_jacobians(double t, const typename M::State& x, const typename M::Params& p, Eigen::MatrixXd& Yx,
+                      Eigen::MatrixXd& Yp) {
+    if constexpr (detail::has_output_jacobian<M>::value)
+        M::output_jacobian(t, x, p, Yx, Yp);
+    else
+        linearize_outputs<detail::model_template<M>::template type>(t, x, p, Yx, Yp);
 }
 
 /**
@@ -197,6 +221,21 @@ class SensitivitySystem {
         model_jacobian<M>(t, x, p_, J);
         Jz.setZero(z.size(), z.size());
         for (Eigen::Index b = 0; b <= Eigen::Index(columns_.size()); ++b) Jz.block(b * nx_, b * nx_, nx_, nx_) = J;
+    }
+
+    /// The declared outputs y at a sample and their sensitivities Yx S + Yp (the parameters' columns of Yp).
+    void outputs(SensitivitySample& s) const {
+        if (M::n_outputs == 0) return;
+        const typename M::State x = detail::model_state<M>(s.x);
+        typename M::Outputs y;
+        M::outputs(s.t, positions<M::nq>(x), velocities<M::nq>(x), p_, y);
+        s.y = y;
+        Eigen::MatrixXd Yx, Yp;
+        output_jacobians<M>(s.t, x, p_, Yx, Yp);
+        s.Y = Yx * s.S;
+        for (std::size_t c = 0; c < columns_.size(); ++c)
+            if (columns_[c].kind == SensitivityColumn::Kind::Parameter)
+                s.Y.col(Eigen::Index(c)) += Yp.col(columns_[c].index);
     }
 
     /// ẋ at (t, x).
@@ -344,7 +383,7 @@ struct SensitivityRun {
 
     SensitivitySample split(double t, const Eigen::VectorXd& z) const {
         const Eigen::Index nx = system.nx();
-        return {t, z.head(nx), Eigen::Map<const Eigen::MatrixXd>(z.data() + nx, nx, (z.size() - nx) / nx)};
+        return {t, z.head(nx), Eigen::Map<const Eigen::MatrixXd>(z.data() + nx, nx, (z.size() - nx) / nx), {}, {}};
     }
 
     SensitivityResult finish(const IntegrationResult<Eigen::VectorXd>& r) {
@@ -354,6 +393,7 @@ struct SensitivityRun {
         out.x = end.x;
         out.S = end.S;
         out.samples = std::move(samples);
+        for (SensitivitySample& s : out.samples) system.outputs(s);
         out.stop_reason = r.stop_reason;
         out.stopped_by = r.stopped_by;
         out.accepted_steps = r.accepted_steps;

@@ -1,7 +1,8 @@
 /**
  * @file sensitivity_run.hpp  `eomgen run MODEL --sensitivities theta,x0:psi` (and eomgen-sim's): the trajectory
  * with S = ∂x/∂(θ, ψ(0)) integrated beside it (sensitivities.hpp), S at the end on stdout, a terminal event's
- * ∂t⁎/∂(…), and S's columns in the CSV after the usual ones: `dpsi/dtheta [rad/rad]`, `dpsi_dot/dpsi(0) [1/s]`.
+ * ∂t⁎/∂(…), and S's columns in the CSV after the usual ones: `dpsi/dtheta [1]`, `dpsi_dot/dpsi(0) [1/s]`, then the
+ * declared outputs' (`dz_c/dtheta [m/rad]`).
  */
 #pragma once
 
@@ -156,16 +157,21 @@ int run_sensitivities(const Options& o) {
         }
     }
     std::cout << "sensitivities at t = " << r.t << s << ":\n";
-    for (Eigen::Index i = 0; i < r.x.size(); ++i) {
-        const std::string state = M::state_names[std::size_t(i)];
+    // A line per state, then per declared output (the last sample is the end: its y and Y).
+    const auto row = [&](const std::string& name, const std::string& unit_of_name, const auto& values) {
         std::cout << "  ";
         for (std::size_t c = 0; c < labels.size(); ++c) {
-            const std::string unit = unit_ratio(state_unit<M>(std::size_t(i)), labels[c].unit);
-            std::cout << (c ? ", " : "") << "d" << state << "/d" << labels[c].name << " = " << r.S(i, Eigen::Index(c))
+            const std::string unit = unit_ratio(unit_of_name, labels[c].unit);
+            std::cout << (c ? ", " : "") << "d" << name << "/d" << labels[c].name << " = " << values(Eigen::Index(c))
                       << (unit.empty() || unit == "1" ? "" : " " + unit);
         }
         std::cout << "\n";
-    }
+    };
+    for (Eigen::Index i = 0; i < r.x.size(); ++i)
+        row(M::state_names[std::size_t(i)], state_unit<M>(std::size_t(i)), r.S.row(i));
+    if (!r.samples.empty() && r.samples.back().t == r.t)
+        for (Eigen::Index k = 0; k < r.samples.back().Y.rows(); ++k)
+            row(M::output_names[std::size_t(k)], output_unit<M>(std::size_t(k)), r.samples.back().Y.row(k));
     for (const auto& e : r.events) {
         std::cout << "event:   " << e.name << " at t = " << e.t << s << ";";
         for (std::size_t c = 0; c < labels.size(); ++c) {
@@ -179,16 +185,22 @@ int run_sensitivities(const Options& o) {
               << "\n";
 
     if (o.csv.empty()) return kExitOk;
+    // S's columns (each column's states), then the outputs' (each column's outputs).
     std::vector<std::string> names;
     for (std::size_t c = 0; c < labels.size(); ++c)
         for (std::size_t i = 0; i < M::state_names.size(); ++i)
             names.push_back(with_unit("d" + std::string(M::state_names[i]) + "/d" + labels[c].name,
                                       unit_ratio(state_unit<M>(i), labels[c].unit)));
+    for (std::size_t c = 0; c < labels.size(); ++c)
+        for (std::size_t k = 0; k < M::output_names.size(); ++k)
+            names.push_back(with_unit("d" + std::string(M::output_names[k]) + "/d" + labels[c].name,
+                                      unit_ratio(output_unit<M>(k), labels[c].unit)));
     std::vector<Sample<State>> samples;
     std::vector<std::vector<double>> rows;
     for (const auto& sample : r.samples) {
         samples.push_back({sample.t, State(sample.x)});
         rows.emplace_back(sample.S.data(), sample.S.data() + sample.S.size());  // column-major: by column, then state
+        rows.back().insert(rows.back().end(), sample.Y.data(), sample.Y.data() + sample.Y.size());
     }
     try {
         write_samples<M>(o, params, samples, {}, names, rows);

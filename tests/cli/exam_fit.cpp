@@ -123,6 +123,31 @@ TEST_CASE("eomgen fit: two experiments share l and c, each with its own initial 
     CHECK(out.back()[0] == "2");
 }
 
+TEST_CASE("eomgen fit to a declared output: the door's tilt from the speed of its edge", "[fit]") {
+    // v_edge = w psi' ([outputs] of models/door.toml), measured with noise of 0.01 m/s until just before it shuts.
+    const std::string door = std::string(EOMGEN_SOURCE_DIR) + "/models/door.toml";
+    const fs::path truth = kWork / "door_truth.csv";
+    const Result made = eomgen({"run", door, "--t-end", "2.9", "--samples", "290", "--rtol", "1e-12", "--atol",
+                                "1e-14", "--csv", truth.string(), "--quiet"});
+    INFO(made.output);
+    REQUIRE(made.code == 0);
+    const auto rows = read_csv(truth);
+    std::mt19937 rng(3);
+    std::normal_distribution<double> noise(0.0, 0.01);
+    std::string text = "t [s],v_edge [m/s]\n";
+    for (std::size_t i = 1; i < rows.size(); ++i)
+        text += rows[i][0] + "," + std::to_string(std::stod(rows[i][std::size_t(column(rows[0], "v_edge"))]) + noise(rng)) +
+                "\n";
+    const fs::path data = write_whole(kWork, "door_edge.csv", text);
+    const Result f = eomgen({"fit", door, data.string(), "--free", "theta=0.03:0.001:0.5", "--format", "json", "--quiet"});
+    INFO(f.output);
+    REQUIRE(f.code == 0);
+    const double theta = json_field(f.output, "theta", "value"), s = json_field(f.output, "theta", "standard_error");
+    CHECK(s > 0);
+    CHECK(s < 1e-3);
+    CHECK(std::abs(theta - 0.0234) < 4 * s);
+}
+
 TEST_CASE("eomgen fit says which combination the data do not determine", "[fit]") {
     // phi'' + c/(m l^2) phi' + (g/l) sin phi = 0: with l, g and c free only g/l and c/l^2 are seen.
     const Result f = eomgen({"fit", kModel, kData, "--free", "l", "--free", "g", "--free", "c", "--quiet"});
@@ -147,7 +172,7 @@ TEST_CASE("eomgen fit: data and options that do not fit the model file", "[fit]"
         std::string message;
     };
     const std::vector<Case> cases{
-        {data("theta.csv", "t,theta\n0,1\n0.1,0.9\n"), {"--free", "l"}, "theta.csv:1:3: 'theta' is not a state of the model (its states: phi, phi_dot)"},
+        {data("theta.csv", "t,theta\n0,1\n0.1,0.9\n"), {"--free", "l"}, "theta.csv:1:3: 'theta' is neither a state nor a declared output of the model (states: phi, phi_dot)"},
         {data("order.csv", "t,phi\n0,1\n0.2,0.9\n0.1,0.8\n"), {"--free", "l"}, "order.csv:4:1: t = 0.1 does not come after"},
         {data("nan.csv", "t,phi\n0,1\n0.1,nan\n0.2,0.8\n"), {"--free", "l"}, "nan.csv:3:5: 'nan' is not a finite number"},
         {data("empty_cell.csv", "t,phi\n0,1\n0.1,\n"), {"--free", "l"}, "empty_cell.csv:3:5: '' is not a finite number"},
