@@ -88,4 +88,28 @@ void linearize_outputs(double t, const typename ModelT<double>::State& x, const 
     }
 }
 
+/// Lx = ∂λ/∂x and Lp = ∂λ/∂p of a constrained generated model's multipliers λ(t, x; p) at (t, x; p), by the same
+/// forward differentiation through its constrained solve: the multipliers' sensitivities are Lx S + Lp.
+template <template <class> class ModelT, class MatX, class MatP>
+void linearize_multipliers(double t, const typename ModelT<double>::State& x, const typename ModelT<double>::Params& p,
+                           MatX& Lx, MatP& Lp) {
+    using D = ModelT<double>;
+    constexpr int nx = D::nx, np = D::n_params, nc = D::n_constraints, N = nx + np;
+    using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
+    using M = ModelT<AD>;
+    typename M::State xa;
+    for (int i = 0; i < nx; ++i) xa(i) = AD(x(i), N, i);
+    typename M::Params pa;
+    const auto values = D::param_values(p);
+    for (int k = 0; k < np; ++k) M::set_param(pa, D::param_names[std::size_t(k)], AD(values[std::size_t(k)], N, nx + k));
+    typename M::ConstraintVector lambda;
+    M::multipliers(AD(t), xa, pa, lambda);
+    Lx.resize(nc, nx);
+    Lp.resize(nc, np);
+    for (int i = 0; i < nc; ++i) {
+        for (int j = 0; j < nx; ++j) Lx(i, j) = lambda(i).derivatives()(j);
+        for (int k = 0; k < np; ++k) Lp(i, k) = lambda(i).derivatives()(nx + k);
+    }
+}
+
 }  // namespace eomgen

@@ -84,6 +84,9 @@ struct ModelTable {
     /// Yx = ∂y/∂x (n_outputs × 2 nq) and Yp = ∂y/∂p (n_outputs × n_params) of the declared outputs, column-major, by
     /// forward differentiation in the shared object (linearize_outputs); null as `jacobian` is.
     int (*output_jacobian)(double t, const double* x, const void* p, double* Yx, double* Yp);
+    /// Lx = ∂λ/∂x (n_constraints × 2 nq) and Lp = ∂λ/∂p of the multipliers, column-major, by forward differentiation
+    /// through the constrained solve (linearize_multipliers); null without constraints and as `jacobian` is.
+    int (*multiplier_jacobian)(double t, const double* x, const void* p, double* Lx, double* Lp);
     /// The message of the last error on this thread, and its time in *t.
     const char* (*error_message)(double* t);
     /// The switching surfaces of rhs() (abs, sign, heaviside, max, min): n_switches values s_k, 0 and null when none.
@@ -292,6 +295,17 @@ struct Wrappers {
             write(yp, Yp);
         });
     }
+    static int multiplier_jacobian(double t, const double* x, const void* p, double* Lx, double* Lp) {
+        return guarded([&] {
+            if constexpr (is_constrained<M>::value) {
+                Eigen::Matrix<double, M::n_constraints, M::nx> lx;
+                Eigen::Matrix<double, M::n_constraints, M::n_params> lp;
+                linearize_multipliers<detail::model_template<M>::template type>(t, read<State>(x), params(p), lx, lp);
+                write(lx, Lx);
+                write(lp, Lp);
+            }
+        });
+    }
     static const char* error_message(double* t) {
         if (t) *t = last_error().t;
         return last_error().message.c_str();
@@ -348,6 +362,7 @@ const ModelTable& model_table() {
             t.jacobian = &W::jacobian;
             t.parameter_jacobian = &W::parameter_jacobian;
             t.output_jacobian = &W::output_jacobian;
+            if constexpr (constrained) t.multiplier_jacobian = &W::multiplier_jacobian;
         }
         t.error_message = &W::error_message;
         if constexpr (declares_power<M>::value) t.power = &W::power;
@@ -556,6 +571,17 @@ class TableModel {
         Yx.resize(n_outputs, x.size());
         Yp.resize(n_outputs, n_params);
         if (n_outputs > 0) check(table().output_jacobian(t, x.data(), p.data(), Yx.data(), Yp.data()));
+    }
+
+    /// Lx = ∂λ/∂x and Lp = ∂λ/∂p of the multipliers, computed in the shared object (sensitivities.hpp).
+    static void multiplier_jacobian(double t, const State& x, const Params& p, Eigen::MatrixXd& Lx,
+                                    Eigen::MatrixXd& Lp) {
+        Lx.resize(n_constraints, x.size());
+        Lp.resize(n_constraints, n_params);
+        if (n_constraints == 0) return;
+        if (!table().multiplier_jacobian)
+            throw std::logic_error("the compiled model has no Jacobians (model_table<M, true> compiles them)");
+        check(table().multiplier_jacobian(t, x.data(), p.data(), Lx.data(), Lp.data()));
     }
 
     /// Jp = ∂ẋ/∂p (columns in param_names order), computed in the shared object (sensitivities.hpp asks for it).

@@ -17,7 +17,7 @@
  *     r.events[0].dt // ∂t⁎/∂θ, ∂t⁎/∂ψ0 of a terminal event, −(g_x S + g_p)/(g_t + g_x ẋ) at t*
  *
  * Each sample also carries the declared outputs y ([outputs] of the model file) and their sensitivities
- * Yx S + Yp, with Yx and Yp by forward differentiation of the outputs.
+ * Yx S + Yp, and a constrained model's multipliers λ and theirs, Lx S + Lp, each by forward differentiation.
  *
  * J and Jp are exact: a generated unconstrained model with analytic Jacobians ([generate] jacobians = true)
  * gives them (state_jacobian, parameter_jacobian); a compiled table (eomgen run) gives its own; any other generated
@@ -111,6 +111,8 @@ struct SensitivitySample {
     Eigen::MatrixXd S;  ///< nx × columns
     Eigen::VectorXd y;  ///< the declared outputs ([outputs] of the model file): empty where there are none
     Eigen::MatrixXd Y;  ///< ∂y/∂(columns) = Yx S + Yp (n_outputs × columns)
+    Eigen::VectorXd lambda;  ///< a constrained model's multipliers: empty without constraints
+    Eigen::MatrixXd L;       ///< ∂λ/∂(columns) = Lx S + Lp (n_constraints × columns)
 };
 
 /// A located event with the sensitivities of its time and of the state there.
@@ -137,6 +139,14 @@ struct SensitivityResult {
 };
 
 namespace detail {
+
+template <class M, class = void>
+struct has_multiplier_jacobian : std::false_type {};
+template <class M>
+struct has_multiplier_jacobian<M, std::void_t<decltype(M::multiplier_jacobian(
+                                      0.0, std::declval<const typename M::State&>(),
+                                      std::declval<const typename M::Params&>(), std::declval<Eigen::MatrixXd&>(),
+                                      std::declval<Eigen::MatrixXd&>()))>> : std::true_type {};
 
 template <class M, class = void>
 struct has_output_jacobian : std::false_type {};
@@ -223,6 +233,23 @@ class SensitivitySystem {
         for (Eigen::Index b = 0; b <= Eigen::Index(columns_.size()); ++b) Jz.block(b * nx_, b * nx_, nx_, nx_) = J;
     }
 
+    /// A constrained model's multipliers λ at a sample and their sensitivities Lx S + Lp.
+    void multipliers(SensitivitySample& s) const {
+        if constexpr (is_constrained<M>::value) {
+            if (M::n_constraints == 0) return;
+            const typename M::State x = detail::model_state<M>(s.x);
+            typename M::ConstraintVector lambda;
+            M::multipliers(s.t, x, p_, lambda);
+            s.lambda = lambda;
+            Eigen::MatrixXd Lx, Lp;
+            if constexpr (detail::has_multiplier_jacobian<M>::value)
+                M::multiplier_jacobian(s.t, x, p_, Lx, Lp);
+            else
+                linearize_multipliers<detail::model_template<M>::template type>(s.t, x, p_, Lx, Lp);
+            s.L = with_parameters(Lx * s.S, Lp);
+        }
+    }
+
     /// The declared outputs y at a sample and their sensitivities Yx S + Yp (the parameters' columns of Yp).
     void outputs(SensitivitySample& s) const {
         if (M::n_outputs == 0) return;
@@ -232,10 +259,7 @@ class SensitivitySystem {
         s.y = y;
         Eigen::MatrixXd Yx, Yp;
         output_jacobians<M>(s.t, x, p_, Yx, Yp);
-        s.Y = Yx * s.S;
-        for (std::size_t c = 0; c < columns_.size(); ++c)
-            if (columns_[c].kind == SensitivityColumn::Kind::Parameter)
-                s.Y.col(Eigen::Index(c)) += Yp.col(columns_[c].index);
+        s.Y = with_parameters(Yx * s.S, Yp);
     }
 
     /// ẋ at (t, x).
@@ -247,6 +271,14 @@ class SensitivitySystem {
     }
 
   private:
+    /// D plus, in each parameter's column, that parameter's column of the explicit derivative E.
+    Eigen::MatrixXd with_parameters(Eigen::MatrixXd D, const Eigen::MatrixXd& E) const {
+        for (std::size_t c = 0; c < columns_.size(); ++c)
+            if (columns_[c].kind == SensitivityColumn::Kind::Parameter)
+                D.col(Eigen::Index(c)) += E.col(columns_[c].index);
+        return D;
+    }
+
     typename M::Params p_;
     Eigen::Index nx_;
     std::vector<SensitivityColumn> columns_;
@@ -393,7 +425,10 @@ struct SensitivityRun {
         out.x = end.x;
         out.S = end.S;
         out.samples = std::move(samples);
-        for (SensitivitySample& s : out.samples) system.outputs(s);
+        for (SensitivitySample& s : out.samples) {
+            system.outputs(s);
+            system.multipliers(s);
+        }
         out.stop_reason = r.stop_reason;
         out.stopped_by = r.stopped_by;
         out.accepted_steps = r.accepted_steps;

@@ -2,7 +2,7 @@
  * @file sensitivity_run.hpp  `eomgen run MODEL --sensitivities theta,x0:psi` (and eomgen-sim's): the trajectory
  * with S = ∂x/∂(θ, ψ(0)) integrated beside it (sensitivities.hpp), S at the end on stdout, a terminal event's
  * ∂t⁎/∂(…), and S's columns in the CSV after the usual ones: `dpsi/dtheta [1]`, `dpsi_dot/dpsi(0) [1/s]`, then the
- * declared outputs' (`dz_c/dtheta [m/rad]`).
+ * declared outputs' (`dz_c/dtheta [m/rad]`) and a constrained model's multipliers' (`dlambda_rod/dg`).
  */
 #pragma once
 
@@ -169,9 +169,14 @@ int run_sensitivities(const Options& o) {
     };
     for (Eigen::Index i = 0; i < r.x.size(); ++i)
         row(M::state_names[std::size_t(i)], state_unit<M>(std::size_t(i)), r.S.row(i));
-    if (!r.samples.empty() && r.samples.back().t == r.t)
+    if (!r.samples.empty() && r.samples.back().t == r.t) {
         for (Eigen::Index k = 0; k < r.samples.back().Y.rows(); ++k)
             row(M::output_names[std::size_t(k)], output_unit<M>(std::size_t(k)), r.samples.back().Y.row(k));
+        if constexpr (is_constrained<M>::value)
+            for (Eigen::Index k = 0; k < r.samples.back().L.rows(); ++k)
+                row("lambda_" + std::string(M::constraint_names[std::size_t(k)]), multiplier_unit<M>(std::size_t(k)),
+                    r.samples.back().L.row(k));
+    }
     for (const auto& e : r.events) {
         std::cout << "event:   " << e.name << " at t = " << e.t << s << ";";
         for (std::size_t c = 0; c < labels.size(); ++c) {
@@ -185,7 +190,7 @@ int run_sensitivities(const Options& o) {
               << "\n";
 
     if (o.csv.empty()) return kExitOk;
-    // S's columns (each column's states), then the outputs' (each column's outputs).
+    // S's columns (each column's states), then the outputs' (each column's outputs), then the multipliers'.
     std::vector<std::string> names;
     for (std::size_t c = 0; c < labels.size(); ++c)
         for (std::size_t i = 0; i < M::state_names.size(); ++i)
@@ -195,12 +200,18 @@ int run_sensitivities(const Options& o) {
         for (std::size_t k = 0; k < M::output_names.size(); ++k)
             names.push_back(with_unit("d" + std::string(M::output_names[k]) + "/d" + labels[c].name,
                                       unit_ratio(output_unit<M>(k), labels[c].unit)));
+    if constexpr (is_constrained<M>::value)
+        for (std::size_t c = 0; c < labels.size(); ++c)
+            for (std::size_t k = 0; k < M::constraint_names.size(); ++k)
+                names.push_back(with_unit("dlambda_" + std::string(M::constraint_names[k]) + "/d" + labels[c].name,
+                                          unit_ratio(multiplier_unit<M>(k), labels[c].unit)));
     std::vector<Sample<State>> samples;
     std::vector<std::vector<double>> rows;
     for (const auto& sample : r.samples) {
         samples.push_back({sample.t, State(sample.x)});
         rows.emplace_back(sample.S.data(), sample.S.data() + sample.S.size());  // column-major: by column, then state
         rows.back().insert(rows.back().end(), sample.Y.data(), sample.Y.data() + sample.Y.size());
+        rows.back().insert(rows.back().end(), sample.L.data(), sample.L.data() + sample.L.size());
     }
     try {
         write_samples<M>(o, params, samples, {}, names, rows);

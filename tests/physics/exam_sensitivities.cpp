@@ -266,6 +266,40 @@ TEST_CASE("the declared outputs' sensitivities Yx S + Yp agree with differences 
     CHECK(r.samples.front().Y.col(0).cwiseAbs().maxCoeff() > 0);
 }
 
+TEST_CASE("the multipliers' sensitivities Lx S + Lp agree with differences of the multipliers", "[sensitivities]") {
+    // The Cartesian pendulum's rod tension λ at t = 3 s, against g and m.
+    using C = eomgen::models::pendulum_cartesian::Model<double>;
+    const C::Params p;
+    const double l = C::param_values(p)[1];
+    C::State x0;
+    x0 << l * std::sin(0.6), -l * std::cos(0.6), 0.8 * std::cos(0.6), 0.8 * std::sin(0.6);
+    const std::vector<SensitivityColumn> columns{eomgen::parameter_column(C::param_names, "g"),
+                                                 eomgen::parameter_column(C::param_names, "m")};
+    eomgen::Dop853Options<double> o;
+    o.rtol = kRtol;
+    o.atol = kAtol;
+    const double t_end = 3.0;
+    const auto r = eomgen::integrate_sensitivities<C, eomgen::Dop853>(p, 0.0, x0, t_end, columns, o, {}, {t_end});
+    REQUIRE(r.samples.size() == 1);
+    const auto& end = r.samples.back();
+    REQUIRE(end.lambda.size() == 1);
+    REQUIRE(end.L.rows() == 1);
+    const auto values = C::param_values(p);
+    for (std::size_t c = 0; c < columns.size(); ++c) {
+        const double v = values[std::size_t(columns[c].index)], h = 2e-4 * std::max(1.0, std::abs(v));
+        const auto at = [&](double offset) {
+            C::Params q = p;
+            C::set_param(q, C::param_names[std::size_t(columns[c].index)], v + offset);
+            C::ConstraintVector lambda;
+            C::multipliers(t_end, C::State(end_state<C>(q, x0, t_end, By::Dop853)), q, lambda);
+            return lambda(0);
+        };
+        const double fd = (-at(2 * h) + 8 * at(h) - 8 * at(-h) + at(-2 * h)) / (12 * h);
+        INFO("column " << c << ": L = " << end.L(0, Eigen::Index(c)) << ", differences " << fd);
+        CHECK(std::abs(end.L(0, Eigen::Index(c)) - fd) <= 1e-7 * std::abs(fd));
+    }
+}
+
 TEST_CASE("samples carry S, and S at t0 is the columns' start", "[sensitivities]") {
     using D = eomgen::models::door::Model<double>;
     const auto r = eomgen::integrate_sensitivities<D, eomgen::Dopri5>(
