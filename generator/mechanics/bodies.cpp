@@ -60,7 +60,7 @@ GiNaC::matrix body_inertia(const Body& body) {
 namespace {
 
 void check_sequence(const Body& body) {
-    if (!valid_euler_sequence(body.sequence))
+    if (body.rotations.empty() && !valid_euler_sequence(body.sequence))
         throw ModelError(body.where, "Euler sequence '" + body.sequence + "' of body '" + body.name +
                                          "' is not three of x, y, z with no axis twice in a row");
 }
@@ -93,7 +93,7 @@ std::vector<BodyEnergy> body_energies(const Model& model) {
         check_sequence(body);
         const GiNaC::matrix r = column(body.centre);
         const GiNaC::matrix v = time_derivative(r, model);
-        const GiNaC::matrix w = body_angular_velocity(body.angles, model, body.sequence);
+        const GiNaC::matrix w = body_angular_velocity(body, model);
         GiNaC::ex v2 = 0, wIw = 0, gr = 0;
         for (unsigned i = 0; i < 3; ++i) {
             v2 += v(i, 0) * v(i, 0);
@@ -112,9 +112,9 @@ BodyDynamics body_dynamics(const Model& model, const Body& body) {
     BodyDynamics d;
     d.name = body.name;
     const GiNaC::matrix I = body_inertia(body);
-    d.rotation = euler_rotation(body.angles, body.sequence);
-    d.omega_body = expanded(body_angular_velocity(body.angles, model, body.sequence));
-    d.omega_space = expanded(space_angular_velocity(body.angles, model, body.sequence));
+    d.rotation = body_rotation(body);
+    d.omega_body = expanded(body_angular_velocity(body, model));
+    d.omega_space = expanded(space_angular_velocity(body, model));
     const GiNaC::matrix r = column(body.centre);
     d.velocity = expanded(time_derivative(r, model));
     d.angular_momentum_body = expanded(I.mul(d.omega_body));
@@ -137,7 +137,7 @@ std::vector<GiNaC::ex> body_generalized_forces(const Model& model) {
         if (!force && !torque) continue;
         check_sequence(body);
         const GiNaC::matrix v = time_derivative(column(body.centre), model);
-        const GiNaC::matrix w = body_angular_velocity(body.angles, model, body.sequence);
+        const GiNaC::matrix w = body_angular_velocity(body, model);
         for (std::size_t i = 0; i < model.dof(); ++i) {
             const GiNaC::symbol& qd = model.coordinates[i].qd;
             for (unsigned k = 0; k < 3; ++k) {
@@ -161,7 +161,7 @@ std::vector<SpringEnergy> spring_energies(const Model& model) {
                 throw ModelError(spring.where, "spring '" + spring.name + "' is attached to body '" + e.body +
                                                    "', which the model does not have");
             check_sequence(*body);
-            return point_position(column(body->centre), euler_rotation(body->angles, body->sequence),
+            return point_position(column(body->centre), body_rotation(*body),
                                   column(e.point));
         };
         const GiNaC::matrix a = end(spring.from), b = end(spring.to);

@@ -8,34 +8,6 @@
 
 namespace eomgen {
 
-namespace {
-
-GiNaC::matrix unit_vector(char axis) {
-    GiNaC::matrix e(3, 1);
-    e(static_cast<unsigned>(axis - 'x'), 0) = 1;
-    return e;
-}
-
-GiNaC::matrix add(const GiNaC::matrix& a, const GiNaC::matrix& b) {
-    return a.add(b);
-}
-
-}  // namespace
-
-GiNaC::matrix axis_rotation(char axis, const GiNaC::ex& angle) {
-    const GiNaC::ex c = GiNaC::cos(angle), s = GiNaC::sin(angle);
-    switch (axis) {
-        case 'x':
-            return GiNaC::matrix{{1, 0, 0}, {0, c, s}, {0, -s, c}};
-        case 'y':
-            return GiNaC::matrix{{c, 0, -s}, {0, 1, 0}, {s, 0, c}};
-        case 'z':
-            return GiNaC::matrix{{c, s, 0}, {-s, c, 0}, {0, 0, 1}};
-        default:
-            throw std::invalid_argument(std::string("rotation axis must be x, y or z, not '") + axis + "'");
-    }
-}
-
 bool valid_euler_sequence(const std::string& sequence) {
     if (sequence.size() != 3) return false;
     for (char c : sequence)
@@ -52,36 +24,23 @@ void require_sequence(const std::string& sequence) {
 }
 }  // namespace
 
-GiNaC::matrix euler_rotation(const std::array<GiNaC::ex, 3>& angles, const std::string& sequence) {
+std::vector<Rotation> euler_chain(const std::array<GiNaC::ex, 3>& angles, const std::string& sequence) {
     require_sequence(sequence);
-    return axis_rotation(sequence[2], angles[2])
-        .mul(axis_rotation(sequence[1], angles[1]))
-        .mul(axis_rotation(sequence[0], angles[0]));
+    return {{sequence[0], angles[0]}, {sequence[1], angles[1]}, {sequence[2], angles[2]}};
+}
+
+GiNaC::matrix euler_rotation(const std::array<GiNaC::ex, 3>& angles, const std::string& sequence) {
+    return chain_rotation(euler_chain(angles, sequence));
 }
 
 GiNaC::matrix body_angular_velocity(const std::array<GiNaC::ex, 3>& angles,
                                     const std::array<GiNaC::ex, 3>& rates, const std::string& sequence) {
-    require_sequence(sequence);
-    GiNaC::matrix w =
-        axis_rotation(sequence[1], angles[1]).mul(unit_vector(sequence[0])).mul_scalar(rates[0]);
-    w = add(w, unit_vector(sequence[1]).mul_scalar(rates[1]));
-    w = add(axis_rotation(sequence[2], angles[2]).mul(w), unit_vector(sequence[2]).mul_scalar(rates[2]));
-    for (unsigned i = 0; i < 3; ++i) w(i, 0) = w(i, 0).expand();
-    return w;
+    return chain_body_angular_velocity(euler_chain(angles, sequence), {rates[0], rates[1], rates[2]});
 }
 
 GiNaC::matrix space_angular_velocity(const std::array<GiNaC::ex, 3>& angles,
                                      const std::array<GiNaC::ex, 3>& rates, const std::string& sequence) {
-    // ω = Aᵀ ω' composed the other way round, so no sin² + cos² is left to simplify:
-    // ω = φ̇ e_a + R_aᵀ(φ) (θ̇ e_b + R_bᵀ(θ) ψ̇ e_c).
-    require_sequence(sequence);
-    GiNaC::matrix w =
-        axis_rotation(sequence[1], angles[1]).transpose().mul(unit_vector(sequence[2])).mul_scalar(rates[2]);
-    w = add(w, unit_vector(sequence[1]).mul_scalar(rates[1]));
-    w = add(axis_rotation(sequence[0], angles[0]).transpose().mul(w),
-            unit_vector(sequence[0]).mul_scalar(rates[0]));
-    for (unsigned i = 0; i < 3; ++i) w(i, 0) = w(i, 0).expand();
-    return w;
+    return chain_space_angular_velocity(euler_chain(angles, sequence), {rates[0], rates[1], rates[2]});
 }
 
 namespace {
@@ -99,6 +58,36 @@ GiNaC::matrix body_angular_velocity(const std::array<GiNaC::ex, 3>& angles, cons
 GiNaC::matrix space_angular_velocity(const std::array<GiNaC::ex, 3>& angles, const Model& model,
                                      const std::string& sequence) {
     return space_angular_velocity(angles, rates_of(angles, model), sequence);
+}
+
+namespace {
+const std::vector<Rotation>& chain_of(const Body& body, std::vector<Rotation>& scratch) {
+    if (!body.rotations.empty()) return body.rotations;
+    scratch = euler_chain(body.angles, body.sequence);
+    return scratch;
+}
+std::vector<GiNaC::ex> chain_rates(const std::vector<Rotation>& chain, const Model& model) {
+    std::vector<GiNaC::ex> rates;
+    for (const Rotation& r : chain) rates.push_back(time_derivative(r.angle, model));
+    return rates;
+}
+}  // namespace
+
+GiNaC::matrix body_rotation(const Body& body) {
+    std::vector<Rotation> scratch;
+    return chain_rotation(chain_of(body, scratch));
+}
+
+GiNaC::matrix body_angular_velocity(const Body& body, const Model& model) {
+    std::vector<Rotation> scratch;
+    const std::vector<Rotation>& chain = chain_of(body, scratch);
+    return chain_body_angular_velocity(chain, chain_rates(chain, model));
+}
+
+GiNaC::matrix space_angular_velocity(const Body& body, const Model& model) {
+    std::vector<Rotation> scratch;
+    const std::vector<Rotation>& chain = chain_of(body, scratch);
+    return chain_space_angular_velocity(chain, chain_rates(chain, model));
 }
 
 GiNaC::matrix skew(const GiNaC::matrix& v) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "model/model.hpp"
+#include "model/rotations.hpp"
 
 #include <ginac/ginac.h>
 
@@ -19,9 +20,6 @@ namespace eomgen {
  * rotation, e.g. R_z(φ) = [[cos φ, sin φ, 0], [−sin φ, cos φ, 0], [0, 0, 1]] (Goldstein's D). "zxz" is
  * Goldstein's A = BCD; "xyz" and friends are the Tait–Bryan sequences.
  */
-
-/// The passive rotation by `angle` about the axis 'x', 'y' or 'z'.
-GiNaC::matrix axis_rotation(char axis, const GiNaC::ex& angle);
 
 /// True for the 12 valid sequences ("zxz", "zyz", "xyz", ...).
 bool valid_euler_sequence(const std::string& sequence);
@@ -49,6 +47,15 @@ GiNaC::matrix body_angular_velocity(const std::array<GiNaC::ex, 3>& angles, cons
                                     const std::string& sequence = "zxz");
 GiNaC::matrix space_angular_velocity(const std::array<GiNaC::ex, 3>& angles, const Model& model,
                                      const std::string& sequence = "zxz");
+
+/// The rotation chain of Euler angles (φ, θ, ψ) in the sequence "abc": [(a, φ), (b, θ), (c, ψ)].
+std::vector<Rotation> euler_chain(const std::array<GiNaC::ex, 3>& angles, const std::string& sequence);
+
+/// A body's rotation A (space → body) and angular velocity in body and space axes, from its rotation chain
+/// (Body::rotations: its Euler angles, or any chain, after the body it is oriented from), rates by the chain rule.
+GiNaC::matrix body_rotation(const Body& body);
+GiNaC::matrix body_angular_velocity(const Body& body, const Model& model);
+GiNaC::matrix space_angular_velocity(const Body& body, const Model& model);
 
 /// ω' from A and Ȧ by [ω']_× = A Ȧᵀ (and ω = Aᵀ ω'): the independent route, for any parametrisation.
 GiNaC::matrix body_angular_velocity_from_rotation(const GiNaC::matrix& A, const GiNaC::matrix& A_dot);

@@ -151,7 +151,7 @@ public:
         GiNaC::matrix I = body_inertia(b);
         if (about_origin) {
             const GiNaC::matrix r{{b.centre[0]}, {b.centre[1]}, {b.centre[2]}};
-            I = parallel_axis(I, b.mass, euler_rotation(b.angles, b.sequence).mul(r));
+            I = parallel_axis(I, b.mass, body_rotation(b).mul(r));
         }
         return done_.emplace(key, I).first->second;
     }
@@ -193,8 +193,8 @@ GiNaC::ex residual_of(const Model& model, const Equations& eq, const Result& res
         for (const Body& b : model.bodies) {
             if (b.name != body_name) continue;
             if (omega) {
-                const GiNaC::matrix w = head == "omega" ? body_angular_velocity(b.angles, model, b.sequence)
-                                                        : space_angular_velocity(b.angles, model, b.sequence);
+                const GiNaC::matrix w = head == "omega" ? body_angular_velocity(b, model)
+                                                        : space_angular_velocity(b, model);
                 return x - w(component(rest.substr(rest.find('.') + 1)[0]), 0);
             }
             if (component_form) {

@@ -1,6 +1,7 @@
 /** @file model.hpp  The in-memory model: coordinates, parameters, T and V as GiNaC expressions. */
 #pragma once
 
+#include "model/rotations.hpp"
 #include "model/units.hpp"
 
 #include <ginac/ginac.h>
@@ -95,8 +96,28 @@ struct Body {
     std::array<GiNaC::ex, 3> centre;      ///< centre of mass in space axes, in q and t
     std::array<GiNaC::ex, 3> angles;      ///< Euler angles (φ, θ, ψ) in q and t
     std::string sequence = "zxz";         ///< Euler sequence (mechanics/kinematics.hpp)
+    /// The orientation as a chain of rotations about body axes from space axes, when the file gives one
+    /// (`orientation = [["z", "psi"], ["x", "phi"]]`, or `{ body = "B", rotations = [...] }` after B's
+    /// chain, resolved when read); empty when the orientation is the Euler angles above.
+    std::vector<Rotation> rotations;
     std::array<GiNaC::ex, 3> force{0, 0, 0};   ///< applied at the centre of mass, space axes (q, q̇, t)
     std::array<GiNaC::ex, 3> torque{0, 0, 0};  ///< applied about the centre of mass, body axes (q, q̇, t)
+};
+
+/// A wheel rolling without slipping on a plane ([[contacts]]): a body with a symmetry axis (`axis`, body axes)
+/// and a rim of radius `radius`, a knife edge touching the plane n·r = height (n a signed space axis). It
+/// becomes constraints when read (model/rolling_contacts.hpp): the rim's lowest point P touches the plane
+/// (holonomic, `<name>_height`; left out where the coordinates keep it identically), and P's material
+/// velocity along the plane is zero (two nonholonomic, `<name>_slip_x`, ...).
+struct RollingContact {
+    std::string name;
+    SourceLocation where;  ///< of the name
+    std::string body;
+    GiNaC::ex radius;
+    char axis = 'z';        ///< the wheel's symmetry axis, body axes
+    char normal = 'z';      ///< the plane's normal, space axes, pointing to the side the wheel is on ...
+    int normal_sign = 1;    ///< ... with this sign
+    GiNaC::ex height = 0;   ///< the plane is n·r = height
 };
 
 /// One end of a spring: a point fixed in space or moving with q and t (`body` empty, `point` in space
@@ -193,6 +214,7 @@ struct Model {
     std::vector<Constraint> constraints;
     std::vector<Body> bodies;                    ///< [[bodies]]: their T and V add to T and V above
     std::vector<Spring> springs;                 ///< [[springs]]: their V adds to V above
+    std::vector<RollingContact> contacts;        ///< [[contacts]]: their constraints are in `constraints`
     std::array<GiNaC::ex, 3> gravity{0, 0, 0};  ///< [gravity] acceleration vector g, space axes
     std::vector<Result> results;                 ///< [[results]]: declared closed forms
     std::vector<DeclaredOutput> outputs;         ///< [outputs]: quantities recorded beside the state, in file order

@@ -1,5 +1,6 @@
 /** @file model_file.cpp  Model files: TOML via toml++, every problem located at file:line:col. */
 #include "model/model_file.hpp"
+#include "model/rolling_contacts.hpp"
 #include "model/dimensions.hpp"
 #include "model/units.hpp"
 
@@ -271,7 +272,7 @@ class Loader {
         model.t = GiNaC::symbol("t", "t");
         check_keys(root,
                    {"name", "title", "source", "description", "coordinates", "parameters", "lagrangian",
-                    "constraints", "forces", "stabilization", "bodies", "gravity", "springs", "results",
+                    "constraints", "forces", "stabilization", "bodies", "gravity", "springs", "contacts", "results",
                     "outputs", "motions", "generate"},
                    "at the top level");
 
@@ -304,6 +305,9 @@ class Loader {
                      "force", "torque"},
                     false);
         const std::vector<Entry> springs = entries(root, "springs", {"name", "stiffness", "length", "from", "to"}, false);
+        const std::vector<Entry> contacts =
+            entries(root, "contacts", {"name", "body", "radius", "axis", "normal", "height"}, false);
+        for (const auto& c : contacts) declarations.push_back({c.name, "contact", c.where, order(c.where)});
         for (const auto& b : bodies) declarations.push_back({b.name, "body", b.where, order(b.where)});
         for (const auto& s : springs) declarations.push_back({s.name, "spring", s.where, order(s.where)});
         for (const auto& c : constraints)
@@ -379,6 +383,7 @@ class Loader {
         read_springs(springs, symbols, model);
         read_gravity(root, symbols, model);
         read_constraints(constraints, symbols, model);
+        read_contacts(contacts, symbols, model);
         read_forces(root, symbols, model);
         read_stabilization(root, model);
         read_generate(root, model);
@@ -821,17 +826,14 @@ class Loader {
                 }
             }
             const toml::node* position = t.get("position");
-            if (!position) fail(src_.at(t), "missing key 'position' in [[bodies]] (the centre of mass, 3 expressions)");
-            const std::vector<GiNaC::ex> r = scalars(*position, "position", 3, symbols, placement);
-            check_entry_dimensions(*position, symbols, placement, metre, "a body's position is a length");
-            body.centre = {r[0], r[1], r[2]};
+            if (!position)
+                fail(src_.at(t), "missing key 'position' in [[bodies]] (the centre of mass, 3 expressions, or "
+                                 "{ body = \"name\", point = [x, y, z] })");
+            const toml::node* orientation = t.get("orientation");
+            const toml::node* sequence = t.get("sequence");
             body.angles = {0, 0, 0};
-            if (const toml::node* orientation = t.get("orientation")) {
-                const std::vector<GiNaC::ex> a = scalars(*orientation, "orientation", 3, symbols, placement);
-                check_entry_dimensions(*orientation, symbols, placement, Dims{}, "a body's orientation is angles");
-                body.angles = {a[0], a[1], a[2]};
-            }
-            if (const toml::node* sequence = t.get("sequence")) {
+            if (orientation) read_orientation(*orientation, sequence, symbols, placement, model, body);
+            if (sequence) {
                 body.sequence = string_value(*sequence, "sequence");
                 const std::string& q = body.sequence;
                 const bool ok = q.size() == 3 && q.find_first_not_of("xyz") == std::string::npos && q[0] != q[1] &&
@@ -841,6 +843,7 @@ class Loader {
                                                       "' must be three of x, y, z with no axis twice in a row "
                                                       "(e.g. \"zxz\", \"xyz\")");
             }
+            read_position(*position, symbols, placement, model, body);
             ParseOptions load;
             load.forbid_velocities.clear();
             if (const toml::node* force = t.get("force")) {
@@ -854,6 +857,141 @@ class Loader {
                 body.torque = {n[0], n[1], n[2]};
             }
             model.bodies.push_back(std::move(body));
+        }
+    }
+
+    /// The body named by `node` (a string) among those read before `body`, for a relative position or orientation.
+    const Body& earlier_body(const toml::node& node, const Model& model, const std::string& what) const {
+        const std::string name = string_value(node, "body");
+        for (const Body& b : model.bodies)
+            if (b.name == name) return b;
+        fail(string_start(node), "no body named '" + name + "' before this one in [[bodies]] (a body's " + what +
+                                     " may follow a body declared above it)");
+    }
+
+    /// A body's rotation chain as the file gives it or, where it gives Euler angles, as three rotations.
+    static std::vector<Rotation> chain_of(const Body& b) {
+        if (!b.rotations.empty()) return b.rotations;
+        return {{b.sequence[0], b.angles[0]}, {b.sequence[1], b.angles[1]}, {b.sequence[2], b.angles[2]}};
+    }
+
+    /// `orientation`: Euler angles [phi, theta, psi] (with `sequence`), a chain [["z", "psi"], ["x", "phi"], ...]
+    /// of rotations about body axes, or { body = "B", rotations = [...] }: B's chain, then these.
+    void read_orientation(const toml::node& node, const toml::node* sequence, const SymbolTable& symbols,
+                          const ParseOptions& placement, const Model& model, Body& body) const {
+        const toml::array* array = node.as_array();
+        const toml::table* table = node.as_table();
+        const bool chain = table || (array && !array->empty() && (*array)[0].as_array());
+        if (!chain) {
+            const std::vector<GiNaC::ex> a = scalars(node, "orientation", 3, symbols, placement);
+            check_entry_dimensions(node, symbols, placement, Dims{}, "a body's orientation is angles");
+            body.angles = {a[0], a[1], a[2]};
+            return;
+        }
+        if (sequence) fail(src_.at(*sequence), "'sequence' goes with Euler angles, not with a chain of rotations");
+        const toml::node* rotations = &node;
+        if (table) {
+            check_keys(*table, {"body", "rotations"}, "in a body's 'orientation'");
+            const toml::node* parent = table->get("body");
+            if (!parent) fail(src_.at(*table), "missing key 'body' in the body's 'orientation'");
+            body.rotations = chain_of(earlier_body(*parent, model, "orientation"));
+            rotations = table->get("rotations");
+            if (!rotations) return;  // oriented as the other body
+        }
+        const toml::array* list = rotations->as_array();
+        if (!list) fail(src_.at(*rotations), "'rotations' must be an array of [\"axis\", \"angle\"] pairs");
+        for (const toml::node& pair : *list) {
+            const toml::array* p = pair.as_array();
+            if (!p || p->size() != 2 || !(*p)[0].is_string())
+                fail(src_.at(pair), "a rotation is a pair [\"axis\", \"angle\"], e.g. [\"z\", \"psi\"]");
+            const std::string axis = string_value((*p)[0], "axis");
+            if (axis != "x" && axis != "y" && axis != "z")
+                fail(string_start((*p)[0]), "a rotation's axis is \"x\", \"y\" or \"z\", not '" + axis + "'");
+            check_entry_dimensions((*p)[1], symbols, placement, Dims{}, "a rotation's angle is an angle");
+            body.rotations.push_back({axis[0], scalar((*p)[1], "orientation", symbols, placement)});
+        }
+        if (body.rotations.empty()) body.rotations.push_back({'z', 0});
+    }
+
+    /// `position`: the centre of mass in space axes, or { body = "B", point = [x, y, z] }: a point of B (B's
+    /// axes, from its centre of mass), r_B + A_Bᵀ ρ.
+    void read_position(const toml::node& node, const SymbolTable& symbols, const ParseOptions& placement,
+                       const Model& model, Body& body) const {
+        const Dims metre{{0, 1, 0, 0, 0, 0, 0}};
+        if (const toml::table* table = node.as_table()) {
+            check_keys(*table, {"body", "point"}, "in a body's 'position'");
+            const toml::node* parent = table->get("body");
+            if (!parent) fail(src_.at(*table), "missing key 'body' in the body's 'position'");
+            const Body& b = earlier_body(*parent, model, "position");
+            GiNaC::matrix rho(3, 1);
+            if (const toml::node* point = table->get("point")) {
+                const std::vector<GiNaC::ex> p = scalars(*point, "point", 3, symbols, placement);
+                check_entry_dimensions(*point, symbols, placement, metre, "a body's point is a length");
+                for (unsigned i = 0; i < 3; ++i) rho(i, 0) = p[i];
+            }
+            const GiNaC::matrix r = chain_rotation(chain_of(b)).transpose().mul(rho);
+            for (unsigned i = 0; i < 3; ++i) body.centre[i] = (b.centre[i] + r(i, 0)).expand();
+            return;
+        }
+        const std::vector<GiNaC::ex> r = scalars(node, "position", 3, symbols, placement);
+        check_entry_dimensions(node, symbols, placement, metre, "a body's position is a length");
+        body.centre = {r[0], r[1], r[2]};
+    }
+
+    /// [[contacts]]: name, body, radius, axis ("x", "y" or "z" of the body), normal ("+z", "-z", ...; default
+    /// against gravity, else "+z"), height (default 0); each becomes its constraints (model/rolling_contacts.hpp).
+    void read_contacts(const std::vector<Entry>& entries, const SymbolTable& symbols, Model& model) const {
+        ParseOptions constant;
+        constant.forbid_velocities = "a contact's radius and the plane's height must not depend on velocities";
+        const Dims metre{{0, 1, 0, 0, 0, 0, 0}};
+        for (const Entry& e : entries) {
+            RollingContact c;
+            c.name = e.name;
+            c.where = e.where;
+            const toml::table& t = *e.table;
+            const toml::node* body = t.get("body");
+            if (!body) fail(src_.at(t), "missing key 'body' in [[contacts]] (the wheel, a body of [[bodies]])");
+            c.body = string_value(*body, "body");
+            if (std::none_of(model.bodies.begin(), model.bodies.end(), [&](const Body& b) { return b.name == c.body; }))
+                fail(string_start(*body), "no body named '" + c.body + "' in [[bodies]]");
+            const toml::node* radius = t.get("radius");
+            if (!radius) fail(src_.at(t), "missing key 'radius' in [[contacts]] (the wheel's radius)");
+            c.radius = scalar(*radius, "radius", symbols, constant);
+            check_entry_dimensions(*radius, symbols, constant, metre, "a wheel's radius is a length");
+            const toml::node* axis = t.get("axis");
+            if (!axis) fail(src_.at(t), "missing key 'axis' in [[contacts]] (the wheel's symmetry axis: \"x\", \"y\" or \"z\" of its body)");
+            const std::string a = string_value(*axis, "axis");
+            if (a != "x" && a != "y" && a != "z")
+                fail(string_start(*axis), "a wheel's axis is \"x\", \"y\" or \"z\" of its body, not '" + a + "'");
+            c.axis = a[0];
+            // Default: the plane faces against gravity where gravity is along one axis.
+            int along = -1, count = 0;
+            for (int k = 0; k < 3; ++k)
+                if (!model.gravity[k].is_zero()) along = k, ++count;
+            if (count == 1) {
+                GiNaC::exmap values;
+                for (const Parameter& p : model.parameters) values[p.symbol] = p.value;
+                const GiNaC::ex g = GiNaC::evalf(model.gravity[along].subs(values));
+                if (GiNaC::is_a<GiNaC::numeric>(g) && GiNaC::ex_to<GiNaC::numeric>(g).is_real()) {
+                    c.normal = static_cast<char>('x' + along);
+                    c.normal_sign = GiNaC::ex_to<GiNaC::numeric>(g).to_double() > 0 ? -1 : 1;
+                }
+            }
+            if (const toml::node* normal = t.get("normal")) {
+                const std::string n = string_value(*normal, "normal");
+                if (n.size() != 2 || (n[0] != '+' && n[0] != '-') || n.find_first_of("xyz", 1) != 1)
+                    fail(string_start(*normal), "a plane's normal is one of \"+x\", \"-x\", \"+y\", \"-y\", "
+                                                "\"+z\", \"-z\" (the side the wheel is on), not '" + n + "'");
+                c.normal = n[1];
+                c.normal_sign = n[0] == '+' ? 1 : -1;
+            }
+            if (const toml::node* height = t.get("height")) {
+                c.height = scalar(*height, "height", symbols, constant);
+                check_entry_dimensions(*height, symbols, constant, metre, "a plane's height is a length");
+            }
+            std::vector<Constraint> generated = rolling_contact_constraints(model, c);
+            for (Constraint& k : generated) model.constraints.push_back(std::move(k));
+            model.contacts.push_back(std::move(c));
         }
     }
 

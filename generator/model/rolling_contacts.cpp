@@ -1,0 +1,100 @@
+/** @file rolling_contacts.cpp  A wheel rolling without slipping on a plane, as the constraints it imposes. */
+#include "model/rolling_contacts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace eomgen {
+
+namespace {
+
+/// d e/dt for e in q and t (positions and angles have no velocities).
+GiNaC::ex rate(const GiNaC::ex& e, const Model& model) {
+    GiNaC::ex d = GiNaC::diff(e, model.t);
+    for (const Coordinate& c : model.coordinates) d += GiNaC::diff(e, c.q) * c.qd;
+    return d;
+}
+
+GiNaC::matrix unit(char axis, int sign = 1) {
+    GiNaC::matrix e(3, 1);
+    e(static_cast<unsigned>(axis - 'x'), 0) = sign;
+    return e;
+}
+
+GiNaC::ex dot(const GiNaC::matrix& a, const GiNaC::matrix& b) {
+    return a(0, 0) * b(0, 0) + a(1, 0) * b(1, 0) + a(2, 0) * b(2, 0);
+}
+
+GiNaC::matrix cross(const GiNaC::matrix& a, const GiNaC::matrix& b) {
+    return GiNaC::matrix{{a(1, 0) * b(2, 0) - a(2, 0) * b(1, 0)},
+                         {a(2, 0) * b(0, 0) - a(0, 0) * b(2, 0)},
+                         {a(0, 0) * b(1, 0) - a(1, 0) * b(0, 0)}};
+}
+
+/// True where e (in q, t and the parameters) is zero at four random configurations, the parameters at their
+/// values: an analytic function of the coordinates that vanishes at random points vanishes identically.
+bool vanishes(const GiNaC::ex& e, const Model& model) {
+    std::mt19937 random(20261127);
+    std::uniform_real_distribution<double> angle(-0.6, 0.6);
+    GiNaC::exmap values;
+    for (const Parameter& p : model.parameters) values[p.symbol] = p.value;
+    for (int trial = 0; trial < 4; ++trial) {
+        for (const Coordinate& c : model.coordinates) values[c.q] = angle(random);
+        values[model.t] = 0.3 + trial;
+        const GiNaC::ex v = GiNaC::evalf(e.subs(values));
+        if (!GiNaC::is_a<GiNaC::numeric>(v)) return false;
+        const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(v);
+        if (!n.is_real() || std::abs(n.to_double()) > 1e-10) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+std::vector<Constraint> rolling_contact_constraints(const Model& model, const RollingContact& contact) {
+    const auto body = std::find_if(model.bodies.begin(), model.bodies.end(),
+                                   [&](const Body& b) { return b.name == contact.body; });
+    if (body == model.bodies.end())
+        throw ModelError(contact.where, "contact '" + contact.name + "' names body '" + contact.body +
+                                            "', which is not in [[bodies]]");
+    std::vector<Rotation> chain = body->rotations;
+    if (chain.empty())
+        chain = {{body->sequence[0], body->angles[0]}, {body->sequence[1], body->angles[1]},
+                 {body->sequence[2], body->angles[2]}};
+    const GiNaC::matrix At = chain_rotation(chain).transpose();
+    std::vector<GiNaC::ex> rates;
+    for (const Rotation& r : chain) rates.push_back(rate(r.angle, model));
+    const GiNaC::matrix omega = chain_space_angular_velocity(chain, rates);
+
+    const GiNaC::matrix C{{body->centre[0]}, {body->centre[1]}, {body->centre[2]}};
+    const GiNaC::matrix v = GiNaC::matrix{{rate(C(0, 0), model)}, {rate(C(1, 0), model)}, {rate(C(2, 0), model)}};
+    const GiNaC::matrix n = unit(contact.normal, contact.normal_sign);
+    const GiNaC::matrix a = At.mul(unit(contact.axis));
+    const GiNaC::ex na = dot(n, a).expand();
+    const GiNaC::ex s = GiNaC::sqrt(1 - GiNaC::pow(na, 2));
+    GiNaC::matrix d(3, 1);
+    for (unsigned i = 0; i < 3; ++i) d(i, 0) = -(n(i, 0) - na * a(i, 0)) / s;
+
+    std::vector<Constraint> out;
+    auto add = [&](const std::string& suffix, ConstraintKind kind, const GiNaC::ex& e, const std::string& text) {
+        Constraint c;
+        c.name = contact.name + "_" + suffix;
+        c.kind = kind;
+        c.where = contact.where;
+        c.expr = {e, text, contact.where};
+        out.push_back(std::move(c));
+    };
+    const GiNaC::ex touch = (dot(n, C) - contact.radius * s - contact.height).expand();
+    if (!vanishes(touch, model))
+        add("height", ConstraintKind::Holonomic, touch, "the rim of '" + contact.body + "' touches the plane");
+    const GiNaC::matrix slip = v.add(cross(omega, d.mul_scalar(contact.radius)));
+    for (char axis : {'x', 'y', 'z'}) {
+        if (axis == contact.normal) continue;
+        add(std::string("slip_") + axis, ConstraintKind::Nonholonomic, slip(static_cast<unsigned>(axis - 'x'), 0).expand(),
+            "the rim of '" + contact.body + "' does not slip along " + axis);
+    }
+    return out;
+}
+
+}  // namespace eomgen
