@@ -1,6 +1,8 @@
 /** @file modes_command.cpp  `eomgen modes`: the equilibria and their normal modes as text, Markdown or JSON. */
 #include "cli/modes_command.hpp"
 #include "cli/model_unit_values.hpp"
+#include "cli/plot.hpp"
+#include "cli/steady_modes.hpp"
 #include "model/dimensions.hpp"
 
 #include "codegen/cpp_emitter.hpp"
@@ -325,6 +327,15 @@ ModesCommand::ModesCommand(CLI::App& app) {
         ->check(CLI::IsMember({"text", "markdown", "json"}))
         ->capture_default_str();
     command_->add_option("-o,--output", output_, "Write to FILE instead of standard output");
+    command_->add_option("--steady", steady_, "About a steady motion: the rate of a coordinate the equations do not "
+                                              "depend on, NAME_dot=EXPR in the parameters (repeatable), e.g. "
+                                              "thetaR_dot=-v/rR; the other such rates and the other coordinates are found");
+    command_->add_option("--speed", speed_, "With --steady: split C = P C1 and K = g K0 + P^2 K2 by this parameter "
+                                            "(default: the one parameter in --steady)");
+    command_->add_option("--sweep", sweep_, "With --steady: eigenvalues against a parameter, NAME=START:STOP:COUNT, and "
+                                            "the values where the stability changes");
+    command_->add_option("--plot", plot_, "With --sweep: the eigenvalues' real and imaginary parts against the "
+                                          "parameter (root locus), FILE.png or FILE.svg (gnuplot)");
 }
 
 bool ModesCommand::selected() const { return command_->parsed(); }
@@ -334,6 +345,7 @@ int ModesCommand::run() const {
     const Equations eq = derive_equations(model);
     ModesOptions options;
     ModesResult result;
+    std::string steady;  // the report about a steady motion (--steady), else empty
     try {
         for (const std::string& s : set_) {
             try {  // a bare number in the parameter's declared unit, or with its own ("45 deg")
@@ -350,13 +362,30 @@ int ModesCommand::run() const {
             options.at.push_back(g);
         }
         options.inputs = inputs_;
-        result = small_oscillations(model, eq, options);
+        if (!steady_.empty() || !sweep_.empty() || !speed_.empty() || !plot_.empty()) {
+            if (steady_.empty()) throw ModesError("--speed and --sweep go with --steady NAME_dot=EXPR");
+            if (format_ == "markdown") throw ModesError("--steady writes text or json");
+            if (!momentum_.empty() || !inputs_.empty()) throw ModesError("--momentum and --input do not go with --steady");
+            SteadyRequest request;
+            request.steady = steady_;
+            request.set = options.set;
+            for (const auto& g : options.at) request.at.insert(g.begin(), g.end());
+            request.speed = speed_;
+            request.sweep = sweep_;
+            request.plot = plot_;
+            if (!plot_.empty() && !plot_format_problem(plot_).empty()) throw ModesError("--plot: " + plot_format_problem(plot_));
+            request.format = format_;
+            steady = steady_modes(model, eq, request);
+        } else {
+            result = small_oscillations(model, eq, options);
+        }
     } catch (const ModesError& e) {
         std::cerr << "eomgen modes: " << e.what() << "\n";
         return 2;
     }
     Printer printer(model, result);
-    const std::string out = format_ == "json"       ? format_json(model, result, printer, inputs_)
+    const std::string out = !steady.empty()         ? steady
+                            : format_ == "json"     ? format_json(model, result, printer, inputs_)
                             : format_ == "markdown" ? format_markdown(model, result, printer)
                                                     : format_text(model, result, printer);
     if (output_.empty()) {
