@@ -257,6 +257,40 @@ std::string format_json(const Model& model, const ModesResult& r, Printer& p, co
     return js.str();
 }
 
+/// A motion of the model file ([[motions]]) usable as a steady motion: its conditions all give velocities, in the
+/// parameters only (no constants of the motion, no coordinates, no t).
+bool steady_capable(const Model& model, const Motion& m) {
+    if (!m.constants.empty() || m.conditions.empty()) return false;
+    for (const MotionCondition& c : m.conditions) {
+        if (!c.velocity || c.value.expr.has(model.t)) return false;
+        for (const Coordinate& q : model.coordinates)
+            if (c.value.expr.has(q.q) || c.value.expr.has(q.qd)) return false;
+    }
+    return true;
+}
+
+/// The rates of the steady motion `name` declares (--motion), or, without --motion, of the first steady-capable
+/// motion of a nonholonomic model (whose equilibria are not isolated: a bicycle, a rolling coin); its name, or ""
+/// when none is used.
+std::string declared_steady_motion(const Model& model, const std::string& name, std::vector<std::string>& rates) {
+    const bool nonholonomic = std::any_of(model.constraints.begin(), model.constraints.end(),
+                                          [](const Constraint& c) { return c.kind == ConstraintKind::Nonholonomic; });
+    for (const Motion& m : model.motions) {
+        if (!name.empty() ? m.name != name : !nonholonomic || !steady_capable(model, m)) continue;
+        if (!steady_capable(model, m))
+            throw ModesError("--motion " + name + ": a steady motion gives rates only (\"q' = expression in the parameters\"), "
+                             "and '" + m.name + "' has other conditions");
+        for (const MotionCondition& c : m.conditions) {
+            const std::size_t a = c.value.text.find_first_not_of(' '), b = c.value.text.find_last_not_of(' ');
+            rates.push_back(model.coordinates[c.coordinate].name + "_dot=" +
+                            (a == std::string::npos ? c.value.text : c.value.text.substr(a, b - a + 1)));
+        }
+        return m.name;
+    }
+    if (!name.empty()) throw ModesError("--motion " + name + ": the model declares no [[motions]] of that name");
+    return "";
+}
+
 std::pair<std::string, double> assignment(const std::string& text, const char* option) {
     try {
         return eomgen::sim::parse_assignment(text, option);
@@ -330,6 +364,9 @@ ModesCommand::ModesCommand(CLI::App& app) {
     command_->add_option("--steady", steady_, "About a steady motion: the rate of a coordinate the equations do not "
                                               "depend on, NAME_dot=EXPR in the parameters (repeatable), e.g. "
                                               "thetaR_dot=-v/rR; the other such rates and the other coordinates are found");
+    command_->add_option("--motion", motion_, "About a steady motion the model file declares ([[motions]] whose "
+                                              "conditions give rates, q' = EXPR); a nonholonomic model's first one is "
+                                              "used without --steady or --motion");
     command_->add_option("--speed", speed_, "With --steady: split C = P C1 and K = g K0 + P^2 K2 by this parameter "
                                             "(default: the one parameter in --steady)");
     command_->add_option("--sweep", sweep_, "With --steady: eigenvalues against a parameter, NAME=START:STOP:COUNT, and "
@@ -362,12 +399,17 @@ int ModesCommand::run() const {
             options.at.push_back(g);
         }
         options.inputs = inputs_;
-        if (!steady_.empty() || !sweep_.empty() || !speed_.empty() || !plot_.empty()) {
-            if (steady_.empty()) throw ModesError("--speed and --sweep go with --steady NAME_dot=EXPR");
+        std::vector<std::string> steady_rates = steady_;
+        std::string from_motion;
+        if (steady_rates.empty()) from_motion = declared_steady_motion(model, motion_, steady_rates);
+        if (!steady_rates.empty() || !sweep_.empty() || !speed_.empty() || !plot_.empty()) {
+            if (steady_rates.empty())
+                throw ModesError("--speed and --sweep go with --steady NAME_dot=EXPR (or --motion NAME)");
             if (format_ == "markdown") throw ModesError("--steady writes text or json");
             if (!momentum_.empty() || !inputs_.empty()) throw ModesError("--momentum and --input do not go with --steady");
             SteadyRequest request;
-            request.steady = steady_;
+            request.steady = steady_rates;
+            request.motion = from_motion;
             request.set = options.set;
             for (const auto& g : options.at) request.at.insert(g.begin(), g.end());
             request.speed = speed_;

@@ -32,7 +32,7 @@ std::string modes_show_section(const Model& model, const Equations& eq);
  *
  *     eomgen modes MODEL.toml [--set p=v ...] [--at q=v[,q2=v ...] ...] [--momentum p_q=v ...]
  *                  [--input PARAM ...] [--format text|markdown|json] [-o FILE]
- *     eomgen modes MODEL.toml --steady NAME_dot=EXPR ... [--speed P] [--sweep P=START:STOP:COUNT [--plot FILE]] [--set ...] [--at ...]
+ *     eomgen modes MODEL.toml (--steady NAME_dot=EXPR ... | --motion NAME) [--speed P] [--sweep P=START:STOP:COUNT [--plot FILE]] [--set ...] [--at ...]
  *
  * run() derives the model (a ModelError propagates: exit 1), finds its equilibria and linearizes about each
  * (mechanics/small_oscillations.hpp) and prints them; with --steady, about that steady motion instead
@@ -49,7 +49,7 @@ class ModesCommand {
     CLI::App* command_ = nullptr;
     std::string model_, format_ = "text", output_;
     std::vector<std::string> set_, at_, momentum_, inputs_, steady_;
-    std::string speed_, sweep_, plot_;
+    std::string speed_, sweep_, plot_, motion_;
 };
 
 }  // namespace eomgen::cli

@@ -206,7 +206,7 @@ std::string steady_modes(const Model& model, const Equations& eq, const SteadyRe
         };
         os << "{\"model\": " << json_string(model.name) << ", \"steady\": [";
         for (std::size_t k = 0; k < request.steady.size(); ++k) os << (k ? ", " : "") << json_string(request.steady[k]);
-        os << "], \"parameters\": {";
+        os << "], \"motion\": " << json_string(request.motion) << ", \"parameters\": {";
         for (std::size_t i = 0; i < model.parameters.size(); ++i)
             os << (i ? ", " : "") << json_string(model.parameters[i].name) << ": " << num(s.parameters[i], 17);
         os << "}, \"q\": " << named(s.q, "") << ", \"qd\": " << named(s.qd, "_dot") << ", \"multipliers\": {";
@@ -255,6 +255,7 @@ std::string steady_modes(const Model& model, const Equations& eq, const SteadyRe
     os << model.name << ": " << model.title << "\n";
     os << "steady motion:";
     for (const std::string& r : request.steady) os << " " << r << ";";
+    if (!request.motion.empty()) os << " (the model's motion '" << request.motion << "')";
     os << " residual " << num(s.residual, 3) << "\n ";
     for (std::size_t i = 0; i < model.dof(); ++i)
         os << " " << model.coordinates[i].name

@@ -15,6 +15,7 @@ namespace eomgen::cli {
 
 struct SteadyRequest {
     std::vector<std::string> steady;     ///< NAME_dot=EXPR
+    std::string motion;                  ///< the model's [[motions]] entry they come from, or ""
     std::map<std::string, double> set;   ///< --set, SI
     std::map<std::string, double> at;    ///< --at
     std::string speed;                   ///< --speed: the parameter C and K are split by ("" : the one in --steady)

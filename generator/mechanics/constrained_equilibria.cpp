@@ -18,8 +18,9 @@ ManifoldConstraints manifold_constraints(const Model& model, const Equations& eq
     for (const ConstraintEquations& k : eq.constraints) {
         if (k.kind != ConstraintKind::Holonomic)
             throw ModesError("constraint '" + k.name +
-                             "' is nonholonomic: rest under a velocity constraint is not an isolated equilibrium, "
-                             "and eomgen modes linearizes holonomic constraints only");
+                             "' is nonholonomic: rest under a velocity constraint is not an isolated equilibrium; "
+                             "linearize about a steady motion instead, eomgen modes --steady q_dot=EXPR "
+                             "(docs/steady_motions.md)");
         if (k.position.has(model.t))
             throw ModesError("constraint '" + k.name +
                              "' depends on t (a prescribed motion): the system has no equilibria in these "
