@@ -105,7 +105,8 @@ struct Body {
 };
 
 /// A wheel rolling without slipping on a plane ([[contacts]]): a body with a symmetry axis (`axis`, body axes)
-/// and a rim of radius `radius`, a knife edge touching the plane n·r = height (n a signed space axis). It
+/// and a rim of radius `radius`, a knife edge (or a torus with a tube radius) touching the plane n·r = height
+/// (n a signed space axis). It
 /// becomes constraints when read (model/rolling_contacts.hpp): the rim's lowest point P touches the plane
 /// (holonomic, `<name>_height`; left out where the coordinates keep it identically), and P's material
 /// velocity along the plane is zero (two nonholonomic, `<name>_slip_x`, ...).
@@ -113,7 +114,8 @@ struct RollingContact {
     std::string name;
     SourceLocation where;  ///< of the name
     std::string body;
-    GiNaC::ex radius;
+    GiNaC::ex radius;       ///< of the rim (a torus: of the circle through the tube's centres)
+    GiNaC::ex tube = 0;     ///< a torus' tube radius (a tyre); 0 for a knife edge
     char axis = 'z';        ///< the wheel's symmetry axis, body axes
     char normal = 'z';      ///< the plane's normal, space axes, pointing to the side the wheel is on ...
     int normal_sign = 1;    ///< ... with this sign

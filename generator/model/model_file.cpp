@@ -306,7 +306,7 @@ class Loader {
                     false);
         const std::vector<Entry> springs = entries(root, "springs", {"name", "stiffness", "length", "from", "to"}, false);
         const std::vector<Entry> contacts =
-            entries(root, "contacts", {"name", "body", "radius", "axis", "normal", "height"}, false);
+            entries(root, "contacts", {"name", "body", "radius", "tube", "axis", "normal", "height"}, false);
         for (const auto& c : contacts) declarations.push_back({c.name, "contact", c.where, order(c.where)});
         for (const auto& b : bodies) declarations.push_back({b.name, "body", b.where, order(b.where)});
         for (const auto& s : springs) declarations.push_back({s.name, "spring", s.where, order(s.where)});
@@ -938,7 +938,7 @@ class Loader {
         body.centre = {r[0], r[1], r[2]};
     }
 
-    /// [[contacts]]: name, body, radius, axis ("x", "y" or "z" of the body), normal ("+z", "-z", ...; default
+    /// [[contacts]]: name, body, radius, tube (a torus' tube radius, default 0), axis ("x", "y" or "z" of the body), normal ("+z", "-z", ...; default
     /// against gravity, else "+z"), height (default 0); each becomes its constraints (model/rolling_contacts.hpp).
     void read_contacts(const std::vector<Entry>& entries, const SymbolTable& symbols, Model& model) const {
         ParseOptions constant;
@@ -984,6 +984,10 @@ class Loader {
                                                 "\"+z\", \"-z\" (the side the wheel is on), not '" + n + "'");
                 c.normal = n[1];
                 c.normal_sign = n[0] == '+' ? 1 : -1;
+            }
+            if (const toml::node* tube = t.get("tube")) {
+                c.tube = scalar(*tube, "tube", symbols, constant);
+                check_entry_dimensions(*tube, symbols, constant, metre, "a tyre's tube radius is a length");
             }
             if (const toml::node* height = t.get("height")) {
                 c.height = scalar(*height, "height", symbols, constant);

@@ -85,10 +85,14 @@ std::vector<Constraint> rolling_contact_constraints(const Model& model, const Ro
         c.expr = {e, text, contact.where};
         out.push_back(std::move(c));
     };
-    const GiNaC::ex touch = (dot(n, C) - contact.radius * s - contact.height).expand();
+    // The point of contact from the centre: down the wheel's plane to the rim (the tube's centre circle), then
+    // down the normal by the tube's radius (0 for a knife edge).
+    GiNaC::matrix arm(3, 1);
+    for (unsigned i = 0; i < 3; ++i) arm(i, 0) = contact.radius * d(i, 0) - contact.tube * n(i, 0);
+    const GiNaC::ex touch = (dot(n, C) - contact.radius * s - contact.tube - contact.height).expand();
     if (!vanishes(touch, model))
         add("height", ConstraintKind::Holonomic, touch, "the rim of '" + contact.body + "' touches the plane");
-    const GiNaC::matrix slip = v.add(cross(omega, d.mul_scalar(contact.radius)));
+    const GiNaC::matrix slip = v.add(cross(omega, arm));
     for (char axis : {'x', 'y', 'z'}) {
         if (axis == contact.normal) continue;
         add(std::string("slip_") + axis, ConstraintKind::Nonholonomic, slip(static_cast<unsigned>(axis - 'x'), 0).expand(),

@@ -10,11 +10,12 @@ namespace eomgen {
 /**
  * The constraints of a rolling contact (docs/model_files.md, "Rolling contacts"). With the wheel's centre C
  * and axis a = Aᵀ e_axis in space axes, the plane's unit normal n and s = √(1 − (n·a)²), the rim's lowest
- * point is P = C + r d, d = −(n − (n·a) a)/s, the unit vector in the wheel's plane most against n. Then
- * - touching: n·P − h = n·C − r s − h = 0 (holonomic), left out where it vanishes identically in the model's
+ * point is P = C + r d − ρ n, d = −(n − (n·a) a)/s, the unit vector in the wheel's plane most against n, ρ a
+ * torus' tube radius (0 for a knife edge: the tube's lowest point lies below its centre circle along −n). Then
+ * - touching: n·P − h = n·C − r s − ρ − h = 0 (holonomic), left out where it vanishes identically in the model's
  *   coordinates (probed at random configurations with the parameters' values), e.g. when the coordinates
  *   are the contact point's;
- * - rolling: the velocity of the wheel's material point at P, v_C + ω × r d, has no component along the
+ * - rolling: the velocity of the wheel's material point at P, v_C + ω × (P − C), has no component along the
  *   plane (two nonholonomic constraints, one per tangent axis). Its normal component equals the time
  *   derivative of the touching constraint (the rim's tangent at P lies in the plane), so nothing is redundant.
  * s = 0 is the wheel lying flat, where the contact point is undefined. Throws ModelError at the contact when

@@ -206,3 +206,28 @@ TEST_CASE("rolling contact and relative bodies: mistakes are reported where they
                Catch::Contains("no body named 'later' before this one"));
     CHECK_THAT(error(contact_disc(R"~([["z", "phi'"]])~")), Catch::Contains("without velocities"));
 }
+
+TEST_CASE("rolling contact: a torus (a tyre) touches a tube's radius lower and rolls on radius R + rho upright",
+          "[rolling][bodies]") {
+    for (const bool torus : {false, true}) {
+        std::string text = contact_disc();
+        text.replace(text.find("[[parameters]]\nname = \"g\""), 0, "[[parameters]]\nname = \"rho\"\nvalue = 0.03\n");
+        if (torus) {
+            text.replace(text.find("\"R*cos(theta)\"]"), 15, "\"R*cos(theta) + rho\"]");
+            text.replace(text.find("radius = \"R\""), 12, "radius = \"R\"\ntube = \"rho\"");
+        }
+        const eomgen::Model model = eomgen::parse_model(text, "tyre.toml");
+        REQUIRE(model.constraints.size() == 2);  // the centre written from the contact point: touching holds
+        // Upright (theta = 0), heading phi, spinning at psi' with the contact point at rest: the material point at
+        // the contact moves at (R + rho) psi' along the heading, as x' + (R + rho) psi' cos(phi) = 0 says.
+        eomgen::SymbolValues v;
+        for (const eomgen::Parameter& p : model.parameters) v[p.symbol] = p.value;
+        for (const eomgen::Coordinate& c : model.coordinates) v[c.q] = 0, v[c.qd] = 0;
+        v[model.coordinates[2].q] = 0.3;
+        v[model.coordinates[4].qd] = 2;
+        eomgen::DoubleEvaluator at(v);
+        const double rolling = 0.4 + (torus ? 0.03 : 0.0);
+        CHECK(*at(model.constraints[0].expr.expr) == Approx(rolling * 2 * std::cos(0.3)).epsilon(1e-14));
+        CHECK(*at(model.constraints[1].expr.expr) == Approx(rolling * 2 * std::sin(0.3)).epsilon(1e-14));
+    }
+}
