@@ -252,7 +252,7 @@ std::string steady_modes(const Model& model, const Equations& eq, const SteadyRe
         os << "}\n";
         return os.str();
     }
-    os << model.name << ": " << model.title << "\n";
+    os << model.name << (model.title.empty() ? "" : ": " + model.title) << "\n";
     os << "steady motion:";
     for (const std::string& r : request.steady) os << " " << r << ";";
     if (!request.motion.empty()) os << " (the model's motion '" << request.motion << "')";

@@ -1,9 +1,11 @@
 /** @file exam_steady_motions.cpp  Steady motions of holonomic and nonholonomic models other than the bicycle
  *  (eomgen modes --steady): the rolling disc's upright rolling against its closed-form wobble frequency and
- *  stability bound, and the heavy top's steady precession against Goldstein's condition. */
+ *  stability bound, the heavy top's steady precession against Goldstein's condition, and the sleeping top (in
+ *  tilt angles, where Euler angles are singular) against its stability bound I3² ω² > 4 I M g l. */
 #include "mechanics/lagrangian.hpp"
 #include "mechanics/small_oscillations.hpp"
 #include "mechanics/steady_motion.hpp"
+#include "mechanics/steady_sweep.hpp"
 #include "model/model_file.hpp"
 
 #include <catch2/catch.hpp>
@@ -68,4 +70,63 @@ TEST_CASE("steady motion: the heavy top's precession angle satisfies Goldstein's
     eomgen::SteadyMotionOptions sleeping;
     sleeping.rates.push_back({index_of(model, "psi"), GiNaC::numeric(100), "psi_dot=100"});
     CHECK_THROWS_WITH(eomgen::steady_motion(model, eq, sleeping), Catch::Contains("singular"));
+}
+
+TEST_CASE("steady motion: the sleeping top, in tilt angles, is stable above omega = 2 sqrt(I M g l)/I3", "[physics][steady]") {
+    // The top's axis tilted by a about x and b about y (no singularity upright), spinning by psi about it: a
+    // massless frame at the pivot carries the tilts, the top sits on it at distance l.
+    const char* text = R"~(
+name = "sleeping_top"
+[[coordinates]]
+name = "a"
+[[coordinates]]
+name = "b"
+[[coordinates]]
+name = "psi"
+[[parameters]]
+name = "M"
+value = 0.5
+[[parameters]]
+name = "l"
+value = 0.05
+[[parameters]]
+name = "I1"
+value = 0.0004
+[[parameters]]
+name = "I3"
+value = 0.0006
+[[parameters]]
+name = "g"
+value = 9.81
+[[parameters]]
+name = "w"
+value = 100
+[gravity]
+vector = ["0", "0", "-g"]
+[[bodies]]
+name = "pivot"
+mass = 0
+inertia = [0, 0, 0]
+position = ["0", "0", "0"]
+orientation = [["x", "a"], ["y", "b"]]
+[[bodies]]
+name = "top"
+mass = "M"
+inertia = ["I1", "I1", "I3"]
+position = { body = "pivot", point = ["0", "0", "l"] }
+orientation = { body = "pivot", rotations = [["z", "psi"]] }
+)~";
+    const eomgen::Model model = eomgen::parse_model(text, "sleeping_top.toml");
+    const eomgen::Equations eq = eomgen::derive_equations(model);
+    eomgen::SteadyMotionSolver solver(model, eq);
+    eomgen::SteadyMotionOptions o;
+    o.rates.push_back({index_of(model, "psi"), model.parameters[5].symbol, "psi_dot=w"});
+    const eomgen::SteadyMotion s = solver.solve(o);
+    REQUIRE(s.decoupled);
+    CHECK(s.stability == "marginally stable");
+    const eomgen::SteadySweep sweep = eomgen::sweep_steady_motion(model, solver, o, s, "w", 10, 100, 10);
+    REQUIRE(sweep.changes.size() == 1);
+    const double I = 0.0004 + 0.5 * 0.05 * 0.05, critical = 2 * std::sqrt(I * 0.5 * 9.81 * 0.05) / 0.0006;
+    CHECK(sweep.changes[0].value == Approx(critical).epsilon(1e-13));
+    CHECK(sweep.changes[0].from == "unstable");
 }
