@@ -1,6 +1,7 @@
 /** @file constraints.cpp  Constraints at position, velocity and acceleration level; Frobenius on Pfaffian forms. */
 #include "mechanics/constraints.hpp"
 
+#include "mechanics/pole_free_subs.hpp"
 #include "mechanics/time_dependence.hpp"
 
 #include <Eigen/Dense>
@@ -12,8 +13,18 @@
 namespace eomgen {
 namespace {
 
+/// e's value at `at`; NaN where it is not a real number, or where GiNaC meets a pole (1/0 in floating point: a
+/// wheel lying flat at the initial state, found by the structural fuzzer) — the callers treat NaN as singular.
 double number(const GiNaC::ex& e, const GiNaC::exmap& at) {
-    const GiNaC::ex v = GiNaC::evalf(e.subs(at));
+    // The poles are looked for before substituting: GiNaC leaks the product it was building when it throws.
+    const std::optional<GiNaC::ex> substituted = subs_unless_pole(e, at);
+    if (!substituted) return std::nan("");
+    GiNaC::ex v;
+    try {
+        v = GiNaC::evalf(*substituted);
+    } catch (const std::exception&) {
+        return std::nan("");
+    }
     if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) return std::nan("");
     return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
 }

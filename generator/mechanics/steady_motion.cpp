@@ -191,6 +191,7 @@ void find_steady_state(const Problem& P, const std::vector<double>& p, const std
             ++k;
         }
         J.block(0, k, Eigen::Index(n), Eigen::Index(m)) = a.Av.transpose();
+        if (cols == 0) break;  // nothing to find: every rate given, no coordinate at rest, no constraint
         const VectorXd step = J.completeOrthogonalDecomposition().solve(-r);
         double size = 0;
         k = 0;
@@ -484,6 +485,8 @@ SteadyMotion SteadyMotionSolver::solve(const SteadyMotionOptions& options, const
     } else {
         S = A;
     }
+    if (S.rows() == 0)
+        throw ModesError("the constraints leave no motion about the steady state (no coordinate or speed is free)");
     Eigen::EigenSolver<MatrixXd> es(S);
     if (es.info() != Eigen::Success) throw ModesError("the eigenvalues did not converge");
     std::vector<Eigen::Index> keep;

@@ -32,14 +32,16 @@ GiNaC::matrix cross(const GiNaC::matrix& a, const GiNaC::matrix& b) {
                          {a(0, 0) * b(1, 0) - a(1, 0) * b(0, 0)}};
 }
 
-/// True where e (in q, t and the parameters) is zero at four random configurations, the parameters at their
-/// values: an analytic function of the coordinates that vanishes at random points vanishes identically.
+/// True where e (in q, t and the parameters) is zero at four random configurations with random parameters (each
+/// within 30 % of its value, or in (0.5, 1.5) where that is 0, so that a parameter that happens to be 0 in the file
+/// does not hide a constraint a --set would need): an analytic function that vanishes at random points vanishes
+/// identically.
 bool vanishes(const GiNaC::ex& e, const Model& model) {
     std::mt19937 random(20261127);
-    std::uniform_real_distribution<double> angle(-0.6, 0.6);
+    std::uniform_real_distribution<double> angle(-0.6, 0.6), factor(0.7, 1.3), unit(0.5, 1.5);
     GiNaC::exmap values;
-    for (const Parameter& p : model.parameters) values[p.symbol] = p.value;
     for (int trial = 0; trial < 4; ++trial) {
+        for (const Parameter& p : model.parameters) values[p.symbol] = p.value != 0 ? p.value * factor(random) : unit(random);
         for (const Coordinate& c : model.coordinates) values[c.q] = angle(random);
         values[model.t] = 0.3 + trial;
         const GiNaC::ex v = GiNaC::evalf(e.subs(values));
@@ -52,7 +54,9 @@ bool vanishes(const GiNaC::ex& e, const Model& model) {
 
 }  // namespace
 
-std::vector<Constraint> rolling_contact_constraints(const Model& model, const RollingContact& contact) {
+namespace {
+
+std::vector<Constraint> contact_constraints(const Model& model, const RollingContact& contact) {
     const auto body = std::find_if(model.bodies.begin(), model.bodies.end(),
                                    [&](const Body& b) { return b.name == contact.body; });
     if (body == model.bodies.end())
@@ -72,7 +76,12 @@ std::vector<Constraint> rolling_contact_constraints(const Model& model, const Ro
     const GiNaC::matrix n = unit(contact.normal, contact.normal_sign);
     const GiNaC::matrix a = At.mul(unit(contact.axis));
     const GiNaC::ex na = dot(n, a).expand();
-    const GiNaC::ex s = GiNaC::sqrt(1 - GiNaC::pow(na, 2));
+    const GiNaC::ex flat = (1 - GiNaC::pow(na, 2)).expand();
+    if (flat.is_zero() || vanishes(flat, model))
+        throw ModelError(contact.where, "contact '" + contact.name + "': the axis " + std::string(1, contact.axis) +
+                                            " of body '" + contact.body + "' is along the plane's normal in every "
+                                            "configuration: the wheel lies flat and no point of its rim is the lowest");
+    const GiNaC::ex s = GiNaC::sqrt(flat);
     GiNaC::matrix d(3, 1);
     for (unsigned i = 0; i < 3; ++i) d(i, 0) = -(n(i, 0) - na * a(i, 0)) / s;
 
@@ -99,6 +108,18 @@ std::vector<Constraint> rolling_contact_constraints(const Model& model, const Ro
             "the rim of '" + contact.body + "' does not slip along " + axis);
     }
     return out;
+}
+
+}  // namespace
+
+std::vector<Constraint> rolling_contact_constraints(const Model& model, const RollingContact& contact) {
+    try {
+        return contact_constraints(model, contact);
+    } catch (const ModelError&) {
+        throw;
+    } catch (const std::exception& e) {  // GiNaC: a pole where the geometry divides by zero identically
+        throw ModelError(contact.where, "contact '" + contact.name + "': its geometry cannot be formed (" + e.what() + ")");
+    }
 }
 
 }  // namespace eomgen

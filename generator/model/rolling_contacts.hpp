@@ -13,7 +13,7 @@ namespace eomgen {
  * point is P = C + r d − ρ n, d = −(n − (n·a) a)/s, the unit vector in the wheel's plane most against n, ρ a
  * torus' tube radius (0 for a knife edge: the tube's lowest point lies below its centre circle along −n). Then
  * - touching: n·P − h = n·C − r s − ρ − h = 0 (holonomic), left out where it vanishes identically in the model's
- *   coordinates (probed at random configurations with the parameters' values), e.g. when the coordinates
+ *   coordinates (probed at random configurations with random parameter values), e.g. when the coordinates
  *   are the contact point's;
  * - rolling: the velocity of the wheel's material point at P, v_C + ω × (P − C), has no component along the
  *   plane (two nonholonomic constraints, one per tangent axis). Its normal component equals the time

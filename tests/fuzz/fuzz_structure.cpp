@@ -3,7 +3,9 @@
 // the TOML reader. A small reader hands out the bytes as choices (0, the simplest choice, once they run out);
 // from them a model is written out as TOML: a random tree of point masses in T (pendulum links, carts, vertical
 // and inclined sliders, polar (r, phi) and Cartesian (x, y) joints, a support driven in t), [[bodies]] (a shape
-// or an inertia tensor, on a link or as a heavy top in Euler angles), [[springs]], [forces], a Rayleigh R,
+// or an inertia tensor, on a link or as a heavy top in Euler angles; oriented by a chain of rotations or placed on
+// and oriented from another body), a coin rolling on the ground and wheels on any body ([[contacts]]),
+// [[springs]], [forces], a Rayleigh R,
 // holonomic and nonholonomic [[constraints]] (couplings, circles, lines, rheonomic ones, redundant ones, ones
 // that hold identically, that fix every coordinate, that are singular at the initial state, that are not
 // linear in the velocities), a coordinate that appears nowhere, parameter values including 0, and a few
@@ -11,11 +13,12 @@
 //
 // Each model goes through what the commands do, in process: parse_model, derive_equations (generate, show,
 // modes, run and check all start there), emit_model_header (generate), derive_hamiltonian (show),
-// small_oscillations (modes) and a short run (RK4 on M q'' = f + A^T lambda, A q'' = gamma, from the model's
+// small_oscillations (modes), a steady motion about a random rate of the last coordinate (modes --steady) and a short run (RK4 on M q'' = f + A^T lambda, A q'' = gamma, from the model's
 // initial state and parameter values, M and f evaluated with GiNaC). Properties, each a finding (an abort with
 // the model's text) when broken:
 //   - no crash, no hang (the driver's --slow limit), and no exception but a ModelError located at
-//     fuzzed.toml:line:col, or a ModesError from small_oscillations;
+//     fuzzed.toml:line:col, or a ModesError from small_oscillations or the steady motion;
+//   - every number the steady motion reports (state, multipliers, A, M, C, K, eigenvalues) is finite;
 //   - every number small_oscillations reports (equilibria, M, K, C, G, A, B, multipliers, tangent bases,
 //     eigenvalues, omega^2 and shapes of the modes, growth rates) is finite;
 //   - the header has no NUL byte and no `nan` or `inf` token;
@@ -32,6 +35,7 @@
 #include "mechanics/hamiltonian.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "mechanics/small_oscillations.hpp"
+#include "mechanics/steady_motion.hpp"
 #include "model/model_file.hpp"
 
 #include <Eigen/Dense>
@@ -145,7 +149,7 @@ private:
     std::vector<Coord> coords_;
     std::vector<std::pair<std::string, std::string>> params_;  // name, value (in order of first use)
     std::vector<Point> points_{Point{}};                       // [0]: the ground
-    std::vector<std::string> T_, V_, bodies_, springs_, constraints_, body_names_;
+    std::vector<std::string> T_, V_, bodies_, springs_, constraints_, body_names_, contacts_;
     std::vector<std::pair<std::string, std::string>> forces_;
     std::vector<std::string> holonomic_, nonholonomic_;  // for redundant constraints
     std::string R_, unused_, outputs_, extra_sections_;
@@ -317,16 +321,39 @@ private:
         std::string b = "[[bodies]]\nname = " + toml_string(name) + "\nmass = " +
                         (in_.chance(20) ? std::string("2") : toml_string(param("mb" + index))) + "\n";
         b += shape_and_inertia(index);
-        b += "position = " + triple("0", sum(p.x), sum(p.y)) + "\n";
         std::string angle = p.angle.empty() ? "0" : p.angle;
         if (in_.chance(15)) angle = random_coord();
-        if (rare(15) && coords_.size() < 6) {
+        if (!body_names_.empty() && in_.chance(15)) {
+            // on the body before: a point of it, oriented from it by one more rotation (or as it, or from a body not
+            // yet declared: an error at its place)
+            const std::string parent = rare(10) ? std::string("later") : body_names_.back();
+            b += "position = { body = " + toml_string(parent) + ", point = " + triple("0", "0", param("l1")) + " }\n";
+            b += "orientation = { body = " + toml_string(parent) +
+                 (in_.chance(50) ? ", rotations = [[" + toml_string(in_.one_of(std::vector<std::string>{"x", "y", "z", "w"})) +
+                                       ", " + toml_string(angle) + "]] }\n"
+                                 : std::string(" }\n"));
+            bodies_.push_back(b);
+            body_names_.push_back(name);
+            gravity_ = true;
+            return;
+        }
+        b += "position = " + triple("0", sum(p.x), sum(p.y)) + "\n";
+        if (in_.chance(15)) {
+            // a chain of one to three rotations about body axes
+            std::string chain = "[";
+            const unsigned n = 1 + in_.below(3);
+            for (unsigned k = 0; k < n; ++k)
+                chain += std::string(k ? ", " : "") + "[" + toml_string(in_.one_of(std::vector<std::string>{"x", "y", "z"})) + ", " +
+                         toml_string(k == 0 ? angle : random_coord()) + "]";
+            b += "orientation = " + chain + "]\n";
+        } else if (rare(15) && coords_.size() < 6) {
             // spinning about its own z axis, by a coordinate nothing else moves: with a thin rod, no inertia
             b += "orientation = " + triple("0", angle, new_coord("sp", Kind::Angle).name) + "\n";
         } else if (angle != "0" || in_.chance(50)) {
             b += "orientation = " + triple("0", angle, "0") + "\n";
         }
-        if (in_.chance(10)) b += "sequence = " + toml_string(in_.one_of(std::vector<std::string>{"zxz", "zyz", "xyz", "zyx", "xzx"})) + "\n";
+        if (in_.chance(10) && (b.find("orientation = [[") == std::string::npos || rare(30)))
+            b += "sequence = " + toml_string(in_.one_of(std::vector<std::string>{"zxz", "zyz", "xyz", "zyx", "xzx"})) + "\n";
         if (in_.chance(15)) b += "force = " + triple(param("F0"), "0", "0") + "\n";
         if (in_.chance(10)) b += "torque = " + triple("0", "0", "-" + param("c") + "*" + random_coord() + "'") + "\n";
         bodies_.push_back(b);
@@ -349,7 +376,37 @@ private:
         gravity_ = true;
     }
 
+    /// A coin rolling on the ground in its own five coordinates (as models/rolling_disc.toml), or a wheel on a body
+    /// the model already has (any geometry: its contact may be singular or hold identically).
+    void contacts() {
+        if (coords_.size() <= 2 && in_.chance(8)) {
+            const std::string x = new_coord("cx", Kind::Length).name, y = new_coord("cy", Kind::Length).name,
+                              h = new_coord("head", Kind::Angle).name, lean = new_coord("lean", Kind::Angle).name,
+                              spin = new_coord("spin", Kind::Angle).name, R = param("R"), idx = std::to_string(++counter_);
+            std::string b = "[[bodies]]\nname = \"coin" + idx + "\"\nmass = " + toml_string(param("mc")) + "\n";
+            b += "inertia = " + triple(R + "^2/4", R + "^2/2", R + "^2/4") + "\n";
+            b += "position = " + triple(x + " + " + R + "*sin(" + lean + ")*sin(" + h + ")",
+                                        y + " - " + R + "*sin(" + lean + ")*cos(" + h + ")", R + "*cos(" + lean + ")") + "\n";
+            b += "orientation = [[\"z\", " + toml_string(h) + "], [\"x\", " + toml_string(lean) + "], [\"y\", " +
+                 toml_string("-" + spin) + "]]\n";
+            bodies_.push_back(b);
+            body_names_.push_back("coin" + idx);
+            contacts_.push_back("[[contacts]]\nname = \"ground" + idx + "\"\nbody = \"coin" + idx + "\"\nradius = " +
+                                toml_string(R) + "\naxis = \"y\"\n" + (in_.chance(30) ? "tube = " + toml_string(param("rho")) + "\n" : ""));
+            gravity_ = true;
+        }
+        if (!body_names_.empty() && in_.chance(6)) {
+            const std::string idx = std::to_string(++counter_);
+            contacts_.push_back("[[contacts]]\nname = \"wheel" + idx + "\"\nbody = " +
+                                toml_string(rare(10) ? std::string("nobody") : in_.one_of(body_names_)) + "\nradius = " +
+                                toml_string(param("r")) + "\naxis = " +
+                                toml_string(in_.one_of(std::vector<std::string>{"x", "y", "z"})) + "\n" +
+                                (in_.chance(30) ? "normal = " + toml_string(in_.one_of(std::vector<std::string>{"+z", "-y", "+x", "up"})) + "\n" : ""));
+        }
+    }
+
     void extras() {
+        contacts();
         const std::size_t n = coords_.size();
         for (std::size_t i = 0; i < n; ++i) {
             const std::string q = coord(i);
@@ -526,6 +583,7 @@ private:
         for (const std::string& b : springs_) s += b + "\n";
         if (gravity_ || (!springs_.empty() && in_.chance(50))) s += "[gravity]\nvector = " + triple("0", "0", "-" + param_value_free_g()) + "\n\n";
         for (const std::string& c : constraints_) s += c + "\n";
+        for (const std::string& c : contacts_) s += c + "\n";
         if (!outputs_.empty()) s += "[outputs]\n" + outputs_ + "\n";
         if (generate_jacobians_ && !constraints_.empty() && !degenerate_) generate_jacobians_ = false;
         if (generate_stiffness_ || generate_jacobians_)
@@ -551,9 +609,9 @@ long findings = 0;         // with EOMGEN_FUZZ_KEEP_GOING
 struct Stats {
     long inputs = 0, refused_parse = 0, refused_derive = 0, refused_emit = 0, refused_hamiltonian = 0, derived = 0,
          constrained = 0, modes_ok = 0, modes_refused = 0, modes_refused_model = 0, equilibria = 0, run_finite = 0,
-         run_singular = 0, hamiltonian_symbolic = 0;
+         run_singular = 0, hamiltonian_symbolic = 0, steady_ok = 0, steady_refused = 0;
     double seconds_parse = 0, seconds_derive = 0, seconds_emit = 0, seconds_hamiltonian = 0, seconds_modes = 0,
-           seconds_run = 0;
+           seconds_run = 0, seconds_steady = 0;
     std::map<std::string, long> refusals;  // the first words of each refusal's message
     double slowest = 0;
     std::string slowest_text, slowest_times;
@@ -567,8 +625,10 @@ struct Stats {
                      inputs, findings, refused_parse, refused_derive, refused_emit, refused_hamiltonian, derived, constrained,
                      modes_ok, equilibria, modes_refused, modes_refused_model, hamiltonian_symbolic, run_finite,
                      run_singular);
-        std::fprintf(stderr, "fuzz_structure: seconds in parse %.1f, derive %.1f, emit %.1f, hamiltonian %.1f, modes %.1f, run %.1f\n",
-                     seconds_parse, seconds_derive, seconds_emit, seconds_hamiltonian, seconds_modes, seconds_run);
+        std::fprintf(stderr, "fuzz_structure: steady motions: %ld answered, %ld refused\n", steady_ok, steady_refused);
+        std::fprintf(stderr, "fuzz_structure: seconds in parse %.1f, derive %.1f, emit %.1f, hamiltonian %.1f, modes %.1f, "
+                     "steady %.1f, run %.1f\n", seconds_parse, seconds_derive, seconds_emit, seconds_hamiltonian, seconds_modes,
+                     seconds_steady, seconds_run);
         for (const auto& [what, n] : refusals) std::fprintf(stderr, "  %6ld  %s\n", n, what.c_str());
         std::fprintf(stderr, "fuzz_structure: the slowest input took %.3f s (%s):\n%s", slowest, slowest_times.c_str(),
                      slowest_text.c_str());
@@ -829,6 +889,20 @@ void check_finite(const std::vector<std::vector<double>>& m, const std::string& 
     for (const auto& row : m) check_finite(row, what);
 }
 
+/// Every number a steady motion reports is finite (a singular one is a ModesError, never a NaN).
+void check_steady(const eomgen::SteadyMotion& r) {
+    auto all = [](const auto& m) { return m.size() == 0 || m.allFinite(); };
+    for (const std::vector<double>* v : {&r.q, &r.qd, &r.lambda})
+        for (double x : *v)
+            if (!std::isfinite(x)) finding("a number the steady motion reports is not finite", "state or multiplier");
+    if (!all(r.A) || !all(r.Mr) || !all(r.Cr) || !all(r.Kr) || !all(r.M) || !all(r.C) || !all(r.K))
+        finding("a number the steady motion reports is not finite", "A, M_r, C_r, K_r, M, C or K");
+    for (Eigen::Index k = 0; k < r.eigenvalues.size(); ++k)
+        if (!std::isfinite(r.eigenvalues(k).real()) || !std::isfinite(r.eigenvalues(k).imag()))
+            finding("a number the steady motion reports is not finite", "eigenvalue");
+    if (!std::isfinite(r.growth_rate)) finding("a number the steady motion reports is not finite", "growth rate");
+}
+
 void check_modes(const eomgen::ModesResult& r) {
     for (std::size_t e = 0; e < r.equilibria.size(); ++e) {
         const eomgen::Equilibrium& q = r.equilibria[e];
@@ -976,6 +1050,35 @@ void test_one(const std::uint8_t* data, std::size_t size) {
             located(e, stage);
             ++stats.modes_refused_model;
             ++stats.refusals[refusal_kind("modes (ModelError)", e.what())];
+        }
+
+        stage = "steady_motion";
+        if (model->dof() > 0) {
+            try {
+                // A rate of 3/2 for the last coordinate the equations do not depend on (the last one when none).
+                Timer timer(stats.seconds_steady);
+                eomgen::SteadyMotionSolver solver(*model, *eq);
+                for (std::size_t j = model->dof(); j-- > 0;) {
+                    eomgen::SteadyMotionOptions o;
+                    o.rates.push_back({j, GiNaC::numeric(3, 2), "q_dot=3/2"});
+                    try {
+                        const eomgen::SteadyMotion r = solver.solve(o);
+                        ++stats.steady_ok;
+                        check_steady(r);
+                        break;
+                    } catch (const eomgen::ModesError& e) {
+                        if (j > 0 && std::string(e.what()).find("does not turn at a constant rate") != std::string::npos) continue;
+                        throw;
+                    }
+                }
+            } catch (const eomgen::ModesError& e) {
+                if (std::string(e.what()).empty()) finding("a ModesError without a message", "");
+                ++stats.steady_refused;
+                ++stats.refusals[refusal_kind("steady", e.what())];
+            } catch (const eomgen::ModelError& e) {
+                located(e, stage);
+                ++stats.steady_refused;
+            }
         }
 
         stage = "the short run";

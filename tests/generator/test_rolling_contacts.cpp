@@ -124,6 +124,11 @@ TEST_CASE("rolling contact: the touching constraint where the coordinates do not
     REQUIRE(lifted.constraints.size() == 3);
     CHECK(lifted.constraints[0].name == "ground_height");
     CHECK(lifted.constraints[0].kind == eomgen::ConstraintKind::Holonomic);
+    // A parameter that is 0 in the file does not hide the constraint: --set lift=0.1 would lift the coin.
+    std::string with_lift = contact_disc();
+    with_lift.replace(with_lift.find(from), from.size(), R"~(position = ["x", "y", "R*cos(theta) + lift"])~");
+    with_lift.replace(with_lift.find("[[parameters]]\nname = \"g\""), 0, "[[parameters]]\nname = \"lift\"\nvalue = 0\n");
+    CHECK(eomgen::parse_model(with_lift, "coin.toml").constraints.size() == 3);
     // height = n·C − R √(1 − (n·a)²) = x/10 at any lean (n·a = sin θ sin... of the axis).
     eomgen::SymbolValues v;
     for (const eomgen::Parameter& p : lifted.parameters) v[p.symbol] = p.value;
@@ -205,6 +210,11 @@ TEST_CASE("rolling contact and relative bodies: mistakes are reported where they
     CHECK_THAT(error(contact_disc(R"~({ body = "later", rotations = [["x", "theta"]] })~")),
                Catch::Contains("no body named 'later' before this one"));
     CHECK_THAT(error(contact_disc(R"~([["z", "phi'"]])~")), Catch::Contains("without velocities"));
+    // A wheel whose axis stays along the normal lies flat: no lowest point (found by the structural fuzzer, where
+    // it was a division by zero from GiNaC).
+    t = contact_disc(R"~([["z", "phi"]])~");
+    t.replace(t.find("axis = \"y\""), 10, "axis = \"z\"");
+    CHECK_THAT(error(t), Catch::Contains("m.toml:") && Catch::Contains("the wheel lies flat"));
 }
 
 TEST_CASE("rolling contact: a torus (a tyre) touches a tube's radius lower and rolls on radius R + rho upright",
