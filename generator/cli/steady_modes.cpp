@@ -111,6 +111,28 @@ void plot_sweep(const Model& model, const SteadySweep& sw, const std::string& ou
     run_gnuplot(script, output);
 }
 
+/// The names of an eigenvector's components: [q, q'] of the second-order coordinates where they decouple, else z.
+std::vector<std::string> vector_names(const Model& model, const SteadyMotion& s) {
+    std::vector<std::string> out;
+    if (s.decoupled) {
+        for (std::size_t j : s.second_order) out.push_back(model.coordinates[j].name);
+        for (std::size_t j : s.second_order) out.push_back(model.coordinates[j].name + "_dot");
+    } else {
+        for (std::size_t j : s.coordinates) out.push_back(model.coordinates[j].name);
+        for (std::size_t j : s.speeds) out.push_back(model.coordinates[j].name + "_dot");
+    }
+    return out;
+}
+
+/// Eigenvector k scaled so that its largest component is 1 (real).
+Eigen::VectorXcd shape(const SteadyMotion& s, Eigen::Index k) {
+    Eigen::VectorXcd v = s.eigenvectors.col(k);
+    Eigen::Index at = 0;
+    v.cwiseAbs().maxCoeff(&at);
+    if (std::abs(v(at)) > 0) v /= v(at);
+    return v;
+}
+
 }  // namespace
 
 std::string steady_modes(const Model& model, const Equations& eq, const SteadyRequest& request) {
@@ -233,6 +255,16 @@ std::string steady_modes(const Model& model, const Equations& eq, const SteadyRe
         }
         os << ", \"eigenvalues\": [";
         for (Eigen::Index k = 0; k < s.eigenvalues.size(); ++k) os << (k ? ", " : "") << complex_json(s.eigenvalues(k));
+        os << "], \"eigenvector_components\": [";
+        const std::vector<std::string> comps = vector_names(model, s);
+        for (std::size_t i = 0; i < comps.size(); ++i) os << (i ? ", " : "") << json_string(comps[i]);
+        os << "], \"eigenvectors\": [";
+        for (Eigen::Index k = 0; k < s.eigenvalues.size(); ++k) {
+            const Eigen::VectorXcd v = shape(s, k);
+            os << (k ? ", [" : "[");
+            for (Eigen::Index i = 0; i < v.size(); ++i) os << (i ? ", " : "") << complex_json(v(i));
+            os << "]";
+        }
         os << "], \"stability\": " << json_string(s.stability) << ", \"growth_rate\": " << num(s.growth_rate, 17);
         if (sw) {
             os << ", \"sweep\": {\"parameter\": " << json_string(sw->name) << ", \"values\": [";
@@ -292,6 +324,15 @@ std::string steady_modes(const Model& model, const Equations& eq, const SteadyRe
     }
     os << "\neigenvalues:";
     for (Eigen::Index k = 0; k < s.eigenvalues.size(); ++k) os << (k ? ", " : " ") << complex_text(s.eigenvalues(k));
+    const std::vector<std::string> comps = vector_names(model, s);
+    for (Eigen::Index k = 0; k < s.eigenvalues.size(); ++k) {
+        if (s.eigenvalues(k).imag() < 0) continue;  // its conjugate's shape is the conjugate
+        const Eigen::VectorXcd v = shape(s, k);
+        os << "\n  mode " << complex_text(s.eigenvalues(k)) << ": (";
+        for (Eigen::Index i = 0; i < v.size() && std::size_t(i) < comps.size(); ++i)
+            os << (i ? ", " : "") << comps[std::size_t(i)] << ": " << complex_text(v(i));
+        os << ")";
+    }
     os << "\n" << s.stability;
     if (s.stability == "unstable") os << ": perturbations grow as exp(" << num(s.growth_rate, 10) << " t)";
     os << "\n";

@@ -153,6 +153,16 @@ TEST_CASE("bicycle: the benchmark's M, C1, K0, K2 from the model file to 1e-12",
                                               {-0.77534188219585, 4.46486771378823}, {-0.32286642900409, 0}};
     for (int k = 0; k < 4; ++k) CHECK(std::abs(s.eigenvalues(k) - expected[k]) < 1e-11);
     CHECK(s.stability == "stable");
+    // The eigenvectors over [phi, delta, phi', delta']: (M l^2 + C l + K) x = 0 and the rates l x.
+    REQUIRE(s.eigenvectors.rows() == 4);
+    for (Eigen::Index k = 0; k < 4; ++k) {
+        const std::complex<double> l = s.eigenvalues(k);
+        const Eigen::Vector2cd x = s.eigenvectors.col(k).head<2>(), xd = s.eigenvectors.col(k).tail<2>();
+        const Eigen::Vector2cd r = (s.M.cast<std::complex<double>>() * l * l + s.C.cast<std::complex<double>>() * l +
+                                    s.K.cast<std::complex<double>>()) * x;
+        CHECK(r.norm() < 1e-9 * s.K.norm() * x.norm());
+        CHECK((xd - l * x).norm() < 1e-12 * (1 + std::abs(l)) * s.eigenvectors.col(k).norm());
+    }
 }
 
 TEST_CASE("bicycle: eigenvalues from 0 to 10 m/s and the weave and capsize speeds", "[physics][bicycle]") {
