@@ -69,12 +69,6 @@ GiNaC::matrix column(const std::array<GiNaC::ex, 3>& v) {
     return GiNaC::matrix{{v[0]}, {v[1]}, {v[2]}};
 }
 
-GiNaC::matrix cross(const GiNaC::matrix& a, const GiNaC::matrix& b) {
-    return GiNaC::matrix{{a(1, 0) * b(2, 0) - a(2, 0) * b(1, 0)},
-                         {a(2, 0) * b(0, 0) - a(0, 0) * b(2, 0)},
-                         {a(0, 0) * b(1, 0) - a(1, 0) * b(0, 0)}};
-}
-
 GiNaC::matrix expanded(const GiNaC::matrix& m) {
     GiNaC::matrix out(m.rows(), m.cols());
     for (unsigned i = 0; i < m.rows(); ++i)

@@ -15,20 +15,6 @@ bool valid_euler_sequence(const std::string& sequence) {
     return sequence[0] != sequence[1] && sequence[1] != sequence[2];
 }
 
-namespace {
-void require_sequence(const std::string& sequence) {
-    if (!valid_euler_sequence(sequence))
-        throw std::invalid_argument(
-            "Euler sequence '" + sequence +
-            "' is not three of x, y, z with no axis twice in a row (e.g. \"zxz\", \"xyz\")");
-}
-}  // namespace
-
-std::vector<Rotation> euler_chain(const std::array<GiNaC::ex, 3>& angles, const std::string& sequence) {
-    require_sequence(sequence);
-    return {{sequence[0], angles[0]}, {sequence[1], angles[1]}, {sequence[2], angles[2]}};
-}
-
 GiNaC::matrix euler_rotation(const std::array<GiNaC::ex, 3>& angles, const std::string& sequence) {
     return chain_rotation(euler_chain(angles, sequence));
 }

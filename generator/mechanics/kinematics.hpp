@@ -48,9 +48,6 @@ GiNaC::matrix body_angular_velocity(const std::array<GiNaC::ex, 3>& angles, cons
 GiNaC::matrix space_angular_velocity(const std::array<GiNaC::ex, 3>& angles, const Model& model,
                                      const std::string& sequence = "zxz");
 
-/// The rotation chain of Euler angles (φ, θ, ψ) in the sequence "abc": [(a, φ), (b, θ), (c, ψ)].
-std::vector<Rotation> euler_chain(const std::array<GiNaC::ex, 3>& angles, const std::string& sequence);
-
 /// A body's rotation A (space → body) and angular velocity in body and space axes, from its rotation chain
 /// (Body::rotations: its Euler angles, or any chain, after the body it is oriented from), rates by the chain rule.
 GiNaC::matrix body_rotation(const Body& body);

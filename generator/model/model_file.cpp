@@ -871,8 +871,7 @@ class Loader {
 
     /// A body's rotation chain as the file gives it or, where it gives Euler angles, as three rotations.
     static std::vector<Rotation> chain_of(const Body& b) {
-        if (!b.rotations.empty()) return b.rotations;
-        return {{b.sequence[0], b.angles[0]}, {b.sequence[1], b.angles[1]}, {b.sequence[2], b.angles[2]}};
+        return b.rotations.empty() ? euler_chain(b.angles, b.sequence) : b.rotations;
     }
 
     /// `orientation`: Euler angles [phi, theta, psi] (with `sequence`), a chain [["z", "psi"], ["x", "phi"], ...]

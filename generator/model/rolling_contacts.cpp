@@ -16,22 +16,6 @@ GiNaC::ex rate(const GiNaC::ex& e, const Model& model) {
     return d;
 }
 
-GiNaC::matrix unit(char axis, int sign = 1) {
-    GiNaC::matrix e(3, 1);
-    e(static_cast<unsigned>(axis - 'x'), 0) = sign;
-    return e;
-}
-
-GiNaC::ex dot(const GiNaC::matrix& a, const GiNaC::matrix& b) {
-    return a(0, 0) * b(0, 0) + a(1, 0) * b(1, 0) + a(2, 0) * b(2, 0);
-}
-
-GiNaC::matrix cross(const GiNaC::matrix& a, const GiNaC::matrix& b) {
-    return GiNaC::matrix{{a(1, 0) * b(2, 0) - a(2, 0) * b(1, 0)},
-                         {a(2, 0) * b(0, 0) - a(0, 0) * b(2, 0)},
-                         {a(0, 0) * b(1, 0) - a(1, 0) * b(0, 0)}};
-}
-
 /// True where e (in q, t and the parameters) is zero at four random configurations with random parameters (each
 /// within 30 % of its value, or in (0.5, 1.5) where that is 0, so that a parameter that happens to be 0 in the file
 /// does not hide a constraint a --set would need): an analytic function that vanishes at random points vanishes
@@ -62,10 +46,7 @@ std::vector<Constraint> contact_constraints(const Model& model, const RollingCon
     if (body == model.bodies.end())
         throw ModelError(contact.where, "contact '" + contact.name + "' names body '" + contact.body +
                                             "', which is not in [[bodies]]");
-    std::vector<Rotation> chain = body->rotations;
-    if (chain.empty())
-        chain = {{body->sequence[0], body->angles[0]}, {body->sequence[1], body->angles[1]},
-                 {body->sequence[2], body->angles[2]}};
+    const std::vector<Rotation> chain = body->rotations.empty() ? euler_chain(body->angles, body->sequence) : body->rotations;
     const GiNaC::matrix At = chain_rotation(chain).transpose();
     std::vector<GiNaC::ex> rates;
     for (const Rotation& r : chain) rates.push_back(rate(r.angle, model));
@@ -73,8 +54,8 @@ std::vector<Constraint> contact_constraints(const Model& model, const RollingCon
 
     const GiNaC::matrix C{{body->centre[0]}, {body->centre[1]}, {body->centre[2]}};
     const GiNaC::matrix v = GiNaC::matrix{{rate(C(0, 0), model)}, {rate(C(1, 0), model)}, {rate(C(2, 0), model)}};
-    const GiNaC::matrix n = unit(contact.normal, contact.normal_sign);
-    const GiNaC::matrix a = At.mul(unit(contact.axis));
+    const GiNaC::matrix n = axis_vector(contact.normal).mul_scalar(contact.normal_sign);
+    const GiNaC::matrix a = At.mul(axis_vector(contact.axis));
     const GiNaC::ex na = dot(n, a).expand();
     const GiNaC::ex flat = (1 - GiNaC::pow(na, 2)).expand();
     if (flat.is_zero() || vanishes(flat, model))

@@ -5,6 +5,8 @@
 
 #include <ginac/ginac.h>
 
+#include <array>
+#include <string>
 #include <vector>
 
 namespace eomgen {
@@ -18,6 +20,15 @@ struct Rotation {
 /// The passive rotation by `angle` about the axis 'x', 'y' or 'z', e.g. R_z(φ) = [[cos φ, sin φ, 0],
 /// [−sin φ, cos φ, 0], [0, 0, 1]] (Goldstein's D); throws std::invalid_argument on another axis.
 GiNaC::matrix axis_rotation(char axis, const GiNaC::ex& angle);
+
+/// The chain of Euler angles (φ, θ, ψ) in the sequence "abc": [(a, φ), (b, θ), (c, ψ)]; throws
+/// std::invalid_argument unless the sequence is three of x, y, z with no axis twice in a row.
+std::vector<Rotation> euler_chain(const std::array<GiNaC::ex, 3>& angles, const std::string& sequence);
+
+/// Vectors as 3×1 matrices: the unit vector along 'x', 'y' or 'z', a · b and a × b.
+GiNaC::matrix axis_vector(char axis);
+GiNaC::ex dot(const GiNaC::matrix& a, const GiNaC::matrix& b);
+GiNaC::matrix cross(const GiNaC::matrix& a, const GiNaC::matrix& b);
 
 /// A = R_n ⋯ R_2 R_1 for the chain (R_1 first): space components to body components, x' = A x.
 GiNaC::matrix chain_rotation(const std::vector<Rotation>& chain);
