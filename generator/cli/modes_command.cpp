@@ -368,7 +368,7 @@ ModesCommand::ModesCommand(CLI::App& app) {
                                               "conditions give rates, q' = EXPR); a nonholonomic model's first one is "
                                               "used without --steady or --motion");
     command_->add_option("--speed", speed_, "With --steady: split C = P C1 and K = g K0 + P^2 K2 by this parameter "
-                                            "(default: the one parameter in --steady)");
+                                            "(default: the one parameter of --steady the equations do not hold, v in -v/rR)");
     command_->add_option("--sweep", sweep_, "With --steady: eigenvalues against a parameter, NAME=START:STOP:COUNT, and "
                                             "the values where the stability changes");
     command_->add_option("--plot", plot_, "With --sweep: the eigenvalues' real and imaginary parts against the "
