@@ -1,7 +1,9 @@
 /** @file model.hpp  The in-memory model: coordinates, parameters, T and V as GiNaC expressions. */
 #pragma once
 
+#include "model/drawing.hpp"
 #include "model/rotations.hpp"
+#include "model/source_location.hpp"
 #include "model/units.hpp"
 
 #include <ginac/ginac.h>
@@ -13,16 +15,6 @@
 #include <vector>
 
 namespace eomgen {
-
-/// A place in a model file, 1-based line and column (column counts bytes).
-struct SourceLocation {
-    std::string file;
-    int line = 0;
-    int column = 0;
-
-    /// "file:line:col" (or just "file" when the line is unknown).
-    std::string str() const;
-};
 
 /// Every problem with a model is reported as this, with where it is.
 class ModelError : public std::runtime_error {
@@ -221,6 +213,7 @@ struct Model {
     std::vector<Result> results;                 ///< [[results]]: declared closed forms
     std::vector<DeclaredOutput> outputs;         ///< [outputs]: quantities recorded beside the state, in file order
     std::vector<Motion> motions;                 ///< [[motions]]: particular motions, for `eomgen check`
+    std::vector<DrawItem> drawing;               ///< [[draw]]: what an animation shows beside the bodies
     GenerateRequest generate;                    ///< [generate]: optional functions of the header
 
     /// Baumgarte stabilisation of the constraints, A q̈ = γ − 2α(A q̇ + b) − β² g (0, 0: none).

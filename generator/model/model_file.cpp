@@ -1,5 +1,7 @@
 /** @file model_file.cpp  Model files: TOML via toml++, every problem located at file:line:col. */
 #include "model/model_file.hpp"
+#include "model/drawing_file.hpp"
+#include "model/file_reading.hpp"
 #include "model/rolling_contacts.hpp"
 #include "model/dimensions.hpp"
 #include "model/units.hpp"
@@ -255,7 +257,7 @@ struct Entry {
     SourceLocation where;
 };
 
-class Loader {
+class Loader : public FileReading {
   public:
     Loader(std::string_view text, const std::string& path) : src_(text, path), path_(path) {}
 
@@ -273,7 +275,7 @@ class Loader {
         check_keys(root,
                    {"name", "title", "source", "description", "coordinates", "parameters", "lagrangian",
                     "constraints", "forces", "stabilization", "bodies", "gravity", "springs", "contacts", "results",
-                    "outputs", "motions", "generate"},
+                    "outputs", "motions", "generate", "draw"},
                    "at the top level");
 
         std::vector<Declaration> declarations;
@@ -390,11 +392,12 @@ class Loader {
         read_results(results, symbols, model);
         read_outputs(outputs, symbols, model);
         read_motions(motions, symbols, model);
+        model.drawing = read_drawing(root, *this, symbols, model);
         return model;
     }
 
   private:
-    [[noreturn]] void fail(const SourceLocation& where, const std::string& message) const {
+    [[noreturn]] void fail(const SourceLocation& where, const std::string& message) const override {
         throw ModelError(where, message);
     }
 
@@ -405,7 +408,9 @@ class Loader {
     }
 
     /// Where the text of a string value starts (just inside its quotes), else where the node starts.
-    SourceLocation string_start(const toml::node& node) const {
+    SourceLocation at(const toml::node& node) const override { return src_.at(node); }
+
+    SourceLocation string_start(const toml::node& node) const override {
         if (const auto* s = node.as_string()) {
             const auto map = map_string_value(src_.text(), offset_of(node), s->get());
             if (!map.empty()) return src_.at_offset(map.front());
@@ -437,7 +442,7 @@ class Loader {
     }
 
     void check_keys(const toml::table& table, std::vector<std::string> allowed,
-                    const std::string& context) const {
+                    const std::string& context) const override {
         for (auto&& [key, node] : table) {
             const std::string k(key.str());
             if (std::find(allowed.begin(), allowed.end(), k) != allowed.end()) continue;
@@ -467,7 +472,7 @@ class Loader {
 
     /// A string value; NUL and control characters other than newline and tab are refused where they are
     /// (text from a model file ends up in headers, LaTeX, Markdown and JSON: docs/security.md).
-    std::string string_value(const toml::node& node, const std::string& key) const {
+    std::string string_value(const toml::node& node, const std::string& key) const override {
         const auto* s = node.as_string();
         if (!s) fail(src_.at(node), "'" + key + "' must be a string, not " + type_name(node));
         const std::string& v = s->get();  // valid UTF-8: toml++ checks it
@@ -757,7 +762,7 @@ class Loader {
 
     /// One scalar: an integer or a string with an expression.
     GiNaC::ex scalar(const toml::node& node, const std::string& key, const SymbolTable& symbols,
-                     const ParseOptions& options) const {
+                     const ParseOptions& options) const override {
         if (const auto* i = node.as_integer()) return GiNaC::ex(GiNaC::numeric(static_cast<long>(i->get())));
         if (!node.as_string())
             fail(src_.at(node), "each entry of '" + key + "' must be a string with an expression or an integer, not " +
@@ -767,7 +772,7 @@ class Loader {
 
     /// An array of `count` scalars (any number when count is 0).
     std::vector<GiNaC::ex> scalars(const toml::node& node, const std::string& key, std::size_t count,
-                                   const SymbolTable& symbols, const ParseOptions& options) const {
+                                   const SymbolTable& symbols, const ParseOptions& options) const override {
         const toml::array* array = node.as_array();
         if (!array) fail(src_.at(node), "'" + key + "' must be an array, not " + type_name(node));
         if (count != 0 && array->size() != count)
