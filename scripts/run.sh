@@ -70,9 +70,11 @@ echo "== eomgen-sim rolling_cone until the line of contact has gone half round (
 
 echo
 echo "== eomgen run examples/bead_on_hoop.toml: a model file compiled into nothing, derived, compiled (cached"
-echo "   in \${XDG_CACHE_HOME:-~/.cache}/eomgen) and integrated; the plot is out/bead_on_hoop.png"
+echo "   in \${XDG_CACHE_HOME:-~/.cache}/eomgen) and integrated; the plot is out/bead_on_hoop.png, the animation"
+echo "   (open it in a browser: the hoop turning, the bead on it) out/bead_on_hoop.html"
 "$build/generator/eomgen" run examples/bead_on_hoop.toml --t-end 10 --rtol 1e-12 --atol 1e-14 \
-  --csv out/bead_on_hoop.csv --plot out/bead_on_hoop.png --plot-phase a --plot-xy rho,z
+  --csv out/bead_on_hoop.csv --plot out/bead_on_hoop.png --plot-phase a --plot-xy rho,z \
+  --animate out/bead_on_hoop.html
 
 echo
 echo "== eomgen report examples/bead_on_hoop.toml: the equations, the simulation with its plot and the drift of"

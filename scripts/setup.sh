@@ -15,6 +15,9 @@ packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2
           dpkg-dev file   # cpack -G DEB (dpkg-shlibdeps, and file to find the binaries)
           libopenmpi-dev openmpi-bin   # optional for eomgen: ensembles across MPI ranks (mpirun), and its test
           libhdf5-dev)                 # optional for eomgen: ensembles written as HDF5 (--out FILE.h5)
+# More for one caller, in the same apt-get run: scripts/test.sh adds chromium (the animation's browser test).
+read -r -a extra_packages <<< "${EOMGEN_EXTRA_PACKAGES:-}"
+packages+=("${extra_packages[@]}")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,5 +1,6 @@
 /** @file run_command.cpp  `eomgen run`: model file → equations → compiled code → trajectory, CSV, plot. */
 #include "cli/run_command.hpp"
+#include "cli/animate.hpp"
 #include "table_driver.hpp"  // the driver for TableModel, compiled once
 #include "cli/model_unit_values.hpp"
 
@@ -85,6 +86,10 @@ RunCommand::RunCommand(CLI::App& app) {
     run_->add_option("--plot-xy", plot_xy_,
                      "With --plot: add Y against X (X,Y: outputs, coordinates or velocities, "
                      "e.g. x_bob,y_bob); may be repeated");
+    run_->add_option("--animate", animate_,
+                     "Write an animation of the motion to FILE.html: one self-contained page with a player "
+                     "(the model's [[draw]] entries, bodies and springs; docs/animation.md)");
+    run_->add_option("--fps", fps_, "With --animate: frames per second of simulated time (default 60)");
     run_->add_flag("--no-cache", no_cache_, "Compile afresh and keep nothing in the cache");
     run_->add_flag("--quiet", quiet_, "No progress messages on stderr");
     run_->add_flag("--progress", progress_, "Progress messages on stderr even when it is not a terminal");
@@ -138,9 +143,16 @@ int RunCommand::run_model() {
         std::cerr << "eomgen run: " << problem << "\n";
         return 2;
     }
+    if (const std::string problem = animate_.empty() ? "" : animation_request_problem(animate_, fps_); !problem.empty()) {
+        std::cerr << "eomgen run: " << problem << "\n";
+        return 2;
+    }
     // Reading the model is cheap; deriving it is done only when its code is not in the cache.
     const std::string text = read_model_file(model_path_);
     const Model model = parse_model(text, model_path_);
+    // What an animation draws, before anything slow runs: a model with nothing to draw is a ModelError here.
+    std::optional<animation::Scene> scene;
+    if (!animate_.empty()) scene = animation::build_scene(model);
     std::vector<std::pair<PlotColumn, PlotColumn>> xy;
     const bool ensemble = EnsembleDesign::requested(design_);
     // --sweep and --dist values in the declared units (or their own), SI for the ensemble.
@@ -184,6 +196,10 @@ int RunCommand::run_model() {
                                  : "compiled in " + std::to_string(compiled.compile_seconds).substr(0, 4) + " s");
 
     if (ensemble) {
+        if (!animate_.empty()) {
+            std::cerr << "eomgen run: --animate of an ensemble is not done; animate one member (--set, --init)\n";
+            return 2;
+        }
         if (!plot_phase_.empty()) {
             std::cerr << "eomgen run: --plot-phase draws one run; an ensemble's --plot is a result against a varied value\n";
             return 2;
@@ -210,8 +226,9 @@ int RunCommand::run_model() {
     if (!options_in_si(declared_units(model), o.set, o.init, "eomgen run")) return 2;
     if (show_progress)
         o.progress = ::isatty(STDERR_FILENO) ? eomgen::ProgressStyle::Terminal : eomgen::ProgressStyle::Lines;
+    if (scene) o.samples = std::max(o.samples, animation_samples(o.t_end, fps_));
     std::optional<TempDir> samples_dir;
-    if (!plot_.empty() && o.csv.empty()) {
+    if ((!plot_.empty() || scene) && o.csv.empty()) {
         samples_dir.emplace(fs::temp_directory_path(), "eomgen-run.");
         o.csv = (samples_dir->path() / "samples.csv").string();
         o.report_csv = false;  // removed when the plot is made: not a file to point the user to
@@ -222,6 +239,11 @@ int RunCommand::run_model() {
     if (code == eomgen::sim::kExitOutput) return 3;  // the CSV could not be written, said on stderr
     if (code != eomgen::sim::kExitOk) return 2;      // a bad option value or a failed simulation, said on stderr
 
+    if (scene) {
+        progress("animating");
+        if (const int animated = write_animation(model, *scene, o, animate_); animated != 0) return animated;
+        std::cout << "animation: " << animate_ << "\n";
+    }
     if (!plot_.empty()) {
         PlotRequest p = default_plot(model, o.csv, plot_);
         p.xy = xy;

@@ -26,7 +26,7 @@ PlotRequest default_plot(const Model& model, const std::string& csv, const std::
  * Registers `run` and `cache` on the `eomgen` command line:
  *
  *     eomgen run MODEL.toml [eomgen-sim's options] [--plot FILE.png|FILE.svg] [--plot-phase q]
- *                [--plot-xy X,Y ...] [--no-cache] [--quiet | --progress]
+ *                [--plot-xy X,Y ...] [--animate FILE.html [--fps N]] [--no-cache] [--quiet | --progress]
  *     eomgen run MODEL.toml (--sweep NAME=START:STOP:COUNT ... | --sample N --dist NAME=uniform(a,b) ...
  *                [--seed S]) [--threads N] [--out FILE.csv] [--plot FILE.png [--plot-xy X,Y]] [options]
  *     eomgen cache clear
@@ -48,7 +48,8 @@ class RunCommand {
     CLI::App* run_ = nullptr;
     CLI::App* cache_ = nullptr;
     CLI::App* clear_ = nullptr;
-    std::string model_path_, plot_, plot_phase_;
+    std::string model_path_, plot_, plot_phase_, animate_;
+    double fps_ = 60;
     std::vector<std::string> plot_xy_;
     eomgen::sim::Options options_;
     bool no_cache_ = false, quiet_ = false, progress_ = false;

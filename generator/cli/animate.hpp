@@ -1,0 +1,29 @@
+/** @file animate.hpp  `eomgen run --animate FILE.html`: a run's samples drawn as the model's scene, written as
+ * one page (animation/). */
+#pragma once
+
+#include "animation/scene.hpp"
+#include "eomgen/simulation_options.hpp"
+#include "model/model.hpp"
+
+#include <string>
+
+namespace eomgen::cli {
+
+/// Why `--animate path --fps fps` cannot be done ("" when it can): the file must end in .html or .htm, the
+/// frame rate be in (0, 1000].
+std::string animation_request_problem(const std::string& path, double fps);
+
+/// The most frames an animation holds: an hour of simulated time at 10 frames per second.
+constexpr int kMaxAnimationFrames = 36000;
+
+/// The sample intervals an animation of [0, t_end] needs at `fps` (at most kMaxAnimationFrames).
+int animation_samples(double t_end, double fps);
+
+/// Draws the samples in `options.csv` (the run just made with `options`) and writes the page to `path`,
+/// atomically. Returns 0, or the exit code after saying why on stderr: 2 where the scene is not finite at a
+/// sample (its place in the model file and the time), 3 where the file cannot be written.
+int write_animation(const Model& model, const animation::Scene& scene, const eomgen::sim::Options& options,
+                    const std::string& path);
+
+}  // namespace eomgen::cli
