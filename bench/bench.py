@@ -31,6 +31,7 @@ ROOT = os.path.dirname(HERE)
 sys.path.insert(0, HERE)
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import op_count  # noqa: E402
+import animation  # noqa: E402
 import bicycle  # noqa: E402
 import fit  # noqa: E402
 import peers  # noqa: E402
@@ -46,6 +47,8 @@ BEGIN_FIT = "<!-- BEGIN MEASURED FIT (bench/run.sh, or bench/run.sh --fit-only, 
 END_FIT = "<!-- END MEASURED FIT -->"
 BEGIN_BICYCLE = "<!-- BEGIN MEASURED BICYCLE (bench/run.sh, or bench/run.sh --bicycle-only, rewrites this part) -->"
 END_BICYCLE = "<!-- END MEASURED BICYCLE -->"
+BEGIN_ANIMATION = "<!-- BEGIN MEASURED ANIMATION (bench/run.sh, or bench/run.sh --animation-only, rewrites this part) -->"
+END_ANIMATION = "<!-- END MEASURED ANIMATION -->"
 
 
 def log(msg):
@@ -705,6 +708,8 @@ def main():
                     help="measure only section 10 (eomgen fit's coverage and time, issue 34) and rewrite only its part")
     ap.add_argument("--bicycle-only", action="store_true",
                     help="measure only section 11 (the Whipple bicycle, issue 35) and rewrite only its part")
+    ap.add_argument("--animation-only", action="store_true",
+                    help="measure only section 12 (eomgen run --animate, issue 33) and rewrite only its part")
     ap.add_argument("--out-md")
     ap.add_argument("--out-png")
     ap.add_argument("--render-only", metavar="RESULTS_JSON",
@@ -736,6 +741,8 @@ def main():
             render_fit(results, out_md)
         elif "bicycle" in results:
             render_bicycle(results, out_md)
+        elif "animation" in results:
+            render_animation(results, out_md)
         else:
             render_peers(results, out_md)
         return
@@ -743,7 +750,8 @@ def main():
         cfg = json.load(fh)
     work = os.path.join(args.build_dir, "bench_smoke" if args.smoke else
                         "bench_peers" if args.peers_only else "bench_scale" if args.scale_only else
-                        "bench_fit" if args.fit_only else "bench_bicycle" if args.bicycle_only else "bench_work")
+                        "bench_fit" if args.fit_only else "bench_bicycle" if args.bicycle_only else
+                        "bench_animation" if args.animation_only else "bench_work")
     if os.path.isdir(work):
         shutil.rmtree(work)
     os.makedirs(work)
@@ -753,7 +761,7 @@ def main():
 
     command = "bash bench/run.sh" + (" --smoke" if args.smoke else "") + (" --no-build" if args.no_build else "") + \
         (" --peers-only" if args.peers_only else "") + (" --scale-only" if args.scale_only else "") + \
-        (" --fit-only" if args.fit_only else "") + (" --bicycle-only" if args.bicycle_only else "") + (f" --sympy-cap {args.sympy_cap:g}" if args.sympy_cap != 900 else "")
+        (" --fit-only" if args.fit_only else "") + (" --bicycle-only" if args.bicycle_only else "") + (" --animation-only" if args.animation_only else "") + (f" --sympy-cap {args.sympy_cap:g}" if args.sympy_cap != 900 else "")
     if args.peers_only:
         results = {"command": command, "date": utc_now(), "peers": peers.measure(cfg, args.build_dir, args.smoke, log)}
         with open(os.path.join(work, "results_peers.json"), "w") as fh:
@@ -761,24 +769,21 @@ def main():
         render_peers(results, out_md)
         return
 
-    if args.fit_only:
+    # One section alone: measured, kept as results_<key>.json, and only its part of the page rewritten.
+    alone = {"fit": (args.fit_only, lambda: fit.measure(cfg, work, args.smoke, log), render_fit),
+             "bicycle": (args.bicycle_only, lambda: bicycle.measure(cfg, work, args.smoke, log, args.sympy_cap),
+                         render_bicycle),
+             "animation": (args.animation_only, lambda: animation.measure(cfg, work, args.smoke, log),
+                           render_animation)}
+    for key, (selected, measure, render_section) in alone.items():
+        if not selected:
+            continue
         mach = machine(cfg)
-        results = {"command": command, "date": mach["date"], "machine": mach,
-                   "fit": fit.measure(cfg, work, args.smoke, log)}
+        results = {"command": command, "date": mach["date"], "machine": mach, key: measure()}
         results["machine"]["load_end"] = os.getloadavg()
-        with open(os.path.join(work, "results_fit.json"), "w") as fh:
+        with open(os.path.join(work, f"results_{key}.json"), "w") as fh:
             json.dump(results, fh, indent=1)
-        render_fit(results, out_md)
-        return
-
-    if args.bicycle_only:
-        mach = machine(cfg)
-        results = {"command": command, "date": mach["date"], "machine": mach,
-                   "bicycle": bicycle.measure(cfg, work, args.smoke, log, args.sympy_cap)}
-        results["machine"]["load_end"] = os.getloadavg()
-        with open(os.path.join(work, "results_bicycle.json"), "w") as fh:
-            json.dump(results, fh, indent=1)
-        render_bicycle(results, out_md)
+        render_section(results, out_md)
         return
 
     if args.scale_only:
@@ -848,6 +853,8 @@ def main():
     fit_results = fit.measure(cfg, work, args.smoke, log)
     log("11. bicycle")
     bicycle_results = bicycle.measure(cfg, work, args.smoke, log, args.sympy_cap)
+    log("12. animation")
+    animation_results = animation.measure(cfg, work, args.smoke, log)
     results = {"command": command, "machine": mach, "sympy_ok": sympy_ok, "agree": agree, "ref_check": ref_check,
                "generation": {str(k): v for k, v in gen.items()}, "rods": {str(k): v for k, v in rods.items()},
                "sympy": {str(k): v for k, v in sym.items()}, "ops": {str(k): v for k, v in ops.items()},
@@ -855,7 +862,7 @@ def main():
                "compile": {str(k): v for k, v in comp.items()},
                "integrators": {"/".join(k): v for k, v in by.items()}, "memory": mem, "run": runs,
                "date": mach["date"], "peers": peer_results, "scale": scale_results, "fit": fit_results,
-               "bicycle": bicycle_results}
+               "bicycle": bicycle_results, "animation": animation_results}
     with open(os.path.join(work, "results.json"), "w") as fh:
         json.dump(results, fh, indent=1)
     render(results, work, out_md, out_png)
@@ -886,6 +893,8 @@ def render(results, work, out_md, out_png):
         render_fit(results, out_md)
     if "bicycle" in results:
         render_bicycle(results, out_md)
+    if "animation" in results:
+        render_animation(results, out_md)
 
 
 def render_scale(results, out_md):
@@ -915,6 +924,16 @@ def render_bicycle(results, out_md):
             f"Load average (1 min) {m['load'][0]:.2f} at the start, {m.get('load_end', m['load'])[0]:.2f} at the end.")
     splice(out_md, BEGIN_BICYCLE, END_BICYCLE, bicycle.render(results["bicycle"], results["command"], results["date"], line))
     log(f"wrote section 11 of {out_md}")
+
+
+def render_animation(results, out_md):
+    """Writes section 12 (eomgen run --animate) between its own markers."""
+    m = results["machine"]
+    line = (f"eomgen at commit {m.get('commit', '?')}. Machine: {m['cpu']}, {m['cores']} cores; {m['compiler']}. "
+            f"Load average (1 min) {m['load'][0]:.2f} at the start, {m.get('load_end', m['load'])[0]:.2f} at the end.")
+    splice(out_md, BEGIN_ANIMATION, END_ANIMATION,
+           animation.render(results["animation"], results["command"], results["date"], line))
+    log(f"wrote section 12 of {out_md}")
 
 
 def render_peers(results, out_md):

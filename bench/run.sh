@@ -4,7 +4,8 @@
 # against MuJoCo's mj_forward, an O(n) recursion, CVODE and ARKODE; writes docs/benchmarks.md (the measured parts)
 # and docs/benchmarks.png. About 30 minutes on 2 cores, most of it SymPy; --peers-only about 5.
 #
-# Usage: bash bench/run.sh [--smoke] [--no-build] [--peers-only | --scale-only | --fit-only | --bicycle-only] [--build-dir DIR]
+# Usage: bash bench/run.sh [--smoke] [--no-build] [--peers-only | --scale-only | --fit-only | --bicycle-only |
+#                         --animation-only] [--build-dir DIR]
 #                          [--sympy-cap SECONDS]
 #   --smoke        tiny sizes, seconds; results in DIR/bench_smoke/ (docs/ untouched); what CI runs
 #   --peers-only   only section 8 (MuJoCo, SUNDIALS), rewriting only its part of docs/benchmarks.md
@@ -14,6 +15,8 @@
 #                  model, its time against central differences), rewriting only its part; about a minute
 #   --bicycle-only only section 11 (the Whipple bicycle: eomgen modes --steady against the benchmark's values and
 #                  SymPy's Kane's method), rewriting only its part; about 2 minutes with SymPy
+#   --animation-only only section 12 (eomgen run --animate: the page's size, the time to draw a frame in headless
+#                  Chromium), rewriting only its part; about a minute
 #   --no-build     skip scripts/setup.sh and use what DIR holds (configured with -DEOMGEN_BUILD_BENCH=ON); the
 #                  full run still rebuilds time_rhs, which compiles in the SymPy code of the run
 #   --build-dir    build directory (default build-bench/)
@@ -37,9 +40,10 @@ while (($#)); do
     --scale-only) extra+=(--scale-only) ;;
     --fit-only) extra+=(--fit-only) ;;
     --bicycle-only) extra+=(--bicycle-only) ;;
+    --animation-only) extra+=(--animation-only) ;;
     --build-dir) build="$2"; shift ;;
     --sympy-cap) extra+=(--sympy-cap "$2"); shift ;;
-    -h|--help) sed -n '2,26p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,29p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift
