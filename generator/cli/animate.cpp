@@ -33,7 +33,7 @@ int animation_samples(double t_end, double fps) {
 }
 
 int write_animation(const Model& model, const animation::Scene& scene, const eomgen::sim::Options& options,
-                    const std::string& path) {
+                    const std::string& path, const std::string& command) {
     animation::Page page;
     try {
         const animation::SampleTable samples = animation::read_sample_table(options.csv);
@@ -63,7 +63,7 @@ int write_animation(const Model& model, const animation::Scene& scene, const eom
             page.readout.push_back(std::move(values));
         }
     } catch (const std::runtime_error& e) {
-        std::cerr << "eomgen run: --animate: " << e.what() << "\n";
+        std::cerr << command << ": --animate: " << e.what() << "\n";
         return 2;
     }
     page.title = model.title.empty() ? model.name : model.title;
@@ -77,7 +77,7 @@ int write_animation(const Model& model, const animation::Scene& scene, const eom
     try {
         output::write_atomically(path, animation::html_page(page));
     } catch (const std::exception& e) {
-        std::cerr << "eomgen run: --animate: cannot write " << path << ": " << e.what() << "\n";
+        std::cerr << command << ": --animate: cannot write " << path << ": " << e.what() << "\n";
         return 3;
     }
     return 0;

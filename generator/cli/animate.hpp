@@ -21,9 +21,9 @@ constexpr int kMaxAnimationFrames = 36000;
 int animation_samples(double t_end, double fps);
 
 /// Draws the samples in `options.csv` (the run just made with `options`) and writes the page to `path`,
-/// atomically. Returns 0, or the exit code after saying why on stderr: 2 where the scene is not finite at a
+/// atomically. Returns 0, or the exit code after saying why on stderr (after `command`): 2 where the scene is not finite at a
 /// sample (its place in the model file and the time), 3 where the file cannot be written.
 int write_animation(const Model& model, const animation::Scene& scene, const eomgen::sim::Options& options,
-                    const std::string& path);
+                    const std::string& path, const std::string& command = "eomgen run");
 
 }  // namespace eomgen::cli

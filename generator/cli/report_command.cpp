@@ -8,6 +8,7 @@
 #include "cli/compiled_model.hpp"
 #include "cli/latex_equations.hpp"
 #include "cli/modes_command.hpp"
+#include "cli/animate.hpp"
 #include "cli/plot.hpp"
 #include "cli/model_unit_values.hpp"
 #include "cli/process.hpp"
@@ -57,6 +58,7 @@ struct Simulation {
     int code = 0;
     std::string summary, errors;  ///< what the driver printed on stdout and stderr
     std::string csv, plot;         ///< file names in the report's directory ("" when not written)
+    std::string animation;         ///< the page that plays the run, where the model has a drawing ("" else)
     std::vector<Drift> drifts;
     std::vector<std::pair<std::string, double>> residuals;  ///< constraint, largest residual
 };
@@ -236,6 +238,8 @@ std::string markdown(const Model& model, const Equations& eq, const std::vector<
                 md << "| " << markdown_text(name) << " | " << number(worst) << " |\n";
         }
         if (!sim.plot.empty()) md << "\n![coordinates, invariants and residuals against t](" << sim.plot << ")\n";
+        if (!sim.animation.empty())
+            md << "\nThe motion, to play in a browser: [" << sim.animation << "](" << sim.animation << ").\n";
         if (!sim.csv.empty()) md << "\nSamples: [" << sim.csv << "](" << sim.csv << ").\n";
     }
     md << "\n## Small oscillations\n\n";
@@ -324,6 +328,8 @@ std::string latex(const Model& model, const Equations& eq, const std::vector<Lat
         }
         if (!sim.plot.empty())
             tex << "\n\\begin{center}\\includegraphics[width=\\textwidth]{" << latex_text(sim.plot) << "}\\end{center}\n";
+        if (!sim.animation.empty())
+            tex << "\nThe motion, to play in a browser: \\texttt{" << latex_text(sim.animation) << "}, beside this file.\n";
     }
     tex << "\\section*{Small oscillations}\n";
     if (!modes.result) {
@@ -474,6 +480,18 @@ int ReportCommand::run() {
             } catch (const std::exception& e) {
                 std::cerr << "eomgen report: no plot: " << e.what() << "\n";
                 sim.plot.clear();
+            }
+            // The motion as a page beside the plot, from the same samples, where the model says what to draw.
+            std::optional<animation::Scene> scene;
+            try {
+                scene = animation::build_scene(model);
+            } catch (const ModelError&) {  // nothing to draw: a report without an animation
+            }
+            if (scene) {
+                progress("animating");
+                sim.animation = model.name + ".html";
+                if (write_animation(model, *scene, o, (dir / sim.animation).string(), "eomgen report") != 0)
+                    sim.animation.clear();
             }
         } else {
             std::cerr << sim.errors;

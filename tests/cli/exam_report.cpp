@@ -114,6 +114,27 @@ TEST_CASE("eomgen report: show --latex's equations, a simulation with its plot, 
     CHECK(worst < 1e-8);
 }
 
+TEST_CASE("eomgen report: the motion as a page beside the plot where the model says what to draw", "[report]") {
+    // Without [[draw]] (the bead above has none): no page, no link.
+    const fs::path plain = write("plain_bead.toml", kBead);
+    const fs::path plain_dir = kWork / "plain report";
+    fs::remove_all(plain_dir);
+    REQUIRE(eomgen({"report", plain.string(), "-o", plain_dir.string(), "--t-end", "1", "--quiet"}).code == 0);
+    CHECK_FALSE(fs::exists(plain_dir / "bead.html"));
+    CHECK(read(plain_dir / "bead.md").find(".html") == std::string::npos);
+    // With one: the page, from the report's samples, linked under the plot.
+    const fs::path drawn = write("drawn_bead.toml", std::string(kBead) + "\n[[draw]]\npoint = [\"R*sin(a)\", \"-R*cos(a)\"]\n");
+    const fs::path dir = kWork / "drawn report";
+    fs::remove_all(dir);
+    const Result r = eomgen({"report", drawn.string(), "-o", dir.string(), "--t-end", "1", "--quiet"});
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const std::string page = read(dir / "bead.html");
+    CHECK(page.find("<canvas id=\"view\">") != std::string::npos);
+    CHECK(page.find("\"kind\":\"point\"") != std::string::npos);
+    CHECK(read(dir / "bead.md").find("[bead.html](bead.html)") != std::string::npos);
+}
+
 TEST_CASE("eomgen report checks a derivation and keeps its verdicts, --format latex is a whole document", "[report]") {
     const fs::path model = write("bead.toml", kBead);
     // Right T; V with the wrong sign (the slip the report must show).
