@@ -63,6 +63,9 @@ std::string json_of(const Page& page) {
     std::string j = "{\"title\":" + json_string(page.title) + ",\"equations\":[";
     for (std::size_t i = 0; i < page.equations.size(); ++i)
         j += (i ? ",[" : "[") + json_string(page.equations[i].first) + "," + json_string(page.equations[i].second) + "]";
+    j += "],\"legend\":[";
+    for (std::size_t i = 0; i < page.legend.size(); ++i)
+        j += (i ? ",[" : "[") + json_string(page.legend[i].first) + "," + json_string(page.legend[i].second) + "]";
     j += "],\"planar\":";
     j += f.planar ? "true" : "false";
     j += ",\"up\":";
@@ -115,11 +118,12 @@ std::string html_page(const Page& page) {
          "#controls { margin: 8px 0; display: flex; gap: 8px; align-items: center; }\n"
          "#scrub { flex: 1 1 auto; }\n"
          "#readout td { padding: 1px 6px; font-family: monospace; }\n"
+         "#legend { padding-left: 16px; margin: 4px 0; font-family: monospace; }\n"
          "#equations { font-family: monospace; font-size: 12px; white-space: pre-wrap; }\n"
          "#probe { display: none; }\n"
          "</style>\n</head>\n<body>\n<h1 id=\"title\"></h1>\n"
          "<div id=\"main\"><canvas id=\"view\"></canvas>\n"
-         "<div id=\"side\"><div id=\"time\"></div><table id=\"readout\"></table></div></div>\n"
+         "<div id=\"side\"><div id=\"time\"></div><ul id=\"legend\"></ul><table id=\"readout\"></table></div></div>\n"
          "<div id=\"controls\"><button id=\"play\" type=\"button\">Play</button>"
          "<input id=\"scrub\" type=\"range\" min=\"0\" max=\"0\" step=\"1\" value=\"0\" aria-label=\"time\">"
          "<label>speed <select id=\"speed\"><option>0.25</option><option>0.5</option>"

@@ -18,6 +18,8 @@ struct Page {
     /// The values listed beside the view at each frame (coordinates, outputs, energy), with their units.
     std::vector<std::string> readout_names, readout_units;
     std::vector<std::vector<double>> readout;  ///< per frame
+    /// An ensemble's members: each member's values ("k=0.1") and its colour, listed beside the view.
+    std::vector<std::pair<std::string, std::string>> legend;
 };
 
 /// The HTML text of the page. Every text from the model is in the JSON (escaped, `<` as \u003c) and set by the

@@ -25,6 +25,14 @@
     equations.appendChild(li);
   }
 
+  const legend = document.getElementById('legend');
+  for (const [text, colour] of data.legend) {  // an ensemble's members
+    const li = document.createElement('li');
+    li.textContent = text;
+    li.style.color = colour;
+    legend.appendChild(li);
+  }
+
   const n = data.t.length;
   const items = data.items.map(function (item, k) {
     return Object.assign({}, item, { v: Float64Array.from(item.v), colour: item.colour || palette[k % palette.length] });

@@ -3,9 +3,11 @@
 #pragma once
 
 #include "animation/scene.hpp"
+#include "cli/ensemble_design.hpp"
 #include "eomgen/simulation_options.hpp"
 #include "model/model.hpp"
 
+#include <functional>
 #include <string>
 
 namespace eomgen::cli {
@@ -25,5 +27,17 @@ int animation_samples(double t_end, double fps);
 /// sample (its place in the model file and the time), 3 where the file cannot be written.
 int write_animation(const Model& model, const animation::Scene& scene, const eomgen::sim::Options& options,
                     const std::string& path, const std::string& command = "eomgen run");
+
+/// The most members an animated ensemble overlays (each in its own colour).
+constexpr std::size_t kMaxAnimatedMembers = 12;
+
+/// Runs one member with `options` (their own CSV, nothing printed): 0 or its exit code, with its errors.
+using RunMember = std::function<int(const eomgen::sim::Options& options, std::string& errors)>;
+
+/// The members of `design` run one by one with `run` (each `base` plus its --set and --init values) and
+/// overlaid in one page at `path`, each in its colour, with a legend of their values. 2 with a message where
+/// the ensemble has more than kMaxAnimatedMembers or a member fails, 3 where the page cannot be written.
+int write_ensemble_animation(const Model& model, const animation::Scene& scene, const eomgen::sim::Options& base,
+                             const EnsembleDesign& design, const std::string& path, const RunMember& run);
 
 }  // namespace eomgen::cli

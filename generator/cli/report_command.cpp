@@ -9,6 +9,7 @@
 #include "cli/latex_equations.hpp"
 #include "cli/modes_command.hpp"
 #include "cli/animate.hpp"
+#include "cli/capture.hpp"
 #include "cli/plot.hpp"
 #include "cli/model_unit_values.hpp"
 #include "cli/process.hpp"
@@ -63,21 +64,6 @@ struct Simulation {
     std::vector<std::pair<std::string, double>> residuals;  ///< constraint, largest residual
 };
 
-/// std::cout and std::cerr into strings while it lives.
-class Capture {
-  public:
-    Capture() : out_(std::cout.rdbuf(out_text_.rdbuf())), err_(std::cerr.rdbuf(err_text_.rdbuf())) {}
-    ~Capture() {
-        std::cout.rdbuf(out_);
-        std::cerr.rdbuf(err_);
-    }
-    std::string out() const { return out_text_.str(); }
-    std::string err() const { return err_text_.str(); }
-
-  private:
-    std::ostringstream out_text_, err_text_;
-    std::streambuf *out_, *err_;
-};
 
 /// The runtime's CSV (eomgen/output.hpp): a header of names, then rows of numbers.
 std::vector<std::vector<double>> read_samples(const fs::path& csv, std::vector<std::string>& header) {

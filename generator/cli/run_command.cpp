@@ -1,6 +1,7 @@
 /** @file run_command.cpp  `eomgen run`: model file → equations → compiled code → trajectory, CSV, plot. */
 #include "cli/run_command.hpp"
 #include "cli/animate.hpp"
+#include "cli/capture.hpp"
 #include "table_driver.hpp"  // the driver for TableModel, compiled once
 #include "cli/model_unit_values.hpp"
 
@@ -196,16 +197,34 @@ int RunCommand::run_model() {
                                  : "compiled in " + std::to_string(compiled.compile_seconds).substr(0, 4) + " s");
 
     if (ensemble) {
-        if (!animate_.empty()) {
-            std::cerr << "eomgen run: --animate of an ensemble is not done; animate one member (--set, --init)\n";
-            return 2;
-        }
         if (!plot_phase_.empty()) {
             std::cerr << "eomgen run: --plot-phase draws one run; an ensemble's --plot is a result against a varied value\n";
             return 2;
         }
-        progress("integrating the ensemble");
         eomgen::TableModel::bind(*compiled.table);
+        if (scene) {  // the members overlaid in one page, each run alone; then the ensemble's table as without
+            progress("animating the ensemble's members");
+            eomgen::sim::Options o = options_;
+            o.model = model.name;
+            if (!options_in_si(declared_units(model), o.set, o.init, "eomgen run")) return 2;
+            o.samples = std::max(o.samples, animation_samples(o.t_end, fps_));
+            EnsembleNames names;
+            for (const Parameter& p : model.parameters) names.params.push_back(p.name);
+            for (const Coordinate& c : model.coordinates) names.states.push_back(c.name);
+            for (const Coordinate& c : model.coordinates) names.states.push_back(c.name + "_dot");
+            const RunMember member = [](const eomgen::sim::Options& options, std::string& errors) {
+                const Capture capture;
+                const int code = eomgen::sim::run_reporting<eomgen::TableModel>(options, "eomgen run");
+                errors = capture.err();
+                return code;
+            };
+            if (const int code = write_ensemble_animation(model, *scene, o, EnsembleDesign(design_, names), animate_,
+                                                          member);
+                code != 0)
+                return code;
+            std::cerr << "animation: " << animate_ << "\n";
+        }
+        progress("integrating the ensemble");
         EnsembleRequest e{&model, options_, design_, threads_, out_, model_path_, text_hash(text), plot_, plot_xy_,
                           show_progress};
         e.options.model = model.name;
