@@ -13,7 +13,8 @@
 //
 // Each model goes through what the commands do, in process: parse_model, derive_equations (generate, show,
 // modes, run and check all start there), emit_model_header (generate), derive_hamiltonian (show),
-// small_oscillations (modes), a steady motion about a random rate of the last coordinate (modes --steady) and a short run (RK4 on M q'' = f + A^T lambda, A q'' = gamma, from the model's
+// small_oscillations (modes), a steady motion about a random rate of the last coordinate (modes --steady), the
+// animation's scene at the initial state (run --animate) and a short run (RK4 on M q'' = f + A^T lambda, A q'' = gamma, from the model's
 // initial state and parameter values, M and f evaluated with GiNaC). Properties, each a finding (an abort with
 // the model's text) when broken:
 //   - no crash, no hang (the driver's --slow limit), and no exception but a ModelError located at
@@ -29,6 +30,7 @@
 // With EOMGEN_FUZZ_STATS set, the counts of what happened are printed at exit (docs/reliability.md); with
 // EOMGEN_FUZZ_STRUCTURE_TOML set, each input is taken as a model file's text instead (to replay a finding of
 // tests/fuzz/findings_structure/); with EOMGEN_FUZZ_STRUCTURE_PRINT set, each generated model is printed.
+#include "animation/frames.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "harness.hpp"
 #include "mechanics/pole_free_subs.hpp"
@@ -609,7 +611,8 @@ long findings = 0;         // with EOMGEN_FUZZ_KEEP_GOING
 struct Stats {
     long inputs = 0, refused_parse = 0, refused_derive = 0, refused_emit = 0, refused_hamiltonian = 0, derived = 0,
          constrained = 0, modes_ok = 0, modes_refused = 0, modes_refused_model = 0, equilibria = 0, run_finite = 0,
-         run_singular = 0, hamiltonian_symbolic = 0, steady_ok = 0, steady_refused = 0;
+         run_singular = 0, hamiltonian_symbolic = 0, steady_ok = 0, steady_refused = 0, scenes_drawn = 0,
+         scenes_empty = 0;
     double seconds_parse = 0, seconds_derive = 0, seconds_emit = 0, seconds_hamiltonian = 0, seconds_modes = 0,
            seconds_run = 0, seconds_steady = 0;
     std::map<std::string, long> refusals;  // the first words of each refusal's message
@@ -626,6 +629,8 @@ struct Stats {
                      modes_ok, equilibria, modes_refused, modes_refused_model, hamiltonian_symbolic, run_finite,
                      run_singular);
         std::fprintf(stderr, "fuzz_structure: steady motions: %ld answered, %ld refused\n", steady_ok, steady_refused);
+        std::fprintf(stderr, "fuzz_structure: animation scenes: %ld drawn, %ld with nothing to draw\n", scenes_drawn,
+                     scenes_empty);
         std::fprintf(stderr, "fuzz_structure: seconds in parse %.1f, derive %.1f, emit %.1f, hamiltonian %.1f, modes %.1f, "
                      "steady %.1f, run %.1f\n", seconds_parse, seconds_derive, seconds_emit, seconds_hamiltonian, seconds_modes,
                      seconds_steady, seconds_run);
@@ -926,6 +931,39 @@ void check_modes(const eomgen::ModesResult& r) {
     }
 }
 
+/// The animation's scene (the bodies, springs and contacts the model has) at the model's initial state: built, or
+/// refused as nothing to draw (false); every number of it finite, or a runtime_error at fuzzed.toml:line:col.
+bool check_drawing(const eomgen::Model& model) {
+    eomgen::animation::Scene scene;
+    try {
+        scene = eomgen::animation::build_scene(model);
+    } catch (const eomgen::ModelError& e) {
+        if (e.message().rfind("nothing to animate", 0) != 0)
+            finding("an error of the animation's scene other than nothing to draw", e.what());
+        return false;
+    }
+    eomgen::animation::SampleTable samples;
+    samples.columns = {"t"};
+    std::vector<double> row{0.0};
+    for (const eomgen::Coordinate& c : model.coordinates) {
+        samples.columns.push_back(c.name);
+        samples.columns.push_back(c.name + "_dot");
+        row.push_back(c.initial);
+        row.push_back(c.rate);
+    }
+    samples.units.assign(samples.columns.size(), "");
+    samples.rows = {row};
+    try {
+        const eomgen::animation::Frames frames = eomgen::animation::evaluate_frames(scene, model, {}, samples);
+        for (const std::vector<double>& values : frames.values)
+            for (double x : values)
+                if (!std::isfinite(x)) finding("a number of the animation's frame is not finite", "");
+    } catch (const std::runtime_error& e) {
+        if (!eomgen::fuzz::located(e.what(), file)) finding("an error of the animation's frames without its place", e.what());
+    }
+    return true;
+}
+
 /// A ModelError must say where: fuzzed.toml:line:col (a model of bodies alone, with no T in its file, was refused
 /// with the bare file name: tests/fuzz/findings_structure/unlocated_*.toml).
 void located(const eomgen::ModelError& e, const char* stage) {
@@ -1080,6 +1118,9 @@ void test_one(const std::uint8_t* data, std::size_t size) {
                 ++stats.steady_refused;
             }
         }
+
+        stage = "the animation's scene";
+        ++(check_drawing(*model) ? stats.scenes_drawn : stats.scenes_empty);
 
         stage = "the short run";
         {
