@@ -547,6 +547,27 @@ std::vector<ex> exact_roots(const ex& p, const symbol& w) {
 /// The exact roots of det(K − w M), block by block: coordinates that neither K nor M couples (a decoupled pendulum
 /// beside a top) give separate factors, found without factoring their product — GiNaC's multivariate factorisation
 /// of a quartic in eight parameters takes tens of seconds (tests/fuzz/findings_structure/slow_modes_*.toml).
+/// The most variables the entries of a block of K0 and M0 may hold together, as polynomials (every symbol, and every
+/// function or non-integer power counted as one variable, as GiNaC::to_polynomial introduces them), for their
+/// characteristic polynomial to be formed exactly: GiNaC's determinant normalizes rational entries, whose
+/// multivariate gcds are exponential in the variables. A fuzzed 4×4 block of 14 (a square root of masses and a
+/// force, cosines, sign(omega)) took 4.4 s per equilibrium (seed 36001); the exact frequencies of such a block would
+/// not be read anyway. The numbers stand there. The same bound as the Legendre transform's (hamiltonian.cpp).
+constexpr std::size_t kMaxExactVariables = 12;
+
+std::size_t polynomial_variables(const GiNaC::matrix& K, const GiNaC::matrix& M) {
+    GiNaC::exmap introduced;
+    GiNaC::exset symbols;
+    for (const GiNaC::matrix* m : {&K, &M})
+        for (unsigned i = 0; i < m->rows(); ++i)
+            for (unsigned j = 0; j < m->cols(); ++j) {
+                const ex poly = (*m)(i, j).to_polynomial(introduced);
+                for (auto it = poly.preorder_begin(); it != poly.preorder_end(); ++it)
+                    if (GiNaC::is_a<GiNaC::symbol>(*it)) symbols.insert(*it);
+            }
+    return symbols.size();
+}
+
 std::vector<ex> block_roots(const GiNaC::matrix& K, const GiNaC::matrix& M, const symbol& w) {
     const unsigned n = K.rows();
     std::vector<unsigned> block(n);
@@ -571,6 +592,7 @@ std::vector<ex> block_roots(const GiNaC::matrix& K, const GiNaC::matrix& M, cons
                 Kb(i, j) = K(members[i], members[j]);
                 Mb(i, j) = M(members[i], members[j]);
             }
+        if (size > 1 && polynomial_variables(Kb, Mb) > kMaxExactVariables) continue;
         const std::vector<ex> found = exact_roots(char_poly(Kb, Mb, w), w);
         roots.insert(roots.end(), found.begin(), found.end());
     }
