@@ -3,6 +3,7 @@
 #pragma once
 
 #include "animation/scene.hpp"
+#include "output/sample_table.hpp"
 
 #include <map>
 #include <stdexcept>
@@ -11,15 +12,9 @@
 
 namespace eomgen::animation {
 
-/// The columns and rows of a run's CSV (`--csv`): headers without their units ("theta", not "theta [rad]").
-struct SampleTable {
-    std::vector<std::string> columns;
-    std::vector<std::string> units;  ///< "" where a header has none
-    std::vector<std::vector<double>> rows;
-};
-
-/// Reads a CSV of samples as eomgen-sim writes it; std::runtime_error naming the line where it cannot.
-SampleTable read_sample_table(const std::string& path);
+/// A run's samples (output/sample_table.hpp).
+using output::SampleTable;
+using output::read_sample_table;
 
 /// The scene's numbers at every row of `samples`.
 struct Frames {

@@ -11,6 +11,7 @@
 #include "cli/animate.hpp"
 #include "cli/capture.hpp"
 #include "cli/plot.hpp"
+#include "output/sample_table.hpp"
 #include "cli/model_unit_values.hpp"
 #include "cli/process.hpp"
 #include "cli/run_command.hpp"
@@ -65,31 +66,17 @@ struct Simulation {
 };
 
 
-/// The runtime's CSV (eomgen/output.hpp): a header of names, then rows of numbers.
-std::vector<std::vector<double>> read_samples(const fs::path& csv, std::vector<std::string>& header) {
-    std::ifstream in(csv);
-    std::string line;
-    std::vector<std::vector<double>> rows;
-    if (!std::getline(in, line)) return rows;
-    std::istringstream names(line);
-    for (std::string name; std::getline(names, name, ',');) header.push_back(name);
-    while (std::getline(in, line)) {
-        std::vector<double> row;
-        std::istringstream cells(line);
-        for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::strtod(cell.c_str(), nullptr));
-        if (row.size() == header.size()) rows.push_back(std::move(row));
-    }
-    return rows;
-}
-
 void measure(const Model& model, const Equations& eq, Simulation& sim, const fs::path& csv) {
-    std::vector<std::string> header;
-    const auto rows = read_samples(csv, header);
+    // The headers carry units ("energy [J]"), which the table takes off: a model with units has its drift too.
+    output::SampleTable table;
+    try {
+        table = output::read_sample_table(csv.string());
+    } catch (const std::runtime_error&) {
+        return;
+    }
+    const std::vector<std::vector<double>>& rows = table.rows;
     if (rows.empty()) return;
-    auto column = [&](const std::string& name) {
-        const auto it = std::find(header.begin(), header.end(), name);
-        return it == header.end() ? -1 : int(it - header.begin());
-    };
+    auto column = [&](const std::string& name) { return table.column(name); };
     auto drift_of = [&](const std::string& name, const std::string& latex, bool conserved) {
         const int j = column(name);
         if (j < 0) return;

@@ -114,6 +114,19 @@ TEST_CASE("eomgen report: show --latex's equations, a simulation with its plot, 
     CHECK(worst < 1e-8);
 }
 
+TEST_CASE("eomgen report: the drift of the invariants of a model with units, whose CSV headers carry them", "[report]") {
+    // "energy [J]": the table was left out when the headers had units (the shipped bead, the main job's report).
+    const fs::path dir = kWork / "units report";
+    fs::remove_all(dir);
+    const Result r = eomgen({"report", std::string(EOMGEN_SOURCE_DIR) + "/examples/bead_on_hoop.toml", "-o",
+                             dir.string(), "--t-end", "2", "--quiet"});
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const std::string md = read(dir / "bead_on_hoop.md");
+    CHECK(read(dir / "bead_on_hoop.csv").find("energy [J]") != std::string::npos);
+    CHECK(std::regex_search(md, std::regex(R"(\| \$h\$ \| -0\.534 \| \S+ \(relative\) \|)")));
+}
+
 TEST_CASE("eomgen report: the motion as a page beside the plot where the model says what to draw", "[report]") {
     // Without [[draw]] (the bead above has none): no page, no link.
     const fs::path plain = write("plain_bead.toml", kBead);
