@@ -1,4 +1,4 @@
-/** @file frames.cpp  Evaluating a scene at a run's samples, and reading the samples' CSV. */
+/** @file frames.cpp  Evaluating a scene at a run's samples. */
 #include "animation/frames.hpp"
 
 #include "mechanics/double_evaluator.hpp"
