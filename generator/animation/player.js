@@ -307,7 +307,12 @@
     } else if (item.kind === 'point') {
       const p = pointAt(v, 0), s = project(p);
       const r = item.has_radius ? Math.max(2, v[3] * pixelScale()) : 6;
-      ctx.beginPath(); ctx.arc(s[0], s[1], r, 0, 2 * Math.PI); ctx.fill();
+      ctx.beginPath(); ctx.arc(s[0], s[1], r, 0, 2 * Math.PI);
+      if (item.has_radius && !data.planar) {  // a ball: what is inside or behind it shows through
+        ctx.globalAlpha = 0.55; ctx.fill(); ctx.globalAlpha = 1; ctx.stroke();
+      } else {
+        ctx.fill();
+      }
       label(item.label, p);
       probe.points.push({ label: item.label, x: s[0], y: s[1] });
     } else if (item.kind === 'solid') {
@@ -336,9 +341,10 @@
     const order = items.slice();
     if (data.planar) {  // the file's order, points last: they sit on the links
       order.sort(function (a, b) { return (a.kind === 'ground' ? -2 : a.kind === 'point' ? 1 : 0) - (b.kind === 'ground' ? -2 : b.kind === 'point' ? 1 : 0); });
-    } else {  // far to near; the points after everything else: a mass sits on the links that end at it
+    } else {  // far to near; dots after everything else: a mass sits on the links that end at it
       const depth = new Map(order.map(function (item) { return [item, depthOf(item, f)]; }));
-      order.sort(function (a, b) { return (a.kind === 'point') - (b.kind === 'point') || depth.get(a) - depth.get(b); });
+      const dot = (item) => item.kind === 'point' && !item.has_radius;
+      order.sort(function (a, b) { return dot(a) - dot(b) || depth.get(a) - depth.get(b); });
     }
     for (const item of order) {
       if (item.kind === 'ground') drawGround(item); else drawItem(item, f);
