@@ -129,7 +129,7 @@ std::string html_page(const Page& page) {
          "<label>speed <select id=\"speed\"><option>0.25</option><option>0.5</option>"
          "<option selected>1</option><option>2</option><option>4</option></select></label>"
          "<button id=\"reset\" type=\"button\">Reset view</button></div>\n"
-         "<p>Drag to turn the view (3-D) or move it (2-D); the wheel zooms; space plays and pauses.</p>\n"
+         "<p>Drag to turn the view (3-D) or move it (2-D); the wheel zooms; space plays and pauses; the arrow keys step one frame.</p>\n"
          "<ul id=\"equations\"></ul>\n<pre id=\"probe\"></pre>\n"
          "<script type=\"application/json\" id=\"eomgen-data\">";
     h += json_of(page);

@@ -389,7 +389,15 @@
     view.az = -0.6; view.el = 0.35; view.zoom = 1; view.panX = 0; view.panY = 0; draw(frame);
   });
   window.addEventListener('keydown', function (e) {
-    if (e.key === ' ' && e.target === document.body) { e.preventDefault(); setPlaying(!playing); }
+    if (e.target !== document.body) return;
+    if (e.key === ' ') { e.preventDefault(); setPlaying(!playing); }
+    if (e.key === 'ArrowLeft' || e.key === 'ArrowRight') {  // one frame back or on, paused
+      e.preventDefault();
+      setPlaying(false);
+      frame = Math.max(0, Math.min(n - 1, frame + (e.key === 'ArrowRight' ? 1 : -1)));
+      clock = data.t[frame];
+      draw(frame);
+    }
   });
   let drag = null;
   canvas.addEventListener('pointerdown', function (e) { drag = [e.clientX, e.clientY]; canvas.setPointerCapture(e.pointerId); });
