@@ -460,8 +460,11 @@ ex char_poly(const GiNaC::matrix& K, const GiNaC::matrix& M, const symbol& w) {
     return A.determinant(GiNaC::determinant_algo::laplace);
 }
 
-/// Roots in w of the factors of degree 1 and 2 of the polynomial p(w).
+/// The largest characteristic polynomials factored for exact roots (exact_roots): at most 60 terms, and at most 16
+/// where it holds more than 8 symbols besides w.
 constexpr std::size_t kMaxFactorTerms = 60;
+constexpr std::size_t kMaxFactorTermsManySymbols = 16;
+constexpr std::size_t kMaxFactorVariables = 8;
 
 /// The symbols of e other than w, in name order (a deterministic substitution below).
 void collect_symbols_except(const ex& e, const symbol& w, GiNaC::lst& out) {
@@ -518,6 +521,12 @@ std::vector<ex> exact_roots(const ex& p, const symbol& w) {
     // tests/fuzz/findings_structure/slow_modes_factor_characteristic_polynomial.toml); the shipped models' and tests'
     // have at most 8 terms. Beyond kMaxFactorTerms the frequencies stay numbers.
     if (GiNaC::is_a<GiNaC::add>(num) && num.nops() > kMaxFactorTerms) return roots;
+    // Nor beyond kMaxFactorVariables symbols once it has more than a few terms: 57 terms of degree 4 in 11 symbols
+    // took 10 s per equilibrium to factor (tests/fuzz/findings_structure/slow_modes_factor_eleven_symbols.toml).
+    GiNaC::lst others;
+    collect_symbols_except(num, w, others);
+    if (GiNaC::is_a<GiNaC::add>(num) && num.nops() > kMaxFactorTermsManySymbols && others.nops() > kMaxFactorVariables)
+        return roots;
     ex f = num;
     if (may_split(num, w)) {
         try {
@@ -544,9 +553,6 @@ std::vector<ex> exact_roots(const ex& p, const symbol& w) {
     return roots;
 }
 
-/// The exact roots of det(K − w M), block by block: coordinates that neither K nor M couples (a decoupled pendulum
-/// beside a top) give separate factors, found without factoring their product — GiNaC's multivariate factorisation
-/// of a quartic in eight parameters takes tens of seconds (tests/fuzz/findings_structure/slow_modes_*.toml).
 /// The most variables the entries of a block of K0 and M0 may hold together, as polynomials (every symbol, and every
 /// function or non-integer power counted as one variable, as GiNaC::to_polynomial introduces them), for their
 /// characteristic polynomial to be formed exactly: GiNaC's determinant normalizes rational entries, whose
@@ -568,6 +574,9 @@ std::size_t polynomial_variables(const GiNaC::matrix& K, const GiNaC::matrix& M)
     return symbols.size();
 }
 
+/// The exact roots of det(K − w M), block by block: coordinates that neither K nor M couples (a decoupled pendulum
+/// beside a top) give separate factors, found without factoring their product — GiNaC's multivariate factorisation
+/// of a quartic in eight parameters takes tens of seconds (tests/fuzz/findings_structure/slow_modes_*.toml).
 std::vector<ex> block_roots(const GiNaC::matrix& K, const GiNaC::matrix& M, const symbol& w) {
     const unsigned n = K.rows();
     std::vector<unsigned> block(n);
