@@ -38,6 +38,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <complex>
 #include <cstdlib>
@@ -57,8 +58,21 @@ using ExSet = std::set<GiNaC::ex, GiNaC::ex_is_less>;
 template <class V>
 using ExMap = std::map<GiNaC::ex, V, GiNaC::ex_is_less>;
 
+/// `latex` as inline math in a report: `$…$`, a side broken over lines (a display's rows) on one line.
 inline std::string m(const std::string& latex) {
-    return "$" + latex + "$";
+    std::string one_line;
+    one_line.reserve(latex.size());
+    for (std::size_t k = 0; k < latex.size(); ++k) {
+        if (latex[k] != '\n') {
+            one_line += latex[k];
+            continue;
+        }
+        while (!one_line.empty() && (one_line.back() == ' ' || one_line.back() == '\t' || one_line.back() == '\r'))
+            one_line.pop_back();
+        while (k + 1 < latex.size() && (latex[k + 1] == ' ' || latex[k + 1] == '\t')) ++k;
+        one_line += ' ';
+    }
+    return "$" + one_line + "$";
 }
 
 enum class Tri { No, Yes, Unknown };
@@ -525,6 +539,43 @@ class Checker : public Comparisons {
     /// `V = -m g l \cos\theta + \text{const}`: agrees (true) when the sides differ by a constant; else
     /// the constants are dropped from a and b for the other comparisons (false).
     bool up_to_constant(Prepared& a, Prepared& b, double tol, EquationCheck& r) {
+        // `V(x_1, x_2) = k x_1^2 + \dots + f`: a name the text never defines, added alone (±) to a potential, a
+        // Lagrangian or an energy (quantities defined up to a constant), is that constant.
+        for (auto [truth, other] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+            if (!truth->has_truth_label || !truth->comparable() || other->unknown.empty() || !other->vectors.empty())
+                continue;
+            bool defined_up_to_constant = false;
+            for (const GiNaC::ex& q : {eq_.V, eq_.L, eq_.energy})
+                defined_up_to_constant = defined_up_to_constant || equal(truth->value, q, 1e-9) == Tri::Yes;
+            if (!defined_up_to_constant) continue;
+            // A constant's name: one letter (not one that names an energy or its parts: T_{rot} is a part of T),
+            // with a subscript of digits or one letter at most (c, f, C_0, c_{1}).
+            auto constant_like = [](const std::string& name) {
+                const std::size_t under = name.find('_');
+                const std::string base = name.substr(0, under);
+                if (base.size() != 1 || !std::isalpha(static_cast<unsigned char>(base[0])) ||
+                    std::string("TVULHEKPW").find(base[0]) != std::string::npos)
+                    return false;
+                if (under == std::string::npos) return true;
+                std::string sub = name.substr(under + 1);
+                if (sub.size() >= 2 && sub.front() == '{' && sub.back() == '}') sub = sub.substr(1, sub.size() - 2);
+                return sub.size() == 1 ? std::isalnum(static_cast<unsigned char>(sub[0])) != 0
+                                       : !sub.empty() && std::all_of(sub.begin(), sub.end(), [](char ch) {
+                                             return std::isdigit(static_cast<unsigned char>(ch)) != 0;
+                                         });
+            };
+            std::vector<const FreeName*> still;
+            for (const FreeName* f : other->unknown) {
+                const GiNaC::ex slope = GiNaC::diff(other->value, f->symbol).expand();
+                if (constant_like(f->name) && (slope.is_equal(1) || slope.is_equal(-1))) {
+                    other->constants.push_back(f->symbol);
+                    r.notes.push_back("reads $" + f->name + "$, added alone, as the additive constant");
+                } else {
+                    still.push_back(f);
+                }
+            }
+            other->unknown = std::move(still);
+        }
         if (a.constants.empty() && b.constants.empty()) return false;
         GiNaC::exmap zero;
         for (const Prepared* p : {&a, &b})
@@ -575,6 +626,13 @@ class Checker : public Comparisons {
     /// while its operators are resolved and said in its notes.
     mutable std::vector<std::pair<Kink, GiNaC::ex>> kinks_;
     void collect_definitions(const std::vector<FullChain>& chains);
+    /// `\rho^2\dot\varphi = c_0`: the name c_0, introduced by a chain's last side, defined as the quantity before
+    /// it (named_constants.cpp); its file offset → its name.
+    void collect_named_constants(const std::vector<FullChain>& chains);
+    std::map<std::size_t, std::string> named_constants_;
+    /// Judges `quantity = name` when `name` is such a side: a constant of the motion, or the text's definition.
+    bool check_named_constant(const PSide& quantity, const PSide& name, const Prepared& value, double tol,
+                              EquationCheck& r);
     HamiltonianReading hamilton_;  ///< p_q as variables, H(q, p, t) inside ∂
     ParticularMotions motions_{model_, eq_, ctx_};  ///< [[motions]]: lines that hold on one motion
     /// a = b (link j of c) on the model's particular motion for its section (motions.hpp).

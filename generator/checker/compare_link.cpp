@@ -99,8 +99,27 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
     if (rel == Relation::Approx) tol = std::max(tol, 1e-2);
     if (up_to_constant(a, b, tol, r)) return r;
+    // `\frac{3}{2} \ddot x (R-r)\dot\theta + g x \dot\theta = 0`: an equation of motion times a velocity (the time
+    // derivative of an energy, before the text cancels the velocity) holds where that equation does.
+    std::string divided;
+    if (a.comparable() && b.comparable() && has_acceleration(a.value - b.value) &&
+        equal(a.value, b.value, tol) != Tri::Yes)
+        for (const Coordinate& q : model_.coordinates) {
+            try {
+                const GiNaC::ex whole = (a.value - b.value).expand();
+                if (!whole.has(q.qd) || !whole.subs(q.qd == 0).is_zero()) continue;
+                const GiNaC::ex rest = (whole / q.qd).expand();
+                if (!has_acceleration(rest)) continue;
+                a.value = rest;
+                b.value = 0;
+                divided = "read as " + m("\\dot{" + q.latex + "}") + " times an equation, which is compared";
+                break;
+            } catch (const std::exception&) {  // a pole at q' = 0: not such a product
+            }
+        }
     // \approx, \simeq: the Taylor expansion to the order the text keeps; "= ... for small θ" too, where it
     // would otherwise disagree.
+    if (!divided.empty()) r.notes.push_back(divided);
     const bool approx = rel == Relation::Approx;
     if (approx && approximation(rel_at, L.side->source, R.side->source, a, b, true, r)) return r;
     check_values(c, i, j, a, b, tol, r);
@@ -144,6 +163,7 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         alt.where = r.where;
         alt.section = r.section;
         alt.equation = r.equation;
+        if (!divided.empty()) alt.notes.push_back(divided);
         if (approximation(rel_at, L.side->source, R.side->source, a, b, false, alt) && alt.verdict == Verdict::Agrees)
             return alt;
     }
@@ -338,6 +358,14 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         check_claimed_solution(a.value, b.value, model_, eq_, motion_, ctx_, *this, r,
                                discourse_->stated_frequencies(c.relation_offsets[j - 1])))
         return;
+    // `\rho^2\dot\varphi = c_0`, where the text introduces c_0 (named_constants.cpp).
+    if (named_constants_.count(R.base + R.side->begin)) {
+        // On a particular motion of the model ([[motions]]) the motion says which constant it is.
+        if (a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
+            on_motion(c, i, j, a.value, b.value, tol, r))
+            return;
+        if (check_named_constant(L, R, a, tol, r)) return;
+    }
     // Free names: an identity still agrees, anything else cannot be judged.
     if (!a.comparable() || !b.comparable()) {
         // Vectors are not scalars: a×b = −b×a, so only identities in scalar unknowns are claimed.
@@ -532,7 +560,21 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
                        within;
             return;
         }
-        if (euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor, &acting) == Tri::Yes) {
+        // A side the text writes as the Euler–Lagrange expression of one coordinate (`\frac{\partial L}{\partial
+        // \theta} - \frac{d}{dt}\frac{\partial L}{\partial \dot\theta}`, with eomgen's L or the text's own) is that
+        // coordinate's: the other side must
+        // make that equation, not another one that also holds on the motion.
+        int own = -1;
+        const bool a_derived = a.has_truth_label || a.from_definition, b_derived = b.has_truth_label || b.from_definition;
+        if (a_derived != b_derived) {
+            const GiNaC::ex& written = a_derived ? a.value : b.value;
+            for (std::size_t k = 0; k < model_.dof() && own < 0; ++k)
+                if (equal(written, eq_.euler_lagrange[k], 1e-9) == Tri::Yes ||
+                    equal(written, -eq_.euler_lagrange[k], 1e-9) == Tri::Yes)
+                    own = int(k);
+        }
+        if (euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor, &acting) == Tri::Yes &&
+            (own < 0 || only == own)) {
             if (!acting.empty()) {
                 std::string names;
                 for (std::size_t k = 0; k < acting.size(); ++k) names += (k ? ", " : "") + ("'" + acting[k] + "'");

@@ -4,12 +4,14 @@
 #include "model/nonsmooth.hpp"
 
 #include "checker/latex_normalize.hpp"
+#include "checker/latex_tokens.hpp"
 #include "checker/units.hpp"
 
 #include <algorithm>
 #include <cstring>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -36,360 +38,16 @@ GiNaC::symbol LatexContext::free_symbol(const std::string& name, NameKind kind) 
 
 namespace {
 
-// ---------------------------------------------------------------------------------------------- tokens
-
-enum class Tok { Letter, Digit, Word, Char, Other };
-
-struct Token {
-    Tok kind;
-    std::string text;        ///< the letter, digit, char, or the control word with its backslash
-    std::size_t offset = 0;  ///< byte offset of the token in the row
-    std::size_t length = 0;  ///< bytes, including a raw argument
-    std::string raw;         ///< \text{...}-like commands: the argument, verbatim
-    bool space = false;      ///< spacing (\quad): skipped by the expression parser
-};
-
-bool is_one_of(const std::string& s, std::initializer_list<const char*> list) {
-    for (const char* x : list)
-        if (s == x) return true;
-    return false;
-}
-
-// Commands whose argument is text, captured verbatim.
-bool takes_raw_argument(const std::string& w) {
-    return is_one_of(w, {"\\text", "\\textrm", "\\textit", "\\textbf", "\\mathrm", "\\mathit",
-                         "\\operatorname", "\\mbox", "\\textnormal", "\\mathsf", "\\mathtt", "\\textsf"});
-}
-
-// Commands that only change spacing or size: dropped.
-bool is_ignored_word(const std::string& w) {
-    return is_one_of(
-        w, {"\\displaystyle", "\\ds", "\\textstyle",  "\\scriptstyle", "\\limits", "\\nolimits", "\\big",
-            "\\Big",          "\\bigg",       "\\Bigg",        "\\bigl",   "\\bigr",     "\\Bigl",
-            "\\Bigr",         "\\biggl",      "\\biggr",       "\\Biggl",  "\\Biggr",    "\\bigm",
-            "\\Bigm",         "\\nonumber",   "\\notag",       "\\middle", "\\mathopen", "\\mathclose",
-            "\\strut",        "\\allowbreak", "\\nobreak"});
-}
-
-// Commands dropped together with their brace argument.
-bool is_ignored_with_argument(const std::string& w) {
-    return is_one_of(w, {"\\label", "\\tag", "\\hspace", "\\vspace", "\\phantom", "\\hphantom", "\\vphantom",
-                         "\\color", "\\textcolor"});
-}
-
-/// Skips a balanced {...} starting at i (which must be '{'); returns the index after it, or the end.
-std::size_t skip_braces(std::string_view s, std::size_t i) {
-    int depth = 0;
-    for (; i < s.size(); ++i) {
-        if (s[i] == '\\' && i + 1 < s.size()) {
-            ++i;
-            continue;
-        }
-        if (s[i] == '{') ++depth;
-        if (s[i] == '}' && --depth == 0) return i + 1;
-    }
-    return s.size();
-}
-
-std::vector<Token> tokenize_text(std::string_view s);
-
-// The end (one past the closing brace) of the brace group that opens at token k, or k when none opens there.
-std::size_t group_end(const std::vector<Token>& t, std::size_t k) {
-    if (k >= t.size() || t[k].kind != Tok::Char || t[k].text != "{") return k;
-    int depth = 0;
-    for (std::size_t q = k; q < t.size(); ++q) {
-        if (t[q].kind != Tok::Char) continue;
-        if (t[q].text == "{") ++depth;
-        if (t[q].text == "}" && --depth == 0) return q + 1;
-    }
-    return k;
-}
-
-/**
- * The derivative macros of the physics package and of course notes, as the fraction they typeset, in tokens at
- * the macro's place (the arguments keep theirs): `\pdv{L}{\theta}`, `\pdiff{L}{\theta}` are
- * `\frac{\partial L}{\partial \theta}`; `\dv{x}{t}`, `\diff{x}{t}` are `\frac{d x}{d t}`; with one argument
- * (`\dv{t}`, `\diff{}{t}` with an empty first one) the operator `\frac{d}{d t}`. `\Lagr` and `\Lagrangian`
- * are `\mathcal{L}`. A third argument (the order, as `\pdv[2]{f}{x}` writes it) is not expanded.
- */
-std::vector<Token> expand_macros(std::vector<Token> in) {
-    std::vector<Token> out;
-    out.reserve(in.size());
-    for (std::size_t k = 0; k < in.size(); ++k) {
-        const Token& m = in[k];
-        if (m.kind != Tok::Word) {
-            out.push_back(m);
-            continue;
-        }
-        // Made tokens lie at the macro or at a brace of its own, so that a side's extent is still the text's.
-        auto made = [&](Tok kind, const char* text, const Token& at) {
-            return Token{kind, text, at.offset, at.length, "", false};
-        };
-        if (m.text == "\\Lagr" || m.text == "\\Lagrangian") {
-            out.push_back(made(Tok::Word, "\\mathcal", m));
-            out.push_back(made(Tok::Char, "{", m));
-            out.push_back(made(Tok::Letter, "L", m));
-            out.push_back(made(Tok::Char, "}", m));
-            continue;
-        }
-        const bool partial = is_one_of(m.text, {"\\pdv", "\\pdiff", "\\pderiv", "\\partialderivative", "\\pd"});
-        const bool total = is_one_of(m.text, {"\\dv", "\\diff", "\\deriv", "\\derivative", "\\od", "\\tdiff"});
-        const std::size_t a = k + 1, a_end = group_end(in, a), b_end = group_end(in, a_end);
-        if (!(partial || total) || a_end == a) {
-            out.push_back(m);
-            continue;
-        }
-        auto d = [&](const Token& at) {
-            return partial ? made(Tok::Word, "\\partial", at) : made(Tok::Letter, "d", at);
-        };
-        auto copy = [&](std::size_t from, std::size_t to) {  // the tokens inside the group [from, to), expanded
-            const std::vector<Token> inner =
-                expand_macros({in.begin() + std::ptrdiff_t(from) + 1, in.begin() + std::ptrdiff_t(to) - 1});
-            out.insert(out.end(), inner.begin(), inner.end());
-        };
-        out.push_back(made(Tok::Word, "\\frac", m));
-        if (b_end != a_end) {  // \pdv{f}{x}: f over x; \diff{}{t}: the operator
-            out.push_back(in[a]);
-            out.push_back(d(in[a]));
-            copy(a, a_end);
-            out.push_back(in[a_end - 1]);
-            out.push_back(in[a_end]);
-            out.push_back(d(in[a_end]));
-            copy(a_end, b_end);
-            out.push_back(in[b_end - 1]);
-            k = b_end - 1;
-        } else {  // \dv{t}: the operator d/dt
-            out.push_back(made(Tok::Char, "{", m));
-            out.push_back(d(m));
-            out.push_back(made(Tok::Char, "}", m));
-            out.push_back(in[a]);
-            out.push_back(d(in[a]));
-            copy(a, a_end);
-            out.push_back(in[a_end - 1]);
-            k = a_end - 1;
-        }
-    }
-    return out;
-}
-
-std::vector<Token> tokenize(std::string_view s) { return expand_macros(tokenize_text(s)); }
-
-std::vector<Token> tokenize_text(std::string_view s) {
-    std::vector<Token> out;
-    std::size_t i = 0;
-    while (i < s.size()) {
-        const unsigned char c = static_cast<unsigned char>(s[i]);
-        if (std::isspace(c)) {
-            ++i;
-            continue;
-        }
-        if (c == '%') {  // a LaTeX comment, to the end of the line
-            while (i < s.size() && s[i] != '\n') ++i;
-            continue;
-        }
-        if (c == '~') {
-            ++i;
-            continue;
-        }
-        // `d/dt` and `(d/dt)` as plain text writes the operator: \frac{d}{dt}.
-        {
-            const std::size_t open = c == '(' ? 1 : 0;
-            if (s.compare(i + open, 4, "d/dt") == 0 && (i == 0 || !std::isalpha(static_cast<unsigned char>(s[i - 1]))) &&
-                (open == 0 || (i + 5 < s.size() && s[i + 5] == ')')) &&
-                (i + open + 4 >= s.size() || !std::isalpha(static_cast<unsigned char>(s[i + open + 4])))) {
-                const std::size_t n = open ? 6 : 4;
-                for (const char* w : {"\\frac", "{", "d", "}", "{", "d", "t", "}"}) {
-                    const unsigned char w0 = static_cast<unsigned char>(w[0]);
-                    out.push_back({w0 == '\\' ? Tok::Word : (std::isalpha(w0) ? Tok::Letter : Tok::Char), w, i, n, "", false});
-                }
-                i += n;
-                continue;
-            }
-        }
-        // A combining dot (U+0307) or two (U+0308) after a space, on the letter before it (`x ̈` as a word
-        // processor pastes ẍ): that letter dotted.
-        if (c == 0xCC && i + 1 < s.size() && (static_cast<unsigned char>(s[i + 1]) == 0x87 ||
-                                              static_cast<unsigned char>(s[i + 1]) == 0x88) &&
-            !out.empty() && (out.back().kind == Tok::Letter || (out.back().kind == Tok::Word && out.back().raw.empty())) &&
-            s.find_first_not_of(" \t", out.back().offset + out.back().length) == i) {
-            const Token letter = out.back();
-            out.back() = {Tok::Word, static_cast<unsigned char>(s[i + 1]) == 0x87 ? "\\dot" : "\\ddot", letter.offset,
-                          0, "", false};
-            out.push_back({letter.kind, letter.text, letter.offset, i + 2 - letter.offset, "", false});
-            i += 2;
-            continue;
-        }
-        // HTML entities, Unicode letters and signs, combining dots (latex_normalize): their LaTeX tokens.
-        if (c >= 0x80 || c == '&' ||
-            (std::isalpha(c) && i + 1 < s.size() && (static_cast<unsigned char>(s[i + 1]) == 0xCC || s[i + 1] == '&'))) {
-            if (const auto sp = spelled_as_latex(s, i)) {
-                for (const std::string& w : sp->tokens) {
-                    const unsigned char w0 = static_cast<unsigned char>(w[0]);
-                    const Tok kind = w.size() > 1 && w0 == '\\' ? Tok::Word
-                                     : std::isalpha(w0)          ? Tok::Letter
-                                     : std::isdigit(w0)          ? Tok::Digit
-                                                                 : Tok::Char;
-                    out.push_back({kind, w, i, sp->length, "", false});
-                }
-                i += sp->length;
-                continue;
-            }
-        }
-        if (c == '\\') {
-            std::size_t j = i + 1;
-            if (j < s.size() && std::isalpha(static_cast<unsigned char>(s[j]))) {
-                while (j < s.size() && std::isalpha(static_cast<unsigned char>(s[j]))) ++j;
-                std::string w(s.substr(i, j - i));
-                if (j < s.size() && s[j] == '*') ++j;  // \operatorname*, \text*
-                if (is_ignored_word(w)) {
-                    i = j;
-                    continue;
-                }
-                if (is_ignored_with_argument(w)) {
-                    std::size_t k = j;
-                    while (k < s.size() && std::isspace(static_cast<unsigned char>(s[k]))) ++k;
-                    i = (k < s.size() && s[k] == '{') ? skip_braces(s, k) : j;
-                    continue;
-                }
-                Token t{Tok::Word, w, i, j - i, "", false};
-                if (w == "\\quad" || w == "\\qquad") t.space = true;
-                if (takes_raw_argument(w)) {
-                    std::size_t k = j;
-                    while (k < s.size() && std::isspace(static_cast<unsigned char>(s[k]))) ++k;
-                    if (k < s.size() && s[k] == '{') {
-                        const std::size_t e = skip_braces(s, k);
-                        t.raw = std::string(s.substr(k + 1, e > k + 1 ? e - k - 2 : 0));
-                        j = e;
-                    } else if (k < s.size()) {
-                        t.raw = std::string(1, s[k]);
-                        j = k + 1;
-                    }
-                    t.length = j - i;
-                }
-                out.push_back(std::move(t));
-                i = j;
-                continue;
-            }
-            if (j < s.size()) {
-                const char d = s[j];
-                // Spacing commands: \, \; \: \! and "\ ".
-                if (d == ',' || d == ';' || d == ':' || d == '!' || d == ' ' || d == '>') {
-                    i = j + 1;
-                    continue;
-                }
-                out.push_back({Tok::Word, std::string(s.substr(i, 2)), i, 2, "", false});
-                i = j + 1;
-                continue;
-            }
-            out.push_back({Tok::Char, "\\", i, 1, "", false});
-            ++i;
-            continue;
-        }
-        if (std::isalpha(c)) {
-            // A function written without its backslash (`mglsin\theta`, `cos(\phi)`, as pages pasted from a word
-            // processor write it): the function, when what follows cannot continue a word.
-            static const char* const kBare[] = {"arcsin", "arccos", "arctan", "sinh", "cosh", "tanh", "sin", "cos",
-                                                "tan",    "cot",    "sec",    "csc",  "exp",  "ln"};
-            bool bare = false;
-            for (const char* f : kBare) {
-                const std::size_t n = std::strlen(f);
-                if (s.compare(i, n, f) != 0 || i + n >= s.size()) continue;
-                const unsigned char next = static_cast<unsigned char>(s[i + n]);
-                const bool opens = next == '(' || next == '\\' || next == '{' || next == '^' || next == '_';
-                if (!(opens || ((next == ' ' || next >= 0x80) && std::strcmp(f, "ln") != 0))) continue;
-                out.push_back({Tok::Word, std::string("\\") + f, i, n, "", false});
-                i += n;
-                bare = true;
-                break;
-            }
-            if (bare) continue;
-            // `const`, `constant` without a backslash (`+ const.`): the additive constant, as `\text{const}` is.
-            for (const char* word : {"constant", "const"}) {
-                const std::size_t n = std::strlen(word);
-                if (s.compare(i, n, word) != 0 || (i > 0 && (std::isalpha(static_cast<unsigned char>(s[i - 1])) ||
-                                                             s[i - 1] == '\\')))
-                    continue;
-                if (i + n < s.size() && std::isalpha(static_cast<unsigned char>(s[i + n]))) continue;
-                out.push_back({Tok::Word, "\\mathrm", i, n, word, false});
-                i += n;
-                bare = true;
-                break;
-            }
-            if (bare) continue;
-            // `KE`, `PE`: the kinetic and potential energy as blogs and notes abbreviate them, a name (as
-            // `\mathrm{KE}` is), not K times E.
-            if ((s.compare(i, 2, "KE") == 0 || s.compare(i, 2, "PE") == 0) &&
-                (i == 0 || (!std::isalpha(static_cast<unsigned char>(s[i - 1])) && s[i - 1] != '\\')) &&
-                (i + 2 >= s.size() || !std::isalpha(static_cast<unsigned char>(s[i + 2])))) {
-                out.push_back({Tok::Word, "\\mathrm", i, 2, std::string(s.substr(i, 2)), false});
-                i += 2;
-                continue;
-            }
-            // `K.E.`, `P.E.` (the last dot may end the formula): the same names.
-            if ((s.compare(i, 3, "K.E") == 0 || s.compare(i, 3, "P.E") == 0) &&
-                (i == 0 || (!std::isalpha(static_cast<unsigned char>(s[i - 1])) && s[i - 1] != '\\')) &&
-                (i + 3 >= s.size() || !std::isalpha(static_cast<unsigned char>(s[i + 3])))) {
-                const std::size_t n = i + 3 < s.size() && s[i + 3] == '.' ? 4 : 3;
-                out.push_back({Tok::Word, "\\mathrm", i, n, std::string(1, s[i]) + "E", false});
-                i += n;
-                continue;
-            }
-            // `frac{…}{…}`, `sqrt{…}` without their backslash (math pasted from a word processor).
-            for (const char* word : {"dfrac", "frac", "sqrt"}) {
-                const std::size_t n = std::strlen(word);
-                if (s.compare(i, n, word) != 0 || i + n >= s.size() || s[i + n] != '{' ||
-                    (i > 0 && (std::isalpha(static_cast<unsigned char>(s[i - 1])) || s[i - 1] == '\\')))
-                    continue;
-                out.push_back({Tok::Word, std::string("\\") + word, i, n, "", false});
-                i += n;
-                bare = true;
-                break;
-            }
-            if (bare) continue;
-            out.push_back({Tok::Letter, std::string(1, char(c)), i, 1, "", false});
-            ++i;
-            continue;
-        }
-        if (std::isdigit(c)) {
-            out.push_back({Tok::Digit, std::string(1, char(c)), i, 1, "", false});
-            ++i;
-            continue;
-        }
-        if (c >= 0x80) {  // a UTF-8 sequence: one token, reported as unexpected
-            std::size_t j = i + 1;
-            while (j < s.size() && (static_cast<unsigned char>(s[j]) & 0xC0) == 0x80) ++j;
-            out.push_back({Tok::Other, std::string(s.substr(i, j - i)), i, j - i, "", false});
-            i = j;
-            continue;
-        }
-        out.push_back({Tok::Char, std::string(1, char(c)), i, 1, "", false});
-        ++i;
-    }
-    return out;
-}
+using latex::greek_letters;
+using latex::is_one_of;
+using latex::normal_greek;
+using latex::takes_raw_argument;
+using latex::Tok;
+using latex::Token;
+using latex::tokenize;
 
 // --------------------------------------------------------------------------------------------- names
 
-const std::set<std::string>& greek_letters() {
-    static const std::set<std::string> g = {
-        "alpha",    "beta",  "gamma",   "delta",    "epsilon",    "zeta",   "eta",      "theta",
-        "iota",     "kappa", "lambda",  "mu",       "nu",         "xi",     "omicron",  "rho",
-        "sigma",    "tau",   "upsilon", "phi",      "chi",        "psi",    "omega",    "Gamma",
-        "Delta",    "Theta", "Lambda",  "Xi",       "Pi",         "Sigma",  "Upsilon",  "Phi",
-        "Psi",      "Omega", "varphi",  "vartheta", "varepsilon", "varrho", "varsigma", "varpi",
-        "varkappa", "ell",   "hbar",    "imath",    "jmath",      "digamma"};
-    return g;
-}
-
-std::string normal_greek(const std::string& w) {  // w without backslash
-    if (w == "varphi") return "phi";
-    if (w == "vartheta") return "theta";
-    if (w == "varepsilon") return "epsilon";
-    if (w == "varrho") return "rho";
-    if (w == "varsigma") return "sigma";
-    if (w == "varkappa") return "kappa";
-    return w;
-}
 
 std::string trim(std::string_view s) {
     std::size_t a = 0, b = s.size();
@@ -871,6 +529,11 @@ class Parser {
     GiNaC::ex poisson_bracket(std::size_t at) {
         ++pos_;
         const GiNaC::ex a = expr();
+        // `\frac{m}{2}\{a^2 + b^2\}`: braces as brackets (around one name alone, a bracket that lost its comma).
+        if (is_word(peek(), "\\}") && !GiNaC::is_a<GiNaC::symbol>(a)) {
+            ++pos_;
+            return a;
+        }
         if (!is_char(peek(), ",")) fail(at, "a brace \\{ that is not a Poisson bracket \\{a, b\\} is not read");
         ++pos_;
         const GiNaC::ex b = expr();
@@ -1118,6 +781,19 @@ class Parser {
         NameParts n;
         has_pending_power_ = false;
         if (!read_name(n)) fail(at, "unexpected " + describe(at));
+        // `e^{\alpha t}`: Euler's number raised to a power is the exponential, unless the model or the text
+        // gives e a meaning of its own (an eccentricity, a restitution coefficient).
+        if (n.base == "e" && n.sub.empty() && n.dots == 0 && n.primes == 0 && !ctx_.names.count("e")) {
+            if (has_pending_power_) {
+                has_pending_power_ = false;
+                return GiNaC::exp(pending_power_);
+            }
+            if (is_char(peek(), "^")) {
+                const std::size_t pat = pos_;
+                ++pos_;
+                return GiNaC::exp(superscript(pat));
+            }
+        }
         GiNaC::ex v = resolve(n, at);
         if (has_pending_power_) {
             has_pending_power_ = false;
@@ -1314,6 +990,14 @@ class Parser {
                 ++pos_;
                 return function(content, at);
             }
+            if (content.find_first_not_of(".,;: ") == std::string::npos) {  // `\text{. }`: the sentence's stop
+                std::size_t next = pos_ + 1;
+                while (next < end_ && t_[next].space) ++next;
+                if (next >= end_) {
+                    ++pos_;
+                    return 1;
+                }
+            }
             if (is_plain_word(content) || is_unit_command(w, t.raw)) return name_value();
             fail(at, "text '" + content + "' in a formula is not read");
         }
@@ -1453,7 +1137,17 @@ class Parser {
                 [&] {
                     ++pos_;  // d or \partial
                     has_pending_power_ = false;
-                    if (read_name(var) && !has_pending_power_) {
+                    // `\partial{\dot{\theta}_1}`: the variable in braces, as some notebooks write it.
+                    skip_spaces();
+                    std::size_t close = 0;
+                    if (is_char(peek(), "{")) {
+                        close = match_brace(pos_);
+                        ++pos_;
+                    }
+                    const bool named = read_name(var) && !has_pending_power_;
+                    if (named && close != 0) skip_spaces();
+                    if (named && (close == 0 || pos_ == close)) {
+                        if (close != 0) ++pos_;
                         is_derivative = true;
                         if (is_char(peek(), "^")) {
                             const std::size_t pat = pos_;

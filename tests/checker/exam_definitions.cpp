@@ -79,3 +79,31 @@ TEST_CASE("definitions: an unknown symbol is never differentiated to 0", "[check
     // An additive constant is a constant.
     CHECK(r.equations[4].verdict == Verdict::Agrees);
 }
+
+TEST_CASE("definitions: a quantity of the motion set equal to a name the text introduces", "[checker][definitions]") {
+    // `m r^2\dot\theta = \ell`: conserved, so it agrees, and ℓ stands for m r²θ̇ in what follows; `r\dot\theta =
+    // v_\perp` is not conserved: the text's name for it, not judged.
+    const std::string text = eomgen::test::fixture("central_force_notes.md");
+    const std::map<int, std::string> planted = eomgen::test::planted_mistakes(text);
+    REQUIRE(planted.size() == 2);
+    const eomgen::checker::CheckReport r = eomgen::test::check_text("tests/checker/models/central_force.toml", text);
+    CHECK(eomgen::test::planted_found(r, planted) == 2);
+    int constants = 0, named = 0, times_velocity = 0;
+    for (const EquationCheck& e : r.equations) {
+        INFO(describe(e));
+        if (e.reason.find("a constant of the motion") != std::string::npos) {
+            CHECK(e.verdict == Verdict::Agrees);
+            ++constants;
+        }
+        if (e.reason.find("the text's name $v_{\\perp}$") != std::string::npos) {
+            CHECK(e.verdict == Verdict::NotComparable);
+            ++named;
+        }
+        if (has_note(e, "read as $\\dot{r}$ times an equation")) ++times_velocity;
+        if (e.where.line == 8 || e.where.line == 13) CHECK(e.verdict == Verdict::Agrees);  // ℓ put in
+    }
+    CHECK(constants == 3);  // ℓ, E_0 and the areal velocity A
+    CHECK(named == 1);
+    CHECK(times_velocity == 2);
+    CHECK(r.count(Verdict::Disagrees) == 2);
+}

@@ -241,3 +241,26 @@ TEST_CASE("latex: functions written without their backslash", "[checker][parser]
     n.parse("ln a");
     CHECK(n.ctx.free_names.count("n") == 1);
 }
+
+TEST_CASE("latex: notation variants of notes and notebooks", "[checker][parser]") {
+    Names n;
+    // (\partial with its variable in braces and dx/dt as plain text: exam_roles.cpp, against a model.)
+    // Macros of course notes: \Ddot is \ddot, \Vec is \vec.
+    CHECK(same(n.parse("m l^2 \\Ddot{\\theta}"), n.m * n.l * n.l * n.thdd));
+    // A struck-out factor is still a factor; a brace's note is not part of the formula.
+    CHECK(same(n.parse("\\cancel{m} g \\sin\\theta"), n.m * n.g * GiNaC::sin(n.th)));
+    CHECK(same(n.parse("\\overbrace{m l^2\\ddot\\theta}^{a} + \\underbrace{m g l \\sin\\theta}_{\\text{gravity}}"),
+               n.m * n.l * n.l * n.thdd + n.m * n.g * n.l * GiNaC::sin(n.th)));
+    // \{ … \} used as brackets (no comma: no Poisson bracket).
+    CHECK(same(n.parse("\\frac{m}{2}\\{l^2\\dot\\theta^2 + a^2\\}"), n.m / 2 * (n.l * n.l * n.thd * n.thd + n.a * n.a)));
+    // Markdown's escaped underscore is a subscript.
+    n.parse("m\\_1 g");
+    CHECK(n.ctx.free_names.count("m_{1}") == 1);
+    // The sentence's full stop at the end of a formula, bare or in \text.
+    CHECK(same(n.parse("\\frac{m}{a + l \\,. }"), n.m / (n.a + n.l)));
+    CHECK(same(n.parse("g \\sin\\theta \\text{. }"), n.g * GiNaC::sin(n.th)));
+    n.fail("\\left. g \\right|");  // a delimiter's '.' is not a full stop
+    // e to a power is the exponential.
+    CHECK(same(n.parse("a e^{-g t}"), n.a * GiNaC::exp(-n.g * n.t)));
+    CHECK(same(n.parse("\\mathrm{e}^{g t}"), GiNaC::exp(n.g * n.t)));
+}

@@ -330,3 +330,42 @@ TEST_CASE("roles: a derivative that makes a denominator 0 is refused with a reas
     INFO(eomgen::test::describe(r.equations[0]));
     CHECK(r.equations[0].verdict == Verdict::NotComparable);
 }
+
+TEST_CASE("roles: derivatives as notebooks and pasted text write them, and an equation times a velocity",
+          "[checker][roles]") {
+    const char* const pendulum = "tests/checker/models/plane_pendulum.toml";
+    // \partial with its variable in braces, as Jupyter notebooks write it.
+    CHECK(one_verdict(pendulum, "$$\\frac{d}{dt}\\frac{\\partial{L}}{\\partial{\\dot{\\theta}}} - "
+                                "\\frac{\\partial{L}}{\\partial{\\theta}} = m l^2\\ddot\\theta + m g l\\sin\\theta$$\n") ==
+          Verdict::Agrees);
+    // dx/dt as plain text, also run into a product (`gl\sin\theta d\theta/dt`), and d^2x/dt^2.
+    CHECK(one_verdict(pendulum, "$$ l d^2\\theta/dt^2 + g\\sin\\theta = 0$$\n") == Verdict::Agrees);
+    CHECK(one_verdict(pendulum, "$$ m l^2 d^2\\theta/dt^2 d\\theta/dt + mgl\\sin\\theta d\\theta/dt = 0$$\n") ==
+          Verdict::Agrees);
+    CHECK(one_verdict(pendulum, "$$ m l^2 d^2\\theta/dt^2 d\\theta/dt + \\sin\\theta\\, mgld\\theta/dt = 0$$\n") ==
+          Verdict::Agrees);
+    // The time derivative of the energy: the equation of motion times θ̇ holds; with a slip it disagrees.
+    CHECK(one_verdict(pendulum, "$$m l^2\\dot\\theta\\ddot\\theta + m g l \\sin\\theta\\,\\dot\\theta = 0$$\n") ==
+          Verdict::Agrees);
+    CHECK(one_verdict(pendulum, "$$m l^2\\dot\\theta\\ddot\\theta - m g l \\sin\\theta\\,\\dot\\theta = 0$$\n") ==
+          Verdict::Disagrees);
+    // A product with θ̇ that is no such multiple is not excused: θ̇ θ̈ = 0 is not the pendulum's equation.
+    CHECK(one_verdict(pendulum, "$$\\dot\\theta\\ddot\\theta = 0$$\n") == Verdict::Disagrees);
+}
+
+TEST_CASE("roles: a name added alone to a potential is its constant, an Euler-Lagrange expression is one coordinate's",
+          "[checker][roles]") {
+    const char* const pendulum = "tests/checker/models/plane_pendulum.toml";
+    CHECK(one_verdict(pendulum, "$$V(\\theta) = -m g l\\cos\\theta + f$$\n") == Verdict::Agrees);
+    CHECK(one_verdict(pendulum, "$$V(\\theta) = -m g l\\sin\\theta + f$$\n") == Verdict::Disagrees);
+    // Not added alone: f multiplies, and stays an unknown name.
+    CHECK(one_verdict(pendulum, "$$V(\\theta) = -f g l\\cos\\theta$$\n") == Verdict::NotComparable);
+    // The r equation written on the θ expression holds on the motion only with the θ equation: it disagrees.
+    const char* const central = "tests/checker/models/central_force.toml";
+    CHECK(one_verdict(central, "$$\\frac{\\partial L}{\\partial \\theta} - \\frac{d}{dt}\\frac{\\partial L}{\\partial "
+                               "\\dot\\theta} = m r\\dot\\theta^2 - \\frac{k}{r^2} - m\\ddot r$$\n") == Verdict::Disagrees);
+    CHECK(one_verdict(central, "$$\\frac{\\partial L}{\\partial r} - \\frac{d}{dt}\\frac{\\partial L}{\\partial \\dot r} = "
+                               "m r\\dot\\theta^2 - \\frac{k}{r^2} - m\\ddot r$$\n") == Verdict::Agrees);
+    CHECK(one_verdict(central, "$$\\frac{d}{dt}\\frac{\\partial L}{\\partial \\dot\\theta} = "
+                               "2 m r\\dot r\\dot\\theta + m r^2\\ddot\\theta$$\n") == Verdict::Agrees);
+}

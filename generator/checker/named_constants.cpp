@@ -1,0 +1,68 @@
+/** @file named_constants.cpp  A quantity of the motion set equal to a name the text introduces there:
+ * `\rho^2\dot\varphi = c_0`, `m r^2 \dot\theta = l`, `\frac12 m v^2 + \dots = C`. The name stands for that quantity
+ * in the rest of its section (`\dot\theta = \frac{l}{m r^2}` is then compared), and the row itself says that the
+ * quantity is conserved when the model's equations of motion make it so; otherwise it is the text's name for it,
+ * a definition, and nothing is claimed. */
+#include "checker/additive_constant.hpp"
+#include "checker/checker_internals.hpp"
+
+namespace eomgen::checker::detail {
+
+namespace {
+
+/// True when `e` holds a velocity of the model and is more than one velocity alone (`\dot\varphi = \omega` names a
+/// rate the text chooses; `\rho^2 \dot\varphi = c_0` names a quantity of the motion).
+bool quantity_of_motion(const GiNaC::ex& e, const Model& model) {
+    bool velocity = false;
+    for (const Coordinate& q : model.coordinates) {
+        if (e.is_equal(q.qd)) return false;
+        velocity = velocity || e.has(q.qd);
+    }
+    return velocity;
+}
+
+}  // namespace
+
+void Checker::collect_named_constants(const std::vector<FullChain>& chains) {
+    for (const FullChain& c : chains) {
+        if (c.sides.size() < 2 || c.relations.back() != Relation::Equal) continue;
+        const PSide& last = c.sides.back();
+        if (!last.side->ok || !GiNaC::is_a<GiNaC::symbol>(last.side->value)) continue;
+        const GiNaC::ex name = last.side->value;
+        const FreeName* f = ctx_.free_name_of(name);
+        if (!f || f->kind != NameKind::Unknown || is_part(name) || is_constant_name(f->name)) continue;
+        const std::size_t at = last.base + last.side->begin;
+        // A use of a name the text defined otherwise; but `= C` again, after an earlier `= C`, is the text's
+        // constant once more (another quantity said to be conserved, or the same one approximated).
+        bool again = false;
+        for (const auto& [offset, known] : named_constants_) again = again || known == f->name;
+        if (definitions_.value_at(name, at) && !again) continue;
+        const PSide& quantity = c.sides[c.sides.size() - 2];
+        const Prepared p = prepare(quantity);
+        if (!p.comparable() || !p.units.empty() || p.value.has(name) || !quantity_of_motion(p.value, model_)) continue;
+        const std::size_t until = c.section >= 0 ? d_.sections[std::size_t(c.section)].end : std::string::npos;
+        definitions_.add(name, f->name, p.value, at, d_.position(at).line, until, quantity.side->source, at);
+        named_constants_[at] = f->name;
+    }
+}
+
+bool Checker::check_named_constant(const PSide& quantity, const PSide& name, const Prepared& value, double tol,
+                                   EquationCheck& r) {
+    const auto it = named_constants_.find(name.base + name.side->begin);
+    if (it == named_constants_.end() || !value.comparable()) return false;
+    EquationCheck conserved = r;
+    check_additive_constant(value.value, 0, 1, model_, *this, tol, conserved);
+    if (conserved.verdict == Verdict::Agrees) {
+        r = std::move(conserved);
+        r.reason += " (the text names its value " + m(it->second) + ")";
+    } else {
+        r.verdict = Verdict::NotComparable;
+        r.compared_with = "";
+        r.reason = "a definition: the text's name " + m(it->second) + " for $" + quantity.side->source +
+                   "$ for the rest of its section; its time derivative does not vanish on the equations of motion "
+                   "(if it is meant as a constant, it is not one of this model's motion)";
+    }
+    return true;
+}
+
+}  // namespace eomgen::checker::detail
