@@ -413,15 +413,18 @@ CheckReport Checker::run() {
     }
     {
         std::vector<DiscourseLink> links;
-        for (const FullChain& c : chains)
+        for (const FullChain& c : chains) {
+            std::vector<const Side*> sides;
+            for (const PSide& s : c.sides) sides.push_back(s.side);
             for (std::size_t k = 0; k + 1 < c.sides.size(); ++k) {
                 const std::size_t at = c.relation_offsets[k];
                 const std::size_t blank = d_.text.find("\n\n", at);
                 links.push_back({c.sides[k].side, c.sides[k + 1].side, c.relations[k], at,
                                  c.section >= 0 ? d_.sections[std::size_t(c.section)].end : d_.text.size(),
                                  blank == std::string::npos ? d_.text.size() : blank,
-                                 c.sides[k].base + c.sides[k].side->begin});
+                                 c.sides[k].base + c.sides[k].side->begin, sides});
             }
+        }
         LabelView labels;
         labels.value = [this](const GiNaC::ex& x) -> std::optional<GiNaC::ex> {
             const auto it = truth_.find(x);

@@ -630,6 +630,10 @@ class Checker : public Comparisons {
     /// it (named_constants.cpp); its file offset → its name.
     void collect_named_constants(const std::vector<FullChain>& chains);
     std::map<std::size_t, std::string> named_constants_;
+    /// `r_{eq} = l_0 + mg/k` under the conditions of an equilibrium: the equations of motion hold at that value
+    /// (equilibrium_values.cpp). False (r untouched) when the link is no such value or the point is not set.
+    bool check_value_at_point(const PSide& L, const PSide& R, const Prepared& a, const Prepared& b, double tol,
+                              std::size_t at, EquationCheck& r);
     /// Judges `quantity = name` when `name` is such a side: a constant of the motion, or the text's definition.
     bool check_named_constant(const PSide& quantity, const PSide& name, const Prepared& value, double tol,
                               EquationCheck& r);

@@ -366,6 +366,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         if (check_named_constant(L, R, a, tol, r)) return;
     }
+    // `r_{eq} = l_0 + mg/k` at an equilibrium the text set up (equilibrium_values.cpp).
+    if (check_value_at_point(L, R, a, b, tol, c.relation_offsets[j - 1], r)) return;
     // Free names: an identity still agrees, anything else cannot be judged.
     if (!a.comparable() || !b.comparable()) {
         // Vectors are not scalars: a×b = −b×a, so only identities in scalar unknowns are claimed.
@@ -428,6 +430,12 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     if (discourse_->states_assumption(c.relation_offsets[j - 1])) {
         r.reason = "an assumption on the parameters, for the rest of its paragraph: the equations that follow there are "
                    "compared with it";
+        return;
+    }
+    // `\dot r = \dot\theta` in `\dot r = \dot\theta = 0`: two quantities the chain sets to the value it ends with.
+    if (states_condition && !has_acceleration(a.value - b.value) && condition_of(a.value, b.value, model_).empty()) {
+        r.reason = "a condition: the point or motion the text considers, where both take the value its chain ends "
+                   "with (not an equation of the motion, so not judged)";
         return;
     }
     // An acceleration the conditions of a motion set (`\ddot\theta = 0` after `\dot\theta = 0`).

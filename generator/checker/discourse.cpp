@@ -82,14 +82,36 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
             const bool steady = std::any_of(std::begin(kSteady), std::end(kSteady), [&](const char* w) {
                 return sentence.find(w) != std::string::npos;
             });
-            for (const auto& [a, b] : {std::pair(x.value, y.value), std::pair(y.value, x.value)})
+            auto acceleration_set = [&](const GiNaC::ex& a, const GiNaC::ex& b) {
                 for (const Coordinate& c : model.coordinates)
                     if (a.is_equal(c.qdd) && !holds_state(b, model) && !b.has(model.t) &&
                         (steady || std::any_of(conditions_.begin(), conditions_.end(), [&](const Condition& k) {
                              return (k.symbol.is_equal(c.q) || k.symbol.is_equal(c.qd)) && k.from < link.at &&
                                     link.at < k.until;
                          })))
-                        conditions_.push_back({a, b, link.at, link.paragraph, line, false});
+                        return true;
+                return false;
+            };
+            for (const auto& [a, b] : {std::pair(x.value, y.value), std::pair(y.value, x.value)})
+                if (acceleration_set(a, b)) conditions_.push_back({a, b, link.at, link.paragraph, line, false});
+            // `\dot r = \dot	heta = 0`, `\ddot r = \ddot	heta = 0`: a chain of the state's quantities ending in a
+            // value sets each of them to it; its links between two of them are conditions too, not equations.
+            const Side* end = link.chain.empty() ? nullptr : link.chain.back();
+            const bool both_state = state_symbol(x.value, model) && state_symbol(y.value, model);
+            if (both_state && end && end->ok && end != &y && !holds_state(end->value, model) && !end->value.has(model.t) &&
+                !has_free_name(end->value, ctx) && !has_label_or_operator(end->value, labels) &&
+                std::all_of(link.chain.begin(), link.chain.end() - 1,
+                            [&](const Side* s) { return s->ok && state_symbol(s->value, model); }))
+                for (const GiNaC::ex& a : {x.value, y.value}) {
+                    GiNaC::ex q, v;
+                    if (!condition_of(a, end->value, model, &q, &v).empty()) {
+                        bool position = false;
+                        for (const Coordinate& c : model.coordinates) position = position || q.is_equal(c.q);
+                        conditions_.push_back({q, v, link.at, link.paragraph, line, position});
+                    } else if (acceleration_set(a, end->value)) {
+                        conditions_.push_back({a, end->value, link.at, link.paragraph, line, false});
+                    }
+                }
         }
         // `m_1 = m_2`, `m_1 = m_2 = m`: an assumption on the parameters, for the rest of the paragraph (a
         // parameter set to a number is a value the text chooses: printed_numbers.hpp).

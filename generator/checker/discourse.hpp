@@ -30,6 +30,7 @@ struct DiscourseLink {
     std::size_t until = 0;       ///< the end of its section (file offset)
     std::size_t paragraph = 0;   ///< the end of its paragraph (the next blank line)
     std::size_t left_at = 0;     ///< file offset where its left side starts
+    std::vector<const Side*> chain;  ///< every side of its chain, in order (`\dot r = \dot\theta = 0`)
 };
 
 /**

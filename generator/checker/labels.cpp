@@ -296,6 +296,8 @@ class Reader {
                 l.kind = LabelKind::Kinetic;
             else if (p == "potential" || p == "gravitational")
                 l.kind = LabelKind::Potential;
+            else if (w == "energies")
+                return std::nullopt;  // "the energies are T = …, U = …": several, not the total energy
             else if (p.empty() || is_any(p, {"the", "total", "mechanical", "of", "its", "this", "that", "an"}))
                 l.kind = LabelKind::Energy;
             else

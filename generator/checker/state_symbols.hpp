@@ -15,4 +15,11 @@ inline bool holds_state(const GiNaC::ex& e, const Model& model, bool acceleratio
     return false;
 }
 
+/// e is a coordinate, a velocity or an acceleration of the model, alone.
+inline bool state_symbol(const GiNaC::ex& e, const Model& model) {
+    for (const Coordinate& c : model.coordinates)
+        if (e.is_equal(c.q) || e.is_equal(c.qd) || e.is_equal(c.qdd)) return true;
+    return false;
+}
+
 }  // namespace eomgen::checker

@@ -369,3 +369,50 @@ TEST_CASE("roles: a name added alone to a potential is its constant, an Euler-La
     CHECK(one_verdict(central, "$$\\frac{d}{dt}\\frac{\\partial L}{\\partial \\dot\\theta} = "
                                "2 m r\\dot r\\dot\\theta + m r^2\\ddot\\theta$$\n") == Verdict::Agrees);
 }
+
+TEST_CASE("roles: notes on the elastic pendulum, checked as written (the energies, an equilibrium set up by a chain)",
+          "[checker][roles]") {
+    // Written here in the style of course notes, before the checker read it: its first run gave four false alarms
+    // ("the energies are T = …, U = …" held to the total energy; ṙ = θ̇ and r̈ = θ̈ in `\dot r = \dot\theta = 0`
+    // judged as equations) and left the equilibrium value r_eq not comparable.
+    const std::string text = eomgen::test::fixture("elastic_pendulum_notes.md");
+    const std::map<int, std::string> planted = eomgen::test::planted_mistakes(text);
+    REQUIRE(planted.size() == 1);
+    const char* const model = "tests/checker/models/elastic_pendulum.toml";
+    const CheckReport r = eomgen::test::check_text(model, text);
+    CHECK(eomgen::test::planted_found(r, planted) == 1);
+    int conditions = 0;
+    for (const EquationCheck& e : r.equations) {
+        INFO(eomgen::test::describe(e));
+        if (e.where.line == 10) CHECK(e.verdict == Verdict::Agrees);  // T and U
+        if (e.where.line == 23) {
+            CHECK(e.verdict == Verdict::NotComparable);
+            CHECK(e.reason.rfind("a condition", 0) == 0);
+            ++conditions;
+        }
+        if (e.where.line == 24) {
+            CHECK(e.verdict == Verdict::Agrees);
+            CHECK(e.reason.find("the equations of motion hold there") != std::string::npos);
+        }
+    }
+    CHECK(conditions == 5);
+    // A wrong equilibrium value disagrees, with the value the equation of motion needs.
+    std::string wrong = text;
+    const std::size_t at = wrong.find("r_{eq} = l_0 + \\frac{mg}{k}");
+    REQUIRE(at != std::string::npos);
+    wrong.replace(at, 27, "r_{eq} = l_0 - \\frac{mg}{k}");
+    const CheckReport w = eomgen::test::check_text(model, wrong);
+    bool found = false;
+    for (const EquationCheck& e : w.equations)
+        if (e.where.line == 24) {
+            INFO(eomgen::test::describe(e));
+            CHECK(e.verdict == Verdict::Disagrees);
+            CHECK(e.corrected == "r_{eq} = l_0 + \\frac{m g}{k}");
+            found = true;
+        }
+    CHECK(found);
+    // Only a chain that ends in a value sets its velocities: ṙ = θ̇ alone is not read as that condition.
+    const CheckReport alone = eomgen::test::check_text(model, "$$\\dot r = \\dot\\theta$$\n");
+    REQUIRE(alone.equations.size() == 1);
+    CHECK(alone.equations[0].reason.find("its chain ends with") == std::string::npos);
+}
