@@ -108,7 +108,10 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
         at_zero[c.qd] = 0;
     }
     const GiNaC::ex A = a.subs(scale), B = b.subs(scale);
-    const int k = std::max(polynomial_degree(A, eps), polynomial_degree(B, eps));
+    int k = std::max(polynomial_degree(A, eps), polynomial_degree(B, eps));
+    // `\cos\alpha \approx 1`: a constant for a function of small coordinates holds to first order (its first-order
+    // terms vanish), the order such approximations are made to.
+    if (k == 0 && (A - B).has(eps)) k = 1;
     if (k <= 0 || k > 6) return v;
     const auto R = taylor(A - B, eps, k);
     if (!R) return v;

@@ -5,6 +5,7 @@
 #include "checker/prose.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <utility>
 
 namespace eomgen::checker {
@@ -43,8 +44,11 @@ bool has_label_or_operator(const GiNaC::ex& e, const LabelView& labels) {
 }
 
 /// Words of a sentence about a motion whose accelerations vanish or are set (lower case).
-constexpr const char* kSteady[] = {"equilibrium", "at rest", "steady", "stationary", "uniform", "conical",
-                                   "circular orbit", "constant speed", "constant rate"};
+/// Words that set the value that follows them right away ("Setting $\ddot\alpha = 0$"; not "putting (1) into
+/// (2) and simplifying: $…$").
+constexpr const char* kSetting[] = {"setting", "putting", "we set", "set", "put"};
+constexpr const char* kSteady[] = {"equilibrium", "equilibria", "at rest", "steady", "stationary", "uniform",
+                                   "conical", "circular orbit", "constant speed", "constant rate"};
 
 }  // namespace
 
@@ -79,9 +83,17 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
             // θ̈ = 0 after θ̇ = 0 (or θ = θ₀) in its paragraph, or in a sentence about an equilibrium or a steady
             // motion ("at equilibrium $\ddot x = 0$"): the acceleration of the motion the text considers.
             const std::string sentence = lead_in(d, link.at, 1);
+            // "Setting θ̈ = 0 and θ̇ = 0": an acceleration the sentence sets is a condition too.
             const bool steady = std::any_of(std::begin(kSteady), std::end(kSteady), [&](const char* w) {
-                return sentence.find(w) != std::string::npos;
-            });
+                                    return sentence.find(w) != std::string::npos;
+                                }) ||
+                                std::any_of(std::begin(kSetting), std::end(kSetting), [&](const char* w) {
+                                    std::string end = sentence;
+                                    while (!end.empty() && (end.back() == ' ' || end.back() == '\n')) end.pop_back();
+                                    const std::string cue = w;
+                                    return end.size() >= cue.size() && end.compare(end.size() - cue.size(), cue.size(), cue) == 0 &&
+                                           (end.size() == cue.size() || !std::isalpha(static_cast<unsigned char>(end[end.size() - cue.size() - 1])));
+                                });
             auto acceleration_set = [&](const GiNaC::ex& a, const GiNaC::ex& b) {
                 for (const Coordinate& c : model.coordinates)
                     if (a.is_equal(c.qdd) && !holds_state(b, model) && !b.has(model.t) &&

@@ -24,11 +24,28 @@ bool Checker::check_value_at_point(const PSide& L, const PSide& R, const Prepare
                                    std::size_t at, EquationCheck& r) {
     for (const auto& [name_side, value_side, named, value] :
          {std::tuple(&L, &R, &a, &b), std::tuple(&R, &L, &b, &a)}) {
-        (void)value_side;
-        if (!named->ok || named->unknown.size() != 1 || !GiNaC::is_a<GiNaC::symbol>(named->value) ||
-            !named->value.is_equal(named->unknown.front()->symbol) || !value->comparable() || !value->units.empty() ||
+        if (!named->ok || named->unknown.size() != 1 || !value->comparable() || !value->units.empty() ||
             depends_on_state(value->value) || has_acceleration(value->value) || value->value.has(model_.t))
             continue;
+        // The name alone, or a sine, cosine or tangent of it (`\cos\alpha_0 = \frac{g}{\omega^2 R}`): its value.
+        const GiNaC::ex name = named->unknown.front()->symbol;
+        GiNaC::ex at_point;
+        std::string shown = value_side->side->source;
+        if (named->value.is_equal(name)) {
+            at_point = value->value;
+        } else if (named->value.nops() == 1 && named->value.op(0).is_equal(name)) {
+            if (GiNaC::is_the_function<GiNaC::cos_SERIAL>(named->value))
+                at_point = GiNaC::acos(value->value);
+            else if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(named->value))
+                at_point = GiNaC::asin(value->value);
+            else if (GiNaC::is_the_function<GiNaC::tan_SERIAL>(named->value))
+                at_point = GiNaC::atan(value->value);
+            else
+                continue;
+            shown = latex(at_point);
+        } else {
+            continue;
+        }
         const Coordinate* q = subscripted_coordinate(named->unknown.front()->name, model_);
         if (!q) continue;
         // Only at a point the text has set up: an acceleration stated (an equilibrium, a steady motion).
@@ -41,8 +58,8 @@ bool Checker::check_value_at_point(const PSide& L, const PSide& R, const Prepare
             line = std::max(line, stated.second);
             for (const Coordinate& c : model_.coordinates) steady = steady || symbol.is_equal(c.qdd);
         }
-        if (!steady || point.count(q->q)) return false;
-        point[q->q] = value->value;
+        if (!steady) return false;
+        point[q->q] = at_point;  // its own point: another value the text gave the coordinate (`\alpha = 0`) is another
         std::vector<GiNaC::ex> left;
         try {
             for (const GiNaC::ex& e : motion_) left.push_back(GiNaC::normal(e.subs(point)));
@@ -52,7 +69,7 @@ bool Checker::check_value_at_point(const PSide& L, const PSide& R, const Prepare
         for (const GiNaC::ex& e : left)
             if (depends_on_state(e) || has_acceleration(e) || e.has(model_.t)) return false;  // the point is not set
         const std::string where = "at the point the text considers (its conditions, line " + std::to_string(line) +
-                                  ") with " + m(q->latex + " = " + value_side->side->source);
+                                  ") with " + m(q->latex + " = " + shown);
         r.compared_with = "the equations of motion " + where;
         for (std::size_t i = 0; i < left.size(); ++i)
             if (equal(left[i], 0, tol) != Tri::Yes) {

@@ -5,6 +5,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstring>
+
 using eomgen::checker::CheckReport;
 using eomgen::checker::EquationCheck;
 using eomgen::checker::Verdict;
@@ -415,4 +417,31 @@ TEST_CASE("roles: notes on the elastic pendulum, checked as written (the energie
     const CheckReport alone = eomgen::test::check_text(model, "$$\\dot r = \\dot\\theta$$\n");
     REQUIRE(alone.equations.size() == 1);
     CHECK(alone.equations[0].reason.find("its chain ends with") == std::string::npos);
+}
+
+TEST_CASE("roles: notes on the bead on a spinning hoop, checked as written (equilibria set by 'setting', cos a ~ 1)",
+          "[checker][roles]") {
+    // Written here; its first run judged θ̈ = 0 after "Setting" as an equation of motion (a false alarm), and left
+    // `\cos\alpha \approx 1` and the off-bottom equilibrium `\cos\alpha_0 = g/(\omega^2 R)` not comparable.
+    const std::string text = eomgen::test::fixture("bead_hoop_notes.md");
+    const char* const model = "examples/bead_on_hoop.toml";
+    const CheckReport r = eomgen::test::check_text(model, text);
+    CHECK(r.count(Verdict::Disagrees) == 0);
+    for (const EquationCheck& e : r.equations) {
+        INFO(eomgen::test::describe(e));
+        if (e.equation == "\\ddot\\alpha = 0") CHECK(e.reason.rfind("a condition", 0) == 0);
+        if (e.equation == "\\cos\\alpha \\approx 1") CHECK(e.verdict == Verdict::Agrees);
+        if (e.equation == "\\cos\\alpha_0 = \\frac{g}{\\omega^2 R}") CHECK(e.verdict == Verdict::Agrees);
+    }
+    // The equilibrium with a slip (g R/ω² for g/(ω² R)) disagrees.
+    std::string wrong = text;
+    const std::size_t at = wrong.find("\\cos\\alpha_0 = \\frac{g}{\\omega^2 R}");
+    REQUIRE(at != std::string::npos);
+    wrong.replace(at, std::strlen("\\cos\\alpha_0 = \\frac{g}{\\omega^2 R}"), "\\cos\\alpha_0 = \\frac{g R}{\\omega^2}");
+    const CheckReport w = eomgen::test::check_text(model, wrong);
+    CHECK(w.count(Verdict::Disagrees) == 1);
+    CHECK(one_verdict(model, "for small $\\alpha$, $\\cos\\alpha \\approx 0$\n") != Verdict::Agrees);
+    // "Setting" right before an acceleration sets it; "putting (1) into (2):" before one derives it.
+    CHECK(one_verdict(model, "Setting $\\ddot\\alpha = 0$ gives the rest points.\n") == Verdict::NotComparable);
+    CHECK(one_verdict(model, "Putting (1) into (2): $\\ddot\\alpha = 0$.\n") == Verdict::Disagrees);
 }
