@@ -349,6 +349,8 @@ class Checker : public Comparisons {
               const Prepared p = prepare(PSide{&s, base});
               return ScalarReading{p.ok, p.value, p.problem, p.has_truth_label};
           }) {
+        algebra_.set_model_matrices(
+            [this](const std::string& key, const GiNaC::matrix* text) { return model_matrix(key, text); });
         hints_.other_angles = false;  // only the sines and cosines the author or the model wrote
         for (const Parameter& p : model.parameters) hints_.constants.insert(p.symbol);
     }
@@ -630,6 +632,8 @@ class Checker : public Comparisons {
     /// it (named_constants.cpp); its file offset → its name.
     void collect_named_constants(const std::vector<FullChain>& chains);
     std::map<std::size_t, std::string> named_constants_;
+    /// `M`, `K` (`\mathbf{T}`, `\mathbf{V}`): the model's mass and stiffness matrices by name (model_matrices.cpp).
+    std::optional<LinearAlgebra::NamedMatrix> model_matrix(const std::string& key, const GiNaC::matrix* text);
     /// `r_{eq} = l_0 + mg/k` under the conditions of an equilibrium: the equations of motion hold at that value
     /// (equilibrium_values.cpp). False (r untouched) when the link is no such value or the point is not set.
     bool check_value_at_point(const PSide& L, const PSide& R, const Prepared& a, const Prepared& b, double tol,

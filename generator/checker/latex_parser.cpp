@@ -1352,8 +1352,9 @@ bool soft_breaker(const Token& k) {
     if ((k.text == "\\text" || k.text == "\\mbox" || k.text == "\\textrm") &&
         trim(k.raw).find(' ') != std::string::npos)
         return true;
-    if (k.text == "\\text" &&
-        is_one_of(trim(k.raw), {"and", "or", "for", "if", "with", "where", "so", "then"}))
+    // `\mbox{ and }`, `\text{and}`: a word joining two statements.
+    if (is_one_of(k.text, {"\\text", "\\mbox", "\\textrm", "\\mathrm", "\\textnormal", "\\textit"}) &&
+        is_one_of(trim(k.raw), {"and", "or", "for", "if", "with", "where", "so", "then", "i.e.", "i.e.,"}))
         return true;
     return false;
 }

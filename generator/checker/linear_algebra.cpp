@@ -5,6 +5,7 @@
 #include "mechanics/bodies.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <cctype>
 #include <set>
 #include <stdexcept>
@@ -203,7 +204,8 @@ void LinearAlgebra::note_link(const Side& left, std::size_t left_base, const Sid
         bool self = false;
         for (const Term& o : terms[1 - k])
             for (const Factor& f : o.factors) self = self || (f.kind == Factor::Name && f.key == key);
-        if (!self && !stated_.count(key) && !builtin(key) && !declared(key))
+        if (!self && !stated_.count(key) && !builtin(key) && !declared(key) &&
+            !(model_matrix_ && model_matrix_(key, nullptr)))
             stated_[key] = {sides[1 - k]->source, bases[1 - k] + sides[1 - k]->begin, sides[1 - k],
                             d_.position(bases[1 - k] + sides[1 - k]->begin).line};
     }
@@ -239,7 +241,8 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::read(std::string_view source,
         *reference = false;
         if (terms.size() == 1 && terms[0].factors.size() == 1 && !terms[0].negative) {
             const Factor& f = terms[0].factors[0];
-            if (f.kind == Factor::Name) *reference = declared(f.key).has_value();
+            if (f.kind == Factor::Name)
+                *reference = declared(f.key).has_value() || (model_matrix_ && model_matrix_(f.key, nullptr));
             if (f.kind == Factor::Tuple || f.kind == Factor::Array) {
                 bool all = true;
                 for (const auto& row : f.cells)
@@ -395,6 +398,8 @@ std::optional<GiNaC::matrix> LinearAlgebra::named(const std::string& key, Compar
                                                   std::string* why) {
     if (auto b = builtin(key)) return b;
     if (auto d = declared(key)) return d;
+    if (model_matrix_)
+        if (auto n = model_matrix_(key, nullptr)) return n->value;
     if (resolving_.count(key)) {
         *why = "the vector " + shown(key) + " is defined by itself";
         return std::nullopt;
@@ -605,11 +610,21 @@ std::string one_line(const std::string& s) {
 
 bool LinearAlgebra::check(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
                           Comparisons& cmp, EquationCheck& r) {
+    // `\left|\mathbf{V} - \omega^2 \mathbf{T}\right|`: a bold name of one of the model's matrices.
+    auto names_model_matrix = [&](const std::string& source) {
+        if (!model_matrix_) return false;
+        for (const char* deco : {"\\mathbf{", "\\boldsymbol{", "\\bm{", "\\mathsf{"})
+            for (std::size_t k = source.find(deco); k != std::string::npos; k = source.find(deco, k + 1)) {
+                const std::size_t b = k + std::strlen(deco), e = source.find('}', b);
+                if (e != std::string::npos && e == b + 1 && model_matrix_(source.substr(b, 1), nullptr)) return true;
+            }
+        return false;
+    };
     bool involved = false;
     for (const Side* s : {&left, &right}) {
         if (s->empty()) return false;
         involved = involved || reads_as_array(*s) || mentions_array(s->source) ||
-                   (s->ok && !component_uses(s->value).empty());
+                   (s->ok && !component_uses(s->value).empty()) || names_model_matrix(s->source);
     }
     if (!involved) return false;
     judge_link(left, left_base, right, right_base, cmp, r);
@@ -691,6 +706,28 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
             return false;
         }
     }
+    // `M = \begin{pmatrix} … \end{pmatrix}` with M a plain letter (a scalar to the reader): the model's matrix the
+    // letter answers to, chosen for the text's matrix.
+    std::string named_what;
+    for (int k = 0; k < 2 && model_matrix_; ++k) {
+        const auto& t = terms[k];
+        if (v[1 - k]->scalar || t.size() != 1 || t[0].negative || t[0].factors.size() != 1) continue;
+        std::string key;
+        if (t[0].factors[0].kind == Factor::Name) {  // `\mathbf{T} = …`
+            key = t[0].factors[0].key;
+        } else if (v[k]->scalar && !reference[k] && sides[k]->ok && GiNaC::is_a<GiNaC::symbol>(sides[k]->value)) {
+            const FreeName* f = ctx_.free_name_of(sides[k]->value);  // `M = …`, a plain letter
+            if (f) key = f->name;
+        }
+        if (key.empty()) continue;
+        if (auto n = model_matrix_(key, &v[1 - k]->m)) {
+            v[k]->m = n->value;
+            v[k]->scalar = false;
+            reference[k] = true;
+            named_what = n->what;
+        }
+    }
+    if (!named_what.empty()) r.compared_with = named_what;
     // Shapes: a row against a column of the same entries is the same vector.
     GiNaC::matrix a = v[0]->m, b = v[1]->m;
     if (!v[0]->scalar && !v[1]->scalar && a.rows() == b.cols() && a.cols() == b.rows() &&
@@ -756,7 +793,8 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
     };
     if (wrong.empty()) {
         r.verdict = Verdict::Agrees;
-        r.compared_with = reference[0] || reference[1]
+        r.compared_with = !named_what.empty() ? named_what
+                          : reference[0] || reference[1]
                               ? (vector ? "the model's quantities, entry by entry" : "the model's quantity")
                               : "an identity";
         r.reason = vector ? "equal entry by entry" : "both sides are equal";
@@ -807,7 +845,7 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
                                     dollars(cmp.latex(b(i, j))));
         return true;
     }
-    r.compared_with = "the model's quantities, entry by entry";
+    r.compared_with = named_what.empty() ? "the model's quantities, entry by entry" : named_what;
     const std::string corrected =
         corrected_side(sides[1 - ref]->source, bases[1 - ref], terms[1 - ref], T, R, vector, wrong, cmp, r);
     r.corrected = ref == 0 ? left.source + " = " + corrected : corrected + " = " + right.source;

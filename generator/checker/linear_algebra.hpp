@@ -80,6 +80,17 @@ class LinearAlgebra {
                Comparisons& cmp, EquationCheck& r);
 
     struct Value;  ///< a scalar or a matrix, read from a side
+
+    /// A matrix of the model that a name answers to (`M`, `\mathbf{T}`: the mass matrix; `K`, `\mathbf{V}`: the
+    /// stiffness matrix), and what it is, for the report.
+    struct NamedMatrix {
+        GiNaC::matrix value;
+        std::string what;
+    };
+    /// The model's matrix for `key`, chosen for the text's matrix it is compared with (`text`; nullptr where it is
+    /// used inside an expression), or std::nullopt when the name is no such matrix.
+    using MatrixProvider = std::function<std::optional<NamedMatrix>(const std::string& key, const GiNaC::matrix* text)>;
+    void set_model_matrices(MatrixProvider provider) { model_matrix_ = std::move(provider); }
     using Factor = matrix_latex::Factor;
     using Term = matrix_latex::Term;
 
@@ -163,6 +174,7 @@ class LinearAlgebra {
     std::set<std::string> resolving_;    ///< names being resolved (a vector stated in terms of itself)
     std::map<std::string, GiNaC::symbol> coefficients_;  ///< free coefficients of eigenspaces, by name
     bool verifying_ = false;
+    MatrixProvider model_matrix_;  ///< the model's mass and stiffness matrices by name (model_matrices.cpp)
 };
 
 }  // namespace eomgen::checker

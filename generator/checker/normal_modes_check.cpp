@@ -231,9 +231,15 @@ void NormalModesCheck::compute(Comparisons& cmp) {
         }
         if (!e.M_exact.empty()) {
             const auto n = static_cast<unsigned>(e.M_exact.size());
-            GiNaC::matrix A(n, n);
+            GiNaC::matrix A(n, n), M0(n, n), K0(n, n);
             for (unsigned i = 0; i < n; ++i)
-                for (unsigned j = 0; j < n; ++j) A(i, j) = e.K_exact[i][j] - w_ * e.M_exact[i][j];
+                for (unsigned j = 0; j < n; ++j) {
+                    A(i, j) = e.K_exact[i][j] - w_ * e.M_exact[i][j];
+                    M0(i, j) = e.M_exact[i][j];
+                    K0(i, j) = e.K_exact[i][j];
+                }
+            rest.M = M0;
+            rest.K = K0;
             try {
                 ex p = 0;
                 const std::vector<ex> c = coefficients(A.determinant(), w_);

@@ -50,10 +50,25 @@ class NormalModesCheck {
      */
     bool check(const Side& left, const Side& right, LatexContext& ctx, Comparisons& cmp, EquationCheck& r);
 
+    /// M₀ and K₀ (exact, in the parameters) at each equilibrium that is not unstable, with where it is
+    /// ("$x_{1} = 0$, $x_{2} = 0$"); empty where the modes cannot be computed or are known in numbers only.
+    struct RestMatrices {
+        GiNaC::matrix M, K;
+        std::string at;
+    };
+    std::vector<RestMatrices> rest_matrices(Comparisons& cmp) {
+        if (!computed_) compute(cmp);
+        std::vector<RestMatrices> out;
+        for (const Rest& r : rests_)
+            if (r.M) out.push_back({*r.M, *r.K, r.at});
+        return out;
+    }
+
   private:
     /// One equilibrium that is not unstable, as the comparison needs it.
     struct Rest {
         std::string at;                 ///< "$\theta_{1} = 0$, $\theta_{2} = 0$"
+        std::optional<GiNaC::matrix> M, K;  ///< M₀ and K₀ where exact
         std::optional<GiNaC::ex> poly;  ///< det(K₀ − w M₀) in the parameters, expanded (where exact)
         std::vector<double> omega2;     ///< at the model's parameter values
         std::vector<std::optional<GiNaC::ex>> omega2_exact;

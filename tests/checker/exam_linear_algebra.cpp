@@ -179,3 +179,42 @@ TEST_CASE("linear algebra: the torque-free top's tensor and its declared angular
     CHECK(sign.verdict == Verdict::Disagrees);
     CHECK(wrong_terms(sign).find("row 2 (y): the text's entry") == 0);
 }
+
+TEST_CASE("linear algebra: M and K (T and V in bold) are the model's mass and stiffness matrices",
+          "[checker][linear_algebra]") {
+    // Notes on two carts written here, checked as written: M and K agree with eomgen's, and nothing disagrees.
+    const std::string text = eomgen::test::fixture("two_carts_matrix_notes.md");
+    const CheckReport r = eomgen::test::check_text("tests/checker/models/two_carts.toml", text);
+    CHECK(r.count(Verdict::Disagrees) == 0);
+    int matrices = 0;
+    for (const EquationCheck& e : r.equations) {
+        INFO(describe(e));
+        if (e.compared_with.rfind("eomgen's mass matrix", 0) == 0 ||
+            e.compared_with.rfind("eomgen's stiffness matrix", 0) == 0) {
+            CHECK(e.verdict == Verdict::Agrees);
+            ++matrices;
+        }
+    }
+    CHECK(matrices == 2);
+    // The double pendulum: M(q) in the coordinates; M₀ and K₀ at the bottom; a wrong K₀ entry corrected.
+    const char* const dp = "tests/checker/models/double_pendulum_equal.toml";
+    const CheckReport d = eomgen::test::check_text(
+        dp, "$$M = \\begin{pmatrix} 2 m l^2 & m l^2\\cos(\\theta_1 - \\theta_2) \\\\ m l^2\\cos(\\theta_1 - \\theta_2) & m "
+            "l^2 \\end{pmatrix}$$\n\n"
+            "$$M = \\begin{pmatrix} 2 m l^2 & m l^2 \\\\ m l^2 & m l^2 \\end{pmatrix}$$\n\n"
+            "$$\\mathbf{V} = \\begin{pmatrix} 2 m g l & 0 \\\\ 0 & m g l \\end{pmatrix}$$\n\n"
+            "$$K = \\begin{pmatrix} m g l & 0 \\\\ 0 & m g l \\end{pmatrix}$$\n");
+    REQUIRE(d.equations.size() == 4);
+    for (int k = 0; k < 3; ++k) {
+        INFO(describe(d.equations[std::size_t(k)]));
+        CHECK(d.equations[std::size_t(k)].verdict == Verdict::Agrees);
+    }
+    INFO(describe(d.equations[3]));
+    CHECK(d.equations[3].verdict == Verdict::Disagrees);
+    CHECK(d.equations[3].corrected == "K = \\begin{pmatrix} 2 m l g & 0 \\\\ 0 & m g l \\end{pmatrix}");
+    // Where the model has a parameter M (a cart's mass), M is that parameter, not the mass matrix.
+    const CheckReport c = eomgen::test::check_text("tests/checker/models/cart_pendulum_free.toml",
+                                                   "$$M = \\begin{pmatrix} 1 & 0 \\\\ 0 & 1 \\end{pmatrix}$$\n");
+    REQUIRE(c.equations.size() == 1);
+    CHECK(c.equations[0].compared_with.find("mass matrix") == std::string::npos);
+}
