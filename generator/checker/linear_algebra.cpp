@@ -68,18 +68,9 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
             return false;
         }
     // A stated eigenvector: n = (…), judged against its eigen-equation.
-    for (int k = 0; k < 2; ++k) {
-        const auto& t = terms[k];
-        if (t.size() != 1 || t[0].negative || t[0].factors.size() != 1 ||
-            t[0].factors[0].kind != Factor::Name)
-            continue;
-        const std::string& key = t[0].factors[0].key;
-        bool self = false;
-        for (const Term& o : terms[1 - k])
-            for (const Factor& f : o.factors) self = self || (f.kind == Factor::Name && f.key == key);
-        if (!self && eigen_.count(key))
-            return judge_definition(key, *sides[1 - k], bases[1 - k], terms[1 - k], cmp, r);
-    }
+    for (int k = 0; k < 2; ++k)
+        if (const std::string* key = lone_name(terms[k], terms[1 - k]); key && eigen_.count(*key))
+            return judge_definition(*key, *sides[1 - k], bases[1 - k], terms[1 - k], cmp, r);
     // The text's statement of a vector that is not the model's: a definition, compared where it is used.
     for (int k = 0; k < 2; ++k) {
         const auto& t = terms[k];

@@ -119,6 +119,18 @@ inline std::string pmatrix_latex(const GiNaC::matrix& m, Comparisons& cmp) {
     return s + "\\end{pmatrix}";
 }
 
+/// The key of a side that is one name alone (`\mathbf{n}_{1}`, not negated) that the other side does not use, or
+/// nullptr: a vector or matrix the link states, or an eigenvector it gives.
+inline const std::string* lone_name(const std::vector<Term>& side, const std::vector<Term>& other) {
+    if (side.size() != 1 || side[0].negative || side[0].factors.size() != 1 || side[0].factors[0].kind != Factor::Name)
+        return nullptr;
+    const std::string& key = side[0].factors[0].key;
+    for (const Term& o : other)
+        for (const Factor& f : o.factors)
+            if (f.kind == Factor::Name && f.key == key) return nullptr;
+    return &key;
+}
+
 }  // namespace linear_algebra_detail
 
 }  // namespace eomgen::checker

@@ -91,16 +91,10 @@ void LinearAlgebra::note_link(const Side& left, std::size_t left_base, const Sid
     }
     // A stated vector: one side is its name alone.
     for (int k = 0; k < 2; ++k) {
-        const auto& t = terms[k];
-        if (t.size() != 1 || t[0].negative || t[0].factors.size() != 1 ||
-            t[0].factors[0].kind != Factor::Name)
-            continue;
-        const std::string& key = t[0].factors[0].key;
-        bool self = false;
-        for (const Term& o : terms[1 - k])
-            for (const Factor& f : o.factors) self = self || (f.kind == Factor::Name && f.key == key);
-        if (!self && !stated_.count(key) && !builtin(key) && !declared(key) &&
-            !(model_matrix_ && model_matrix_(key, nullptr)))
+        const std::string* name = lone_name(terms[k], terms[1 - k]);
+        if (!name) continue;
+        const std::string& key = *name;
+        if (!stated_.count(key) && !builtin(key) && !declared(key) && !(model_matrix_ && model_matrix_(key, nullptr)))
             stated_[key] = {sides[1 - k]->source, bases[1 - k] + sides[1 - k]->begin, sides[1 - k],
                             d_.position(bases[1 - k] + sides[1 - k]->begin).line};
     }
