@@ -163,7 +163,12 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
     // to the end of the paragraph only.
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2 || !c.sides[0].side->ok) continue;
-        const GiNaC::ex head = c.sides[0].side->value;
+        // `\omega_0^2 = g/l`: the square of a name set to a constant defines the name as its positive root (a
+        // frequency, a rate), so that `\ddot\varphi + \omega_0^2 \sin\varphi = 0` after it is compared.
+        const GiNaC::ex written = c.sides[0].side->value;
+        const bool squared = GiNaC::is_a<GiNaC::power>(written) && written.op(1).is_equal(2) &&
+                             GiNaC::is_a<GiNaC::symbol>(written.op(0));
+        const GiNaC::ex head = squared ? written.op(0) : written;
         const FreeName* f = ctx_.free_name_of(head);
         if (!f || f->kind != NameKind::Unknown || is_part(head) || is_constant_name(f->name)) continue;
         for (std::size_t k = c.sides.size(); k-- > 1;) {
@@ -172,15 +177,25 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
             if (c.sides[k].side->ok && GiNaC::is_a<GiNaC::symbol>(c.sides[k].side->value))
                 if (const FreeName* g = ctx_.free_name_of(c.sides[k].side->value); g && is_constant_name(g->name))
                     continue;
-            const Prepared p = prepare(c.sides[k]);
+            Prepared p = prepare(c.sides[k]);
             if (!p.comparable() || !p.units.empty() || p.value.has(head)) continue;
+            if (squared) {
+                // A square stated again (`\omega_2^2 = k/M` after `\omega_2 = \sqrt{k/M}`) is a use.
+                if (definitions_.value_at(head, c.sides[k].base + c.sides[k].side->begin)) break;
+                if (depends_on_state(p.value) || has_acceleration(p.value) || p.value.has(model_.t)) break;
+                p.value = GiNaC::sqrt(p.value);
+            }
             const std::size_t at = c.sides[k].base + c.sides[k].side->begin;
             std::size_t until = c.section >= 0 ? d_.sections[std::size_t(c.section)].end : std::string::npos;
             if (const std::size_t point = discourse_->condition_paragraph(at); point > 0 && !depends_on_state(p.value)) {
                 until = std::min(until, point);
                 at_a_point_.insert(c.sides[0].base + c.sides[0].side->begin);
             }
-            definitions_.add(head, f->name, p.value, at, d_.position(at).line, until, c.sides[k].side->source,
+            std::string source = c.sides[k].side->source;
+            source.erase(0, std::min(source.find_first_not_of(" \t"), source.size()));
+            source.erase(std::min(source.find_last_not_of(" \t") + 1, source.size()));
+            definitions_.add(head, f->name, p.value, at, d_.position(at).line, until,
+                             squared ? "\\sqrt{" + source + "}" : c.sides[k].side->source,
                              c.sides[0].base + c.sides[0].side->begin);
             break;
         }

@@ -107,3 +107,24 @@ TEST_CASE("definitions: a quantity of the motion set equal to a name the text in
     CHECK(times_velocity == 2);
     CHECK(r.count(Verdict::Disagrees) == 2);
 }
+
+TEST_CASE("definitions: the square of a name set to a constant defines the name", "[checker][definitions]") {
+    // Notes on the damped pendulum written here: "Define ω₀² = g/l and γ = c/(2 m l²)", then the equation in them.
+    const std::string text = eomgen::test::fixture("damped_pendulum_notes.md");
+    const eomgen::checker::CheckReport r = eomgen::test::check_text("models/damped_pendulum.toml", text);
+    CHECK(r.count(Verdict::Disagrees) == 0);
+    bool found = false;
+    for (const EquationCheck& e : r.equations) {
+        INFO(describe(e));
+        if (e.where.line == 10) {
+            CHECK(e.verdict == Verdict::Agrees);
+            CHECK(has_note(e, "using $\\omega_{0} = \\sqrt{g/l}$ (line 9)"));
+            found = true;
+        }
+    }
+    CHECK(found);
+    // A square set to something that moves is not a definition of a constant.
+    const eomgen::checker::CheckReport moving = eomgen::test::check_text(
+        "models/damped_pendulum.toml", "Let $u^2 = \\dot\\varphi^2$, so that $u^2 + 1 = \\dot\\varphi^2 + 1$.\n");
+    for (const EquationCheck& e : moving.equations) CHECK(e.reason.find("\\sqrt") == std::string::npos);
+}
