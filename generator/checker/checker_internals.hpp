@@ -265,6 +265,9 @@ class Numbers {
 };
 
 /// A side of a link with where its row starts in the file.
+/// A side the parser refused for its `\pm` or `\mp` (both_signs.cpp).
+bool two_equations_in_one(const Side& s);
+
 struct PSide {
     const Side* side = nullptr;
     std::size_t base = 0;
@@ -632,6 +635,9 @@ class Checker : public Comparisons {
     /// it (named_constants.cpp); its file offset → its name.
     void collect_named_constants(const std::vector<FullChain>& chains);
     std::map<std::size_t, std::string> named_constants_;
+    /// A link with `\pm` (or `\mp`) judged with each sign (both_signs.cpp).
+    EquationCheck check_both_signs(const FullChain& c, std::size_t i, std::size_t j, bool bridge);
+    bool both_signs_ = false;  ///< inside check_both_signs: a side still refused for its ± is not split again
     /// `M`, `K` (`\mathbf{T}`, `\mathbf{V}`): the model's mass and stiffness matrices by name (model_matrices.cpp).
     std::optional<LinearAlgebra::NamedMatrix> model_matrix(const std::string& key, const GiNaC::matrix* text);
     /// `r_{eq} = l_0 + mg/k` under the conditions of an equilibrium: the equations of motion hold at that value

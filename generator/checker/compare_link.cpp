@@ -36,6 +36,8 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         return r;
     }
     if (rel == Relation::Equal && modes_.check(*L.side, *R.side, ctx_, *this, r)) return r;
+    if (!both_signs_ && (two_equations_in_one(*L.side) || two_equations_in_one(*R.side)))
+        return check_both_signs(c, i, j, bridge);
     if (rel == Relation::Equal && algebra_.check(*L.side, L.base, *R.side, R.base, *this, r)) return r;
     // A part of T or V defined by this link: compare it with its share of eomgen's T or V.
     for (int side = 0; side < 2; ++side) {

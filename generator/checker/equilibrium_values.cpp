@@ -58,7 +58,19 @@ bool Checker::check_value_at_point(const PSide& L, const PSide& R, const Prepare
             line = std::max(line, stated.second);
             for (const Coordinate& c : model_.coordinates) steady = steady || symbol.is_equal(c.qdd);
         }
-        if (!steady) return false;
+        // "θ₀ is the equilibrium position": without stated conditions, the sentence's equilibrium is one where
+        // every velocity and acceleration vanishes.
+        if (!steady) {
+            const std::string sentence = lead_in(d_, at, 1);
+            if (sentence.find("equilibri") == std::string::npos && sentence.find("at rest") == std::string::npos &&
+                sentence.find("rest position") == std::string::npos)
+                return false;
+            for (const Coordinate& c : model_.coordinates) {
+                if (!point.count(c.qd)) point[c.qd] = 0;
+                if (!point.count(c.qdd)) point[c.qdd] = 0;
+            }
+            line = d_.position(at).line;
+        }
         point[q->q] = at_point;  // its own point: another value the text gave the coordinate (`\alpha = 0`) is another
         std::vector<GiNaC::ex> left;
         try {
@@ -68,8 +80,10 @@ bool Checker::check_value_at_point(const PSide& L, const PSide& R, const Prepare
         }
         for (const GiNaC::ex& e : left)
             if (depends_on_state(e) || has_acceleration(e) || e.has(model_.t)) return false;  // the point is not set
-        const std::string where = "at the point the text considers (its conditions, line " + std::to_string(line) +
-                                  ") with " + m(q->latex + " = " + shown);
+        const std::string where = (steady ? "at the point the text considers (its conditions, line " +
+                                               std::to_string(line) + ")"
+                                          : std::string("at rest (the equilibrium its sentence names)")) +
+                                  " with " + m(q->latex + " = " + shown);
         r.compared_with = "the equations of motion " + where;
         for (std::size_t i = 0; i < left.size(); ++i)
             if (equal(left[i], 0, tol) != Tri::Yes) {

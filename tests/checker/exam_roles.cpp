@@ -445,3 +445,22 @@ TEST_CASE("roles: notes on the bead on a spinning hoop, checked as written (equi
     CHECK(one_verdict(model, "Setting $\\ddot\\alpha = 0$ gives the rest points.\n") == Verdict::NotComparable);
     CHECK(one_verdict(model, "Putting (1) into (2): $\\ddot\\alpha = 0$.\n") == Verdict::Disagrees);
 }
+
+TEST_CASE("roles: a link with a plus-minus sign is two equations, each judged", "[checker][roles]") {
+    const char* const hoop = "examples/bead_on_hoop.toml";
+    // Both signs are equilibria of the spinning hoop, which the sentence names.
+    const CheckReport both = eomgen::test::check_text(
+        hoop, "The off-bottom equilibrium positions are $\\alpha_0 = \\pm\\arccos\\frac{g}{\\omega^2 R}$.\n");
+    REQUIRE(both.equations.size() == 1);
+    INFO(eomgen::test::describe(both.equations[0]));
+    CHECK(both.equations[0].verdict == Verdict::Agrees);
+    CHECK(both.equations[0].reason.rfind("with either sign of ±", 0) == 0);
+    // arcsin for arccos: neither sign is an equilibrium.
+    const CheckReport wrong = eomgen::test::check_text(
+        hoop, "The off-bottom equilibrium positions are $\\alpha_0 = \\pm\\arcsin\\frac{g}{\\omega^2 R}$.\n");
+    REQUIRE(wrong.equations.size() == 1);
+    CHECK(wrong.equations[0].verdict == Verdict::Disagrees);
+    // The same with the Unicode sign; and a ± the reading cannot resolve stays not comparable, without looping.
+    CHECK(one_verdict(hoop, "The equilibria are $\\alpha_0 = ±\\arccos\\frac{g}{\\omega^2 R}$.\n") == Verdict::Agrees);
+    CHECK(one_verdict(hoop, "$q = \\pm w$\n") == Verdict::NotComparable);
+}
