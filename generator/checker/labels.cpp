@@ -541,6 +541,14 @@ std::optional<ProseLabel> label_in_sentence_before(const Derivation& d, const Ma
     std::size_t words_after = 0;
     bool naming = true;
     for (std::size_t k = found->end + 1; k < sentence.size(); ++k) {
+        // "The conjugate momenta are $p_\theta = …$ and $p_\phi = …$, so $$H = …$$": an equation written inline
+        // after the label is what it names, and the display that a "so" brings after it follows from them ("The
+        // ψ-equation is $\dot p_\psi = 0$: $$…$$" names the display too).
+        if (sentence[k].kind == Token::Math && sentence[k].text.find('=') != std::string::npos)
+            for (std::size_t n = k + 1; n < sentence.size(); ++n)
+                if (sentence[n].kind == Token::Word &&
+                    is_any(sentence[n].text, {"so", "hence", "thus", "therefore", "then", "giving", "whence"}))
+                    return std::nullopt;
         if (sentence[k].kind == Token::Punct) continue;
         if (words_after++ == 0) naming = false;
         if (sentence[k].kind == Token::Word &&

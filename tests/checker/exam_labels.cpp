@@ -300,3 +300,16 @@ TEST_CASE("labels: an equation that disagrees is compared with the equation it i
                                        "equation, but the equation is closest to the $\\theta$ equation"));
     CHECK_FALSE(has_note(right.equations[0], "its label"));
 }
+
+TEST_CASE("labels: a label names the equations written inline after it, not a display that a 'so' brings",
+          "[checker][labels]") {
+    // Notes on the spherical pendulum's Hamiltonian written here: on its first run H = … was held to "The
+    // conjugate momenta are $p_\theta = …$ and $p_\phi = …$, so" (a false alarm).
+    const CheckReport r = eomgen::test::check_text("tests/checker/models/spherical_pendulum.toml",
+                                                   eomgen::test::fixture("spherical_hamiltonian_notes.md"));
+    for (const EquationCheck& e : r.equations) {
+        INFO(eomgen::test::describe(e));
+        CHECK(e.verdict != Verdict::Disagrees);
+    }
+    CHECK(r.count(Verdict::Agrees) >= 11);
+}
