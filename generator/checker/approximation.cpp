@@ -79,6 +79,30 @@ std::vector<std::size_t> small_coordinates_in_prose(const Derivation& d, std::si
                     out.push_back(i);
         }
     }
+    // "linearizing about $\theta = 0$": the coordinates it names at 0 are small (every coordinate when it names none).
+    for (const char* cue : {"lineariz", "linearis"}) {
+        const std::size_t k = window.find(cue);
+        if (k == std::string::npos) continue;
+        const std::string after = window.substr(k, 60);
+        const std::size_t about = std::min(after.find("about"), after.find("around"));
+        bool named = false;
+        if (about != std::string::npos)
+            for (std::size_t i = 0; i < model.coordinates.size(); ++i) {
+                const Coordinate& c = model.coordinates[i];
+                for (const std::string& spelled : {lower(c.latex), lower(c.name)}) {
+                    const std::size_t at_name = spelled.empty() ? std::string::npos : after.find(spelled, about);
+                    if (at_name == std::string::npos) continue;
+                    std::string rest = after.substr(at_name + spelled.size(), 8);
+                    rest.erase(std::remove(rest.begin(), rest.end(), ' '), rest.end());
+                    if (rest.rfind("=0", 0) != 0) continue;
+                    named = true;
+                    if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
+                }
+            }
+        if (!named && about == std::string::npos)
+            for (std::size_t i = 0; i < model.coordinates.size(); ++i)
+                if (std::find(out.begin(), out.end(), i) == out.end()) out.push_back(i);
+    }
     return out;
 }
 

@@ -75,7 +75,16 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
         GiNaC::ex q, v;
         if (!has_free_name(x.value, ctx) && !has_free_name(y.value, ctx) && !has_label_or_operator(x.value, labels) &&
             !has_label_or_operator(y.value, labels)) {
-            if (!condition_of(x.value, y.value, model, &q, &v).empty()) {
+            // "linearizing about $\theta = 0$", "expanding around $x = 0$": the point of an expansion, not a condition
+            // the equations after it hold at.
+            std::string before = lead_in(d, link.at, 1);
+            while (!before.empty() && (before.back() == ' ' || before.back() == '\n')) before.pop_back();
+            const auto ends_with = [&](const char* w) {
+                const std::string word = w;
+                return before.size() >= word.size() && before.compare(before.size() - word.size(), word.size(), word) == 0;
+            };
+            const bool expansion_point = ends_with("about") || ends_with("around") || ends_with("near");
+            if (!expansion_point && !condition_of(x.value, y.value, model, &q, &v).empty()) {
                 bool position = false;
                 for (const Coordinate& c : model.coordinates) position = position || q.is_equal(c.q);
                 conditions_.push_back({q, v, link.at, link.paragraph, line, position});

@@ -69,3 +69,22 @@ TEST_CASE("approximations: the double pendulum's small oscillations, two coupled
     INFO(describe(r.equations[2]));
     CHECK(r.equations[2].verdict == Verdict::Disagrees);  // l_1 where l_2 belongs
 }
+
+TEST_CASE("approximation: 'linearizing about theta = 0' is the point of an expansion, not a condition",
+          "[checker][approximation]") {
+    // Notes on a pendulum hanging from a free cart written here: on its first run the linearized θ equation agreed
+    // for any coefficient (θ = 0 was held as a condition, making both sides 0); now it is compared to first order.
+    const char* const model = "tests/checker/models/cart_pendulum_free.toml";
+    const std::string text = eomgen::test::fixture("cart_pendulum_linearized_notes.md");
+    const eomgen::checker::CheckReport r = eomgen::test::check_text(model, text);
+    CHECK(r.count(eomgen::checker::Verdict::Disagrees) == 0);
+    std::string wrong = text;
+    const std::string right_line = "\\ddot\\theta = -\\frac{(M + m) g}{M l}\\,\\theta";
+    const std::size_t at = wrong.find(right_line);
+    REQUIRE(at != std::string::npos);
+    wrong.replace(at, right_line.size(), "\\ddot\\theta = -\\frac{(M + m) g}{m l}\\,\\theta");
+    const eomgen::checker::CheckReport w = eomgen::test::check_text(model, wrong);
+    REQUIRE(w.count(eomgen::checker::Verdict::Disagrees) == 1);
+    for (const auto& e : r.equations)
+        if (e.equation == "\\theta = 0") CHECK(e.reason.rfind("the point the text expands about", 0) == 0);
+}
