@@ -2,8 +2,6 @@
  * checked before they are printed. */
 #include "checker/checker_internals.hpp"
 
-#include <cstring>
-
 namespace eomgen::checker::detail {
 
 EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
@@ -705,14 +703,12 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         }
     }
     if (const std::string q = condition_of(a.value, b.value, model_); !q.empty()) {
-        std::string before = lead_in(d_, c.relation_offsets[j - 1], 1);
-        while (!before.empty() && (before.back() == ' ' || before.back() == '\n')) before.pop_back();
-        for (const char* w : {"about", "around", "near"})
-            if (before.size() >= std::strlen(w) && before.compare(before.size() - std::strlen(w), std::string::npos, w) == 0) {
-                r.reason = "the point the text expands about (“" + std::string(w) +
-                           "”), not a condition: the equations after it are compared to first order about it, not at it";
-                return;
-            }
+        if (const std::string w = lead_in_ends_with(d_, c.relation_offsets[j - 1], {"about", "around", "near"});
+            !w.empty()) {
+            r.reason = "the point the text expands about (“" + w +
+                       "”), not a condition: the equations after it are compared to first order about it, not at it";
+            return;
+        }
         const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
         r.reason = cue.empty() ? "a condition: the point or motion the text considers, where " + m(q) +
                                      " takes this value (not an equation of the motion, so not judged)"

@@ -44,9 +44,6 @@ bool has_label_or_operator(const GiNaC::ex& e, const LabelView& labels) {
 }
 
 /// Words of a sentence about a motion whose accelerations vanish or are set (lower case).
-/// Words that set the value that follows them right away ("Setting $\ddot\alpha = 0$"; not "putting (1) into
-/// (2) and simplifying: $…$").
-constexpr const char* kSetting[] = {"setting", "putting", "we set", "set", "put"};
 constexpr const char* kSteady[] = {"equilibrium", "equilibria", "at rest", "steady", "stationary", "uniform",
                                    "conical", "circular orbit", "constant speed", "constant rate"};
 
@@ -77,13 +74,7 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
             !has_label_or_operator(y.value, labels)) {
             // "linearizing about $\theta = 0$", "expanding around $x = 0$": the point of an expansion, not a condition
             // the equations after it hold at.
-            std::string before = lead_in(d, link.at, 1);
-            while (!before.empty() && (before.back() == ' ' || before.back() == '\n')) before.pop_back();
-            const auto ends_with = [&](const char* w) {
-                const std::string word = w;
-                return before.size() >= word.size() && before.compare(before.size() - word.size(), word.size(), word) == 0;
-            };
-            const bool expansion_point = ends_with("about") || ends_with("around") || ends_with("near");
+            const bool expansion_point = !lead_in_ends_with(d, link.at, {"about", "around", "near"}).empty();
             if (!expansion_point && !condition_of(x.value, y.value, model, &q, &v).empty()) {
                 bool position = false;
                 for (const Coordinate& c : model.coordinates) position = position || q.is_equal(c.q);
@@ -92,17 +83,12 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
             // θ̈ = 0 after θ̇ = 0 (or θ = θ₀) in its paragraph, or in a sentence about an equilibrium or a steady
             // motion ("at equilibrium $\ddot x = 0$"): the acceleration of the motion the text considers.
             const std::string sentence = lead_in(d, link.at, 1);
-            // "Setting θ̈ = 0 and θ̇ = 0": an acceleration the sentence sets is a condition too.
+            // "Setting θ̈ = 0 and θ̇ = 0": an acceleration the words right before set is a condition too (not
+            // "putting (1) into (2) and simplifying: …").
             const bool steady = std::any_of(std::begin(kSteady), std::end(kSteady), [&](const char* w) {
                                     return sentence.find(w) != std::string::npos;
                                 }) ||
-                                std::any_of(std::begin(kSetting), std::end(kSetting), [&](const char* w) {
-                                    std::string end = sentence;
-                                    while (!end.empty() && (end.back() == ' ' || end.back() == '\n')) end.pop_back();
-                                    const std::string cue = w;
-                                    return end.size() >= cue.size() && end.compare(end.size() - cue.size(), cue.size(), cue) == 0 &&
-                                           (end.size() == cue.size() || !std::isalpha(static_cast<unsigned char>(end[end.size() - cue.size() - 1])));
-                                });
+                                !lead_in_ends_with(d, link.at, {"setting", "putting", "we set", "set", "put"}).empty();
             auto acceleration_set = [&](const GiNaC::ex& a, const GiNaC::ex& b) {
                 for (const Coordinate& c : model.coordinates)
                     if (a.is_equal(c.qdd) && !holds_state(b, model) && !b.has(model.t) &&

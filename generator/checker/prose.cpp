@@ -61,4 +61,16 @@ std::string sentence_around(const std::string& s, std::size_t begin, std::size_t
     return out;
 }
 
+std::string lead_in_ends_with(const Derivation& d, std::size_t offset, std::initializer_list<const char*> words) {
+    std::string before = lead_in(d, offset, 1);
+    while (!before.empty() && std::isspace(static_cast<unsigned char>(before.back()))) before.pop_back();
+    for (const char* w : words) {
+        const std::string word = w;
+        if (before.size() < word.size() || before.compare(before.size() - word.size(), word.size(), word) != 0) continue;
+        const std::size_t at = before.size() - word.size();
+        if (at == 0 || !std::isalpha(static_cast<unsigned char>(before[at - 1]))) return word;
+    }
+    return "";
+}
+
 }  // namespace eomgen::checker

@@ -6,6 +6,7 @@
 #include "checker/derivation.hpp"
 
 #include <cstddef>
+#include <initializer_list>
 #include <string>
 
 namespace eomgen::checker {
@@ -20,5 +21,9 @@ std::string lead_in(const Derivation& d, std::size_t offset, int sentences);
 /// The sentence that holds text[begin, end): from the sentence end (or blank line) before it to the one after it,
 /// prose and math alike, lower case.
 std::string sentence_around(const std::string& text, std::size_t begin, std::size_t end);
+
+/// The last word of the prose leading into the math at `offset` (lead_in's, one sentence) when it is one of
+/// `words` ("linearizing about", "Setting"), else "": what the math right after it is.
+std::string lead_in_ends_with(const Derivation& d, std::size_t offset, std::initializer_list<const char*> words);
 
 }  // namespace eomgen::checker
