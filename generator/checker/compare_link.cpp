@@ -105,10 +105,10 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     // derivative of an energy, before the text cancels the velocity) holds where that equation does.
     std::string divided;
     if (a.comparable() && b.comparable() && has_acceleration(a.value - b.value) &&
-        equal(a.value, b.value, tol) != Tri::Yes)
+        equal(a.value, b.value, tol) != Tri::Yes) {
+        const GiNaC::ex whole = (a.value - b.value).expand();
         for (const Coordinate& q : model_.coordinates) {
             try {
-                const GiNaC::ex whole = (a.value - b.value).expand();
                 if (!whole.has(q.qd) || !whole.subs(q.qd == 0).is_zero()) continue;
                 const GiNaC::ex rest = (whole / q.qd).expand();
                 if (!has_acceleration(rest)) continue;
@@ -119,6 +119,7 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
             } catch (const std::exception&) {  // a pole at q' = 0: not such a product
             }
         }
+    }
     // \approx, \simeq: the Taylor expansion to the order the text keeps; "= ... for small θ" too, where it
     // would otherwise disagree.
     if (!divided.empty()) r.notes.push_back(divided);
@@ -572,8 +573,7 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         }
         // A side the text writes as the Euler–Lagrange expression of one coordinate (`\frac{\partial L}{\partial
         // \theta} - \frac{d}{dt}\frac{\partial L}{\partial \dot\theta}`, with eomgen's L or the text's own) is that
-        // coordinate's: the other side must
-        // make that equation, not another one that also holds on the motion.
+        // coordinate's: the other side must make that equation, not another one that also holds on the motion.
         int own = -1;
         const bool a_derived = a.has_truth_label || a.from_definition, b_derived = b.has_truth_label || b.from_definition;
         if (a_derived != b_derived) {
