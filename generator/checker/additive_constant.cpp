@@ -3,7 +3,23 @@
 
 #include "mechanics/lagrangian.hpp"
 
+#include <algorithm>
+#include <cctype>
+
 namespace eomgen::checker {
+
+bool names_a_constant(const std::string& name) {
+    const std::size_t under = name.find('_');
+    const std::string base = name.substr(0, under);
+    if (base.size() != 1 || !std::isalpha(static_cast<unsigned char>(base[0])) ||
+        std::string("TVULHEKPW").find(base[0]) != std::string::npos)
+        return false;
+    if (under == std::string::npos) return true;
+    std::string sub = name.substr(under + 1);
+    if (sub.size() >= 2 && sub.front() == '{' && sub.back() == '}') sub = sub.substr(1, sub.size() - 2);
+    if (sub.size() == 1) return std::isalnum(static_cast<unsigned char>(sub[0])) != 0;
+    return !sub.empty() && std::all_of(sub.begin(), sub.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; });
+}
 
 bool check_additive_constant(const GiNaC::ex& a, const GiNaC::ex& b, int constant_side, const Model& model,
                              Comparisons& cmp, double tol, EquationCheck& r) {

@@ -8,6 +8,8 @@
 
 #include <ginac/ginac.h>
 
+#include <string>
+
 namespace eomgen::checker {
 
 /**
@@ -17,6 +19,11 @@ namespace eomgen::checker {
  * agrees when a − b is free of q, q̇, q̈ and t. Returns false (r untouched) when neither holds: the caller
  * compares a and b as they are.
  */
+/// A name that can be an additive constant the text adds to V, L or h (`+ f`, `+ C_0`): one letter that names no
+/// energy or its part (not T, V, U, L, H, E, K, P, W: `T_{rot}` is a part of T), with a subscript of digits or one
+/// letter at most.
+bool names_a_constant(const std::string& name);
+
 bool check_additive_constant(const GiNaC::ex& a, const GiNaC::ex& b, int constant_side, const Model& model,
                              Comparisons& cmp, double tol, EquationCheck& r);
 

@@ -553,26 +553,10 @@ class Checker : public Comparisons {
             for (const GiNaC::ex& q : {eq_.V, eq_.L, eq_.energy})
                 defined_up_to_constant = defined_up_to_constant || equal(truth->value, q, 1e-9) == Tri::Yes;
             if (!defined_up_to_constant) continue;
-            // A constant's name: one letter (not one that names an energy or its parts: T_{rot} is a part of T),
-            // with a subscript of digits or one letter at most (c, f, C_0, c_{1}).
-            auto constant_like = [](const std::string& name) {
-                const std::size_t under = name.find('_');
-                const std::string base = name.substr(0, under);
-                if (base.size() != 1 || !std::isalpha(static_cast<unsigned char>(base[0])) ||
-                    std::string("TVULHEKPW").find(base[0]) != std::string::npos)
-                    return false;
-                if (under == std::string::npos) return true;
-                std::string sub = name.substr(under + 1);
-                if (sub.size() >= 2 && sub.front() == '{' && sub.back() == '}') sub = sub.substr(1, sub.size() - 2);
-                return sub.size() == 1 ? std::isalnum(static_cast<unsigned char>(sub[0])) != 0
-                                       : !sub.empty() && std::all_of(sub.begin(), sub.end(), [](char ch) {
-                                             return std::isdigit(static_cast<unsigned char>(ch)) != 0;
-                                         });
-            };
             std::vector<const FreeName*> still;
             for (const FreeName* f : other->unknown) {
                 const GiNaC::ex slope = GiNaC::diff(other->value, f->symbol).expand();
-                if (constant_like(f->name) && (slope.is_equal(1) || slope.is_equal(-1))) {
+                if (names_a_constant(f->name) && (slope.is_equal(1) || slope.is_equal(-1))) {
                     other->constants.push_back(f->symbol);
                     r.notes.push_back("reads $" + f->name + "$, added alone, as the additive constant");
                 } else {
