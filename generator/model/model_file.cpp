@@ -259,7 +259,8 @@ struct Entry {
 
 class Loader : public FileReading {
   public:
-    Loader(std::string_view text, const std::string& path) : src_(text, path), path_(path) {}
+    Loader(std::string_view text, const std::string& path, const std::string& default_name)
+        : src_(text, path), path_(path), default_name_(default_name) {}
 
     Model load() {
         toml::table root;
@@ -284,7 +285,7 @@ class Loader : public FileReading {
             const SourceLocation where = string_start(*name);
             declarations.push_back({model.name, "model", where, order(where)});
         } else {
-            model.name = std::filesystem::path(path_).stem().string();
+            model.name = default_name_.empty() ? std::filesystem::path(path_).stem().string() : default_name_;
             declarations.push_back({model.name, "model", src_.file_only(), 0});
         }
         if (const toml::node* n = root.get("title")) model.title = string_value(*n, "title");
@@ -1407,12 +1408,13 @@ class Loader : public FileReading {
     mutable std::map<GiNaC::ex, Dims, GiNaC::ex_is_less> dims_;
     mutable std::vector<Dims> coordinate_dims_;  ///< of q, q̇ and q̈ of each coordinate with a unit
     std::string path_;
+    std::string default_name_;  ///< the name when the file gives none ("": the file name's stem)
 };
 
 }  // namespace
 
-Model parse_model(std::string_view text, const std::string& path) {
-    return Loader(text, path).load();
+Model parse_model(std::string_view text, const std::string& path, const std::string& default_name) {
+    return Loader(text, path, default_name).load();
 }
 
 std::string read_model_file(const std::string& path) {

@@ -26,7 +26,8 @@ Model load_model(const std::string& path);
 /// The bytes of a model file, as load_model reads them (ModelError when it cannot be read).
 std::string read_model_file(const std::string& path);
 
-/// As load_model, for the text of a model file; `path` is only used in messages and as Model::path.
-Model parse_model(std::string_view text, const std::string& path);
+/// As load_model, for the text of a model file; `path` is only used in messages and as Model::path. A file that
+/// gives no name is named `default_name`, or where that is empty after the file name (`path`'s stem).
+Model parse_model(std::string_view text, const std::string& path, const std::string& default_name = "");
 
 }  // namespace eomgen
