@@ -27,13 +27,29 @@
 #ifndef EOMGEN_EIGEN_INCLUDE_DIR
 #error "EOMGEN_EIGEN_INCLUDE_DIR must name Eigen's include directory"
 #endif
+#ifndef EOMGEN_INSTALLED_INCLUDE_DIR
+#define EOMGEN_INSTALLED_INCLUDE_DIR "/usr/local/include"
+#endif
 
 namespace eomgen::cli {
 namespace fs = std::filesystem;
 namespace {
 
-/// The runtime's headers: beside an installed eomgen (<prefix>/bin/eomgen, <prefix>/include/eomgen/), else
-/// those of the source tree this eomgen was built from.
+/// The file that holds this code: the eomgen executable, or the Python module (python/) that links it. A
+/// rebuilt generator is a new cache key; the executable is named by /proc/self/exe, which is canonical.
+fs::path generator_binary() {
+    Dl_info info{};
+    std::error_code ec;
+    if (::dladdr(reinterpret_cast<void*>(&generator_binary), &info) != 0 && info.dli_fname != nullptr &&
+        info.dli_fname[0] == '/') {
+        const fs::path self = fs::canonical(info.dli_fname, ec);
+        if (!ec) return self;
+    }
+    return fs::read_symlink("/proc/self/exe", ec);
+}
+
+/// The runtime's headers: beside an installed eomgen (<prefix>/bin/eomgen, <prefix>/include/eomgen/), in the
+/// source tree this eomgen was built from, else in the prefix the build installs to (an installed Python module).
 const std::string& runtime_include_dir() {
     static const std::string dir = [] {
         std::error_code ec;
@@ -42,6 +58,9 @@ const std::string& runtime_include_dir() {
             const fs::path installed = exe.parent_path().parent_path() / "include";
             if (fs::exists(installed / "eomgen" / "model_table.hpp", ec)) return installed.string();
         }
+        if (!fs::exists(fs::path(EOMGEN_RUNTIME_INCLUDE_DIR) / "eomgen" / "model_table.hpp", ec) &&
+            fs::exists(fs::path(EOMGEN_INSTALLED_INCLUDE_DIR) / "eomgen" / "model_table.hpp", ec))
+            return std::string(EOMGEN_INSTALLED_INCLUDE_DIR);
         return std::string(EOMGEN_RUNTIME_INCLUDE_DIR);
     }();
     return dir;
@@ -105,8 +124,7 @@ std::string describe_file(const std::string& path) {
 std::string cache_key(const CompileRequest& r, const std::vector<std::string>& compiler) {
     Hasher h;
     h.add(EOMGEN_VERSION);
-    std::error_code ec;
-    h.add(describe_file(fs::read_symlink("/proc/self/exe", ec).string()));  // a rebuilt generator
+    h.add(describe_file(generator_binary().string()));  // a rebuilt generator
     h.add(r.model_text);
     h.add(r.model_name);
     h.add(r.jacobian ? "with jacobian" : "");
