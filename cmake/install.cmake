@@ -24,7 +24,7 @@ install(FILES README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY models/ DESTINATION ${CMAKE_INSTALL_DATADIR}/eomgen/models FILES_MATCHING PATTERN "*.toml")
 install(FILES examples/bead_on_hoop.toml examples/double_pendulum.toml examples/door_closing.cpp
-              examples/door_sweep.cpp DESTINATION ${CMAKE_INSTALL_DATADIR}/eomgen/examples)
+              examples/door_sweep.cpp examples/python_tour.ipynb DESTINATION ${CMAKE_INSTALL_DATADIR}/eomgen/examples)
 
 # cpack -G DEB (from the build directory): eomgen_<version>_<arch>.deb, installing under /usr. The shared
 # libraries it needs (GiNaC, CLN, fmt, ...) come from dpkg-shlibdeps; Eigen and a C++ compiler because
@@ -44,6 +44,8 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 set(CPACK_DEBIAN_PACKAGE_DEPENDS "libeigen3-dev (>= 3.4), g++")
+# import eomgen (python/, where the build has it) needs NumPy; Solution.plot needs matplotlib.
+set(CPACK_DEBIAN_PACKAGE_SUGGESTS "python3, python3-numpy, python3-matplotlib")
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_GENERATOR DEB)
 include(CPack)

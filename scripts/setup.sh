@@ -14,7 +14,9 @@ packages=(g++ cmake make pkg-config libginac-dev libcln-dev libeigen3-dev catch2
           ccache                       # optional: recompiles only what changed, across checkouts (CMakeLists.txt)
           dpkg-dev file   # cpack -G DEB (dpkg-shlibdeps, and file to find the binaries)
           libopenmpi-dev openmpi-bin   # optional for eomgen: ensembles across MPI ranks (mpirun), and its test
-          libhdf5-dev)                 # optional for eomgen: ensembles written as HDF5 (--out FILE.h5)
+          libhdf5-dev                  # optional for eomgen: ensembles written as HDF5 (--out FILE.h5)
+          python3-dev pybind11-dev python3-numpy  # optional: import eomgen (python/, docs/python.md)
+          python3-pytest)              # the Python module's tests
 # More for one caller, in the same apt-get run: scripts/test.sh adds chromium (the animation's browser test).
 read -r -a extra_packages <<< "${EOMGEN_EXTRA_PACKAGES:-}"
 packages+=("${extra_packages[@]}")
