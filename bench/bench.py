@@ -32,6 +32,7 @@ sys.path.insert(0, HERE)
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import op_count  # noqa: E402
 import animation  # noqa: E402
+import python_api  # noqa: E402
 import bicycle  # noqa: E402
 import fit  # noqa: E402
 import peers  # noqa: E402
@@ -49,6 +50,8 @@ BEGIN_BICYCLE = "<!-- BEGIN MEASURED BICYCLE (bench/run.sh, or bench/run.sh --bi
 END_BICYCLE = "<!-- END MEASURED BICYCLE -->"
 BEGIN_ANIMATION = "<!-- BEGIN MEASURED ANIMATION (bench/run.sh, or bench/run.sh --animation-only, rewrites this part) -->"
 END_ANIMATION = "<!-- END MEASURED ANIMATION -->"
+BEGIN_PYTHON = "<!-- BEGIN MEASURED PYTHON (bench/run.sh, or bench/run.sh --python-only, rewrites this part) -->"
+END_PYTHON = "<!-- END MEASURED PYTHON -->"
 
 
 def log(msg):
@@ -710,6 +713,8 @@ def main():
                     help="measure only section 11 (the Whipple bicycle, issue 35) and rewrite only its part")
     ap.add_argument("--animation-only", action="store_true",
                     help="measure only section 12 (eomgen run --animate, issue 33) and rewrite only its part")
+    ap.add_argument("--python-only", action="store_true",
+                    help="measure only section 13 (the Python module, issue 32) and rewrite only its part")
     ap.add_argument("--out-md")
     ap.add_argument("--out-png")
     ap.add_argument("--render-only", metavar="RESULTS_JSON",
@@ -743,6 +748,8 @@ def main():
             render_bicycle(results, out_md)
         elif "animation" in results:
             render_animation(results, out_md)
+        elif "python" in results:
+            render_python(results, out_md)
         else:
             render_peers(results, out_md)
         return
@@ -751,7 +758,8 @@ def main():
     work = os.path.join(args.build_dir, "bench_smoke" if args.smoke else
                         "bench_peers" if args.peers_only else "bench_scale" if args.scale_only else
                         "bench_fit" if args.fit_only else "bench_bicycle" if args.bicycle_only else
-                        "bench_animation" if args.animation_only else "bench_work")
+                        "bench_animation" if args.animation_only else "bench_python" if args.python_only else
+                        "bench_work")
     if os.path.isdir(work):
         shutil.rmtree(work)
     os.makedirs(work)
@@ -761,7 +769,7 @@ def main():
 
     command = "bash bench/run.sh" + (" --smoke" if args.smoke else "") + (" --no-build" if args.no_build else "") + \
         (" --peers-only" if args.peers_only else "") + (" --scale-only" if args.scale_only else "") + \
-        (" --fit-only" if args.fit_only else "") + (" --bicycle-only" if args.bicycle_only else "") + (" --animation-only" if args.animation_only else "") + (f" --sympy-cap {args.sympy_cap:g}" if args.sympy_cap != 900 else "")
+        (" --fit-only" if args.fit_only else "") + (" --bicycle-only" if args.bicycle_only else "") + (" --animation-only" if args.animation_only else "") + (" --python-only" if args.python_only else "") + (f" --sympy-cap {args.sympy_cap:g}" if args.sympy_cap != 900 else "")
     if args.peers_only:
         results = {"command": command, "date": utc_now(), "peers": peers.measure(cfg, args.build_dir, args.smoke, log)}
         with open(os.path.join(work, "results_peers.json"), "w") as fh:
@@ -774,7 +782,8 @@ def main():
              "bicycle": (args.bicycle_only, lambda: bicycle.measure(cfg, work, args.smoke, log, args.sympy_cap),
                          render_bicycle),
              "animation": (args.animation_only, lambda: animation.measure(cfg, work, args.smoke, log),
-                           render_animation)}
+                           render_animation),
+             "python": (args.python_only, lambda: python_api.measure(cfg, work, args.smoke, log), render_python)}
     for key, (selected, measure, render_section) in alone.items():
         if not selected:
             continue
@@ -855,6 +864,8 @@ def main():
     bicycle_results = bicycle.measure(cfg, work, args.smoke, log, args.sympy_cap)
     log("12. animation")
     animation_results = animation.measure(cfg, work, args.smoke, log)
+    log("13. Python module")
+    python_results = python_api.measure(cfg, work, args.smoke, log)
     results = {"command": command, "machine": mach, "sympy_ok": sympy_ok, "agree": agree, "ref_check": ref_check,
                "generation": {str(k): v for k, v in gen.items()}, "rods": {str(k): v for k, v in rods.items()},
                "sympy": {str(k): v for k, v in sym.items()}, "ops": {str(k): v for k, v in ops.items()},
@@ -862,7 +873,7 @@ def main():
                "compile": {str(k): v for k, v in comp.items()},
                "integrators": {"/".join(k): v for k, v in by.items()}, "memory": mem, "run": runs,
                "date": mach["date"], "peers": peer_results, "scale": scale_results, "fit": fit_results,
-               "bicycle": bicycle_results, "animation": animation_results}
+               "bicycle": bicycle_results, "animation": animation_results, "python": python_results}
     with open(os.path.join(work, "results.json"), "w") as fh:
         json.dump(results, fh, indent=1)
     render(results, work, out_md, out_png)
@@ -895,6 +906,8 @@ def render(results, work, out_md, out_png):
         render_bicycle(results, out_md)
     if "animation" in results:
         render_animation(results, out_md)
+    if "python" in results:
+        render_python(results, out_md)
 
 
 def render_scale(results, out_md):
@@ -926,14 +939,25 @@ def render_bicycle(results, out_md):
     log(f"wrote section 11 of {out_md}")
 
 
+def machine_line(results):
+    """The commit, the machine and its load during a section's run, as one sentence of its heading."""
+    m = results["machine"]
+    return (f"eomgen at commit {m.get('commit', '?')}. Machine: {m['cpu']}, {m['cores']} cores; {m['compiler']}. "
+            f"Load average (1 min) {m['load'][0]:.2f} at the start, {m.get('load_end', m['load'])[0]:.2f} at the end.")
+
+
 def render_animation(results, out_md):
     """Writes section 12 (eomgen run --animate) between its own markers."""
-    m = results["machine"]
-    line = (f"eomgen at commit {m.get('commit', '?')}. Machine: {m['cpu']}, {m['cores']} cores; {m['compiler']}. "
-            f"Load average (1 min) {m['load'][0]:.2f} at the start, {m.get('load_end', m['load'])[0]:.2f} at the end.")
     splice(out_md, BEGIN_ANIMATION, END_ANIMATION,
-           animation.render(results["animation"], results["command"], results["date"], line))
+           animation.render(results["animation"], results["command"], results["date"], machine_line(results)))
     log(f"wrote section 12 of {out_md}")
+
+
+def render_python(results, out_md):
+    """Writes section 13 (the Python module) between its own markers."""
+    splice(out_md, BEGIN_PYTHON, END_PYTHON,
+           python_api.render(results["python"], results["command"], results["date"], machine_line(results)))
+    log(f"wrote section 13 of {out_md}")
 
 
 def render_peers(results, out_md):

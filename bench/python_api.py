@@ -1,0 +1,145 @@
+"""Section 13 of docs/benchmarks.md (issue 32): the Python module `import eomgen` (python/, docs/python.md).
+Called by bench.py (in the full run, and alone with --python-only); the page's part between the PYTHON markers is
+written by render() from measure()'s results.
+
+Measured, each in fresh python3 processes (the module as built, PYTHONPATH from bench_config.json):
+- `import eomgen`, and `eomgen.load` of a model whose code is in the cache with its first `rhs` call (which loads
+  the shared object): the best of several processes;
+- the first `simulate` of a 2-coordinate model (the double pendulum, 10 s) with an empty cache (derive, compile,
+  integrate), beside `eomgen run` of the same model with an empty cache of its own;
+- `Model.rhs` over N random states of the double pendulum (one call, the loop in C++ without the GIL) against the
+  same loop written in C++ on the same shared object (bench/time_table_rhs.cpp), best of 5 each; the two results
+  must be equal to the bit.
+"""
+import json
+import os
+import subprocess
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+DOUBLE = os.path.join(ROOT, "examples", "double_pendulum.toml")
+DOOR = os.path.join(ROOT, "models", "door.toml")
+
+
+def run_python(cfg, code, cache, *args):
+    """Runs `code` in a fresh python3 with the built module and `cache` as XDG_CACHE_HOME; its stdout as JSON."""
+    env = dict(os.environ, PYTHONPATH=cfg["python_path"], XDG_CACHE_HOME=cache, PYTHONDONTWRITEBYTECODE="1")
+    p = subprocess.run([cfg["python3"], "-c", code, *args], env=env, capture_output=True, text=True, check=True)
+    return json.loads(p.stdout.strip().splitlines()[-1])
+
+
+IMPORT_AND_LOAD = """
+import json, sys, time
+t0 = time.perf_counter()
+import eomgen
+t1 = time.perf_counter()
+m = eomgen.load(sys.argv[1])
+t2 = time.perf_counter()
+m.rhs(0.0, m.initial_state)
+t3 = time.perf_counter()
+print(json.dumps({"import": t1 - t0, "load": t2 - t1, "load_first_rhs": t3 - t1}))
+"""
+
+FIRST_SIMULATE = """
+import json, sys, time
+import eomgen
+t0 = time.perf_counter()
+m = eomgen.load(sys.argv[1])
+sol = m.simulate(10.0)
+t1 = time.perf_counter()
+print(json.dumps({"first_simulate": t1 - t0, "samples": len(sol.t), "drift": sol.max_drift}))
+"""
+
+RHS = """
+import json, sys, time
+import numpy as np
+import eomgen
+m = eomgen.load(sys.argv[1])
+n, repeats = int(sys.argv[2]), int(sys.argv[3])
+x = np.random.default_rng(1).uniform(-2.0, 2.0, size=(n, 2 * len(m.coordinates)))
+x.tofile(sys.argv[4])
+m.rhs(0.0, x[:2])  # compiled or loaded before the clock starts
+best = float("inf")
+for _ in range(repeats):
+    t0 = time.perf_counter()
+    xdot = m.rhs(0.0, x)
+    best = min(best, time.perf_counter() - t0)
+xdot.tofile(sys.argv[5])
+print(json.dumps({"ns_per_state": best * 1e9 / n, "shared_object": m.shared_object}))
+"""
+
+
+def measure(cfg, work, smoke, log):
+    if "python3" not in cfg:
+        log("13. Python module: not built (no python3-dev or pybind11-dev at configure time); skipped")
+        return {"skipped": "the Python module is not built"}
+    n = 10_000 if smoke else 1_000_000
+    processes = 1 if smoke else 5
+    repeats = 1 if smoke else 5
+    out = {"n_states": n, "processes": processes, "repeats": repeats}
+    cache = tempfile.mkdtemp(prefix="cache-", dir=work)
+
+    log("13. Python module: first simulate of the double pendulum with an empty cache")
+    out["first_simulate"] = run_python(cfg, FIRST_SIMULATE, cache, DOUBLE)
+    run_cache = tempfile.mkdtemp(prefix="cache-run-", dir=work)
+    t0 = time.perf_counter()
+    subprocess.run([cfg["eomgen"], "run", DOUBLE, "--quiet", "--t-end", "10"], check=True, stdout=subprocess.DEVNULL,
+                   env=dict(os.environ, XDG_CACHE_HOME=run_cache))
+    out["eomgen_run_first"] = time.perf_counter() - t0
+
+    log("13. Python module: import and load of a cached model")
+    run_python(cfg, IMPORT_AND_LOAD, cache, DOOR)  # fills the cache for the door
+    loads = [run_python(cfg, IMPORT_AND_LOAD, cache, DOOR) for _ in range(processes)]
+    out["import"] = min(r["import"] for r in loads)
+    out["load"] = min(r["load"] for r in loads)
+    out["load_first_rhs"] = min(r["load_first_rhs"] for r in loads)
+
+    log(f"13. Python module: Model.rhs over {n} states against the loop in C++")
+    states, py_out, cpp_out = (os.path.join(work, f) for f in ("states.bin", "rhs_python.bin", "rhs_cpp.bin"))
+    py = run_python(cfg, RHS, cache, DOUBLE, str(n), str(repeats), states, py_out)
+    p = subprocess.run([cfg["time_table_rhs"], py["shared_object"], states, str(n), str(repeats), cpp_out],
+                       check=True, capture_output=True, text=True)
+    cpp_ns = float(p.stdout.split()[0])
+    out["rhs_python_ns"] = py["ns_per_state"]
+    out["rhs_cpp_ns"] = cpp_ns
+    out["rhs_ratio"] = py["ns_per_state"] / cpp_ns
+    with open(py_out, "rb") as a, open(cpp_out, "rb") as b:
+        out["results_equal"] = a.read() == b.read()
+    if not out["results_equal"]:
+        raise RuntimeError("Model.rhs and the C++ loop give different results (" + py_out + ", " + cpp_out + ")")
+    return out
+
+
+def render(r, command, date, machine_line):
+    lines = ["## 13. The Python module (issue 32)", ""]
+    if "skipped" in r:
+        return "\n".join(lines + [f"Not measured: {r['skipped']}.", ""]) + "\n"
+    f = r["first_simulate"]
+    lines += [
+        f"Measured by `{command}` on {date}. {machine_line}",
+        "",
+        "bench/python_api.py: each figure in fresh `python3` processes with the module as built (best of "
+        f"{r['processes']} processes for import and load); `Model.rhs` over {r['n_states']:,} random states of the "
+        f"double pendulum (examples/double_pendulum.toml) in one call, best of {r['repeats']}, against the same loop "
+        "in C++ on the same shared object (bench/time_table_rhs.cpp); the two results are equal to the bit: "
+        f"{'yes' if r['results_equal'] else 'NO'}.",
+        "",
+        "| measured | value | target (issue 32) | met? |",
+        "|---|---|---|---|",
+        f"| `import eomgen` | {r['import'] * 1e3:.0f} ms | – | – |",
+        f"| `eomgen.load` of the door, parse only | {r['load'] * 1e3:.1f} ms | – | – |",
+        f"| `eomgen.load` of the door + first `rhs` (the shared object loaded from the cache) | "
+        f"{r['load_first_rhs'] * 1e3:.1f} ms | ≤ 50 ms | **{'met' if r['load_first_rhs'] <= 0.05 else 'not met'}** |",
+        f"| first `simulate` of the double pendulum, empty cache (derive, compile, 10 s of motion) | "
+        f"{f['first_simulate']:.2f} s (`eomgen run`, empty cache: {r['eomgen_run_first']:.2f} s) | ≤ 5 s | "
+        f"**{'met' if f['first_simulate'] <= 5 else 'not met'}** |",
+        f"| `Model.rhs` per state, against the loop in C++ | {r['rhs_python_ns']:.1f} ns against "
+        f"{r['rhs_cpp_ns']:.1f} ns: {r['rhs_ratio']:.3f}× | ≤ 1.2× | "
+        f"**{'met' if r['rhs_ratio'] <= 1.2 else 'not met'}** |",
+        "",
+        "Not measured: the issue's comparison with SymPy + PyDy on the n-link pendulum from Python (derive, generate "
+        "and integrate, n = 2, 8, 16), which waits for the module's sweeps and families (docs/python.md, \"Not done\").",
+        ""]
+    return "\n".join(lines) + "\n"
