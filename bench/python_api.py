@@ -140,6 +140,6 @@ def render(r, command, date, machine_line):
         f"**{'met' if r['rhs_ratio'] <= 1.2 else 'not met'}** |",
         "",
         "Not measured: the issue's comparison with SymPy + PyDy on the n-link pendulum from Python (derive, generate "
-        "and integrate, n = 2, 8, 16), which waits for the module's sweeps and families (docs/python.md, \"Not done\").",
+        "and integrate, n = 2, 8, 16), which waits for the n-link families in the module (docs/python.md, \"Not done\").",
         ""]
     return "\n".join(lines) + "\n"
