@@ -18,22 +18,28 @@
 #include "cli/process.hpp"
 #include "cli/show_text.hpp"
 #include "codegen/cpp_emitter.hpp"
+#include "codegen/math_printer.hpp"
 #include "eomgen/ensemble.hpp"
 #include "eomgen/errors.hpp"
 #include "eomgen/model_table.hpp"
 #include "eomgen/sample_csv.hpp"
 #include "eomgen/simulation.hpp"
 #include "mechanics/lagrangian.hpp"
+#include "mechanics/small_oscillations.hpp"
 #include "model/model.hpp"
+#include "model/families.hpp"
 #include "model/model_file.hpp"
 #include "table_driver.hpp"
 
 #include <pybind11/numpy.h>
+#include <pybind11/complex.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <complex>
 #include <filesystem>
+#include <map>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -503,6 +509,90 @@ py::tuple jacobian(LoadedModel& m, py::array_t<double, py::array::c_style | py::
     return py::make_tuple(J, Jp);
 }
 
+/// NAME=VALUE assignments (a number in the declared unit, or with its own) as NAME -> SI value.
+std::map<std::string, double> si_map(const LoadedModel& m, const std::vector<std::string>& assignments, bool state,
+                                     const char* what) {
+    std::map<std::string, double> out;
+    for (const std::string& a : assignments) {
+        std::string si;
+        try {
+            si = cli::assignment_in_si(cli::declared_units(m.model()), a, state, what);
+        } catch (const std::invalid_argument& e) {
+            throw sim::UsageError(e.what());
+        }
+        out.insert(sim::parse_assignment(si, what));
+    }
+    return out;
+}
+
+py::array_t<double> matrix(const std::vector<std::vector<double>>& rows) {
+    const std::size_t r = rows.size(), c = r ? rows[0].size() : 0;
+    std::vector<double> flat;
+    for (const auto& row : rows) flat.insert(flat.end(), row.begin(), row.end());
+    return matrix(flat, r, c);
+}
+
+/// `eomgen modes`: the equilibria (exact where found), the linearization about each (M, K, C, G, A, B), the normal
+/// modes and eigenvalues, the stability; exact values printed in the model file's language.
+py::dict modes(LoadedModel& m, const std::vector<std::string>& set, const std::vector<std::vector<std::string>>& at,
+               const std::vector<std::string>& momentum, const std::vector<std::string>& inputs) {
+    ModesOptions options;
+    options.set = si_map(m, set, false, "set");
+    for (const auto& guess : at) options.at.push_back(si_map(m, guess, true, "at"));
+    for (const std::string& p : momentum) options.momentum.insert(sim::parse_assignment(p, "momentum"));  // SI
+    options.inputs = inputs;
+    ModesResult r;
+    try {
+        r = small_oscillations(m.model(), m.equations(), options);
+    } catch (const ModesError& e) {
+        throw sim::UsageError(e.what());
+    }
+    codegen::SymbolTable table = codegen::symbol_table(m.model());
+    int k = 0;
+    for (const auto& [symbol, latex] : r.momentum_symbols) {
+        table.info.push_back({codegen::SymbolKind::Constant, ++k, symbol.get_name(), symbol.get_name(), latex, ""});
+        table.exprs.push_back(symbol);
+    }
+    codegen::MathPrinter printer(table);
+    auto text = [&printer](const std::optional<GiNaC::ex>& e) -> py::object {
+        if (!e) return py::none();
+        return py::str(printer.print(*e, codegen::MathStyle::Text));
+    };
+    py::list equilibria;
+    for (const Equilibrium& e : r.equilibria) {
+        py::dict d;
+        d["q"] = e.q;
+        py::list exact;
+        for (const auto& x : e.exact) exact.append(text(x));
+        d["exact"] = exact;
+        d["M"] = matrix(e.M);
+        d["K"] = matrix(e.K);
+        d["C"] = matrix(e.C);
+        d["G"] = matrix(e.G);
+        d["A"] = matrix(e.A);
+        d["B"] = matrix(e.B);
+        d["multipliers"] = e.multipliers;
+        d["tangent"] = matrix(e.tangent);
+        py::list normal_modes;
+        for (const NormalMode& mode : e.modes) normal_modes.append(py::make_tuple(mode.omega2, text(mode.omega2_exact), mode.shape));
+        d["modes"] = normal_modes;
+        d["eigenvalues"] = e.eigenvalues;
+        d["stability"] = std::string(stability_name(e.stability));
+        d["growth_rate"] = e.growth_rate;
+        d["gyroscopic"] = e.gyroscopic;
+        d["damped"] = e.damped;
+        equilibria.append(d);
+    }
+    py::dict d;
+    d["coordinates"] = r.coordinates;
+    d["reduced"] = r.reduced;
+    d["constraints"] = r.constraints;
+    d["V_eff"] = printer.print(r.V_eff, codegen::MathStyle::Text);
+    d["equilibria"] = equilibria;
+    d["notes"] = r.notes;
+    return d;
+}
+
 py::dict check(LoadedModel& m, const std::string& text, const std::string& path,
                const std::vector<std::string>& sections, const std::vector<std::pair<std::string, double>>& set) {
     const checker::Derivation derivation = checker::parse_derivation(text, path);
@@ -612,10 +702,18 @@ PYBIND11_MODULE(_eomgen, m) {
              py::arg("atol"), py::arg("dt"), py::arg("max_steps"), py::arg("set"), py::arg("init"), py::arg("until"),
              py::arg("project_initial"), py::arg("switch_events"), py::arg("threads"), py::arg("use_cache"))
         .def("rhs", &rhs, py::arg("t"), py::arg("x"), py::arg("set"), py::arg("use_cache"))
+        .def("modes", &modes, py::arg("set"), py::arg("at"), py::arg("momentum"), py::arg("inputs"))
         .def("jacobian", &jacobian, py::arg("t"), py::arg("x"), py::arg("set"), py::arg("use_cache"))
         .def("shared_object", &LoadedModel::shared_object, py::arg("use_cache"))
         .def("check", &check, py::arg("text"), py::arg("path"), py::arg("sections"), py::arg("set"));
     m.def("read_file", [](const std::string& path) { return py::bytes(eomgen::read_model_file(path)); },
           "The bytes of a model file (ModelError when unreadable).");
+    m.def("family_text", [](const std::string& spec) {
+        try {
+            return eomgen::family_model_text(eomgen::parse_family_spec(spec));
+        } catch (const std::invalid_argument& e) {
+            throw eomgen::sim::UsageError(std::string("family: ") + e.what());
+        }
+    }, "The model file of an n-link family, e.g. \"pendulum:n=8\" (eomgen generate --family).");
     m.def("cache_directory", [] { return eomgen::cli::cache_directory().string(); });
 }

@@ -1,5 +1,6 @@
 /** @file small_oscillations.cpp  Equilibria, linearization, normal modes, stability (small_oscillations.hpp). */
 #include "mechanics/small_oscillations.hpp"
+#include "model/names.hpp"
 
 #include "mechanics/quantity_units.hpp"
 
@@ -671,13 +672,21 @@ const char* stability_name(Stability s) {
     return "?";
 }
 
+/// "; did you mean 'l1'?" for a parameter name close to `name`, else "".
+static std::string parameter_hint(const Model& model, const std::string& name) {
+    std::vector<std::string> names;
+    for (const Parameter& p : model.parameters) names.push_back(p.name);
+    const std::string closest = closest_name(name, names);
+    return closest.empty() ? "" : "; did you mean '" + closest + "'?";
+}
+
 ModesResult small_oscillations(const Model& model, const Equations& eq_in, const ModesOptions& options) {
     exmap fixed;  // the parameters --set gives: a term that vanishes at their values does not count
     for (const auto& entry : options.set) {
         const std::string& name = entry.first;  // not a structured binding: clang 14 refuses one in a lambda
         const auto it = std::find_if(model.parameters.begin(), model.parameters.end(),
                                      [&](const Parameter& p) { return p.name == name; });
-        if (it == model.parameters.end()) throw ModesError("--set " + name + ": no such parameter");
+        if (it == model.parameters.end()) throw ModesError("--set " + name + ": no such parameter" + parameter_hint(model, name));
         fixed[it->symbol] = GiNaC::numeric(exact(entry.second));
     }
     // Explicit time, decided as every command decides it (mechanics/time_dependence.hpp); the equations are then
@@ -688,8 +697,9 @@ ModesResult small_oscillations(const Model& model, const Equations& eq_in, const
     for (const std::string& name : options.inputs) {
         const auto it = std::find_if(model.parameters.begin(), model.parameters.end(),
                                      [&](const Parameter& p) { return p.name == name; });
-        if (it == model.parameters.end()) throw ModesError("--input " + name + ": no such parameter (an input is a "
-                                                           "parameter of the model, e.g. a torque in [forces])");
+        if (it == model.parameters.end())
+            throw ModesError("--input " + name + ": no such parameter" + parameter_hint(model, name) +
+                             " (an input is a parameter of the model, e.g. a torque in [forces])");
         inputs.push_back(it->symbol);
     }
 

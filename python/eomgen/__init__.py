@@ -16,6 +16,7 @@ with file:line:col), UsageError, SimulationError, CompileError, CacheError, Chec
 
 from dataclasses import dataclass, field
 import errno
+import math
 import os
 
 import numpy as np
@@ -24,7 +25,7 @@ from ._eomgen import (CacheError, CheckError, CompileError, Error, LoadedModel, 
                       UsageError)
 from . import _eomgen
 
-__all__ = ["load", "loads", "check", "Model", "Solution", "Ensemble", "Equations", "CheckResult", "EquationCheck",
+__all__ = ["load", "loads", "family", "check", "Model", "Solution", "Ensemble", "Modes", "Equilibrium", "NormalMode", "Equations", "CheckResult", "EquationCheck",
            "cache_directory", "Error", "ModelError", "UsageError", "SimulationError", "CompileError",
            "CacheError", "CheckError"]
 
@@ -45,6 +46,13 @@ def loads(text, name="model"):
     if not isinstance(text, str):
         raise TypeError("loads: a model file's text (str), not " + type(text).__name__)
     return Model(text, "<string>", name)
+
+
+def family(spec):
+    """The model of an n-link planar chain, as `eomgen generate --family SPEC` makes it: "pendulum:n=8" (point masses
+    on massless links) or "rods:n=8" (uniform rods); coordinates theta1..thetan, parameters m1..mn, l1..ln, g."""
+    text = _eomgen.family_text(str(spec))
+    return Model(text, "--family " + str(spec), "")
 
 
 def cache_directory():
@@ -230,6 +238,17 @@ class Model:
         return self._m.jacobian(np.asarray(t, dtype=float), np.asarray(x, dtype=float), _si_values(set, "set"),
                                 bool(cache))
 
+    def modes(self, set=None, at=None, momentum=None, inputs=None):
+        """What `eomgen modes` finds: the equilibria (exact where the equations can be solved, else from the guesses
+        `at`, a dict or a list of dicts of coordinates, the initial state and a scan), the linearization about each
+        (M, K, C, G; A and B of dx/dt = A x + B u for the parameters named in `inputs`), the normal modes, the
+        eigenvalues and the stability. `set` and `at` in declared units like simulate's; `momentum` ({"p_phi": 1.2},
+        SI) reduces a cyclic coordinate away (Routh). Returns a Modes."""
+        guesses = [] if at is None else [at] if hasattr(at, "items") else list(at)
+        r = self._m.modes(_assignments(set, "set"), [_assignments(g, "at") for g in guesses],
+                          _assignments(momentum, "momentum"), [str(i) for i in (inputs or [])])
+        return Modes(r)
+
     @property
     def shared_object(self):
         """The path of the compiled model's shared object in the cache (compiled on first use): its functions as a
@@ -318,6 +337,73 @@ class Solution:
         axes[-1].set_xlabel("t [s]")
         fig.suptitle(self.model.title or self.model.name)
         return fig
+
+
+@dataclass(frozen=True)
+class NormalMode:
+    """K0 a = omega^2 M0 a: omega2 (negative where the mode grows), in the parameters where it factors (text), and
+    the shape a over the coordinates that remain, scaled to its largest component 1."""
+    omega2: float
+    omega2_exact: str
+    shape: np.ndarray
+
+    @property
+    def omega(self):
+        """The angular frequency sqrt(omega2) (NaN where omega2 < 0: the mode grows)."""
+        return math.sqrt(self.omega2) if self.omega2 >= 0 else float("nan")
+
+
+@dataclass(frozen=True)
+class Equilibrium:
+    """One equilibrium and the linearization about it (docs/modes.md)."""
+    q: dict              # coordinate -> value there (SI)
+    exact: dict          # coordinate -> its value in the parameters (text), None where only a number was found
+    M: np.ndarray
+    K: np.ndarray
+    C: np.ndarray
+    G: np.ndarray
+    A: np.ndarray        # dx/dt = A x + B u, x = [q, q']
+    B: np.ndarray
+    multipliers: list    # of the constraints there
+    tangent: np.ndarray  # the constraints' tangent space (columns); the identity without constraints
+    modes: list          # NormalMode
+    eigenvalues: np.ndarray
+    stability: str       # "stable", "marginally stable", "unstable", "gyroscopically stabilized"
+    growth_rate: float
+    gyroscopic: bool
+    damped: bool
+
+
+class Modes:
+    """The equilibria of a model and the small oscillations about each (Model.modes)."""
+
+    def __init__(self, r):
+        self.coordinates = list(r["coordinates"])
+        self.reduced = list(r["reduced"])
+        self.constraints = list(r["constraints"])
+        self.V_eff = r["V_eff"]
+        self.notes = list(r["notes"])
+        self.equilibria = []
+        for e in r["equilibria"]:
+            self.equilibria.append(Equilibrium(
+                q=dict(zip(self.coordinates, e["q"])), exact=dict(zip(self.coordinates, e["exact"])),
+                M=e["M"], K=e["K"], C=e["C"], G=e["G"], A=e["A"], B=e["B"], multipliers=list(e["multipliers"]),
+                tangent=e["tangent"], modes=[NormalMode(w2, exact, np.array(shape)) for w2, exact, shape in e["modes"]],
+                eigenvalues=np.array(e["eigenvalues"], dtype=complex), stability=e["stability"],
+                growth_rate=e["growth_rate"], gyroscopic=e["gyroscopic"], damped=e["damped"]))
+
+    def __iter__(self):
+        return iter(self.equilibria)
+
+    def __len__(self):
+        return len(self.equilibria)
+
+    def __getitem__(self, k):
+        return self.equilibria[k]
+
+    def __repr__(self):
+        return "<eomgen.Modes: {} equilibria ({})>".format(
+            len(self.equilibria), ", ".join(e.stability for e in self.equilibria))
 
 
 class Ensemble:

@@ -194,6 +194,34 @@ def test_the_jacobians_against_central_differences():
     np.testing.assert_array_equal(J1, J[2])
 
 
+def test_modes_of_the_double_pendulum_and_the_jacobian_at_rest():
+    m = eomgen.load(os.path.join(ROOT, "examples", "double_pendulum.toml"))
+    r = m.modes()
+    assert r.coordinates == ["th1", "th2"] and len(r) == 4
+    down = r[0]
+    assert down.q == {"th1": 0.0, "th2": 0.0} and down.exact == {"th1": "0", "th2": "0"}
+    assert down.stability == "stable" and [e.stability for e in r][1:] == ["unstable"] * 3
+    g = m.parameters["g"]  # m1 = m2, l1 = l2 = 1: omega^2 = (2 -+ sqrt 2) g
+    np.testing.assert_allclose([mode.omega2 for mode in down.modes], [(2 - math.sqrt(2)) * g, (2 + math.sqrt(2)) * g],
+                               rtol=1e-12)
+    np.testing.assert_allclose(down.modes[0].shape, [1 / math.sqrt(2), 1], rtol=1e-12)
+    assert "sqrt" in down.modes[0].omega2_exact
+    np.testing.assert_allclose(down.M, [[2, 1], [1, 1]], rtol=1e-15)
+    J, _ = m.jacobian(0.0, np.zeros(4))
+    np.testing.assert_allclose(down.A, J, atol=1e-12)  # two routes to the linearization: symbolic and compiled
+    with pytest.raises(eomgen.UsageError, match="did you mean 'l1'"):
+        m.modes(set={"ll1": 2.0})
+
+
+def test_a_family_from_python():
+    m = eomgen.family("pendulum:n=3")
+    assert m.name == "pendulum_3" and m.coordinates == ["theta1", "theta2", "theta3"]
+    sol = m.simulate(1.0, init={"theta1": 0.3})
+    assert sol.max_drift < 1e-9
+    with pytest.raises(eomgen.UsageError, match="family"):
+        eomgen.family("pendulum:n=0")
+
+
 def test_rhs_from_threads_gives_the_same_rows(pendulum):
     x = np.random.default_rng(3).uniform(-3, 3, size=(20000, 2))
     expected = pendulum.rhs(0.0, x)
