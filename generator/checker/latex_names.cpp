@@ -1,0 +1,264 @@
+/** @file latex_names.cpp  The parser's names: accents, subscripts, primes, and what a name stands for
+ * (latex_grammar.hpp). */
+#include "checker/latex_grammar.hpp"
+
+#include "model/nonsmooth.hpp"
+
+#include "checker/latex_normalize.hpp"
+#include "checker/units.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+namespace eomgen::checker::parsing {
+
+bool Parser::starts_name(const Token* t) const {
+    if (!t) return false;
+    if (t->kind == Tok::Letter) return true;
+    if (t->kind != Tok::Word) return false;
+    const std::string w = t->text.substr(1);
+    return greek_letters().count(w) ||
+           is_one_of(t->text,
+                     {"\\dot",      "\\ddot",    "\\dddot",     "\\mathbf",         "\\boldsymbol",
+                      "\\bm",       "\\vec",     "\\hat",       "\\underline",      "\\bar",
+                      "\\tilde",    "\\mathcal", "\\mathscr",   "\\mathfrak",       "\\mathbb",
+                      "\\overline", "\\widehat", "\\widetilde", "\\overrightarrow", "\\check",
+                      "\\breve",    "\\text",    "\\textrm",    "\\mathrm",         "\\mathit",
+                      "\\mbox",     "\\textit",  "\\textbf",    "\\textnormal",     "\\mathsf",
+                      "\\mathtt",   "\\textsf"});
+}
+
+/// Reads a name at pos_ into n (accents, base, subscripts, primes). False when there is none.
+/// A `^{\prime 2}` leaves the exponent 2 in pending_power_.
+/// The name in the braces of the command at token `at` (\dot{x}, \mathbf{r}, \bar{m}); moves past it.
+NameParts Parser::argument_name(std::size_t at, const char* what) {
+    ++pos_;
+    const auto r = argument_range(t_[at].text);
+    NameParts inner;
+    within(
+        r.first, r.second,
+        [&] {
+            if (!read_name(inner)) fail(r.first, t_[at].text + " of an expression is not read");
+            return 0;
+        },
+        what);
+    return inner;
+}
+
+bool Parser::read_name(NameParts& n) {
+    const Token* t = peek();
+    if (!t) return false;
+    const std::size_t at = pos_;
+    if (t->kind == Tok::Letter) {
+        n.base = t->text;
+        ++pos_;
+    } else if (t->kind == Tok::Word) {
+        const std::string w = t->text.substr(1);
+        if (greek_letters().count(w)) {
+            n.base = "\\" + normal_greek(w);
+            ++pos_;
+            // \Delta t, \delta x: one name, an increment, not a product.
+            const Token* next = peek();
+            if ((w == "Delta" || w == "delta") && next && next->kind == Tok::Letter) {
+                n.base += " " + next->text;
+                ++pos_;
+            }
+        } else if (w == "dot" || w == "ddot" || w == "dddot") {
+            const int d = w == "dot" ? 1 : (w == "ddot" ? 2 : 3);
+            const NameParts inner = argument_name(at, "the accent");
+            n = inner;
+            n.dots += d;
+        } else if (is_one_of(t->text, {"\\mathbf", "\\boldsymbol", "\\bm", "\\vec", "\\hat",
+                                       "\\underline", "\\overrightarrow", "\\widehat"})) {
+            const NameParts inner = argument_name(at, "the vector");
+            n.base = t_[at].text + "{" + inner.canonical() + "}";
+            n.kind = NameKind::Vector;
+        } else if (is_one_of(t->text, {"\\bar", "\\tilde", "\\mathcal", "\\mathscr", "\\mathfrak",
+                                       "\\mathbb", "\\overline", "\\widetilde", "\\check", "\\breve"})) {
+            const NameParts inner = argument_name(at, "the accent");
+            n.base = t_[at].text + "{" + inner.canonical() + "}";
+            n.kind = inner.kind;
+        } else if (takes_raw_argument(t->text) && t->text != "\\operatorname") {
+            const std::string content = trim(t->raw);
+            if (is_unit_command(t->text, t->raw)) {
+                n.base = "\\mathrm{" + content + "}";
+                n.kind = NameKind::Unit;
+            } else if (is_plain_word(content)) {
+                n.base = content;
+            } else {
+                return false;
+            }
+            ++pos_;
+        } else {
+            return false;
+        }
+    } else {
+        return false;
+    }
+    // Subscripts and primes, in any order: x_{a}', x'_{a}, x^{\prime}_{1}.
+    while (true) {
+        const Token* s = peek();
+        if (is_char(s, "_")) {
+            if (!n.sub.empty()) fail(pos_, "double subscript");
+            const std::size_t sat = pos_;
+            ++pos_;
+            const auto r = argument_range("'_'");
+            n.sub = subscript_text(r.first, r.second);
+            if (n.sub.empty()) fail(sat, "empty subscript");
+        } else if (is_char(s, "'")) {
+            ++n.primes;
+            ++pos_;
+        } else if (is_char(s, "^") && prime_superscript(n)) {
+            continue;
+        } else if (is_char(s, "^") && exponent_before_subscript(n)) {
+            continue;
+        } else {
+            break;
+        }
+    }
+    return true;
+}
+
+/// At '^': when the superscript starts with \prime, counts the primes into n and leaves any rest of the
+/// superscript (`^{\prime 2}`) as pending_power_. Returns false (pos_ unchanged) when it is an exponent.
+bool Parser::prime_superscript(NameParts& n) {
+    const std::size_t at = pos_;
+    const Token* a = peek_at(1);
+    if (!a) return false;
+    if (a->kind == Tok::Word && a->text == "\\prime") {
+        ++pos_;
+        ++pos_;
+        ++n.primes;
+        return true;
+    }
+    if (!(a->kind == Tok::Char && a->text == "{")) return false;
+    // pos_ at '^'; find the '{'
+    std::size_t open = pos_ + 1;
+    while (open < end_ && t_[open].space) ++open;
+    const std::size_t close = match_brace(open);
+    std::size_t q = open + 1;
+    int primes = 0;
+    while (q < close && t_[q].kind == Tok::Word && t_[q].text == "\\prime") {
+        ++primes;
+        ++q;
+    }
+    if (primes == 0) {
+        pos_ = at;
+        return false;
+    }
+    n.primes += primes;
+    if (q < close) {
+        if (has_pending_power_) fail(at, "double exponent");
+        pending_power_ = expr_in({q, close}, "the exponent");
+        has_pending_power_ = true;
+    }
+    pos_ = close + 1;
+    return true;
+}
+
+/// At '^': `x^{2}_{1}` (as many editors write x₁²): the exponent comes before the subscript. Leaves the
+/// exponent in pending_power_ and returns true when a subscript follows it and the name has none yet.
+bool Parser::exponent_before_subscript(const NameParts& n) {
+    if (!n.sub.empty()) return false;
+    std::size_t q = pos_ + 1;
+    while (q < end_ && t_[q].space) ++q;
+    if (q >= end_) return false;
+    const std::size_t after = is_char(&t_[q], "{") ? match_brace(q) + 1 : q + 1;
+    std::size_t u = after;
+    while (u < end_ && t_[u].space) ++u;
+    if (u >= end_ || !is_char(&t_[u], "_")) return false;
+    const std::size_t at = pos_;
+    if (has_pending_power_) fail(at, "double exponent");
+    ++pos_;
+    pending_power_ = superscript(at);
+    has_pending_power_ = true;
+    return true;
+}
+
+/// A subscript as canonical text: `\text {rod }` → rod, `x^{\prime}` → x', `1 x` → 1x.
+std::string Parser::subscript_text(std::size_t b, std::size_t e) const {
+    std::string s;
+    for (std::size_t q = b; q < e; ++q) {
+        const Token& t = t_[q];
+        if (t.space) continue;
+        if (t.kind == Tok::Word) {
+            if (t.text == "\\prime") {
+                s += "'";
+            } else if (!t.raw.empty() || takes_raw_argument(t.text)) {
+                std::string content = trim(t.raw);
+                content.erase(std::remove(content.begin(), content.end(), ' '), content.end());
+                s += content;
+            } else {
+                const std::string w = t.text.substr(1);
+                s += greek_letters().count(w) ? "\\" + normal_greek(w) : t.text;
+            }
+        } else if (t.kind == Tok::Char && (t.text == "{" || t.text == "}")) {
+            continue;
+        } else if (t.kind == Tok::Char && t.text == "^") {
+            continue;  // x_{a^{\prime}}: the prime is kept, the caret is noise
+        } else {
+            s += t.text;
+        }
+    }
+    return s;
+}
+
+/// The value of the name at pos_: known, d/dt of a known name, or a free name.
+GiNaC::ex Parser::name_value() {
+    const std::size_t at = pos_;
+    NameParts n;
+    has_pending_power_ = false;
+    if (!read_name(n)) fail(at, "unexpected " + describe(at));
+    // `e^{\alpha t}`: Euler's number raised to a power is the exponential, unless the model or the text
+    // gives e a meaning of its own (an eccentricity, a restitution coefficient).
+    if (n.base == "e" && n.sub.empty() && n.dots == 0 && n.primes == 0 && !ctx_.names.count("e")) {
+        if (has_pending_power_) {
+            has_pending_power_ = false;
+            return GiNaC::exp(pending_power_);
+        }
+        if (is_char(peek(), "^")) {
+            const std::size_t pat = pos_;
+            ++pos_;
+            return GiNaC::exp(superscript(pat));
+        }
+    }
+    GiNaC::ex v = resolve(n, at);
+    if (has_pending_power_) {
+        has_pending_power_ = false;
+        v = power(v, pending_power_, at);
+    }
+    return v;
+}
+
+GiNaC::ex Parser::resolve(const NameParts& n, std::size_t at) {
+    const std::string full = n.canonical();
+    auto it = ctx_.names.find(full);
+    if (it != ctx_.names.end()) return it->second;
+    if (n.dots > 0) {
+        auto base = ctx_.names.find(n.canonical(false));
+        if (base != ctx_.names.end()) {
+            GiNaC::ex v = base->second;
+            for (int i = 0; i < n.dots; ++i) v = ddt(v);
+            return v;
+        }
+    }
+    // \text{ml} where m and l are known: OCR'd products such as "2 \mathrm{ml}^{2}".
+    if (n.dots == 0 && n.sub.empty() && n.primes == 0 && n.kind == NameKind::Unknown &&
+        n.base.size() > 1 && is_plain_word(n.base)) {
+        bool all_known = true;
+        for (char c : n.base) all_known = all_known && ctx_.names.count(std::string(1, c));
+        if (all_known) {
+            GiNaC::ex v = 1;
+            for (char c : n.base) v *= ctx_.names.at(std::string(1, c));
+            return v;
+        }
+    }
+    side_.uses.push_back({full, offset_of(at)});
+    return ctx_.free_symbol(full, n.kind);
+}
+
+}  // namespace eomgen::checker::parsing

@@ -1,0 +1,177 @@
+/** @file latex_words.cpp  The parser's control words and functions: \sin, \dot, \text, \cdot, ...
+ * (latex_grammar.hpp). */
+#include "checker/latex_grammar.hpp"
+
+#include "model/nonsmooth.hpp"
+
+#include "checker/latex_normalize.hpp"
+#include "checker/units.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+namespace eomgen::checker::parsing {
+
+GiNaC::ex Parser::word(std::size_t at) {
+    const Token& t = t_[pos_];
+    const std::string w = t.text;
+    const std::string bare = w.substr(1);
+    if (w == "\\left") return left_right(at);
+    if (w == "\\{") return poisson_bracket(at);
+    if (w == "\\pi") {
+        ++pos_;
+        auto it = ctx_.names.find("\\pi");
+        return it != ctx_.names.end() ? it->second : GiNaC::ex(GiNaC::Pi);
+    }
+    if (w == "\\frac" || w == "\\dfrac" || w == "\\tfrac" || w == "\\cfrac") return fraction(at);
+    if (w == "\\sqrt") return square_root(at);
+    if (w == "\\int" || w == "\\intop") return integral(at);
+    if (is_function_name(bare)) {
+        ++pos_;
+        return function(bare, at);
+    }
+    if (w == "\\operatorname") {
+        std::string f = trim(t.raw);
+        f.erase(std::remove(f.begin(), f.end(), ' '), f.end());
+        if (f == "dot" || f == "ddot") {  // OCR: "\operatorname{dot} \phi" for \dot{\phi}
+            ++pos_;
+            NameParts n;
+            has_pending_power_ = false;
+            if (!read_name(n)) fail(at, "\\operatorname{" + f + "} of an expression is not read");
+            n.dots += f == "dot" ? 1 : 2;
+            GiNaC::ex v = resolve(n, at);
+            if (has_pending_power_) {
+                has_pending_power_ = false;
+                v = power(v, pending_power_, at);
+            }
+            return v;
+        }
+        if (is_function_name(f)) {
+            ++pos_;
+            return function(f, at);
+        }
+        fail(at, "the function '" + f + "' is not known");
+    }
+    if (w == "\\text" || w == "\\textrm" || w == "\\mathrm" || w == "\\mathit" || w == "\\mbox" ||
+        w == "\\textit" || w == "\\textbf" || w == "\\textnormal" || w == "\\mathsf" || w == "\\mathtt" ||
+        w == "\\textsf") {
+        const std::string content = trim(t.raw);
+        if (content == "d" && !frames_.empty() && !frames_.back().found) {
+            // \mathrm{d} x
+            return differential();
+        }
+        if (content.empty()) {
+            ++pos_;
+            return 1;
+        }
+        if (content == "sgn" || content == "sign") {  // \mathrm{sgn}(\dot x), \text{sign}(v)
+            ++pos_;
+            return function(content, at);
+        }
+        if (content.find_first_not_of(".,;: ") == std::string::npos) {  // `\text{. }`: the sentence's stop
+            std::size_t next = pos_ + 1;
+            while (next < end_ && t_[next].space) ++next;
+            if (next >= end_) {
+                ++pos_;
+                return 1;
+            }
+        }
+        if (is_plain_word(content) || is_unit_command(w, t.raw)) return name_value();
+        fail(at, "text '" + content + "' in a formula is not read");
+    }
+    if (starts_name(&t)) return name_value();
+    if (w == "\\partial")
+        fail(at, "a partial derivative outside \\frac{\\partial ...}{\\partial ...} is not read");
+    if (w == "\\begin") fail(at, "a matrix or array is not compared");
+    if (w == "\\sum" || w == "\\prod") fail(at, "sums and products (" + w + ") are not evaluated");
+    if (w == "\\lim") fail(at, "limits are not evaluated");
+    if (w == "\\infty") fail(at, "infinity is not compared");
+    if (w == "\\nabla") fail(at, "vector calculus (\\nabla) is not read");
+    if (is_one_of(w, {"\\dots", "\\ldots", "\\cdots", "\\vdots", "\\ddots"}))
+        fail(at, "an ellipsis is not read");
+    if (is_one_of(w, {"\\det", "\\max", "\\min", "\\sup", "\\inf", "\\arg", "\\deg", "\\dim", "\\ker",
+                      "\\Pr", "\\gcd"}))
+        fail(at, "the function '" + bare + "' is not read");
+    if (w == "\\%") {
+        ++pos_;
+        return GiNaC::numeric(1, 100);
+    }
+    if (w == "\\prime") fail(at, "a prime without a name");
+    fail(at, "the command " + w + " is not read");
+}
+
+GiNaC::ex Parser::function(const std::string& f, std::size_t at) {
+    // Optional power before the argument: \sin^{2} \alpha.
+    GiNaC::ex pw = 1;
+    bool has_pw = false;
+    if (is_char(peek(), "^")) {
+        const std::size_t pat = pos_;
+        ++pos_;
+        pw = superscript(pat);
+        has_pw = true;
+    }
+    const Token* t = peek();
+    if (!t || stops_expression(t) || is_char(t, "+") || is_char(t, "-"))
+        fail(at, "\\" + f + " needs an argument");
+    GiNaC::ex arg;
+    if (is_char(t, "(") || is_char(t, "[") || is_char(t, "{") || is_word(t, "\\left")) {
+        arg = primary();
+    } else {
+        // A bare argument is one factor, extended over a following time `t` (\cos \Omega t) or after a
+        // leading number (\sin 2\theta): the conventions of physics texts.
+        const bool leading_number = t->kind == Tok::Digit;
+        arg = factor();
+        while (true) {
+            const Token* n = peek();
+            const bool time_next = n && n->kind == Tok::Letter && n->text == "t" &&
+                                   !is_char(peek_at(1), "_") && !is_char(peek_at(1), "'");
+            if (time_next ||
+                (leading_number && starts_name(n) && !(n->kind == Tok::Letter && n->text == "d"))) {
+                arg = arg * factor();
+                if (!time_next) break;
+            } else {
+                break;
+            }
+        }
+    }
+    GiNaC::ex v;
+    if (f == "sin")
+        v = GiNaC::sin(arg);
+    else if (f == "cos")
+        v = GiNaC::cos(arg);
+    else if (f == "tan")
+        v = GiNaC::tan(arg);
+    else if (f == "cot")
+        v = GiNaC::cos(arg) / GiNaC::sin(arg);
+    else if (f == "sec")
+        v = 1 / GiNaC::cos(arg);
+    else if (f == "csc")
+        v = 1 / GiNaC::sin(arg);
+    else if (f == "exp")
+        v = GiNaC::exp(arg);
+    else if (f == "ln" || f == "log")
+        v = GiNaC::log(arg);
+    else if (f == "sinh")
+        v = GiNaC::sinh(arg);
+    else if (f == "cosh")
+        v = GiNaC::cosh(arg);
+    else if (f == "tanh")
+        v = GiNaC::tanh(arg);
+    else if (f == "coth")
+        v = GiNaC::cosh(arg) / GiNaC::sinh(arg);
+    else if (f == "arcsin" || f == "asin")
+        v = GiNaC::asin(arg);
+    else if (f == "arccos" || f == "acos")
+        v = GiNaC::acos(arg);
+    else if (f == "sgn" || f == "sign")
+        v = eomgen::sign(arg);  // the model language's sign (sign(0) = 0), real_abs's derivative
+    else
+        v = GiNaC::atan(arg);
+    return has_pw ? power(v, pw, at) : v;
+}
+
+}  // namespace eomgen::checker::parsing
