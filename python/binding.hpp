@@ -79,19 +79,18 @@ class LoadedModel {
         return **slot;
     }
 
+    /// The shared object loaded last (compiling it where the cache has none).
+    const std::string& shared_object(bool use_cache) {
+        table(false, use_cache);
+        return shared_object_;
+    }
+
   private:
     std::string text_, path_;
     Model model_;
     std::optional<Equations> equations_;
     std::optional<const ModelTable*> plain_, with_jacobian_;
     std::string shared_object_;
-
-  public:
-    /// The shared object loaded last (compiling it where the cache has none).
-    const std::string& shared_object(bool use_cache) {
-        table(false, use_cache);
-        return shared_object_;
-    }
 };
 
 /// The lock an integration holds: TableModel's table is one per process.
