@@ -8,6 +8,21 @@
 
 namespace eomgen::python {
 
+/// How many states `x` holds (shape (N, 2n) or one state (2n,)), with `t` one time or one per state; UsageError
+/// naming `what` otherwise.
+static py::ssize_t state_rows(const LoadedModel& m, const py::array_t<double, py::array::c_style | py::array::forcecast>& t,
+                              const py::array_t<double, py::array::c_style | py::array::forcecast>& x, const char* what) {
+    const py::ssize_t nx = 2 * py::ssize_t(m.model().dof());
+    if ((x.ndim() != 1 && x.ndim() != 2) || x.shape(x.ndim() - 1) != nx)
+        throw sim::UsageError(std::string(what) + ": x must have shape (" + std::to_string(nx) + ",) or (N, " +
+                              std::to_string(nx) + "): q then q' of " + m.model().name);
+    const py::ssize_t rows = x.ndim() == 2 ? x.shape(0) : 1;
+    if (t.size() != 1 && t.size() != rows)
+        throw sim::UsageError(std::string(what) + ": t must be one time or one per state (" + std::to_string(rows) +
+                              "), not " + std::to_string(t.size()));
+    return rows;
+}
+
 /// A parameter block of `table` with the defaults, then `set` (NAME=VALUE in SI).
 std::vector<std::max_align_t> parameter_block(const ModelTable& table, const std::vector<std::pair<std::string, double>>& set) {
     std::vector<std::max_align_t> block((table.params_size + sizeof(std::max_align_t) - 1) / sizeof(std::max_align_t) + 1);
@@ -27,13 +42,7 @@ py::array_t<double> rhs(LoadedModel& m, py::array_t<double, py::array::c_style |
                         const std::vector<std::pair<std::string, double>>& set, bool use_cache) {
     const ModelTable& table = m.table(false, use_cache);
     const py::ssize_t nx = 2 * py::ssize_t(table.nq);
-    if ((x.ndim() != 1 && x.ndim() != 2) || x.shape(x.ndim() - 1) != nx)
-        throw sim::UsageError("rhs: x must have shape (" + std::to_string(nx) + ",) or (N, " + std::to_string(nx) +
-                              "): q then q' of " + m.model().name);
-    const py::ssize_t rows = x.ndim() == 2 ? x.shape(0) : 1;
-    if (t.size() != 1 && t.size() != rows)
-        throw sim::UsageError("rhs: t must be one time or one per state (" + std::to_string(rows) + "), not " +
-                              std::to_string(t.size()));
+    const py::ssize_t rows = state_rows(m, t, x, "rhs");
     const std::vector<std::max_align_t> params = parameter_block(table, set);
     py::array_t<double> out(x.ndim() == 2 ? std::vector<py::ssize_t>{rows, nx} : std::vector<py::ssize_t>{nx});
     const double* tp = t.data();
@@ -73,13 +82,7 @@ py::tuple jacobian(LoadedModel& m, py::array_t<double, py::array::c_style | py::
                    const std::vector<std::pair<std::string, double>>& set, bool use_cache) {
     const ModelTable& table = m.table(true, use_cache);
     const py::ssize_t nx = 2 * py::ssize_t(table.nq), np_ = table.n_params;
-    if ((x.ndim() != 1 && x.ndim() != 2) || x.shape(x.ndim() - 1) != nx)
-        throw sim::UsageError("jacobian: x must have shape (" + std::to_string(nx) + ",) or (N, " +
-                              std::to_string(nx) + "): q then q' of " + m.model().name);
-    const py::ssize_t rows = x.ndim() == 2 ? x.shape(0) : 1;
-    if (t.size() != 1 && t.size() != rows)
-        throw sim::UsageError("jacobian: t must be one time or one per state (" + std::to_string(rows) + "), not " +
-                              std::to_string(t.size()));
+    const py::ssize_t rows = state_rows(m, t, x, "jacobian");
     const std::vector<std::max_align_t> params = parameter_block(table, set);
     std::vector<py::ssize_t> jshape{nx, nx}, pshape{nx, np_};
     if (x.ndim() == 2) {
