@@ -58,74 +58,146 @@ py::array_t<double> matrix(const std::vector<double>& values, std::size_t rows, 
     return a;
 }
 
+namespace {
+
+/// A run's samples as the module returns them, gathered while the driver's lock is held.
+struct Samples {
+    std::vector<double> t, x, derived;
+    std::vector<std::pair<std::string, std::string>> columns;  ///< the derived columns: name, unit
+    /// With sensitivities: per sample the columns' S (nx × k), Y (outputs × k), L (multipliers × k), row-major.
+    std::vector<double> S, Y, L;
+    std::size_t nx = 0, k = 0, n_outputs = 0, n_multipliers = 0;
+};
+
+/// Appends one sample: t, x and the derived columns at (t, x).
+void add_sample(Samples& out, const TableModel::Params& params, double t, const Eigen::VectorXd& x, bool with_work,
+                double work) {
+    out.t.push_back(t);
+    out.x.insert(out.x.end(), x.data(), x.data() + x.size());
+    const std::vector<double> row = sim::derived_values<TableModel>(params, t, x, with_work, work);
+    out.derived.insert(out.derived.end(), row.begin(), row.end());
+}
+
+/// Appends a column-major matrix row by row.
+void add_rows(std::vector<double>& out, const Eigen::MatrixXd& m) {
+    for (Eigen::Index i = 0; i < m.rows(); ++i)
+        for (Eigen::Index j = 0; j < m.cols(); ++j) out.push_back(m(i, j));
+}
+
+}  // namespace
+
 /// One integration as `eomgen run` makes it, the samples returned as arrays: t, x (the state: q then q'), the
-/// derived columns (sample_csv.hpp: energy, work, conserved quantities, residuals, multipliers, outputs).
+/// derived columns (sample_csv.hpp: energy, work, conserved quantities, residuals, multipliers, outputs); with
+/// `sensitivities` (as --sensitivities: parameters, x0:STATE) S = dx/d(columns) beside the state
+/// (sensitivity_run.hpp), with the outputs' and multipliers' and an event time's.
 py::dict simulate(LoadedModel& m, double t_end, const std::string& method, double rtol, double atol, double dt,
                   int samples, std::size_t max_steps, const std::vector<std::string>& set,
                   const std::vector<std::string>& init, const std::string& until, bool project_initial,
-                  bool switch_events, bool use_cache) {
+                  bool switch_events, const std::vector<std::string>& sensitivities, bool use_cache) {
     sim::Options o = run_options(m, t_end, method, rtol, atol, dt, samples, max_steps, set, init, until,
                                  project_initial, switch_events);
-    const ModelTable& table = m.table(method == "radau5", use_cache);  // derives and compiles, holding the GIL
-    sim::Trajectory<TableModel> r;
-    std::vector<std::string> state_names, state_units;
-    std::string time_unit;
-    std::vector<std::pair<std::string, std::string>> columns;
-    std::vector<double> x, derived;
+    o.sensitivities = sensitivities;
+    // Derives and compiles, holding the GIL; the Jacobians for radau5 and for the sensitivities.
+    const ModelTable& table = m.table(method == "radau5" || !sensitivities.empty(), use_cache);
+    Samples out;
+    double t_final = 0, h0 = 0, max_drift = 0, max_imbalance = 0;
+    std::string stopped_by, time_unit;
+    std::vector<std::string> state_names, state_units, labels;
+    std::vector<std::pair<std::string, std::vector<double>>> event_dt;  // an event's name, dt/d(columns)
     std::vector<double> parameter_values;
     std::vector<std::string> parameter_names;
     {
         py::gil_scoped_release release;
         std::lock_guard<std::mutex> lock(driver_lock());
         TableModel::bind(table);
-        sim::check_method_for<TableModel>(o);
-        TableModel::Params params;
-        TableModel::State x0 = TableModel::default_state();
-        sim::apply_settings<TableModel>(o, params, x0);
-        const auto events = sim::until_events<TableModel>(o);
-        r = sim::simulate<TableModel>(o, params, x0, events, true, nullptr);
-        const bool with_work = !r.work.empty() && r.work.size() == r.samples.size();
-        columns = sim::derived_columns<TableModel>(with_work);
-        for (std::size_t k = 0; k < r.samples.size(); ++k) {
-            const auto& s = r.samples[k];
-            x.insert(x.end(), s.x.data(), s.x.data() + s.x.size());
-            const std::vector<double> row =
-                sim::derived_values<TableModel>(params, s.t, s.x, with_work, with_work ? r.work[k] : 0.0);
-            derived.insert(derived.end(), row.begin(), row.end());
+        if (sensitivities.empty()) {
+            sim::check_method_for<TableModel>(o);
+            TableModel::Params params;
+            TableModel::State x0 = TableModel::default_state();
+            sim::apply_settings<TableModel>(o, params, x0);
+            const sim::Trajectory<TableModel> r =
+                sim::simulate<TableModel>(o, params, x0, sim::until_events<TableModel>(o), true, nullptr);
+            const bool with_work = !r.work.empty() && r.work.size() == r.samples.size();
+            out.columns = sim::derived_columns<TableModel>(with_work);
+            for (std::size_t k = 0; k < r.samples.size(); ++k)
+                add_sample(out, params, r.samples[k].t, r.samples[k].x, with_work, with_work ? r.work[k] : 0.0);
+            t_final = r.t;
+            stopped_by = r.stopped_by;
+            h0 = r.h0;
+            max_drift = r.max_drift;
+            max_imbalance = r.max_imbalance;
+            parameter_values = TableModel::param_values(params);
+        } else {
+            const sim::SensitivityRun<TableModel> run = sim::sensitivity_run<TableModel>(o);
+            const SensitivityResult& r = run.result;
+            out.columns = sim::derived_columns<TableModel>(false);
+            out.k = run.labels.size();
+            for (const auto& l : run.labels) labels.push_back(l.name);
+            for (const SensitivitySample& sample : r.samples) {
+                add_sample(out, run.params, sample.t, sample.x, false, 0.0);
+                add_rows(out.S, sample.S);
+                add_rows(out.Y, sample.Y);
+                add_rows(out.L, sample.L);
+                out.n_outputs = std::size_t(sample.Y.rows());
+                out.n_multipliers = std::size_t(sample.L.rows());
+            }
+            for (const SensitivityEventHit& e : r.events)
+                event_dt.push_back({e.name, std::vector<double>(e.dt.data(), e.dt.data() + e.dt.size())});
+            t_final = r.t;
+            stopped_by = r.stopped_by;
+            // The energy's drift at the samples, as a plain run measures it (relative unless h starts at 0).
+            const std::size_t n_derived = out.columns.size();
+            if (!out.t.empty()) h0 = out.derived[0];  // the first derived column is the energy
+            for (std::size_t k = 0; k < out.t.size(); ++k)
+                max_drift = std::max(max_drift, std::abs(out.derived[k * n_derived] - h0));
+            if (std::abs(h0) >= 1e-12) max_drift /= std::abs(h0);
+            parameter_values = TableModel::param_values(run.params);
         }
         for (std::size_t i = 0; i < TableModel::state_names.size(); ++i) {
             state_names.push_back(TableModel::state_names[i]);
             state_units.push_back(eomgen::state_unit<TableModel>(i));
         }
+        out.nx = state_names.size();
         time_unit = eomgen::time_unit<TableModel>();
-        parameter_values = TableModel::param_values(params);
         parameter_names.assign(TableModel::param_names.begin(), TableModel::param_names.end());
     }
-    const std::size_t n = r.samples.size();
-    std::vector<double> t(n);
-    for (std::size_t k = 0; k < n; ++k) t[k] = r.samples[k].t;
+    const std::size_t n = out.t.size();
     py::dict d;
-    d["t"] = py::array_t<double>(py::ssize_t(n), t.data());
-    d["x"] = matrix(x, n, state_names.size());
+    d["t"] = py::array_t<double>(py::ssize_t(n), out.t.data());
+    d["x"] = matrix(out.x, n, out.nx);
     d["state_names"] = state_names;
     d["state_units"] = state_units;
     d["time_unit"] = time_unit;
-    d["derived"] = matrix(derived, n, columns.size());
+    d["derived"] = matrix(out.derived, n, out.columns.size());
     py::list names, units;
-    for (const auto& [name, unit] : columns) {
+    for (const auto& [name, unit] : out.columns) {
         names.append(name);
         units.append(unit);
     }
     d["derived_names"] = names;
     d["derived_units"] = units;
-    d["t_final"] = r.t;
-    d["stopped_by"] = r.stopped_by;
-    d["h0"] = r.h0;
-    d["max_drift"] = r.max_drift;
-    d["max_imbalance"] = r.max_imbalance;
+    d["t_final"] = t_final;
+    d["stopped_by"] = stopped_by;
+    d["h0"] = h0;
+    d["max_drift"] = max_drift;
+    d["max_imbalance"] = max_imbalance;
     py::dict params;
     for (std::size_t k = 0; k < parameter_names.size(); ++k) params[py::str(parameter_names[k])] = parameter_values[k];
     d["parameters"] = params;
+    if (!sensitivities.empty()) {
+        auto cube = [n, &out](const std::vector<double>& v, std::size_t rows) {
+            py::array_t<double> a(std::vector<py::ssize_t>{py::ssize_t(n), py::ssize_t(rows), py::ssize_t(out.k)});
+            std::copy(v.begin(), v.end(), a.mutable_data());
+            return a;
+        };
+        d["sensitivity_names"] = labels;
+        d["S"] = cube(out.S, out.nx);
+        d["S_outputs"] = cube(out.Y, out.n_outputs);
+        d["S_multipliers"] = cube(out.L, out.n_multipliers);
+        py::dict events;
+        for (const auto& [name, values] : event_dt) events[py::str(name)] = py::array_t<double>(py::ssize_t(values.size()), values.data());
+        d["event_dt"] = events;
+    }
     return d;
 }
 
@@ -134,12 +206,7 @@ double value_in_si(const LoadedModel& m, const std::string& name, double value, 
     std::ostringstream text;
     text.precision(17);
     text << name << "=" << value;
-    try {
-        const std::string si = cli::assignment_in_si(cli::declared_units(m.model()), text.str(), state, "sweep");
-        return std::stod(si.substr(si.find('=') + 1));
-    } catch (const std::invalid_argument& e) {
-        throw sim::UsageError(e.what());
-    }
+    return si_map(m, {text.str()}, state, "sweep").at(name);
 }
 
 /**

@@ -133,11 +133,12 @@ py::dict check(LoadedModel& m, const std::string& text, const std::string& path,
 
 // bind_simulation.cpp
 /// One integration as `eomgen run` makes it, the samples returned as arrays: t, x (the state: q then q'), the
-/// derived columns (sample_csv.hpp: energy, work, conserved quantities, residuals, multipliers, outputs).
+/// derived columns (sample_csv.hpp: energy, work, conserved quantities, residuals, multipliers, outputs); with
+/// `sensitivities` (as --sensitivities) S = dx/d(columns) beside the state, the outputs', multipliers', events'.
 py::dict simulate(LoadedModel& m, double t_end, const std::string& method, double rtol, double atol, double dt,
                   int samples, std::size_t max_steps, const std::vector<std::string>& set,
                   const std::vector<std::string>& init, const std::string& until, bool project_initial,
-                  bool switch_events, bool use_cache);
+                  bool switch_events, const std::vector<std::string>& sensitivities, bool use_cache);
 /**
  * An ensemble of members on `threads` threads (0: every core), member k with values(k, j) for names[j] (a parameter
  * or a state's initial value, in its declared unit) on top of the model's defaults and `set`, `init`; each member

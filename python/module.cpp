@@ -88,7 +88,8 @@ PYBIND11_MODULE(_eomgen, m) {
         .def("latex", &latex)
         .def("simulate", &simulate, py::arg("t_end"), py::arg("method"), py::arg("rtol"), py::arg("atol"),
              py::arg("dt"), py::arg("samples"), py::arg("max_steps"), py::arg("set"), py::arg("init"),
-             py::arg("until"), py::arg("project_initial"), py::arg("switch_events"), py::arg("use_cache"))
+             py::arg("until"), py::arg("project_initial"), py::arg("switch_events"), py::arg("sensitivities"),
+             py::arg("use_cache"))
         .def("sweep", &sweep, py::arg("names"), py::arg("values"), py::arg("t_end"), py::arg("method"), py::arg("rtol"),
              py::arg("atol"), py::arg("dt"), py::arg("max_steps"), py::arg("set"), py::arg("init"), py::arg("until"),
              py::arg("project_initial"), py::arg("switch_events"), py::arg("threads"), py::arg("use_cache"))

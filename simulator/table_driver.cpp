@@ -14,6 +14,7 @@ template Trajectory<TableModel> simulate<TableModel>(const Options&, const Table
                                                      const TableModel::State&,
                                                      const std::vector<eomgen::Event<TableModel::State>>&, bool,
                                                      std::ostream*);
+template SensitivityRun<TableModel> sensitivity_run<TableModel>(const Options&);
 
 }  // namespace sim
 }  // namespace eomgen

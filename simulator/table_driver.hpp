@@ -9,6 +9,7 @@
 
 #include "eomgen/ensemble.hpp"
 #include "eomgen/model_table.hpp"
+#include "eomgen/sensitivity_run.hpp"
 #include "eomgen/simulation.hpp"
 
 #include <cstddef>
@@ -28,6 +29,7 @@ extern template Trajectory<TableModel> simulate<TableModel>(const Options&, cons
                                                             const TableModel::State&,
                                                             const std::vector<eomgen::Event<TableModel::State>>&,
                                                             bool, std::ostream*);
+extern template SensitivityRun<TableModel> sensitivity_run<TableModel>(const Options&);
 
 }  // namespace sim
 }  // namespace eomgen

@@ -165,16 +165,22 @@ class Model:
         return self._m.latex()[1]
 
     def simulate(self, t_end=10.0, method="dopri5", rtol=1e-10, atol=1e-12, dt=0.0, samples=200, until=None,
-                 set=None, init=None, project_initial=False, max_steps=10_000_000, switch_events=True, cache=True):
+                 set=None, init=None, project_initial=False, max_steps=10_000_000, switch_events=True,
+                 sensitivities=None, cache=True):
         """Integrates from t = 0 to t_end (or the `until` event, e.g. "psi=-pi/2") as `eomgen run` does, with the
         same defaults, and returns a Solution of samples + 1 rows. `set` and `init` are dicts of values: a number
         is in the unit the model file declares for it (SI where it declares none), a string carries its own unit
         ({"alpha": "30 deg"}); `init` names states (q or q_dot). method: dopri5, dop853, adams, radau5, rk4 or
-        symplectic (the last two with dt). cache=False compiles afresh and keeps nothing."""
+        symplectic (the last two with dt). `sensitivities` (as `eomgen run --sensitivities`: parameter names and
+        "x0:STATE" for initial values) integrates S = dx/d(those) beside the state under the same error control
+        (dopri5, dop853, adams, radau5; docs/sensitivities.md): Solution.S and the rest. cache=False compiles
+        afresh and keeps nothing."""
+        if isinstance(sensitivities, str):
+            sensitivities = [sensitivities]
         r = self._m.simulate(float(t_end), str(method), float(rtol), float(atol), float(dt), int(samples),
                              int(max_steps), _assignments(set, "set"), _assignments(init, "init"),
                              "" if until is None else str(until), bool(project_initial), bool(switch_events),
-                             bool(cache))
+                             [str(c) for c in (sensitivities or [])], bool(cache))
         return Solution(self, r)
 
     def sweep(self, values, grid=True, t_end=10.0, method="dopri5", rtol=1e-10, atol=1e-12, dt=0.0, until=None,
@@ -288,6 +294,30 @@ class Solution:
         self.max_drift = r["max_drift"]
         self.max_imbalance = r["max_imbalance"]
         self.parameters = dict(r["parameters"])
+        # With sensitivities: S[k, i, c] = d x_i / d (column c) at sample k, and the same for the outputs and the
+        # multipliers; an event's dt*/d(column c).
+        self.sensitivity_names = list(r.get("sensitivity_names", []))
+        self.S = r.get("S")
+        self.S_outputs = r.get("S_outputs")
+        self.S_multipliers = r.get("S_multipliers")
+        self.event_dt = dict(r.get("event_dt", {}))
+
+    def sensitivity(self, of, wrt):
+        """d(of)/d(wrt) at every sample: `of` a state (psi, psi_dot), a declared output or lambda_<constraint>,
+        `wrt` one of the columns asked for ("theta", "psi(0)")."""
+        if self.S is None:
+            raise UsageError("no sensitivities: simulate(..., sensitivities=[...]) integrates them")
+        if wrt not in self.sensitivity_names:
+            raise KeyError("no sensitivity column {!r}; there are {}".format(wrt, ", ".join(self.sensitivity_names)))
+        c = self.sensitivity_names.index(wrt)
+        states = self.model.coordinates + [q + "_dot" for q in self.model.coordinates]
+        if of in states:
+            return self.S[:, states.index(of), c]
+        if of in self.model.outputs:
+            return self.S_outputs[:, self.model.outputs.index(of), c]
+        if of.startswith("lambda_") and of[7:] in self.model.constraints:
+            return self.S_multipliers[:, self.model.constraints.index(of[7:]), c]
+        raise KeyError("no state, output or multiplier {!r}".format(of))
 
     def __getitem__(self, name):
         try:

@@ -98,9 +98,21 @@ SensitivityResult integrate_sensitivities_by(const Options& o, const typename M:
     return r;
 }
 
-/// One run with sensitivities: what run() does, with S beside the state. Returns kExitOk; throws as run() does.
+/// A run with sensitivities, as integrated: the parameters it used, its columns, and S beside the state at every
+/// sample and event.
 template <class M>
-int run_sensitivities(const Options& o) {
+struct SensitivityRun {
+    typename M::Params params;
+    std::vector<SensitivityLabel> labels;
+    SensitivityResult result;
+};
+
+/// The integration of run_sensitivities() without its report: o's settings applied, o.sensitivities' columns
+/// checked, the state and S integrated to o.t_end (or the --until event), sampled at o.samples + 1 times. Throws
+/// UsageError for a bad option or column, SimulationError when the integration fails; writes nothing. What
+/// `eomgen run --sensitivities` prints and the Python module's simulate(sensitivities=...) returns.
+template <class M>
+SensitivityRun<M> sensitivity_run(const Options& o) {
     using State = typename M::State;
     check_options(o);
     if (!is_adaptive_method(o.method) && o.method != "radau5")
@@ -131,13 +143,24 @@ int run_sensitivities(const Options& o) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--sensitivities: ") + e.what());
     }
-    print_heading<M>(params, std::cout);
-    SensitivityResult r;
+    SensitivityRun<M> run{params, labels, {}};
     try {
-        r = integrate_sensitivities_by<M>(o, params, x0, o.t_end, columns, events, sample_times);
+        run.result = integrate_sensitivities_by<M>(o, params, x0, o.t_end, columns, events, sample_times);
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--sensitivities: ") + e.what());
     }
+    return run;
+}
+
+/// One run with sensitivities: what run() does, with S beside the state. Returns kExitOk; throws as run() does.
+template <class M>
+int run_sensitivities(const Options& o) {
+    using State = typename M::State;
+    const SensitivityRun<M> run = sensitivity_run<M>(o);
+    const typename M::Params& params = run.params;
+    const std::vector<SensitivityLabel>& labels = run.labels;
+    const SensitivityResult& r = run.result;
+    print_heading<M>(params, std::cout);
 
     std::cout << "method:  " << o.method << " with the sensitivities of " << labels.size() << " column"
               << (labels.size() == 1 ? "" : "s") << " under the same error control, rtol " << o.rtol << ", atol "

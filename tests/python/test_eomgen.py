@@ -82,6 +82,29 @@ def test_the_door_closes_when_the_closed_form_says(door):
                                rtol=1e-14)
 
 
+def test_sensitivities_equal_eomgen_run_and_the_closed_form(door, tmp_path):
+    sol = door.simulate(100.0, until="psi=-pi/2", sensitivities=["theta", "w", "x0:psi"])
+    assert sol.sensitivity_names == ["theta", "w", "psi(0)"] and sol.S.shape == (len(sol), 2, 3)
+    # The closing time T = c sqrt(w / (g sin theta)): dT/dtheta = -T cot(theta)/2, dT/dw = T/(2w).
+    T, theta, w = sol.t_final, 0.0234, 0.9
+    dt = sol.event_dt["psi=-pi/2"]
+    assert dt[0] == pytest.approx(-T / (2 * math.tan(theta)), rel=1e-9)
+    assert dt[1] == pytest.approx(T / (2 * w), rel=1e-9)
+    header, run = eomgen_run_csv(tmp_path, model_path("door"), "--t-end", "100", "--until", "psi=-pi/2",
+                                 "--sensitivities", "theta,w,x0:psi")
+    columns = {h.split(" [")[0]: run[:, k] for k, h in enumerate(header)}
+    np.testing.assert_array_equal(sol.t, columns["t"])
+    for c in sol.sensitivity_names:
+        for state in ("psi", "psi_dot"):
+            np.testing.assert_array_equal(sol.sensitivity(state, c), columns[f"d{state}/d{c}"])
+        for out in door.outputs:
+            np.testing.assert_array_equal(sol.sensitivity(out, c), columns[f"d{out}/d{c}"])
+    with pytest.raises(eomgen.UsageError, match="did you mean 'theta'"):
+        door.simulate(1.0, sensitivities=["thetta"])
+    with pytest.raises(eomgen.UsageError, match="error control"):
+        door.simulate(1.0, method="rk4", dt=0.01, sensitivities=["theta"])
+
+
 def test_values_in_declared_units_or_their_own(door):
     a = door.simulate(0.5, samples=10, set={"theta": "3 deg"})
     b = door.simulate(0.5, samples=10, set={"theta": math.radians(3)})
