@@ -48,18 +48,24 @@ fs::path generator_binary() {
     return fs::read_symlink("/proc/self/exe", ec);
 }
 
-/// The runtime's headers: beside an installed eomgen (<prefix>/bin/eomgen, <prefix>/include/eomgen/), in the
-/// source tree this eomgen was built from, else in the prefix the build installs to (an installed Python module).
+/// The runtime's headers: beside an installed eomgen (<prefix>/bin/eomgen or
+/// <prefix>/lib/python3.X/dist-packages/eomgen/_eomgen*.so, with <prefix>/include/eomgen/), else those of the source
+/// tree this eomgen was built from, else in the prefix the build installs to.
 const std::string& runtime_include_dir() {
     static const std::string dir = [] {
         std::error_code ec;
-        const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-        if (!ec) {
-            const fs::path installed = exe.parent_path().parent_path() / "include";
-            if (fs::exists(installed / "eomgen" / "model_table.hpp", ec)) return installed.string();
-        }
-        if (!fs::exists(fs::path(EOMGEN_RUNTIME_INCLUDE_DIR) / "eomgen" / "model_table.hpp", ec) &&
-            fs::exists(fs::path(EOMGEN_INSTALLED_INCLUDE_DIR) / "eomgen" / "model_table.hpp", ec))
+        const auto has_runtime = [&ec](const fs::path& include) {
+            return fs::exists(include / "eomgen" / "model_table.hpp", ec);
+        };
+        const auto ancestor = [](fs::path p, int levels) {
+            while (levels-- > 0) p = p.parent_path();
+            return p;
+        };
+        const fs::path exe = fs::read_symlink("/proc/self/exe", ec), module = generator_binary();
+        if (has_runtime(ancestor(exe, 2) / "include")) return (ancestor(exe, 2) / "include").string();
+        if (module != exe && has_runtime(ancestor(module, 5) / "include"))  // the Python module, installed
+            return (ancestor(module, 5) / "include").string();
+        if (!has_runtime(EOMGEN_RUNTIME_INCLUDE_DIR) && has_runtime(EOMGEN_INSTALLED_INCLUDE_DIR))
             return std::string(EOMGEN_INSTALLED_INCLUDE_DIR);
         return std::string(EOMGEN_RUNTIME_INCLUDE_DIR);
     }();
