@@ -2,17 +2,7 @@
  * differentials and integrals (latex_grammar.hpp). */
 #include "checker/latex_grammar.hpp"
 
-#include "model/nonsmooth.hpp"
-
-#include "checker/latex_normalize.hpp"
-#include "checker/units.hpp"
-
 #include <algorithm>
-#include <cmath>
-#include <cstring>
-#include <map>
-#include <set>
-#include <stdexcept>
 
 namespace eomgen::checker::parsing {
 

@@ -4,15 +4,8 @@
 
 #include "model/nonsmooth.hpp"
 
-#include "checker/latex_normalize.hpp"
-#include "checker/units.hpp"
-
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <map>
-#include <set>
-#include <stdexcept>
 
 namespace eomgen::checker::parsing {
 

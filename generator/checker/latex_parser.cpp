@@ -3,19 +3,10 @@
 #include "checker/latex_parser.hpp"
 #include "checker/latex_grammar.hpp"
 
-#include "model/nonsmooth.hpp"
-
 #include "checker/latex_normalize.hpp"
 #include "checker/latex_tokens.hpp"
-#include "checker/units.hpp"
 
 #include <algorithm>
-#include <cstring>
-#include <cctype>
-#include <cmath>
-#include <map>
-#include <set>
-#include <stdexcept>
 
 namespace eomgen::checker {
 

@@ -2,17 +2,10 @@
  * (latex_grammar.hpp). */
 #include "checker/latex_grammar.hpp"
 
+#include "checker/units.hpp"
 #include "model/nonsmooth.hpp"
 
-#include "checker/latex_normalize.hpp"
-#include "checker/units.hpp"
-
 #include <algorithm>
-#include <cmath>
-#include <cstring>
-#include <map>
-#include <set>
-#include <stdexcept>
 
 namespace eomgen::checker::parsing {
 
