@@ -60,35 +60,36 @@ def cache_directory():
     return _eomgen.cache_directory()
 
 
-def _assignments(values, what):
-    """{'l': 2, 'alpha': '45 deg'} as ['l=2', 'alpha=45 deg'] (a number with all its digits, in the declared unit
-    as on the command line; a string carries its own unit)."""
+def _is_number(value):
+    return isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool)
+
+
+def _items(values, what):
+    """The (name, value) pairs of a dict given for `what` (none for None); TypeError for anything else."""
     if values is None:
         return []
     if not hasattr(values, "items"):
         raise TypeError(what + ": a dict of NAME: value, not " + type(values).__name__)
+    return list(values.items())
+
+
+def _assignments(values, what):
+    """{'l': 2, 'alpha': '45 deg'} as ['l=2', 'alpha=45 deg'] (a number with all its digits, in the declared unit
+    as on the command line; a string carries its own unit)."""
     out = []
-    for name, value in values.items():
-        if isinstance(value, str):
-            text = value
-        elif isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool):
-            text = repr(float(value))
-        else:
+    for name, value in _items(values, what):
+        if not isinstance(value, str) and not _is_number(value):
             raise TypeError("{}: the value of {!r} must be a number or a string with a unit, not {}".format(
                 what, name, type(value).__name__))
-        out.append("{}={}".format(name, text))
+        out.append("{}={}".format(name, value if isinstance(value, str) else repr(float(value))))
     return out
 
 
 def _si_values(values, what):
     """{'l': 2.0} as [('l', 2.0)]: numbers in SI, for rhs() and check()."""
-    if values is None:
-        return []
-    if not hasattr(values, "items"):
-        raise TypeError(what + ": a dict of NAME: number, not " + type(values).__name__)
     out = []
-    for name, value in values.items():
-        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+    for name, value in _items(values, what):
+        if not _is_number(value):
             raise TypeError("{}: the value of {!r} must be a number (SI), not {}".format(
                 what, name, type(value).__name__))
         out.append((str(name), float(value)))
