@@ -27,9 +27,6 @@
 #ifndef EOMGEN_EIGEN_INCLUDE_DIR
 #error "EOMGEN_EIGEN_INCLUDE_DIR must name Eigen's include directory"
 #endif
-#ifndef EOMGEN_INSTALLED_INCLUDE_DIR
-#define EOMGEN_INSTALLED_INCLUDE_DIR "/usr/local/include"
-#endif
 
 namespace eomgen::cli {
 namespace fs = std::filesystem;
@@ -50,7 +47,7 @@ fs::path generator_binary() {
 
 /// The runtime's headers: beside an installed eomgen (<prefix>/bin/eomgen or
 /// <prefix>/lib/python3.X/dist-packages/eomgen/_eomgen*.so, with <prefix>/include/eomgen/), else those of the source
-/// tree this eomgen was built from, else in the prefix the build installs to.
+/// tree this eomgen was built from.
 const std::string& runtime_include_dir() {
     static const std::string dir = [] {
         std::error_code ec;
@@ -65,8 +62,6 @@ const std::string& runtime_include_dir() {
         if (has_runtime(ancestor(exe, 2) / "include")) return (ancestor(exe, 2) / "include").string();
         if (module != exe && has_runtime(ancestor(module, 5) / "include"))  // the Python module, installed
             return (ancestor(module, 5) / "include").string();
-        if (!has_runtime(EOMGEN_RUNTIME_INCLUDE_DIR) && has_runtime(EOMGEN_INSTALLED_INCLUDE_DIR))
-            return std::string(EOMGEN_INSTALLED_INCLUDE_DIR);
         return std::string(EOMGEN_RUNTIME_INCLUDE_DIR);
     }();
     return dir;
