@@ -184,6 +184,7 @@ py::dict check(LoadedModel& m, const std::string& text, const std::string& path,
     for (const checker::EquationCheck& c : report.equations) {
         py::dict r;
         r["verdict"] = std::string(checker::verdict_name(c.verdict));
+        r["role"] = std::string(checker::role_name(c.role));
         r["line"] = c.where.line;
         r["column"] = c.where.column;
         r["section"] = c.section;

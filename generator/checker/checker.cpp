@@ -14,6 +14,26 @@ const char* verdict_name(Verdict v) {
             return "not comparable";
         case Verdict::NotRead:
             return "not read";
+        case Verdict::NotJudged:
+            return "not judged";
+    }
+    return "";
+}
+
+const char* role_name(Role r) {
+    switch (r) {
+        case Role::Claim:
+            return "claim";
+        case Role::Definition:
+            return "definition";
+        case Role::Assumption:
+            return "assumption";
+        case Role::Condition:
+            return "condition";
+        case Role::Trial:
+            return "trial solution";
+        case Role::ChosenValue:
+            return "chosen value";
     }
     return "";
 }
@@ -225,7 +245,7 @@ void Checker::check_chain(const FullChain& c, std::vector<EquationCheck>& out) {
         Prepared p = prepare(c.sides[k]);
         comparable[k] = p.comparable() || is_part(c.sides[k].side->value);
     }
-    for (std::size_t k = 0; k + 1 < n; ++k) out.push_back(safe_check_link(c, k, k + 1, false));
+    for (std::size_t k = 0; k + 1 < n; ++k) out.push_back(check_link_noting_uses(c, k, k + 1, false));
     // Across sides that cannot be compared (an integral over a region, an unknown function): compare the
     // comparable sides on either side of them, so that a claim is not lost behind a step the checker cannot
     // read.
@@ -236,7 +256,7 @@ void Checker::check_chain(const FullChain& c, std::vector<EquationCheck>& out) {
             bool all_equal = true;
             for (std::size_t q = last; q < k; ++q)
                 all_equal = all_equal && c.relations[q] != Relation::Inequality;
-            if (all_equal) out.push_back(safe_check_link(c, last, k, true));
+            if (all_equal) out.push_back(check_link_noting_uses(c, last, k, true));
         }
         last = k;
     }
@@ -487,6 +507,7 @@ CheckReport Checker::run() {
         check_chain(c, report.equations);
     }
     apply_blames(report.equations);
+    apply_confirmations(report.equations);
     {  // never silent: a row with a relation that gave no equation is "not read", with the reason
         std::vector<const MathRow*> read;
         for (const Parsed& p : parsed) read.push_back(p.row);

@@ -261,9 +261,10 @@ class Checker : public Comparisons {
                         n.where = r.where;
                         n.section = r.section;
                         n.equation = r.equation;
-                        n.reason = "a definition: the text's $" + m.name + "$ is the " + m.noun + " here, not eomgen's $" +
-                                   m.name + "$; read so from line " + std::to_string(m.line + 1) +
-                                   " to the end of its section";
+                        not_judged(n, Role::Definition,
+                                   "a definition: the text's $" + m.name + "$ is the " + m.noun +
+                                       " here, not eomgen's $" + m.name + "$; read so from line " +
+                                       std::to_string(m.line + 1) + " to the end of its section");
                         return n;
                     }
             }
@@ -291,8 +292,9 @@ class Checker : public Comparisons {
                     n.where = r.where;
                     n.section = r.section;
                     n.equation = r.equation;
-                    n.reason = "a condition or a given value (after “" + cue +
-                               "”): it sets a value for what follows, not an equation of motion, and is not judged";
+                    not_judged(n, Role::Condition,
+                               "a condition or a given value (after “" + cue +
+                                   "”): it sets a value for what follows, not an equation of motion, and is not judged");
                     return n;
                 }
             }
@@ -323,6 +325,20 @@ class Checker : public Comparisons {
     /// A definition that two or more lines blame alike is the slip: it disagrees (corrected to what they need), and
     /// they are not comparable, pointing to it.
     void apply_blames(std::vector<EquationCheck>& equations);
+
+    // ----- definitions confirmed by their uses (definition_uses.cpp)
+    /// The rows of the text's definitions (`x_1 = l_1 \sin\theta_1`), by the file offset of the defined name.
+    std::map<std::size_t, SourcePos> definition_rows_;
+    /// The lines on which a comparison with one of eomgen's quantities agreed after putting a definition in.
+    std::map<std::size_t, std::set<int>> confirmed_by_;
+    /// A definition whose own row holds as an identity once earlier ones are put in (`\dot{x} = ...` after
+    /// `x = ...`): confirming it confirms them. By the file offset of its name, the offsets of theirs.
+    std::map<std::size_t, std::set<std::size_t>> derived_from_;
+    /// safe_check_link, noting the definitions that a link agreeing with eomgen's quantity used.
+    EquationCheck check_link_noting_uses(const FullChain& c, std::size_t i, std::size_t j, bool bridge);
+    /// A definition of a quantity of the motion (it depends on the coordinates or on time) that rows agreeing with
+    /// eomgen used is consistent with the model: it agrees, through those rows.
+    void apply_confirmations(std::vector<EquationCheck>& equations) const;
     /// The link compared with what the sentence before its display calls it (labels.hpp).
     void check_prose_label(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r);
     /// Parses r.corrected back with the names of its line and checks it (correction_check.hpp); a correction

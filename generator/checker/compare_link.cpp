@@ -21,14 +21,16 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
                  (R.side->source.empty() ? std::string("\\ldots") : R.side->source);
     if (bridge) r.notes.push_back("compared across the step(s) between them that cannot be compared");
     if (discourse_->sets_trial(rel_at) && j == i + 1) {
-        r.reason = "a trial solution: not judged; the equations for its amplitudes that follow are compared with the "
-                   "rows of $(K - \\omega^2 M) A = 0$ about rest";
+        not_judged(r, Role::Trial,
+                   "a trial solution: not judged; the equations for its amplitudes that follow are compared with the "
+                   "rows of $(K - \\omega^2 M) A = 0$ about rest");
         return r;
     }
     if (const Discourse::Naming* n = discourse_->naming_at(rel_at); n && j == i + 1) {
-        r.reason = "a definition: the text names $" + n->quantity_latex + "$ $" + n->letter_latex +
-                   "$ here, and reads so to the end of its section (outside ∂/∂, where $" + n->letter_latex +
-                   "$ is still eomgen's)";
+        not_judged(r, Role::Definition,
+                   "a definition: the text names $" + n->quantity_latex + "$ $" + n->letter_latex +
+                       "$ here, and reads so to the end of its section (outside ∂/∂, where $" + n->letter_latex +
+                       "$ is still eomgen's)");
         return r;
     }
     if (rel == Relation::Inequality) {

@@ -84,22 +84,35 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
                 if (std::find(unknown.begin(), unknown.end(), x) == unknown.end()) unknown.push_back(x);
             }
         };
-        describe(L, a);
-        describe(R, b);
         auto join = [](const std::vector<std::string>& v) {
             std::string s;
             for (std::size_t k = 0; k < v.size(); ++k) s += (k ? ", " : "") + v[k];
             return s;
         };
+        // A definition names its left side; what its value uses that the model does not know is said after it.
+        // (A frequency the normal-mode check read as a claim and could not compare stays a claim.)
+        const bool frequency_claim = std::any_of(r.notes.begin(), r.notes.end(), [](const std::string& n) {
+            return n.rfind("read as a normal frequency", 0) == 0;
+        });
+        if (!def.empty() && !frequency_claim) {
+            describe(R, b);
+            std::string reason = "a definition: the text's abbreviation $" + def + "$ for the rest of its " +
+                                 (at_a_point_.count(L.base + L.side->begin)
+                                      ? "paragraph (its value at the point the text considers)"
+                                      : "section");
+            if (!unknown.empty())
+                reason += "; its value uses " + join(unknown) + ", which the model does not know";
+            not_judged(r, Role::Definition, reason);
+            definition_rows_[L.base + L.side->begin] = r.where;
+            return;
+        }
+        describe(L, a);
+        describe(R, b);
         if (!unknown.empty())
             r.reason = "unknown symbol" + std::string(unknown.size() > 1 ? "s " : " ") + join(unknown) +
                        ": not a symbol of the model (--map can say what it stands for)";
         else
             r.reason = "vector quantities (" + join(vectors) + ") are not compared";
-        if (!def.empty())
-            r.reason += "; a definition: the text's abbreviation $" + def + "$ for the rest of its " +
-                        (at_a_point_.count(L.base + L.side->begin) ? "paragraph (its value at the point the text considers)"
-                                                                   : "section");
         return;
     }
     // A number the text works out: units to SI, the parameters' values, its printed digits.
@@ -113,20 +126,23 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     if (!numbers_.pinned().empty() && (states_condition || !condition_of(a.value, b.value, model_).empty()))
         numbers_.pin({});
     if (discourse_->states_assumption(c.relation_offsets[j - 1])) {
-        r.reason = "an assumption on the parameters, for the rest of its paragraph: the equations that follow there are "
-                   "compared with it";
+        not_judged(r, Role::Assumption,
+                   "an assumption on the parameters, for the rest of its paragraph: the equations that follow there "
+                   "are compared with it");
         return;
     }
     // `\dot r = \dot\theta` in `\dot r = \dot\theta = 0`: two quantities the chain sets to the value it ends with.
     if (states_condition && !has_acceleration(a.value - b.value) && condition_of(a.value, b.value, model_).empty()) {
-        r.reason = "a condition: the point or motion the text considers, where both take the value its chain ends "
-                   "with (not an equation of the motion, so not judged)";
+        not_judged(r, Role::Condition,
+                   "a condition: the point or motion the text considers, where both take the value its chain ends "
+                   "with (not an equation of the motion, so not judged)");
         return;
     }
     // An acceleration the conditions of a motion set (`\ddot\theta = 0` after `\dot\theta = 0`).
     if (states_condition && has_acceleration(a.value - b.value) && condition_of(a.value, b.value, model_).empty()) {
-        r.reason = "a condition: the acceleration of the motion the text considers (an equilibrium, a steady motion), "
-                   "not an equation of the motion, so not judged";
+        not_judged(r, Role::Condition,
+                   "a condition: the acceleration of the motion the text considers (an equilibrium, a steady motion), "
+                   "not an equation of the motion, so not judged");
         return;
     }
     if (!numbers_.pinned().empty()) {
@@ -392,11 +408,12 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         }
         const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
-        r.reason = cue.empty() ? "a condition: the point or motion the text considers, where " + m(q) +
+        not_judged(r, Role::Condition,
+                   cue.empty() ? "a condition: the point or motion the text considers, where " + m(q) +
                                      " takes this value (not an equation of the motion, so not judged)"
                                : "a condition or a given value (after “" + cue +
                                      "”): it sets a value for what follows, not an equation of motion, and is not "
-                                     "judged";
+                                     "judged");
         return;
     }
     // A formula set equal to a number that is not a worked-out number (printed_numbers: no single decimal or

@@ -15,7 +15,7 @@ void TextDefinitions::add(const GiNaC::ex& symbol, const std::string& name, cons
     // A number (`\phi = 0`, `y' = 0`) is a condition or a particular value rather than an abbreviation: it is
     // used inside derivatives only.
     const bool abbreviation = !GiNaC::is_a<GiNaC::numeric>(value);
-    defs_[symbol].push_back({name, value, offset, line, abbreviation ? until : offset, source});
+    defs_[symbol].push_back({name, value, offset, line, abbreviation ? until : offset, source, head});
     if (head != std::string::npos && abbreviation)
         heads_.push_back({head, name + " = " + (source.empty() ? name : source)});
 }
@@ -40,6 +40,7 @@ GiNaC::ex TextDefinitions::abbreviate(const GiNaC::ex& e, std::size_t at) const 
             const Definition* d = in_force(list, at, true);
             if (!d) continue;
             subs[symbol] = d->value;
+            uses_.push_back({d->head, d->value, d->line});
             const std::string note = "using $" + d->name + " = " + (d->source.empty() ? d->name : d->source) +
                                      "$ (line " + std::to_string(d->line) + ")";
             if (std::find(abbreviations_.begin(), abbreviations_.end(), note) == abbreviations_.end())
@@ -66,6 +67,12 @@ std::string TextDefinitions::defined_at(std::size_t head) const {
     return "";
 }
 
+void TextDefinitions::note_use(const GiNaC::ex& symbol, std::size_t at) const {
+    const auto it = defs_.find(symbol);
+    if (it == defs_.end()) return;
+    if (const Definition* d = in_force(it->second, at, true)) uses_.push_back({d->head, d->value, d->line});
+}
+
 std::vector<std::string> TextDefinitions::take_abbreviations() const {
     std::vector<std::string> out;
     out.swap(abbreviations_);
@@ -83,6 +90,7 @@ GiNaC::ex TextDefinitions::expand(const GiNaC::ex& operand, std::size_t at) cons
             const Definition* best = in_force(list, at, false);
             if (!best) continue;
             subs[symbol] = best->value;
+            uses_.push_back({best->head, best->value, best->line});
             const std::string note =
                 "uses $" + best->name + "$ as the text defines it at line " + std::to_string(best->line);
             if (std::find(used_.begin(), used_.end(), note) == used_.end()) used_.push_back(note);
@@ -169,6 +177,7 @@ GiNaC::ex dotted_definitions(const TextDefinitions& definitions, const GiNaC::ex
         if (!known) continue;
         for (int k = 0; k < order; ++k) value = time_derivative(value, model);
         subs[x] = value;
+        definitions.note_use(named->second.symbol, at);
         notes.push_back("$" + f->name + "$ is the time derivative of $" + inner + "$ as the text defines it at line " +
                         std::to_string(line));
     }

@@ -79,6 +79,21 @@ class TextDefinitions {
 
     bool empty() const { return defs_.empty(); }
 
+    /// One definition put into a side (by expand(), abbreviate() or dotted_definitions()).
+    struct Use {
+        std::size_t head = 0;  ///< file offset of the defined name where it is defined (the definition's row)
+        GiNaC::ex value;       ///< what the name stood for
+        int line = 0;
+    };
+    /// The definitions put into sides since the last call (a comparison that agrees confirms them).
+    std::vector<Use> take_uses() const {
+        std::vector<Use> out;
+        out.swap(uses_);
+        return out;
+    }
+    /// Records a use of the definition in force for `symbol` at `at` (dotted_definitions() differentiates it).
+    void note_use(const GiNaC::ex& symbol, std::size_t at) const;
+
     /// While suspended, the definitions of the name `name` (canonical LaTeX) are not in force anywhere: the name is
     /// the text's unknown again (to find what a line needs it to be).
     void suspend(const std::string& name) { suspended_.insert(name); }
@@ -92,11 +107,13 @@ class TextDefinitions {
         int line = 0;
         std::size_t until = std::string::npos;
         std::string source;
+        std::size_t head = std::string::npos;
     };
     /// The definition of `symbol` in force at `at` (within its section when `in_section`), or nullptr.
     const Definition* in_force(const std::vector<Definition>& list, std::size_t at, bool in_section) const;
     std::map<GiNaC::ex, std::vector<Definition>, GiNaC::ex_is_less> defs_;
     mutable std::vector<std::string> used_;
+    mutable std::vector<Use> uses_;
     std::set<std::string> suspended_;
     mutable std::vector<std::string> abbreviations_;
     /// The defined names where they are defined (never abbreviated): file offset, "k = g/l".

@@ -221,12 +221,13 @@ GiNaC::ex Parser::number() {
     return v;
 }
 
-/// `V(r)`, `L(\theta, \dot\theta, t)`: a label letter written as a function of the coordinates, velocities
-/// or t. Returns true and moves past the `)` when the group at pos_ is such an argument list: the letter
-/// then stands alone (the caller multiplies it by 1), not times r.
+/// `V(r)`, `L(\theta, \dot\theta, t)`, `L\left(\theta_1, \dot\theta_1\right)`: a label letter written as a
+/// function of the coordinates, velocities or t. Returns true and moves past the `)` when the group at pos_ is
+/// such an argument list: the letter then stands alone (the caller multiplies it by 1), not times r.
 bool Parser::label_arguments() {
     const std::size_t at = pos_;
-    if (at == 0 || t_[at].text != "(") return false;
+    const bool sized = at + 1 < t_.size() && t_[at].text == "\\left" && t_[at + 1].text == "(";
+    if (at == 0 || (t_[at].text != "(" && !sized)) return false;
     const Token& before = t_[at - 1];
     if (before.kind != Tok::Letter || before.offset + before.length != t_[at].offset) return false;
     static const char* const kLabels[] = {"T", "V", "U", "L", "H", "E", "K"};
@@ -235,7 +236,7 @@ bool Parser::label_arguments() {
     const std::size_t saved = pos_, saved_uses = side_.uses.size(), saved_notes = side_.notes.size();
     const int saved_abs = abs_depth_;
     try {
-        ++pos_;
+        pos_ += sized ? 2 : 1;
         while (true) {
             const GiNaC::ex e = expr();
             if (!GiNaC::is_a<GiNaC::symbol>(e) || ctx_.free_name_of(e) != nullptr) throw ParseFailure{0, ""};
@@ -244,6 +245,7 @@ bool Parser::label_arguments() {
                 ++pos_;
                 continue;
             }
+            if (sized && is_word(t, "\\right")) t = ++pos_ < t_.size() ? &t_[pos_] : nullptr;
             if (!is_char(t, ")")) throw ParseFailure{0, ""};
             ++pos_;
             return true;
@@ -329,6 +331,7 @@ GiNaC::ex Parser::absolute_value(std::size_t at) {
 }
 
 GiNaC::ex Parser::left_right(std::size_t at) {
+    if (label_arguments()) return 1;
     ++pos_;  // \left
     const Token* d = peek();
     if (!d) fail(at, "\\left needs a delimiter");

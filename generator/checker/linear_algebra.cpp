@@ -88,8 +88,9 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
             r.reason =
                 "unknown symbols " + list + ": not symbols of the model (--map can say what they stand for)";
         } else {
-            r.reason = "the text's definition of " + shown(st->first) +
-                       " (not a quantity of the model): compared where it is used";
+            not_judged(r, Role::Definition,
+                       "the text's definition of " + shown(st->first) +
+                           " (not a quantity of the model): compared where it is used");
         }
         return false;
     }

@@ -293,10 +293,11 @@ bool check_number(const GiNaC::ex& a, const GiNaC::ex& b, const std::pair<std::s
             values.choose(k, *v, at, paragraph_end(d.text, at), d.position(at).line);
             std::ostringstream os;
             os << std::setprecision(6) << before;
-            r.verdict = Verdict::NotComparable;
             r.compared_with = "the value of $" + latex_of(model.parameters[k]) + "$";
-            r.reason = "a value the text chooses (" + std::string(origin == "from --set" ? "--set gives " : "the model's is ") +
-                       os.str() + "): the numbers that follow in its paragraph use it";
+            not_judged(r, Role::ChosenValue,
+                       "a value the text chooses (" +
+                           std::string(origin == "from --set" ? "--set gives " : "the model's is ") + os.str() +
+                           "): the numbers that follow in its paragraph use it");
             return true;
         }
     }

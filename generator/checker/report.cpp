@@ -14,18 +14,6 @@ using text::markdown_math;
 using text::markdown_mixed;
 using text::markdown_text;
 
-std::string summary_line(const CheckReport& r) {
-    std::ostringstream os;
-    os << r.equations.size() << " equations: " << r.count(Verdict::Agrees) << " agree, "
-       << r.count(Verdict::Disagrees) << " disagree, " << r.count(Verdict::NotComparable)
-       << " not comparable";
-    if (const int n = r.count(Verdict::NotRead)) os << ", " << n << " not read";
-    if (!r.problems.empty())
-        os << "; " << r.problems.size() << (r.problems.size() == 1 ? " delimiter" : " delimiters")
-           << " that do not pair up";
-    return os.str();
-}
-
 std::string place(const CheckReport& r, const SourcePos& where) {
     return r.derivation_path + ":" + std::to_string(where.line) + ":" + std::to_string(where.column);
 }
@@ -52,6 +40,26 @@ std::string one_line(const std::string& s) {
 
 }  // namespace
 
+std::string summary_line(const CheckReport& r) {
+    std::ostringstream os;
+    os << r.equations.size() << " equations: " << r.count(Verdict::Agrees) << " agree, "
+       << r.count(Verdict::Disagrees) << " disagree, " << r.count(Verdict::NotComparable)
+       << " not comparable";
+    if (const int n = r.count(Verdict::NotJudged)) os << ", " << n << " not judged (definitions, conditions: not claims)";
+    if (const int n = r.count(Verdict::NotRead)) os << ", " << n << " not read";
+    if (!r.problems.empty())
+        os << "; " << r.problems.size() << (r.problems.size() == 1 ? " delimiter" : " delimiters")
+           << " that do not pair up";
+    return os.str();
+}
+
+/// "agrees", ..., and for a row that is not a claim the role it was taken for: "not judged (definition)".
+std::string verdict_shown(const EquationCheck& e) {
+    std::string s = verdict_name(e.verdict);
+    if (e.verdict == Verdict::NotJudged) s += std::string(" (") + role_name(e.role) + ")";
+    return s;
+}
+
 std::string format_text(const CheckReport& r) {
     std::ostringstream os;
     os << "eomgen check: " << r.derivation_path << " against " << r.model_path;
@@ -66,7 +74,7 @@ std::string format_text(const CheckReport& r) {
             section = e.section;
             os << "\n== " << (section.empty() ? "(before the first heading)" : section) << "\n";
         }
-        os << place(r, e) << ": " << verdict_name(e.verdict) << ": " << one_line(e.equation) << "\n";
+        os << place(r, e) << ": " << verdict_shown(e) << ": " << one_line(e.equation) << "\n";
         if (!e.compared_with.empty()) os << "    compared with: " << e.compared_with << "\n";
         if (!e.reason.empty()) os << "    " << e.reason << "\n";
         if (e.verdict == Verdict::Disagrees) {
@@ -133,7 +141,7 @@ std::string format_markdown(const CheckReport& r) {
         }
         for (const std::string& n : e.notes) details += (details.empty() ? "" : "; ") + n;
         os << "| " << e.where.line << " | $" << markdown_math(one_line(e.equation)) << "$ | **"
-           << verdict_name(e.verdict) << "** | " << markdown_mixed(e.compared_with) << " | " << markdown_mixed(details)
+           << verdict_shown(e) << "** | " << markdown_mixed(e.compared_with) << " | " << markdown_mixed(details)
            << " |\n";
     }
     return os.str();
@@ -157,7 +165,8 @@ std::string format_json(const CheckReport& r) {
     os << "],\n  \"summary\": {\"equations\": " << r.equations.size()
        << ", \"agrees\": " << r.count(Verdict::Agrees) << ", \"disagrees\": " << r.count(Verdict::Disagrees)
        << ", \"not_comparable\": " << r.count(Verdict::NotComparable)
-       << ", \"not_read\": " << r.count(Verdict::NotRead) << "},\n  \"problems\": [";
+       << ", \"not_read\": " << r.count(Verdict::NotRead) << ", \"not_judged\": " << r.count(Verdict::NotJudged)
+       << "},\n  \"problems\": [";
     for (std::size_t k = 0; k < r.problems.size(); ++k)
         os << (k ? ", " : "") << "{\"line\": " << r.problems[k].where.line
            << ", \"column\": " << r.problems[k].where.column
@@ -168,6 +177,7 @@ std::string format_json(const CheckReport& r) {
         os << (k ? "," : "") << "\n    {\"line\": " << e.where.line << ", \"column\": " << e.where.column
            << ", \"section\": " << json_string(e.section)
            << ", \"verdict\": " << json_string(verdict_name(e.verdict))
+           << ", \"role\": " << json_string(role_name(e.role))
            << ",\n     \"equation\": " << json_string(one_line(e.equation))
            << ",\n     \"compared_with\": " << json_string(e.compared_with)
            << ", \"reason\": " << json_string(e.reason)

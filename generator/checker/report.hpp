@@ -7,6 +7,13 @@
 
 namespace eomgen::checker {
 
+/// "12 equations: 7 agree, 1 disagree, 2 not comparable, 2 not judged (definitions, conditions: not claims)".
+std::string summary_line(const CheckReport& report);
+
+/// A verdict as the reports show it: its name, and for a row that is not a claim the role it was taken for,
+/// "not judged (definition)".
+std::string verdict_shown(const EquationCheck& e);
+
 /// One line per equation, `file:line:col: verdict: equation`, details indented under it, a summary last.
 std::string format_text(const CheckReport& report);
 

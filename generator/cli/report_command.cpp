@@ -316,11 +316,10 @@ std::string latex(const Model& model, const Equations& eq, const std::vector<Lat
     // A derivation's text is a stranger's LaTeX: shown as escaped text here, never compiled.
     for (const Checked& c : checks) {
         tex << "\\section*{Derivation " << latex_text(fs::path(c.path).filename().string()) << "}\n";
-        tex << c.report.count(checker::Verdict::Agrees) << " agree, " << c.report.count(checker::Verdict::Disagrees)
-            << " disagree, " << c.report.count(checker::Verdict::NotComparable) << " not comparable.\n";
+        tex << latex_text(checker::summary_line(c.report)) << ".\n";
         tex << "\\begin{itemize}\n";
         for (const checker::EquationCheck& e : c.report.equations) {
-            tex << "\\item line " << e.where.line << ": \\textbf{" << checker::verdict_name(e.verdict) << "} \\texttt{"
+            tex << "\\item line " << e.where.line << ": \\textbf{" << latex_text(checker::verdict_shown(e)) << "} \\texttt{"
                 << latex_text(e.equation) << "}";
             if (e.verdict == checker::Verdict::Disagrees && !e.corrected.empty())
                 tex << "; corrected: \\texttt{" << latex_text(e.corrected) << "}";

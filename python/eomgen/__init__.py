@@ -494,7 +494,8 @@ class Ensemble:
 @dataclass(frozen=True)
 class EquationCheck:
     """One relation of a derivation and what eomgen found (docs/checker.md)."""
-    verdict: str          # "agrees", "disagrees", "not comparable", "not read"
+    verdict: str          # "agrees", "disagrees", "not comparable", "not read", "not judged"
+    role: str             # what the row was taken for: "claim", "definition", "assumption", "condition", ...
     line: int
     column: int
     section: str
@@ -520,7 +521,7 @@ class CheckResult:
     @property
     def counts(self):
         """How many equations got each verdict."""
-        out = {"agrees": 0, "disagrees": 0, "not comparable": 0, "not read": 0}
+        out = {"agrees": 0, "disagrees": 0, "not comparable": 0, "not read": 0, "not judged": 0}
         for e in self.equations:
             out[e.verdict] += 1
         return out

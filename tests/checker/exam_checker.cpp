@@ -20,6 +20,7 @@ namespace {
 using eomgen::checker::CheckOptions;
 using eomgen::checker::CheckReport;
 using eomgen::checker::EquationCheck;
+using eomgen::checker::Role;
 using eomgen::checker::Verdict;
 
 const std::string kSource = EOMGEN_SOURCE_DIR;
@@ -85,12 +86,15 @@ TEST_CASE("checker: a correct door derivation raises no alarm", "[checker]") {
     for (const EquationCheck& e : r.equations) {
         INFO(describe(e));
         CHECK(e.verdict != Verdict::Disagrees);
-        // The only equation it cannot judge names a moment of inertia the model does not have.
-        if (e.verdict == Verdict::NotComparable)
-            CHECK(e.reason.find("unknown symbol $I$") != std::string::npos);
+        // The only equation it does not judge defines a moment of inertia the model does not have.
+        if (e.verdict == Verdict::NotJudged) {
+            CHECK(e.role == Role::Definition);
+            CHECK(e.reason.find("abbreviation $I = ") != std::string::npos);
+        }
     }
     CHECK(r.count(Verdict::Agrees) == 14);
-    CHECK(r.count(Verdict::NotComparable) == 1);
+    CHECK(r.count(Verdict::NotComparable) == 0);
+    CHECK(r.count(Verdict::NotJudged) == 1);
 }
 
 TEST_CASE("checker: a correct pendulum derivation agrees equation by equation", "[checker]") {
@@ -112,18 +116,21 @@ TEST_CASE("checker: a correct pendulum derivation agrees equation by equation", 
     CHECK(with.count("$h$") == 1);
 }
 
-TEST_CASE("checker: unknown symbols are not comparable, not disagreements", "[checker]") {
-    // Without the map, I_0 is a letter the model does not know.
+TEST_CASE("checker: a name the model does not know, defined by the text, is adopted, not judged", "[checker]") {
+    // Without the map, I_0 is a letter the model does not know; the text's "where I_0 = M a^2/2" defines it, and
+    // the rows that use it are compared with it put in.
     const CheckReport r = check("pendulum_5_20", fixture("pendulum_correct.md"));
     CHECK(r.count(Verdict::Disagrees) == 0);
-    int unknown = 0;
+    CHECK(r.count(Verdict::NotComparable) == 0);
+    REQUIRE(r.count(Verdict::NotJudged) == 1);
     for (const EquationCheck& e : r.equations)
-        if (e.verdict == Verdict::NotComparable) {
+        if (e.verdict == Verdict::NotJudged) {
             INFO(describe(e));
-            CHECK(e.reason.find("unknown symbol $I_{0}$") != std::string::npos);
-            ++unknown;
+            CHECK(e.role == Role::Definition);
+            CHECK(e.where.line == 10);
+            CHECK(e.reason.find("abbreviation $I_{0} = M a^{2} / 2$") != std::string::npos);
         }
-    CHECK(unknown >= 1);
+    CHECK(r.count(Verdict::Agrees) == 20);
 }
 
 TEST_CASE("checker: planted mistakes in the door are found and located", "[checker]") {
@@ -145,11 +152,12 @@ TEST_CASE("checker: identities in the text's own symbols agree, conditions are n
     const CheckReport r = check("door", path);
     REQUIRE(r.equations.size() == 4);
     CHECK(r.equations[0].verdict == Verdict::Agrees);
-    CHECK(r.equations[1].verdict == Verdict::NotComparable);
+    CHECK(r.equations[1].verdict == Verdict::NotJudged);
+    CHECK(r.equations[1].role == Role::Condition);
     CHECK(r.equations[1].reason.find("condition") != std::string::npos);
-    CHECK(r.equations[2].verdict == Verdict::NotComparable);
-    CHECK(r.equations[2].reason.find("I_{3}") != std::string::npos);
-    CHECK(r.equations[2].reason.find("(7:4)") != std::string::npos);  // where the unknown symbol is
+    CHECK(r.equations[2].verdict == Verdict::NotJudged);  // the text's own name for a constant
+    CHECK(r.equations[2].role == Role::Definition);
+    CHECK(r.equations[2].reason.find("abbreviation $I_{3} = 2 m$") != std::string::npos);
     CHECK(r.equations[3].verdict == Verdict::NotComparable);  // vectors: a×b ≠ b×a, never claimed equal
     std::filesystem::remove(path);
 }
@@ -198,7 +206,8 @@ TEST_CASE("checker: text, Markdown and JSON reports", "[checker]") {
     CHECK(md.find("| line | equation | verdict |") != std::string::npos);
     const std::string json = eomgen::checker::format_json(r);
     CHECK(json.find(
-              "\"summary\": {\"equations\": 7, \"agrees\": 2, \"disagrees\": 5, \"not_comparable\": 0, \"not_read\": 0}") !=
+              "\"summary\": {\"equations\": 7, \"agrees\": 2, \"disagrees\": 5, \"not_comparable\": 0, \"not_read\": 0, "
+                  "\"not_judged\": 0}") !=
           std::string::npos);
     CHECK(json.find("\"line\": 18") != std::string::npos);
 }

@@ -9,6 +9,7 @@
 namespace {
 
 using eomgen::checker::EquationCheck;
+using eomgen::checker::Role;
 using eomgen::checker::Verdict;
 
 const char* const kSpherical = "tests/checker/models/spherical_pendulum.toml";
@@ -44,8 +45,9 @@ TEST_CASE("definitions: the derivative of a quantity the text defines uses its d
     CHECK(r.equations[2].verdict == Verdict::Disagrees);  // sin θ where sin² θ belongs
     INFO(describe(r.equations[3]));
     CHECK(r.equations[3].verdict == Verdict::Agrees);
-    // The defining line itself says what it cannot compare: K is not a quantity of the model.
-    CHECK(r.equations[0].verdict == Verdict::NotComparable);
+    // The defining line itself is not a claim: the text names K, which is not a quantity of the model.
+    CHECK(r.equations[0].verdict == Verdict::NotJudged);
+    CHECK(r.equations[0].role == Role::Definition);
 }
 
 TEST_CASE("definitions: a later definition of the same name applies from its place on", "[checker][definitions]") {
@@ -127,4 +129,53 @@ TEST_CASE("definitions: the square of a name set to a constant defines the name"
     const eomgen::checker::CheckReport moving = eomgen::test::check_text(
         "models/damped_pendulum.toml", "Let $u^2 = \\dot\\varphi^2$, so that $u^2 + 1 = \\dot\\varphi^2 + 1$.\n");
     for (const EquationCheck& e : moving.equations) CHECK(e.reason.find("\\sqrt") == std::string::npos);
+}
+
+TEST_CASE("definitions: the positions a text defines agree through the rows that use them", "[checker][definitions]") {
+    const char* const pendulum = "tests/checker/models/plane_pendulum.toml";
+    // x, y used in T and V that agree with eomgen's; ẋ defined from x (an identity) and then used in T: the rows
+    // that confirm ẋ confirm x.
+    const eomgen::checker::CheckReport r = eomgen::test::check_text(
+        pendulum,
+        "Let $x = l\\sin\\theta$ and $y = -l\\cos\\theta$, and $k = g/l$.\n\n"
+        "$$\\dot x = l\\cos\\theta\\,\\dot\\theta$$\n\n"
+        "$$T = \\frac12 m (\\dot x^2 + \\dot y^2)$$\n\n$$V = m g y$$\n\n$$\\ddot\\theta = -k\\sin\\theta$$\n");
+    REQUIRE(r.equations.size() == 7);
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    CHECK(r.equations[0].verdict == Verdict::Agrees);  // x: through ẋ (line 3) into T (line 5)
+    CHECK(r.equations[0].compared_with == "its use on line 5");
+    CHECK(r.equations[1].verdict == Verdict::Agrees);  // y: in T and in V
+    CHECK(r.equations[1].compared_with == "its uses on lines 5, 7");
+    CHECK(r.equations[1].role == Role::Definition);
+    // k is a constant the text names: used in an equation that agrees, it is still only a name.
+    CHECK(r.equations[2].verdict == Verdict::NotJudged);
+    CHECK(r.equations[2].role == Role::Definition);
+    CHECK(r.count(Verdict::Disagrees) == 0);
+    // Used only in identities of the text's own, nothing confirms them.
+    const eomgen::checker::CheckReport alone = eomgen::test::check_text(
+        pendulum, "Let $x = l\\sin\\theta$.\n\n$$\\dot x = l\\cos\\theta\\,\\dot\\theta$$\n");
+    REQUIRE(alone.equations.size() == 2);
+    CHECK(alone.equations[0].verdict == Verdict::NotJudged);
+    // A use that disagrees confirms nothing either (y with the wrong sign; one use: the use is flagged).
+    const eomgen::checker::CheckReport wrong =
+        eomgen::test::check_text(pendulum, "Let $y = l\\cos\\theta$.\n\n$$V = m g y$$\n");
+    REQUIRE(wrong.equations.size() == 2);
+    CHECK(wrong.equations[0].verdict == Verdict::NotJudged);
+    CHECK(wrong.equations[1].verdict == Verdict::Disagrees);
+}
+
+TEST_CASE("definitions: a label written as a function of its arguments is the label", "[checker][definitions]") {
+    const char* const pendulum = "tests/checker/models/plane_pendulum.toml";
+    for (const char* text : {"$$L\\left(\\theta, \\dot\\theta\\right) = \\frac12 m l^2 \\dot\\theta^2 + m g l \\cos\\theta$$\n",
+                             "$$L(\\theta, \\dot\\theta) = \\frac12 m l^2 \\dot\\theta^2 + m g l \\cos\\theta$$\n",
+                             "$$V\\left(\\theta\\right) = -m g l\\cos\\theta$$\n"}) {
+        const eomgen::checker::CheckReport r = eomgen::test::check_text(pendulum, text);
+        REQUIRE(r.equations.size() == 1);
+        INFO(describe(r.equations[0]));
+        CHECK(r.equations[0].verdict == Verdict::Agrees);
+    }
+    const eomgen::checker::CheckReport wrong = eomgen::test::check_text(
+        pendulum, "$$L\\left(\\theta, \\dot\\theta\\right) = \\frac12 m l^2 \\dot\\theta^2 - m g l \\cos\\theta$$\n");
+    REQUIRE(wrong.equations.size() == 1);
+    CHECK(wrong.equations[0].verdict == Verdict::Disagrees);
 }

@@ -11,6 +11,7 @@ namespace {
 
 using eomgen::checker::CheckReport;
 using eomgen::checker::EquationCheck;
+using eomgen::checker::Role;
 using eomgen::checker::Verdict;
 
 const char* const kConical = "tests/checker/models/conical_pendulum.toml";
@@ -32,11 +33,12 @@ TEST_CASE("motions: a correct derivation on the conical motion agrees, with no f
         INFO(eomgen::test::describe(e));
         CHECK(e.verdict != Verdict::Disagrees);
     }
-    CHECK(r.count(Verdict::Agrees) == 9);  // and the two definitions, k and v
-    // The definition is an abbreviation for the rest of the section, named where it is used.
-    CHECK(at_line(r, 3).reason == "unknown symbol $k$ (3:70): not a symbol of the model (--map can say what it "
-                                   "stands for); a definition: the text's abbreviation $k = g/l$ for the rest of "
-                                   "its section");
+    // And the two definitions: v = l sin θ φ̇, a quantity of the motion, agrees through its use on line 22; k
+    // is the text's name for a constant, an abbreviation for the rest of the section, named where it is used.
+    CHECK(r.count(Verdict::Agrees) == 10);
+    CHECK(at_line(r, 20).compared_with == "its use on line 22");
+    CHECK(at_line(r, 3).verdict == Verdict::NotJudged);
+    CHECK(at_line(r, 3).reason == "a definition: the text's abbreviation $k = g/l$ for the rest of its section");
     CHECK(has_note(at_line(r, 5), "using $k = g/l$ (line 3)"));  // the θ equation, outside any derivative
     const EquationCheck& k = at_line(r, 9);
     CHECK(k.verdict == Verdict::Agrees);

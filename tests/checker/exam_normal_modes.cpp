@@ -12,6 +12,7 @@ namespace {
 
 using eomgen::checker::CheckReport;
 using eomgen::checker::EquationCheck;
+using eomgen::checker::Role;
 using eomgen::checker::Verdict;
 using eomgen::test::describe;
 
@@ -112,11 +113,13 @@ TEST_CASE("normal modes: numbers, --map, and ω that is not a frequency", "[chec
     CHECK(r.equations[1].verdict == Verdict::Agrees);
     CHECK(r.equations[2].verdict == Verdict::Disagrees);  // 5.76 is off by 0.2 %, beyond its rounding
     CHECK(r.equations[3].verdict == Verdict::Agrees);     // ν is ω by the map
-    // ω = θ̇₁ is an angular velocity, not a frequency: compared as usual (ω unknown).
-    CHECK(r.equations[4].verdict == Verdict::NotComparable);
+    // ω = θ̇₁ is an angular velocity, not a frequency: the text's definition of ω.
+    CHECK(r.equations[4].verdict == Verdict::NotJudged);
+    CHECK(r.equations[4].role == Role::Definition);
     CHECK(r.equations[4].compared_with.find("secular") == std::string::npos);
     // ω equal to a rational expression is not how a frequency is written (ω = √(…)): an angular velocity.
-    CHECK(r.equations[5].verdict == Verdict::NotComparable);
+    CHECK(r.equations[5].verdict == Verdict::NotJudged);
+    CHECK(r.equations[5].role == Role::Definition);
     CHECK(r.equations[5].compared_with.find("secular") == std::string::npos);
 }
 
@@ -127,8 +130,9 @@ TEST_CASE("normal modes: an abbreviation the text defines, \\omega_0^2 = g/l", "
         "$$\\omega_2^2 = \\omega_0^2 (2 + \\sqrt{3})$$\n");
     REQUIRE(r.equations.size() == 3);
     for (const EquationCheck& e : r.equations) INFO(describe(e));
-    // The definition is not a claim about the modes: ω₀ stays unknown, with a note.
-    CHECK(r.equations[0].verdict == Verdict::NotComparable);
+    // The definition is not a claim about the modes: the text's name ω₀, with a note.
+    CHECK(r.equations[0].verdict == Verdict::NotJudged);
+    CHECK(r.equations[0].role == Role::Definition);
     REQUIRE(r.equations[0].notes.size() == 1);
     CHECK(r.equations[0].notes[0] ==
           "read as an abbreviation, not as a normal frequency: the text uses $\\omega_{0}$ in the frequency at line 7");
@@ -202,7 +206,7 @@ TEST_CASE("normal modes: an equilibrium known in numbers only", "[checker][modes
 }
 
 TEST_CASE("normal modes: models whose modes are not compared", "[checker][modes]") {
-    // ω stays an unknown symbol (it may be an angular velocity), with why it is not compared as a frequency.
+    // Read as a frequency, a claim that is not compared: ω stays an unknown symbol, with why it is not compared.
     auto only = [](const std::string& model, const std::string& text) {
         const CheckReport r = eomgen::test::check_text(model, text);
         REQUIRE(r.equations.size() == 1);

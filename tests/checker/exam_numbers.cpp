@@ -18,6 +18,7 @@ namespace {
 using eomgen::checker::CheckOptions;
 using eomgen::checker::CheckReport;
 using eomgen::checker::EquationCheck;
+using eomgen::checker::Role;
 using eomgen::checker::Verdict;
 
 const std::string kSource = EOMGEN_SOURCE_DIR;
@@ -137,7 +138,8 @@ TEST_CASE("numbers: right numbers agree to their printed digits, with no false a
     CHECK(find(r, "1.51 \\sqrt{w / g} = 7.63 \\times 10^{-3} \\mathrm{~min}").verdict == Verdict::Agrees);
     // The text sets θ = 90° for its paragraph; the next paragraph is back to the model's tilt.
     const EquationCheck& choice = find(r, "\\theta = 90^{\\circ}");
-    CHECK(choice.verdict == Verdict::NotComparable);
+    CHECK(choice.verdict == Verdict::NotJudged);
+    CHECK(choice.role == Role::ChosenValue);
     CHECK(choice.reason == "a value the text chooses (the model's is 0.0234): the numbers that follow in its "
                            "paragraph use it");
     const EquationCheck& chosen = find(r, "\\frac{m g w}{2} \\sin \\theta = 132 \\mathrm{~N~m}");

@@ -9,6 +9,7 @@
 
 using eomgen::checker::CheckReport;
 using eomgen::checker::EquationCheck;
+using eomgen::checker::Role;
 using eomgen::checker::Verdict;
 
 namespace {
@@ -43,7 +44,8 @@ TEST_CASE("roles: a parameter the text sets holds for the rest of its paragraph,
     const auto first = on_line(r, 1);
     REQUIRE(first.size() == 3);
     for (const EquationCheck* e : first) INFO(eomgen::test::describe(*e));
-    CHECK(first[0]->verdict == Verdict::NotComparable);
+    CHECK(first[0]->verdict == Verdict::NotJudged);
+    CHECK(first[0]->role == Role::ChosenValue);
     CHECK(first[0]->reason.find("a value the text chooses") == 0);
     for (int k : {1, 2}) {
         INFO(eomgen::test::describe(*first[std::size_t(k)]));
@@ -138,7 +140,8 @@ TEST_CASE("roles: a momentum set equal to a one-letter label names it with that 
     const CheckReport r = eomgen::test::check_text(kPendulum, text);
     REQUIRE(r.equations.size() == 4);
     for (const EquationCheck& e : r.equations) INFO(eomgen::test::describe(e));
-    CHECK(r.equations[0].verdict == Verdict::NotComparable);
+    CHECK(r.equations[0].verdict == Verdict::NotJudged);
+    CHECK(r.equations[0].role == Role::Definition);
     CHECK(r.equations[0].reason.find("a definition: the text names $p_\\theta$ $L$ here") == 0);
     for (std::size_t k = 1; k < 4; ++k) {
         INFO(eomgen::test::describe(r.equations[k]));
@@ -157,8 +160,9 @@ TEST_CASE("roles: U is the potential energy, KE and PE the energies, as many tex
     CHECK(one_verdict(kPendulum, "$$KE = \\frac12 m l^2 \\dot\\theta^2$$\n") == Verdict::Agrees);
     CHECK(one_verdict(kPendulum, "$$\\text{PE} = -m g l \\cos\\theta$$\n") == Verdict::Agrees);
     CHECK(one_verdict(kPendulum, "$$PE = m g l$$\n") == Verdict::Disagrees);
-    // K alone is left unknown (a spring constant as often as a kinetic energy); K E with a space is a product.
-    CHECK(one_verdict(kPendulum, "$$K = \\frac12 m l^2 \\dot\\theta^2$$\n") == Verdict::NotComparable);
+    // K alone is the text's own name (a spring constant as often as a kinetic energy); K E with a space is a
+    // product.
+    CHECK(one_verdict(kPendulum, "$$K = \\frac12 m l^2 \\dot\\theta^2$$\n") == Verdict::NotJudged);
     CHECK(one_verdict(kPendulum, "$$K E = \\frac12 m l^2 \\dot\\theta^2$$\n") == Verdict::NotComparable);
 }
 
@@ -226,7 +230,8 @@ TEST_CASE("roles: a definition that two uses make wrong is the slip, not the use
     // One use alone does not say which of the two is wrong: the use disagrees, the definition stands.
     const CheckReport once = eomgen::test::check_text(kPendulum, "Let $y = l\\sin\\theta$ be the height.\n\n$$V = m g y$$\n");
     REQUIRE(once.equations.size() == 2);
-    CHECK(once.equations[0].verdict == Verdict::NotComparable);
+    CHECK(once.equations[0].verdict == Verdict::NotJudged);
+    CHECK(once.equations[0].role == Role::Definition);
     CHECK(once.equations[1].verdict == Verdict::Disagrees);
 }
 
@@ -234,7 +239,8 @@ TEST_CASE("roles: T_0 set to a constant is a period, not a part of T", "[checker
     const CheckReport r = eomgen::test::check_text(kPendulum, "The period is $T_0 = 2\\pi\\sqrt{l/g}$.\n\n"
                                                               "$$T_{1} = \\frac12 m l^2 \\dot\\theta^2$$\n");
     REQUIRE(r.equations.size() == 2);
-    CHECK(r.equations[0].verdict == Verdict::NotComparable);
+    CHECK(r.equations[0].verdict == Verdict::NotJudged);
+    CHECK(r.equations[0].role == Role::Definition);
     CHECK(r.equations[0].reason.find("a definition: the text's abbreviation $T_{0} = ") != std::string::npos);
     INFO(eomgen::test::describe(r.equations[1]));
     CHECK(r.equations[1].compared_with.find("a part of $T$") != std::string::npos);
@@ -283,7 +289,8 @@ TEST_CASE("roles: a name the prose gives a quantity, and the conditions of a ste
         "tests/checker/models/spherical_pendulum.toml",
         "For a conical motion $\\dot\\theta = 0$ and $\\ddot\\theta = 0$, so $\\dot\\phi^2 = \\frac{g}{l}$.\n");
     REQUIRE(wrong.equations.size() == 3);
-    CHECK(wrong.equations[1].verdict == Verdict::NotComparable);
+    CHECK(wrong.equations[1].verdict == Verdict::NotJudged);
+    CHECK(wrong.equations[1].role == Role::Condition);
     CHECK(wrong.equations[2].verdict == Verdict::Disagrees);
 }
 
@@ -388,7 +395,8 @@ TEST_CASE("roles: notes on the elastic pendulum, checked as written (the energie
         INFO(eomgen::test::describe(e));
         if (e.where.line == 10) CHECK(e.verdict == Verdict::Agrees);  // T and U
         if (e.where.line == 23) {
-            CHECK(e.verdict == Verdict::NotComparable);
+            CHECK(e.verdict == Verdict::NotJudged);
+            CHECK(e.role == Role::Condition);
             CHECK(e.reason.rfind("a condition", 0) == 0);
             ++conditions;
         }
@@ -442,7 +450,7 @@ TEST_CASE("roles: notes on the bead on a spinning hoop, checked as written (equi
     CHECK(w.count(Verdict::Disagrees) == 1);
     CHECK(one_verdict(model, "for small $\\alpha$, $\\cos\\alpha \\approx 0$\n") != Verdict::Agrees);
     // "Setting" right before an acceleration sets it; "putting (1) into (2):" before one derives it.
-    CHECK(one_verdict(model, "Setting $\\ddot\\alpha = 0$ gives the rest points.\n") == Verdict::NotComparable);
+    CHECK(one_verdict(model, "Setting $\\ddot\\alpha = 0$ gives the rest points.\n") == Verdict::NotJudged);
     CHECK(one_verdict(model, "Putting (1) into (2): $\\ddot\\alpha = 0$.\n") == Verdict::Disagrees);
 }
 

@@ -6,6 +6,7 @@
 
 using eomgen::checker::CheckReport;
 using eomgen::checker::EquationCheck;
+using eomgen::checker::Role;
 using eomgen::checker::Verdict;
 
 namespace {
@@ -53,8 +54,10 @@ TEST_CASE("solutions: a small oscillation holds to first order, and a name insid
     CHECK(small.reason.find("to first order") != std::string::npos);
     const EquationCheck wrong = one(kPendulum, "$$\\theta(t) = A \\cos\\left(\\frac{g}{l} t\\right)$$\n");
     CHECK(wrong.verdict == Verdict::Disagrees);
-    // Ω unknown: the right Ω would make it one.
-    CHECK(one(kPendulum, "$$\\theta(t) = A \\cos(\\Omega t)$$\n").verdict == Verdict::NotComparable);
+    // Ω unknown: a trial solution (the right Ω would make it one), not judged.
+    const EquationCheck trial = one(kPendulum, "$$\\theta(t) = A \\cos(\\Omega t)$$\n");
+    CHECK(trial.verdict == Verdict::NotJudged);
+    CHECK(trial.role == Role::Trial);
 }
 
 TEST_CASE("solutions: with the frequency the text has stated, x = A cos(omega t) is a solution it claims, not a trial",

@@ -67,6 +67,8 @@ def run_check(eomgen, d):
     return json.loads(r.stdout), seconds
 
 
+# The key's roles of rows that are not claims (README.md): never judged true or false.
+NOT_CLAIMS = ("definition", "given", "condition", "trial")
 RELATION = re.compile(r"=|<|>|\\(approx|simeq|equiv|leq?|geq?|neq?|cong|propto|sim)(?![A-Za-z])")
 
 
@@ -104,7 +106,7 @@ def score_entry(key, report, text=""):
                 break
     problem_lines = {p.get("line") for p in report.get("problems", []) if isinstance(p, dict)}
     s = {"lines": len(by_line), "slips": [], "flagged": [], "missed": [], "false_alarms": [], "silent": [],
-         "not_comparable": [], "corrections": [], "off_key_disagrees": []}
+         "not_comparable": [], "not_claims": [], "claims_not_judged": [], "corrections": [], "off_key_disagrees": []}
     for line, es in sorted(by_line.items()):
         slip = any(e["truth"] is False for e in es)
         vs = verdicts.get(line, [])
@@ -121,8 +123,15 @@ def score_entry(key, report, text=""):
             s["false_alarms"].append(line)
         if not vs and line not in problem_lines:
             s["silent"].append(line)
-        elif vs and all(v["verdict"] == "not comparable" for v in vs):
-            s["not_comparable"].append(line)
+        elif vs and all(v["verdict"] in ("not comparable", "not judged") for v in vs):
+            # A row the checker took for a definition, an assumption or a condition is not judged; that is right
+            # only where the key says it is not a claim. A claim taken for one was not compared: not comparable.
+            if all(v["verdict"] == "not judged" for v in vs) and all(e["role"] in NOT_CLAIMS for e in es):
+                s["not_claims"].append(line)
+            else:
+                s["not_comparable"].append(line)
+                if any(v["verdict"] == "not judged" for v in vs) and any(e["role"] not in NOT_CLAIMS for e in es):
+                    s["claims_not_judged"].append(line)
     s["off_key_disagrees"] = sorted(l for l, vs in verdicts.items()
                                     if l not in by_line and any(v["verdict"] == "disagrees" for v in vs))
     return s
@@ -130,20 +139,21 @@ def score_entry(key, report, text=""):
 
 def table(results):
     rows = ["| entry | system | style | lines | slips | flagged | false alarms | silent drops | not comparable | "
-            "corrections printed |", "|---|---|---|---|---|---|---|---|---|---|"]
-    tot = {k: 0 for k in ("lines", "slips", "flagged", "false", "silent", "nc", "corr")}
+            "not claims, not judged | corrections printed |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    tot = {k: 0 for k in ("lines", "slips", "flagged", "false", "silent", "nc", "nj", "corr")}
     for name, key, s, secs in results:
         rows.append(f"| {name} | {key['system']} | {key['style']} | {s['lines']} | {len(s['slips'])} | "
                     f"{len(s['flagged'])} | {len(s['false_alarms'])} | {len(s['silent'])} | "
-                    f"{len(s['not_comparable'])} | {len(s['corrections'])} |")
+                    f"{len(s['not_comparable'])} | {len(s['not_claims'])} | {len(s['corrections'])} |")
         for k, v in (("lines", s["lines"]), ("slips", len(s["slips"])), ("flagged", len(s["flagged"])),
                      ("false", len(s["false_alarms"])), ("silent", len(s["silent"])),
-                     ("nc", len(s["not_comparable"])), ("corr", len(s["corrections"]))):
+                     ("nc", len(s["not_comparable"])), ("nj", len(s["not_claims"])),
+                     ("corr", len(s["corrections"]))):
             tot[k] += v
     pct = (lambda a, b: f"{100.0 * a / b:.0f} %" if b else "–")
     rows.append(f"| **all {len(results)}** | | | **{tot['lines']}** | **{tot['slips']}** | **{tot['flagged']}** "
                 f"({pct(tot['flagged'], tot['slips'])}) | **{tot['false']}** | **{tot['silent']}** | "
-                f"**{tot['nc']}** ({pct(tot['nc'], tot['lines'])}) | {tot['corr']} |")
+                f"**{tot['nc']}** ({pct(tot['nc'], tot['lines'])}) | {tot['nj']} | {tot['corr']} |")
     return "\n".join(rows) + "\n", tot
 
 
@@ -174,7 +184,7 @@ def main():
             s = score_entry(key, report, f.read())
         results.append((name, key, s, secs))
         if a.details:
-            for k in ("missed", "false_alarms", "silent", "not_comparable", "off_key_disagrees"):
+            for k in ("missed", "false_alarms", "silent", "not_comparable", "claims_not_judged", "off_key_disagrees"):
                 if s[k]:
                     print(f"{name}: {k}: lines {', '.join(map(str, s[k]))}")
     text, tot = table(results)

@@ -1,0 +1,64 @@
+/** @file definition_uses.cpp  The text's definitions of quantities of the motion (`x_1 = l_1\sin\theta_1`, the
+ * positions of the masses) confirmed by the rows that use them: a definition is not a claim by itself, but once a
+ * row that puts it in agrees with eomgen's T, V, L or an equation of motion, the definition is consistent with the
+ * model, and the report says so at its row. (One that makes its uses disagree is blamed instead: checker.cpp.) */
+#include "checker/checker_internals.hpp"
+
+namespace eomgen::checker::detail {
+
+namespace {
+
+/// Compared with one of eomgen's quantities (T, an Euler–Lagrange equation, ...), not with the text's own sides.
+bool compared_with_model(const EquationCheck& r) {
+    return r.verdict == Verdict::Agrees && !r.compared_with.empty() && r.compared_with.rfind("an identity", 0) != 0;
+}
+
+}  // namespace
+
+EquationCheck Checker::check_link_noting_uses(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
+    definitions_.take_uses();
+    EquationCheck r = safe_check_link(c, i, j, bridge);
+    const std::vector<TextDefinitions::Use> uses = definitions_.take_uses();
+    const std::size_t head = c.sides[i].base + c.sides[i].side->begin;
+    if (r.verdict == Verdict::Agrees && r.compared_with.rfind("an identity", 0) == 0 && !bridge &&
+        !definitions_.defined_at(head).empty())
+        for (const TextDefinitions::Use& u : uses)
+            if (u.head != std::string::npos && u.head != head) derived_from_[head].insert(u.head);
+    if (!compared_with_model(r)) return r;
+    for (const TextDefinitions::Use& u : uses)
+        if (u.head != std::string::npos && (depends_on_state(u.value) || u.value.has(model_.t)))
+            confirmed_by_[u.head].insert(r.where.line);
+    return r;
+}
+
+void Checker::apply_confirmations(std::vector<EquationCheck>& equations) const {
+    // Through the definitions derived from others: the lines that confirm ẋ confirm x.
+    std::map<std::size_t, std::set<int>> confirmed = confirmed_by_;
+    for (bool more = true; more;) {
+        more = false;
+        for (const auto& [head, sources] : derived_from_) {
+            const auto c = confirmed.find(head);
+            if (c == confirmed.end()) continue;
+            const std::set<int> lines = c->second;
+            for (const std::size_t s : sources)
+                for (const int l : lines) more = confirmed[s].insert(l).second || more;
+        }
+    }
+    for (const auto& [head, lines] : confirmed) {
+        const auto row = definition_rows_.find(head);
+        if (row == definition_rows_.end()) continue;
+        for (EquationCheck& e : equations) {
+            if (e.where.line != row->second.line || e.where.column != row->second.column ||
+                e.verdict != Verdict::NotJudged || e.role != Role::Definition)
+                continue;
+            std::string list;
+            for (const int l : lines) list += (list.empty() ? "" : ", ") + std::to_string(l);
+            e.verdict = Verdict::Agrees;
+            e.compared_with = "its use" + std::string(lines.size() > 1 ? "s on lines " : " on line ") + list;
+            e.reason = "a definition of a quantity of the motion, consistent with the model: put into line" +
+                       std::string(lines.size() > 1 ? "s " : " ") + list + ", it gives what eomgen derives there";
+        }
+    }
+}
+
+}  // namespace eomgen::checker::detail
