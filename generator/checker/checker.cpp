@@ -214,12 +214,48 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
             std::string source = c.sides[k].side->source;
             source.erase(0, std::min(source.find_first_not_of(" \t"), source.size()));
             source.erase(std::min(source.find_last_not_of(" \t") + 1, source.size()));
-            definitions_.add(head, f->name, p.value, at, d_.position(at).line, until,
+            // The value with the text's constants of the motion in it held (an effective potential in J).
+            std::optional<GiNaC::ex> holding;
+            if (definitions_.has_conserved()) {
+                definitions_.set_holding(true);
+                const Prepared h = prepare(c.sides[k]);
+                definitions_.set_holding(false);
+                if (h.ok && !h.value.has(head)) holding = squared ? GiNaC::sqrt(h.value) : h.value;
+            }
+            definitions_.add(head, f->name, p.value, in_force_from(c.sides[0].base + c.sides[0].side->begin, at),
+                             d_.position(at).line, until,
                              squared ? "\\sqrt{" + source + "}" : c.sides[k].side->source,
-                             c.sides[0].base + c.sides[0].side->begin);
+                             c.sides[0].base + c.sides[0].side->begin, conserved_on_motion(p.value),
+                             holding ? &*holding : nullptr);
             break;
         }
     }
+}
+
+bool Checker::conserved_on_motion(const GiNaC::ex& value) {
+    if (!has_velocity(value)) return false;
+    EquationCheck conserved;
+    check_additive_constant(value, 0, 1, model_, *this, 1e-9, conserved);
+    return conserved.verdict == Verdict::Agrees;
+}
+
+std::size_t Checker::in_force_from(std::size_t head, std::size_t at) const {
+    // "…, where ω² = k/m", "where Q is the damper's force: Q = −c ẏ": the definition explains the formula before it,
+    // in its own row (math before it there) or in the row before, and holds there too.
+    if (!explains_formula_before(d_, head)) return at;
+    std::size_t row = d_.rows.size();
+    for (std::size_t r = 0; r < d_.rows.size() && d_.rows[r].offset <= head; ++r) row = r;
+    if (row == d_.rows.size()) return at;
+    const MathRow& here = d_.rows[row];
+    const std::size_t lead = d_.text.find_first_not_of(" \t\r\n", here.offset);
+    if (lead != std::string::npos && lead < head) return here.offset;
+    // The formula before: the row before, past inline mentions without a relation ("where $Q$ is").
+    for (std::size_t r = row; r-- > 0;) {
+        if (d_.rows[r].section != here.section) break;
+        if (!d_.rows[r].display && d_.rows[r].text.find('=') == std::string::npos) continue;
+        return d_.rows[r].offset;
+    }
+    return at;
 }
 
 void Checker::collect_parts(const std::vector<FullChain>& chains) {

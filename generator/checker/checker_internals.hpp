@@ -247,6 +247,12 @@ class Checker : public Comparisons {
 
     // ----- checking
     void collect_parts(const std::vector<FullChain>& chains);
+    /// Where a definition whose name stands at file offset `head` (its value at `at`) is in force from: `at`, or the
+    /// start of the formula it explains ("…, where ω² = k/m": prose.hpp, explains_formula_before).
+    std::size_t in_force_from(std::size_t head, std::size_t at) const;
+    /// A definition's value that is a constant of the motion (its time derivative vanishes on the equations of
+    /// motion): J = m l^2 \sin^2\theta\,\dot\phi. Held fixed where the text differentiates by a coordinate.
+    bool conserved_on_motion(const GiNaC::ex& value);
     void check_chain(const FullChain& c, std::vector<EquationCheck>& out);
     EquationCheck check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge);
     /// check_link, with anything GiNaC throws on a strange input turned into a "not comparable" verdict.
@@ -325,6 +331,10 @@ class Checker : public Comparisons {
     /// A definition that two or more lines blame alike is the slip: it disagrees (corrected to what they need), and
     /// they are not comparable, pointing to it.
     void apply_blames(std::vector<EquationCheck>& equations);
+
+    /// `\frac{d}{dt}\frac{\partial L}{\partial \dot q} - \frac{\partial L}{\partial q} = 0` with q none of the model's
+    /// coordinates: judged with q as each of them in turn (generic_coordinate.cpp). False when it is no such link.
+    bool check_generic_coordinate(const FullChain& c, std::size_t i, std::size_t j, bool bridge, EquationCheck& r);
 
     // ----- definitions confirmed by their uses (definition_uses.cpp)
     /// The rows of the text's definitions (`x_1 = l_1 \sin\theta_1`), by the file offset of the defined name.

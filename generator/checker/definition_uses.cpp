@@ -18,6 +18,8 @@ bool compared_with_model(const EquationCheck& r) {
 EquationCheck Checker::check_link_noting_uses(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
     definitions_.take_uses();
     EquationCheck r = safe_check_link(c, i, j, bridge);
+    if (r.verdict == Verdict::NotComparable && r.reason.rfind("a partial derivative with respect to", 0) == 0)
+        check_generic_coordinate(c, i, j, bridge, r);
     const std::vector<TextDefinitions::Use> uses = definitions_.take_uses();
     const std::size_t head = c.sides[i].base + c.sides[i].side->begin;
     if (r.verdict == Verdict::Agrees && r.compared_with.rfind("an identity", 0) == 0 && !bridge &&

@@ -11,11 +11,19 @@ namespace eomgen::checker {
 
 void TextDefinitions::add(const GiNaC::ex& symbol, const std::string& name, const GiNaC::ex& value,
                           std::size_t offset, int line, std::size_t until, const std::string& source,
-                          std::size_t head) {
+                          std::size_t head, bool conserved, const GiNaC::ex* value_holding) {
     // A number (`\phi = 0`, `y' = 0`) is a condition or a particular value rather than an abbreviation: it is
     // used inside derivatives only.
     const bool abbreviation = !GiNaC::is_a<GiNaC::numeric>(value);
-    defs_[symbol].push_back({name, value, offset, line, abbreviation ? until : offset, source, head});
+    Definition d{name, value, offset, line, abbreviation ? until : offset, source, head};
+    d.conserved = conserved;
+    d.value_holding = value_holding ? *value_holding : value;
+    if (conserved) {
+        held_values_[d.held] = value;
+        held_notes_[d.held] = "holds $" + name + "$ fixed in the derivative by a coordinate: a constant of the motion "
+                              "(line " + std::to_string(line) + ")";
+    }
+    defs_[symbol].push_back(d);
     if (head != std::string::npos && abbreviation)
         heads_.push_back({head, name + " = " + (source.empty() ? name : source)});
 }
@@ -39,7 +47,7 @@ GiNaC::ex TextDefinitions::abbreviate(const GiNaC::ex& e, std::size_t at) const 
             if (!x.has(symbol)) continue;
             const Definition* d = in_force(list, at, true);
             if (!d) continue;
-            subs[symbol] = d->value;
+            subs[symbol] = !holding_ ? d->value : (d->conserved ? GiNaC::ex(d->held) : d->value_holding);
             uses_.push_back({d->head, d->value, d->line});
             const std::string note = "using $" + d->name + " = " + (d->source.empty() ? d->name : d->source) +
                                      "$ (line " + std::to_string(d->line) + ")";
@@ -80,6 +88,14 @@ std::vector<std::string> TextDefinitions::take_abbreviations() const {
 }
 
 GiNaC::ex TextDefinitions::expand(const GiNaC::ex& operand, std::size_t at) const {
+    return expand_impl(operand, at, nullptr);
+}
+
+GiNaC::ex TextDefinitions::expand_holding(const GiNaC::ex& operand, std::size_t at, GiNaC::exmap& held) const {
+    return expand_impl(operand, at, &held);
+}
+
+GiNaC::ex TextDefinitions::expand_impl(const GiNaC::ex& operand, std::size_t at, GiNaC::exmap* held) const {
     GiNaC::ex e = operand;
     // A definition may use an earlier one: substitute until nothing changes (bounded: definitions come in
     // file order, and one of a name never uses itself).
@@ -89,15 +105,26 @@ GiNaC::ex TextDefinitions::expand(const GiNaC::ex& operand, std::size_t at) cons
             if (!e.has(symbol)) continue;
             const Definition* best = in_force(list, at, false);
             if (!best) continue;
-            subs[symbol] = best->value;
             uses_.push_back({best->head, best->value, best->line});
             const std::string note =
                 "uses $" + best->name + "$ as the text defines it at line " + std::to_string(best->line);
+            if (held && best->conserved) {
+                subs[symbol] = best->held;
+            } else {
+                subs[symbol] = held ? best->value_holding : best->value;
+            }
             if (std::find(used_.begin(), used_.end(), note) == used_.end()) used_.push_back(note);
         }
         if (subs.empty()) break;
         e = e.subs(subs);
     }
+    if (held)
+        for (const auto& [symbol, value] : held_values_)
+            if (e.has(symbol)) {
+                (*held)[symbol] = value;
+                const std::string& note = held_notes_.at(symbol);
+                if (std::find(used_.begin(), used_.end(), note) == used_.end()) used_.push_back(note);
+            }
     return e;
 }
 

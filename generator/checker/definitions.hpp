@@ -34,13 +34,20 @@ class UndefinedInDerivative : public std::runtime_error {
  */
 class TextDefinitions {
   public:
-    /// Records that `symbol` (the free name `name`) is `value` from file offset `offset` (line `line`) on.
     /// Records that `symbol` (the free name `name`) is `value` from file offset `offset` (line `line`) on;
     /// as an abbreviation everywhere (abbreviate()) up to `until`, the end of its section. `source` is the
-    /// value as the text writes it, for the notes.
+    /// value as the text writes it, for the notes. `conserved`: the value is a constant of the motion, held
+    /// fixed where the text differentiates by a coordinate (expand_holding()); `value_holding`: the value with the
+    /// constants of the motion in it held (as set_holding() made prepare give it), or null for `value`.
     void add(const GiNaC::ex& symbol, const std::string& name, const GiNaC::ex& value, std::size_t offset,
              int line, std::size_t until = std::string::npos, const std::string& source = "",
-             std::size_t head = std::string::npos);
+             std::size_t head = std::string::npos, bool conserved = false,
+             const GiNaC::ex* value_holding = nullptr);
+
+    /// While on, abbreviate() puts in the held symbols of the constants of the motion, not their values (to take
+    /// a definition's value with them held: `V_{eff}` in J).
+    void set_holding(bool on) const { holding_ = on; }
+    bool has_conserved() const { return !held_values_.empty(); }
 
     /**
      * `e` (a side at file offset `at`, outside derivatives too) with the names defined before it in its
@@ -58,6 +65,14 @@ class TextDefinitions {
     /// The operand of a derivative at file offset `at`, with the defined names in it replaced by their
     /// definitions (which may use earlier ones). Records the definitions used (see take_used()).
     GiNaC::ex expand(const GiNaC::ex& operand, std::size_t at) const;
+
+    /**
+     * expand(), for a derivative by a coordinate: a name whose definition is a constant of the motion is held
+     * fixed, as the text means it (`V_{eff} = \frac{J^2}{2 m l^2 \sin^2\theta} + …` with J = p_φ, differentiated
+     * by θ at fixed J): it becomes a symbol of its own; `held` maps each such symbol to its value, to put in after
+     * differentiating.
+     */
+    GiNaC::ex expand_holding(const GiNaC::ex& operand, std::size_t at, GiNaC::exmap& held) const;
 
     /**
      * Throws UndefinedInDerivative when `operand` (already expanded) holds a free name of `ctx` that is a
@@ -108,12 +123,19 @@ class TextDefinitions {
         std::size_t until = std::string::npos;
         std::string source;
         std::size_t head = std::string::npos;
+        bool conserved = false;   ///< a constant of the motion: held fixed in a derivative by a coordinate
+        GiNaC::ex value_holding;  ///< `value` with the constants of the motion in it held
+        GiNaC::symbol held;       ///< stands for it while it is held
     };
     /// The definition of `symbol` in force at `at` (within its section when `in_section`), or nullptr.
     const Definition* in_force(const std::vector<Definition>& list, std::size_t at, bool in_section) const;
+    GiNaC::ex expand_impl(const GiNaC::ex& operand, std::size_t at, GiNaC::exmap* held) const;
     std::map<GiNaC::ex, std::vector<Definition>, GiNaC::ex_is_less> defs_;
     mutable std::vector<std::string> used_;
     mutable std::vector<Use> uses_;
+    mutable bool holding_ = false;
+    GiNaC::exmap held_values_;  ///< each held symbol, its value
+    std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> held_notes_;  ///< each held symbol, what the note says
     std::set<std::string> suspended_;
     mutable std::vector<std::string> abbreviations_;
     /// The defined names where they are defined (never abbreviated): file offset, "k = g/l".

@@ -18,7 +18,16 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
         return time_derivative(inner, model_);
     }
     if (is_ex_the_function(e, pdiff)) {
-        const GiNaC::ex inner = resolve_operators(definitions_.expand(e.op(0), current_offset_));
+        // By a coordinate, the text's constants of the motion (J = p_φ) are held fixed, put in after (definitions.hpp).
+        GiNaC::exmap held;
+        const bool by_coordinate = std::any_of(model_.coordinates.begin(), model_.coordinates.end(),
+                                               [&](const Coordinate& c) { return e.op(1).is_equal(c.q); });
+        const GiNaC::ex inner = resolve_operators(by_coordinate ? definitions_.expand_holding(e.op(0), current_offset_, held)
+                                                                : definitions_.expand(e.op(0), current_offset_));
+        if (!held.empty()) {
+            const GiNaC::ex d = GiNaC::diff(inner, GiNaC::ex_to<GiNaC::symbol>(e.op(1))).subs(held);
+            return resolve_operators(d);
+        }
         if (!GiNaC::is_a<GiNaC::symbol>(e.op(1)))
             throw std::runtime_error("a derivative with respect to an expression");
         if (const FreeName* f = ctx_.free_name_of(e.op(1)))

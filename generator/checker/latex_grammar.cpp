@@ -229,9 +229,23 @@ bool Parser::label_arguments() {
     const bool sized = at + 1 < t_.size() && t_[at].text == "\\left" && t_[at + 1].text == "(";
     if (at == 0 || (t_[at].text != "(" && !sized)) return false;
     const Token& before = t_[at - 1];
-    if (before.kind != Tok::Letter || before.offset + before.length != t_[at].offset) return false;
+    if (before.offset + before.length != t_[at].offset) return false;
+    // The letter itself, or the letter of a subscripted label (`V_{eff}(\theta)`, `U_{\text{eff}}(r)`).
+    std::size_t letter = at - 1;
+    if (before.kind == Tok::Char && before.text == "}") {
+        int depth = 0;
+        std::size_t k = at - 1;
+        for (;; --k) {
+            if (t_[k].kind == Tok::Char && t_[k].text == "}") ++depth;
+            if (t_[k].kind == Tok::Char && t_[k].text == "{" && --depth == 0) break;
+            if (k == 0) return false;
+        }
+        if (k < 2 || t_[k - 1].text != "_") return false;
+        letter = k - 2;
+    }
     static const char* const kLabels[] = {"T", "V", "U", "L", "H", "E", "K"};
-    if (std::none_of(std::begin(kLabels), std::end(kLabels), [&](const char* l) { return before.text == l; }))
+    if (t_[letter].kind != Tok::Letter ||
+        std::none_of(std::begin(kLabels), std::end(kLabels), [&](const char* l) { return t_[letter].text == l; }))
         return false;
     const std::size_t saved = pos_, saved_uses = side_.uses.size(), saved_notes = side_.notes.size();
     const int saved_abs = abs_depth_;

@@ -41,7 +41,8 @@ void Checker::collect_named_constants(const std::vector<FullChain>& chains) {
         const Prepared p = prepare(quantity);
         if (!p.comparable() || !p.units.empty() || p.value.has(name) || !quantity_of_motion(p.value, model_)) continue;
         const std::size_t until = c.section >= 0 ? d_.sections[std::size_t(c.section)].end : std::string::npos;
-        definitions_.add(name, f->name, p.value, at, d_.position(at).line, until, quantity.side->source, at);
+        definitions_.add(name, f->name, p.value, at, d_.position(at).line, until, quantity.side->source, at,
+                         conserved_on_motion(p.value));
         named_constants_[at] = f->name;
     }
 }

@@ -1,7 +1,9 @@
 /** @file prose.cpp  The sentences around a derivation's math (prose.hpp). */
 #include "checker/prose.hpp"
 
+#include <algorithm>
 #include <cctype>
+#include <iterator>
 
 namespace eomgen::checker {
 
@@ -71,6 +73,34 @@ std::string lead_in_ends_with(const Derivation& d, std::size_t offset, std::init
         if (at == 0 || !std::isalpha(static_cast<unsigned char>(before[at - 1]))) return word;
     }
     return "";
+}
+
+bool explains_formula_before(const Derivation& d, std::size_t offset) {
+    static const char* const kCues[] = {"where", "with", "donde", "wobei", "whereby"};
+    const auto cue = [](const std::string& w) {
+        return std::any_of(std::begin(kCues), std::end(kCues), [&](const char* c) { return w == c; });
+    };
+    // The word right before the math, across `$`, braces and spaces (`\text{where } \omega^2`, `\text{donde $`).
+    const std::string& s = d.text;
+    std::size_t k = std::min(offset, s.size());
+    while (k > 0 && (std::isspace(static_cast<unsigned char>(s[k - 1])) || s[k - 1] == '$' || s[k - 1] == '{' || s[k - 1] == '}' ||
+                     s[k - 1] == '(' || s[k - 1] == ','))
+        --k;
+    std::size_t w = k;
+    while (w > 0 && std::isalpha(static_cast<unsigned char>(s[w - 1]))) --w;
+    std::string word;
+    for (std::size_t i = w; i < k; ++i) word += char(std::tolower(static_cast<unsigned char>(s[i])));
+    if (cue(word) && (w == 0 || s[w - 1] != '\\')) return true;
+    // The sentence leading into it: the unfinished one the math is in, else the one that ends right before it
+    // ("where Q is the damper's force:").
+    for (int sentences = 1; sentences <= 2; ++sentences) {
+        std::string lead = lead_in(d, offset, sentences);
+        const std::size_t first = lead.find_first_not_of(" \t\r\n");
+        if (first == std::string::npos) continue;
+        lead = lead.substr(first);
+        return lead.rfind("where ", 0) == 0 || lead.rfind("where,", 0) == 0;
+    }
+    return false;
 }
 
 }  // namespace eomgen::checker

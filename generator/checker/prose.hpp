@@ -26,4 +26,9 @@ std::string sentence_around(const std::string& text, std::size_t begin, std::siz
 /// `words` ("linearizing about", "Setting"), else "": what the math right after it is.
 std::string lead_in_ends_with(const Derivation& d, std::size_t offset, std::initializer_list<const char*> words);
 
+/// True when the math at `offset` is said to explain a formula before it: the word right before it is "where",
+/// "with", "donde" (`… - \omega^2 r \quad \text{where $\omega^2 = k/m$}`), or the sentence leading into it starts
+/// with "where" ("where $Q$ is the force of the damper: $$Q = -c\dot y$$").
+bool explains_formula_before(const Derivation& d, std::size_t offset);
+
 }  // namespace eomgen::checker

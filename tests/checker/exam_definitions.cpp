@@ -179,3 +179,54 @@ TEST_CASE("definitions: a label written as a function of its arguments is the la
     REQUIRE(wrong.equations.size() == 1);
     CHECK(wrong.equations[0].verdict == Verdict::Disagrees);
 }
+
+TEST_CASE("definitions: a definition after 'where' holds in the formula it explains", "[checker][definitions]") {
+    const char* const spherical = "tests/checker/models/spherical_pendulum.toml";
+    // In the same display (`\text{where $...$}`) and in the display after "where ... is:".
+    const eomgen::checker::CheckReport same = eomgen::test::check_text(
+        spherical, "$$\\ddot\\theta = \\sin\\theta\\cos\\theta\\,\\dot\\phi^2 - \\omega^2\\sin\\theta, \\quad "
+                   "\\text{where } \\omega^2 = g/l$$\n");
+    REQUIRE(same.equations.size() == 2);
+    for (const EquationCheck& e : same.equations) INFO(describe(e));
+    CHECK(same.equations[0].verdict == Verdict::Agrees);
+    CHECK(has_note(same.equations[0], "using $\\omega = \\sqrt{g/l}$"));
+    const eomgen::checker::CheckReport after = eomgen::test::check_text(
+        spherical, "$$m l^2 \\ddot\\theta + m g l \\sin\\theta = Q$$\n\nwhere $Q$ is the centrifugal term:\n\n"
+                   "$$Q = m l^2 \\sin\\theta\\cos\\theta\\,\\dot\\phi^2$$\n");
+    REQUIRE(after.equations.size() == 2);
+    for (const EquationCheck& e : after.equations) INFO(describe(e));
+    CHECK(after.equations[0].verdict == Verdict::Agrees);
+    // Without the cue, a name used before the text defines it is still unknown there.
+    const eomgen::checker::CheckReport plain = eomgen::test::check_text(
+        spherical, "$$m l^2 \\ddot\\theta + m g l \\sin\\theta = Q$$\n\nThe centrifugal term:\n\n"
+                   "$$Q = m l^2 \\sin\\theta\\cos\\theta\\,\\dot\\phi^2$$\n");
+    REQUIRE(plain.equations.size() == 2);
+    CHECK(plain.equations[0].verdict == Verdict::NotComparable);
+}
+
+TEST_CASE("definitions: a constant of the motion is held fixed where the text differentiates by a coordinate",
+          "[checker][definitions]") {
+    // The effective potential in J = p_φ / m: -∂V_eff/∂θ at fixed J is the θ equation; with J's value put in before
+    // differentiating, the sign of the centrifugal term would flip.
+    const char* const spherical = "tests/checker/models/spherical_pendulum.toml";
+    const std::string text = "The momentum $J = l^2\\sin^2\\theta\\,\\dot\\phi$ is conserved.\n\n"
+                             "$$V_{eff}(\\theta) = -\\frac{g}{l}\\cos\\theta + \\frac{J^2}{2 l^4 \\sin^2\\theta}$$\n\n"
+                             "$$\\ddot\\theta = -\\frac{\\partial V_{eff}}{\\partial\\theta}$$\n\n"
+                             "$$\\ddot\\theta = -\\frac{\\partial}{\\partial\\theta}\\left(\\frac{J^2}{2 l^4 \\sin^2\\theta}\\right) - "
+                             "\\frac{g}{l}\\sin\\theta$$\n";
+    const eomgen::checker::CheckReport r = eomgen::test::check_text(spherical, text);
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    CHECK(r.count(Verdict::Disagrees) == 0);
+    int held = 0;
+    for (const EquationCheck& e : r.equations)
+        if (e.where.line == 5 || e.where.line == 7) {
+            CHECK(e.verdict == Verdict::Agrees);
+            held += has_note(e, "holds $J$ fixed in the derivative by a coordinate: a constant of the motion (line 1)");
+        }
+    CHECK(held == 2);
+    // A wrong sign is still one.
+    std::string wrong = text;
+    wrong.replace(wrong.find("= -\\frac{\\partial V_{eff}}"), 3, "= ");
+    const eomgen::checker::CheckReport w = eomgen::test::check_text(spherical, wrong);
+    CHECK(w.count(Verdict::Disagrees) == 1);
+}

@@ -472,3 +472,27 @@ TEST_CASE("roles: a link with a plus-minus sign is two equations, each judged", 
     CHECK(one_verdict(hoop, "The equilibria are $\\alpha_0 = ±\\arccos\\frac{g}{\\omega^2 R}$.\n") == Verdict::Agrees);
     CHECK(one_verdict(hoop, "$q = \\pm w$\n") == Verdict::NotComparable);
 }
+
+TEST_CASE("roles: the Euler-Lagrange equation for a generic coordinate is read for each of the model's",
+          "[checker][roles]") {
+    const char* const spherical = "tests/checker/models/spherical_pendulum.toml";
+    for (const char* q : {"q", "q_i", "p"}) {
+        const std::string Q = q;
+        const std::string qd = Q.size() > 1 ? "\\dot{q}_i" : "\\dot{" + Q + "}";
+        const CheckReport r = eomgen::test::check_text(
+            spherical, "$$\\frac{d}{dt}\\frac{\\partial L}{\\partial " + qd + "} - \\frac{\\partial L}{\\partial " + Q +
+                           "} = 0$$\n");
+        REQUIRE(r.equations.size() == 1);
+        INFO(eomgen::test::describe(r.equations[0]));
+        CHECK(r.equations[0].verdict == Verdict::Agrees);
+        CHECK(r.equations[0].compared_with == "the Euler–Lagrange equation for each coordinate");
+    }
+    // A sign slip is one for every coordinate: it disagrees, naming the coordinate it was read as.
+    const CheckReport wrong = eomgen::test::check_text(
+        spherical, "$$\\frac{d}{dt}\\frac{\\partial L}{\\partial \\dot{q}} + \\frac{\\partial L}{\\partial q} = 0$$\n");
+    REQUIRE(wrong.equations.size() == 1);
+    CHECK(wrong.equations[0].verdict == Verdict::Disagrees);
+    CHECK(eomgen::test::has_note(wrong.equations[0], "the text's $q$ is a generic coordinate: read as $\\theta$"));
+    // A derivative by a name that is no velocity's coordinate is not a generic coordinate.
+    CHECK(one_verdict(spherical, "$$\\frac{\\partial L}{\\partial a} = 0$$\n") == Verdict::NotComparable);
+}
