@@ -190,6 +190,58 @@ bool AmplitudeEquations::ratio_correction(const GiNaC::ex& left, const GiNaC::ex
     return true;
 }
 
+bool AmplitudeEquations::check_shape(const std::vector<GiNaC::ex>& v, const std::string& name,
+                                     const TrialSolution& trial, const std::optional<GiNaC::ex>& stated,
+                                     Comparisons& cmp, EquationCheck& out) {
+    const std::size_t n = model_.dof();
+    if (!stated || v.size() != n || !prepare(cmp)) return false;
+    const std::optional<std::vector<GiNaC::ex>> shape = mode_shape(*stated);
+    if (!shape) return false;
+    // The scale: the entry the text normalizes to 1, else the one that leaves the fewest entries wrong.
+    const auto scaled_at = [&](std::size_t ref) {
+        std::vector<GiNaC::ex> s(n);
+        for (std::size_t k = 0; k < n; ++k)
+            s[k] = ref == n ? (*shape)[k] : GiNaC::normal((*shape)[k] * v[ref] / (*shape)[ref]);
+        return s;
+    };
+    const auto wrong_at = [&](const std::vector<GiNaC::ex>& s, std::size_t ref) {
+        std::vector<std::size_t> w;
+        for (std::size_t k = 0; k < n; ++k)
+            if (ref == n || !cmp.same(v[k], s[k], 1e-9)) w.push_back(k);
+        return w;
+    };
+    std::size_t ref = n;
+    std::vector<std::size_t> wrong = wrong_at(scaled_at(n), n);
+    bool unit = false;
+    for (std::size_t k = 0; k < n; ++k) {
+        if (cmp.same((*shape)[k], 0, 1e-9) || cmp.same(v[k], 0, 1e-9)) continue;
+        const std::vector<std::size_t> w = wrong_at(scaled_at(k), k);
+        const bool one = cmp.same(v[k], 1, 1e-12);
+        if (ref == n || (one && !unit) || (one == unit && w.size() < wrong.size())) {
+            ref = k;
+            wrong = w;
+            unit = one;
+        }
+    }
+    const std::vector<GiNaC::ex> scaled = scaled_at(ref);
+    out.compared_with = "the mode of the trial solution of line " + std::to_string(trial.line) +
+                        " at the normal frequency $\\omega^2 = " + cmp.latex(*stated) + "$";
+    out.notes.push_back("the mode's shape: the null vector of $K - \\omega^2 M$ there, up to its scale");
+    if (wrong.empty()) {
+        out.verdict = Verdict::Agrees;
+        out.reason = "the mode's shape, a multiple of it";
+        return true;
+    }
+    out.verdict = Verdict::Disagrees;
+    std::string corrected = name + " = \\begin{bmatrix} ";
+    for (std::size_t k = 0; k < n; ++k) corrected += (k ? " \\\\ " : "") + cmp.latex(scaled[k]);
+    out.corrected = corrected + " \\end{bmatrix}";
+    for (const std::size_t k : wrong)
+        out.wrong_terms.push_back("entry " + std::to_string(k + 1) + " (for $" + model_.coordinates[k].latex + "$) is $" +
+                                  cmp.latex(v[k]) + "$ where the mode has $" + cmp.latex(scaled[k]) + "$");
+    return true;
+}
+
 bool AmplitudeEquations::prepare(Comparisons& cmp) {
     if (prepared_) return usable_;
     prepared_ = true;

@@ -60,6 +60,15 @@ class AmplitudeEquations {
                const std::string& right_source, const std::vector<std::string>& written, const TrialSolution& trial,
                const std::optional<GiNaC::ex>& stated, const LatexContext& ctx, Comparisons& cmp, EquationCheck& out);
 
+    /**
+     * Judges `name = (v_1, …, v_n)` (a vector the text names after the amplitude equations of a mode: `e_1 = (1, 1,
+     * 1)`) as that mode's shape, at the frequency `stated` (ω²) of `trial`: agrees when v is a multiple of the null
+     * vector of K₀ − ω² M₀ there; disagrees otherwise, corrected to the shape scaled to v's first entry that is
+     * not 0 in both. False (out untouched) when there is no such frequency or shape, or v has another length.
+     */
+    bool check_shape(const std::vector<GiNaC::ex>& v, const std::string& name, const TrialSolution& trial,
+                     const std::optional<GiNaC::ex>& stated, Comparisons& cmp, EquationCheck& out);
+
   private:
     bool prepare(Comparisons& cmp);
     /// The mode's shape at ω² = w2: the null vector of K₀ − w2 M₀ (one component 1), when its null space is a line.

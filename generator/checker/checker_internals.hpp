@@ -165,6 +165,24 @@ class Checker : public Comparisons {
           }) {
         algebra_.set_model_matrices(
             [this](const std::string& key, const GiNaC::matrix* text) { return model_matrix(key, text); });
+        algebra_.set_scalar_judge([this](const GiNaC::ex& a, const Side& ls, const GiNaC::ex& b, const Side& rs,
+                                         EquationCheck& r) {
+            Side left = ls, right = rs;
+            left.ok = right.ok = true;
+            left.value = a;
+            right.value = b;
+            return modes_.check(left, right, ctx_, *this, r);
+        });
+        algebra_.set_vector_judge([this](const std::vector<GiNaC::ex>& v, const std::string& name, std::size_t at,
+                                         EquationCheck& r) {
+            const TrialSolution* trial = discourse_ ? discourse_->trial_at(at) : nullptr;
+            return trial && amplitudes_.check_shape(v, name, *trial, discourse_->stated_frequency(at), *this, r);
+        });
+        algebra_.set_row_judge([this](const GiNaC::ex& a, const GiNaC::ex& b, std::size_t at, EquationCheck& r) {
+            const TrialSolution* trial = discourse_ ? discourse_->trial_at(at) : nullptr;
+            return trial &&
+                   amplitudes_.check(a, b, "", "", {}, *trial, discourse_->stated_frequency(at), ctx_, *this, r);
+        });
         hints_.other_angles = false;  // only the sines and cosines the author or the model wrote
         for (const Parameter& p : model.parameters) hints_.constants.insert(p.symbol);
     }

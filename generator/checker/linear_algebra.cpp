@@ -55,6 +55,40 @@ bool LinearAlgebra::check(const Side& left, std::size_t left_base, const Side& r
     return true;
 }
 
+bool LinearAlgebra::judge_rows(const GiNaC::matrix& a, const GiNaC::matrix& b, std::size_t at, Comparisons& cmp,
+                               EquationCheck& r) {
+    if (!row_judge_ || a.rows() < 2) return false;
+    std::vector<EquationCheck> rows;
+    for (unsigned i = 0; i < a.rows(); ++i) {
+        EquationCheck row = r;
+        row.notes.clear();
+        if (!row_judge_(a(i, 0), b(i, 0), at, row) || row.verdict == Verdict::NotComparable ||
+            row.verdict == Verdict::NotJudged)
+            return false;
+        rows.push_back(std::move(row));
+    }
+    const auto wrong =
+        std::count_if(rows.begin(), rows.end(), [](const EquationCheck& x) { return x.verdict == Verdict::Disagrees; });
+    r.compared_with = rows.front().compared_with;
+    if (wrong == 0) {
+        r.verdict = Verdict::Agrees;
+        r.reason = "row by row: " + rows.front().reason;
+        return true;
+    }
+    r.verdict = Verdict::Disagrees;
+    r.reason = "row by row, as the amplitude equations it stands for";
+    for (unsigned i = 0; i < rows.size(); ++i) {
+        if (rows[i].verdict != Verdict::Disagrees) continue;
+        const std::string row =
+            "row " + std::to_string(i + 1) + " (" + dollars(cmp.latex(a(i, 0)) + " = " + cmp.latex(b(i, 0))) + ")";
+        if (!rows[i].reason.empty()) r.wrong_terms.push_back(row + ": " + rows[i].reason);
+        for (const std::string& w : rows[i].wrong_terms) r.wrong_terms.push_back(row + ": " + w);
+        if (!rows[i].corrected.empty())
+            r.notes.push_back("row " + std::to_string(i + 1) + " corrected: $" + rows[i].corrected + "$");
+    }
+    return true;
+}
+
 bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Side& right,
                                std::size_t right_base, Comparisons& cmp, EquationCheck& r) {
     const double tol = std::max(1e-9, left.rounding + right.rounding);
@@ -152,6 +186,18 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
             a = GiNaC::matrix(b.rows(), b.cols());
         else
             b = GiNaC::matrix(a.rows(), a.cols());
+    } else if (v[0]->scalar != v[1]->scalar && vector_judge_ && [&] {
+                   // `e_1 = (1, 1, 1)`: a name the text gives a column vector.
+                   const int k = v[0]->scalar ? 0 : 1;
+                   const GiNaC::matrix& col = k == 0 ? b : a;
+                   if (col.cols() != 1 || !sides[k]->ok || !GiNaC::is_a<GiNaC::symbol>(sides[k]->value)) return false;
+                   const FreeName* f = ctx_.free_name_of(sides[k]->value);
+                   if (!f || f->kind != NameKind::Unknown) return false;
+                   std::vector<GiNaC::ex> entries;
+                   for (unsigned i = 0; i < col.rows(); ++i) entries.push_back(col(i, 0));
+                   return vector_judge_(entries, sides[k]->source, right_base + right.begin, r);
+               }()) {
+        return true;
     } else if (v[0]->scalar != v[1]->scalar || a.rows() != b.rows() || a.cols() != b.cols()) {
         const auto shape = [](const Value& x) {
             return x.scalar ? std::string("a scalar")
@@ -216,6 +262,8 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
         eigen_note();
         return true;
     }
+    if (!unknown.empty() && a.cols() == 1 && judge_rows(a, b, right_base + right.begin, cmp, r)) return true;
+    if (!unknown.empty() && !vector && scalar_judge_ && scalar_judge_(a(0, 0), left, b(0, 0), right, r)) return true;
     if (!unknown.empty()) {
         std::string list;
         for (const std::string& u : unknown) list += (list.empty() ? "" : ", ") + dollars(u);

@@ -91,6 +91,20 @@ class LinearAlgebra {
     /// used inside an expression), or std::nullopt when the name is no such matrix.
     using MatrixProvider = std::function<std::optional<NamedMatrix>(const std::string& key, const GiNaC::matrix* text)>;
     void set_model_matrices(MatrixProvider provider) { model_matrix_ = std::move(provider); }
+    /// Judges one row `left = right` of a vector equation in names the model does not know (a trial solution's
+    /// amplitudes: `(K - \omega^2 M) [A_1; A_2] = 0`), at file offset `at`; false when the row is no such equation.
+    using RowJudge = std::function<bool(const GiNaC::ex& left, const GiNaC::ex& right, std::size_t at, EquationCheck& r)>;
+    void set_row_judge(RowJudge judge) { row_judge_ = std::move(judge); }
+    /// Judges a scalar equation the arrays worked out (`\det(K - \omega^2 M) = 0` with the text's ω) as the
+    /// scalar checks would (a secular equation); false when they take no such equation.
+    using ScalarJudge = std::function<bool(const GiNaC::ex& left, const Side& left_side, const GiNaC::ex& right,
+                                           const Side& right_side, EquationCheck& r)>;
+    void set_scalar_judge(ScalarJudge judge) { scalar_judge_ = std::move(judge); }
+    /// Judges `name = (v_1, …, v_n)`, a vector the text names (a mode's shape), at file offset `at`; false when it
+    /// is no such claim.
+    using VectorJudge = std::function<bool(const std::vector<GiNaC::ex>& v, const std::string& name, std::size_t at,
+                                           EquationCheck& r)>;
+    void set_vector_judge(VectorJudge judge) { vector_judge_ = std::move(judge); }
     using Factor = matrix_latex::Factor;
     using Term = matrix_latex::Term;
 
@@ -175,6 +189,12 @@ class LinearAlgebra {
     std::map<std::string, GiNaC::symbol> coefficients_;  ///< free coefficients of eigenspaces, by name
     bool verifying_ = false;
     MatrixProvider model_matrix_;  ///< the model's mass and stiffness matrices by name (model_matrices.cpp)
+    RowJudge row_judge_;           ///< a trial solution's amplitude equations, row by row
+    ScalarJudge scalar_judge_;     ///< secular equations worked out from arrays
+    VectorJudge vector_judge_;     ///< the shape of a mode, named by the text
+    /// A column equation whose rows the row judge takes: agrees when every row does, else disagrees naming the
+    /// rows. False (r untouched) when a row is no equation it judges.
+    bool judge_rows(const GiNaC::matrix& a, const GiNaC::matrix& b, std::size_t at, Comparisons& cmp, EquationCheck& r);
 };
 
 }  // namespace eomgen::checker

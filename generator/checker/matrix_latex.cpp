@@ -153,6 +153,9 @@ bool mentions_array(std::string_view s) {
     if (s.find("\\begin{") != std::string_view::npos || s.find("\\det") != std::string_view::npos ||
         s.find("operatorname{det}") != std::string_view::npos)
         return true;
+    for (std::size_t k = s.find("det"); k != std::string_view::npos; k = s.find("det", k + 1))  // `det\left(`
+        if ((k == 0 || !std::isalpha(static_cast<unsigned char>(s[k - 1]))) && s.substr(k + 3, 5) == "\\left")
+            return true;
     for (const char* c : kVectorCommands)
         for (std::size_t k = s.find(c); k != std::string_view::npos; k = s.find(c, k + 1))
             if (starts_command(s, k, c)) return true;
@@ -301,9 +304,14 @@ static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Facto
         f.end = end;
         return true;
     }
-    const bool det = starts_command(s, i, "\\det") || s.substr(i, 18) == "\\operatorname{det}";
+    // `\det`, `\operatorname{det}`, or `det` without its backslash before a bracket (`det\left(…\right)`, as
+    // notebooks write it).
+    const bool bare_det = s.substr(i, 3) == "det" && (i == 0 || (!std::isalpha(static_cast<unsigned char>(s[i - 1])) &&
+                                                                  s[i - 1] != '\\')) &&
+                          i + 3 < e && (s[i + 3] == '(' || s[i + 3] == '\\' || s[i + 3] == ' ');
+    const bool det = starts_command(s, i, "\\det") || s.substr(i, 18) == "\\operatorname{det}" || bare_det;
     if (det) {
-        std::size_t k = i + (s[i + 1] == 'd' ? 4 : 18);
+        std::size_t k = i + (bare_det ? 3 : s[i + 1] == 'd' ? 4 : 18);
         while (k < e && s[k] == ' ') ++k;
         Factor inner;
         std::size_t j = k;

@@ -222,9 +222,11 @@ void NormalModesCheck::compute(Comparisons& cmp) {
             continue;
         }
         Rest rest;
+        // (A point found in numbers on a continuum of equilibria, a free translation, shows its round-off as 0.)
         for (std::size_t i = 0; i < modes.latex.size(); ++i)
             rest.at += (i ? ", " : "") +
-                       m(modes.latex[i] + " = " + (e.exact[i] ? cmp.latex(*e.exact[i]) : number(e.q[i])));
+                       m(modes.latex[i] + " = " +
+                         (e.exact[i] ? cmp.latex(*e.exact[i]) : number(std::abs(e.q[i]) < 1e-11 ? 0.0 : e.q[i])));
         for (const NormalMode& mode : e.modes) {
             rest.omega2.push_back(mode.omega2);
             rest.omega2_exact.push_back(mode.omega2_exact);

@@ -1017,21 +1017,6 @@ ModesResult small_oscillations(const Model& model, const Equations& eq_in, const
         }
         e.A = rows_of(T * A * T.transpose());
         e.B = rows_of(T * B);
-        const Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
-        double max_re = -std::numeric_limits<double>::infinity();
-        double lambda_scale = 0;
-        for (Eigen::Index k = 0; k < es.eigenvalues().size(); ++k) lambda_scale = std::max(lambda_scale, std::abs(es.eigenvalues()(k)));
-        for (Eigen::Index k = 0; k < es.eigenvalues().size(); ++k) {
-            std::complex<double> z = es.eigenvalues()(k);
-            // A double zero eigenvalue (a zero mode) splits into ±√ε: show it as the 0 it is.
-            if (std::abs(z) <= 1e-6 * std::max(lambda_scale, 1e-300)) z = 0;
-            e.eigenvalues.push_back(z);
-            max_re = std::max(max_re, z.real());
-        }
-        const double sort_tol = 1e-9 * std::max(lambda_scale, 1e-300);
-        std::sort(e.eigenvalues.begin(), e.eigenvalues.end(), [sort_tol](const auto& a, const auto& b) {
-            return std::abs(a.real() - b.real()) > sort_tol ? a.real() > b.real() : a.imag() > b.imag();
-        });
         // Normal modes of the symmetric part of K: ω² and shapes.
         const Eigen::MatrixXd Ks = (Km + Km.transpose()) / 2;
         const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> ges(Ks, Mm);
@@ -1053,6 +1038,31 @@ ModesResult small_oscillations(const Model& model, const Equations& eq_in, const
             for (Eigen::Index i = 0; i < v.size(); ++i) mode.shape.push_back(std::abs(v(i)) < 1e-12 ? 0.0 : v(i));
             e.modes.push_back(mode);
         }
+        // The eigenvalues of A, on A scaled to time in units of 1/ω_max (S⁻¹ A S, S = diag(I, s I), s = ω_max: the
+        // same eigenvalues): without it, a model in SI units of atoms (M ~ 1e-26 kg, K ~ 1e3 N/m, M⁻¹K ~ 1e29)
+        // gives EigenSolver a matrix of 1s beside 1e29s, whose zero mode came back as ±8e20 (an "unstable"
+        // molecule).
+        const double s_scale = omega_scale > 0 ? std::sqrt(omega_scale) : 1.0;
+        Eigen::MatrixXd As = A;
+        if (nr > 0) {
+            As.topRightCorner(Eigen::Index(nr), Eigen::Index(nr)) *= s_scale;
+            As.bottomLeftCorner(Eigen::Index(nr), Eigen::Index(nr)) /= s_scale;
+        }
+        const Eigen::EigenSolver<Eigen::MatrixXd> es(As, false);
+        double max_re = -std::numeric_limits<double>::infinity();
+        double lambda_scale = 0;
+        for (Eigen::Index k = 0; k < es.eigenvalues().size(); ++k) lambda_scale = std::max(lambda_scale, std::abs(es.eigenvalues()(k)));
+        for (Eigen::Index k = 0; k < es.eigenvalues().size(); ++k) {
+            std::complex<double> z = es.eigenvalues()(k);
+            // A double zero eigenvalue (a zero mode) splits into ±√ε: show it as the 0 it is.
+            if (std::abs(z) <= 1e-6 * std::max(lambda_scale, 1e-300)) z = 0;
+            e.eigenvalues.push_back(z);
+            max_re = std::max(max_re, z.real());
+        }
+        const double sort_tol = 1e-9 * std::max(lambda_scale, 1e-300);
+        std::sort(e.eigenvalues.begin(), e.eigenvalues.end(), [sort_tol](const auto& a, const auto& b) {
+            return std::abs(a.real() - b.real()) > sort_tol ? a.real() > b.real() : a.imag() > b.imag();
+        });
         const double lambda_tol = 1e-7 * std::sqrt(std::max(omega_scale, 1e-300));
         // Conservative (no damping): every λ on the imaginary axis is stable (Lyapunov); with damping every λ must
         // have Re λ < 0 for asymptotic stability, and Re λ = 0 is marginal.

@@ -118,3 +118,35 @@ TEST_CASE("amplitudes: a normal-mode derivation in the style of course notes, ev
     CHECK(eomgen::test::planted_found(r, planted) == 1);
     CHECK(r.count(Verdict::Agrees) >= 14);
 }
+
+TEST_CASE("amplitudes: the matrix form, the characteristic equation and a mode's shape", "[checker][amplitudes]") {
+    const std::string matrix = "\\begin{bmatrix} k - m\\omega^2 & -k & 0 \\\\ -k & 2k - M\\omega^2 & -k \\\\ "
+                               "0 & -k & k - m\\omega^2 \\end{bmatrix}";
+    const std::string amplitudes = "\\begin{bmatrix} A_1 \\\\ A_2 \\\\ A_3 \\end{bmatrix}";
+    const CheckReport r = eomgen::test::check_text(
+        kTriatomic, kAnsatz + "$$" + matrix + amplitudes + " = 0$$\n\n$$det\\left(" + matrix + "\\right) = 0$$\n\n" +
+                        "For the second mode, $\\omega^2 = \\frac{k}{m}$:\n\n$$e_2 = \\begin{bmatrix} 1 \\\\ 0 \\\\ -1 "
+                        "\\end{bmatrix}$$\n");
+    for (const EquationCheck& e : r.equations) INFO(eomgen::test::describe(e));
+    REQUIRE(r.equations.size() == 5);
+    // (K − ω²M)A = 0 row by row; det (written without its backslash) as the secular equation; e₂ as the shape.
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    CHECK(r.equations[1].reason.find("row by row") == 0);
+    CHECK(r.equations[2].verdict == Verdict::Agrees);
+    CHECK(r.equations[2].compared_with.find("the secular equation") == 0);
+    CHECK(r.equations[4].verdict == Verdict::Agrees);
+    CHECK(r.equations[4].reason == "the mode's shape, a multiple of it");
+    // A wrong entry of the matrix: the row it spoils is named; a wrong shape is corrected in the text's scale.
+    std::string wrong_matrix = matrix;
+    wrong_matrix.replace(wrong_matrix.find("2k - M"), 6, "2k - m");
+    const CheckReport w = eomgen::test::check_text(
+        kTriatomic, kAnsatz + "$$" + wrong_matrix + amplitudes + " = 0$$\n\nFor the second mode, $\\omega^2 = "
+                              "\\frac{k}{m}$:\n\n$$e_2 = \\begin{bmatrix} 1 \\\\ 1 \\\\ -1 \\end{bmatrix}$$\n");
+    for (const EquationCheck& e : w.equations) INFO(eomgen::test::describe(e));
+    REQUIRE(w.equations.size() == 4);
+    CHECK(w.equations[1].verdict == Verdict::Disagrees);
+    REQUIRE(!w.equations[1].wrong_terms.empty());
+    CHECK(w.equations[1].wrong_terms[0].rfind("row 2", 0) == 0);
+    CHECK(w.equations[3].verdict == Verdict::Disagrees);
+    CHECK(w.equations[3].corrected == "e_2 = \\begin{bmatrix} 1 \\\\ 0 \\\\ -1 \\end{bmatrix}");
+}

@@ -158,6 +158,43 @@ V = "k/2*(x2 - x1 - b)^2 + k/2*(x3 - x2 - b)^2"
     CHECK_FALSE(r.notes.empty());  // the zero mode is explained
 }
 
+TEST_CASE("modes: the triatomic molecule in SI units of atoms is marginally stable, its eigenvalues ±iω",
+          "[physics][modes]") {
+    // M⁻¹K ~ 1e29 beside the 1s of the first-order system: unscaled, the eigen-solver gave the zero mode as ±8e20
+    // and called carbon dioxide unstable.
+    const Derived d = derive(R"toml(name = "co2"
+[[coordinates]]
+name = "x1"
+[[coordinates]]
+name = "x2"
+[[coordinates]]
+name = "x3"
+[[parameters]]
+name = "M"
+value = 2.66e-26
+[[parameters]]
+name = "m"
+value = 1.993e-26
+[[parameters]]
+name = "k"
+value = 3628
+[lagrangian]
+T = "M/2*x1'^2 + m/2*x2'^2 + M/2*x3'^2"
+V = "k/2*(x2 - x1)^2 + k/2*(x3 - x2)^2"
+)toml");
+    const eomgen::ModesResult r = eomgen::small_oscillations(d.model, d.eq, {});
+    REQUIRE(r.equilibria.size() == 1);
+    const eomgen::Equilibrium& e = r.equilibria[0];
+    CHECK(e.stability == eomgen::Stability::Marginal);
+    const double M = 2.66e-26, m = 1.993e-26, k = 3628;
+    REQUIRE(e.modes.size() == 3);
+    CHECK(e.modes[1].omega2 == Approx(k / M).epsilon(1e-9));
+    CHECK(e.modes[2].omega2 == Approx(k / M * (1 + 2 * M / m)).epsilon(1e-9));
+    REQUIRE(e.eigenvalues.size() == 6);
+    for (const std::complex<double>& z : e.eigenvalues) CHECK(std::abs(z.real()) <= 1e-6 * std::sqrt(k / m));
+    CHECK(std::abs(e.eigenvalues.front()) == Approx(std::sqrt(e.modes[2].omega2)).epsilon(1e-9));
+}
+
 TEST_CASE("modes: bead on a spinning hoop, stable at the bottom below w^2 = g/R, off axis above",
           "[physics][modes]") {
     // L = ½ m R² (ȧ² + w² sin² a) + m g R cos a: V_eff = −m g R cos a − ½ m R² w² sin² a, M = m R².
