@@ -53,6 +53,7 @@ void Checker::setup_names() {
     ctx_.time = model_.t;
     ctx_.names["t"] = model_.t;
     for (const Coordinate& c : model_.coordinates) {
+        ctx_.coordinates.push_back(c.q);
         add_name(c.latex, c.q);
         add_name("\\dot{" + c.latex + "}", c.qd);
         add_name("\\ddot{" + c.latex + "}", c.qdd);

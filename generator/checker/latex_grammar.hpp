@@ -12,6 +12,7 @@
 #include <ginac/ginac.h>
 
 #include <cctype>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -279,6 +280,9 @@ class Parser {
 
     /// The value of the name at pos_: known, d/dt of a known name, or a free name.
     GiNaC::ex name_value();
+    /// `(\theta)` right after a name, θ one of the model's coordinates: the name as a function of it (`V(\theta)`,
+    /// `I_p(\theta)`). Moves past the `)` and returns the coordinate; nullopt (pos_ unchanged) otherwise.
+    std::optional<GiNaC::ex> coordinate_argument();
 
     GiNaC::ex resolve(const NameParts& n, std::size_t at);
 

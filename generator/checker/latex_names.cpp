@@ -218,12 +218,57 @@ GiNaC::ex Parser::name_value() {
             return GiNaC::exp(superscript(pat));
         }
     }
-    GiNaC::ex v = resolve(n, at);
+    // `V'(\theta)`, `I_p''(\theta)`: the derivative by the coordinate of the name as a function of it (a label, or
+    // a name the text defines, then differentiated as its definition); `I_p(\theta)`: the name itself.
+    GiNaC::ex v;
+    const std::size_t after = pos_;
+    if (const std::optional<GiNaC::ex> q = n.dots == 0 ? coordinate_argument() : std::nullopt) {
+        NameParts unprimed = n;
+        unprimed.primes = 0;
+        v = resolve(unprimed, at);
+        static const char* const kLabels[] = {"T", "V", "U", "L", "H", "E", "K"};
+        const bool label = std::any_of(std::begin(kLabels), std::end(kLabels), [&](const char* l) { return n.base == l; });
+        if (ctx_.free_name_of(v) == nullptr && !label) {
+            pos_ = after;  // `m(\theta)`: a parameter times θ
+            v = resolve(n, at);
+        } else {
+            for (int k = 0; k < n.primes; ++k) v = pdiff(v, *q);
+        }
+    } else {
+        v = resolve(n, at);
+    }
     if (has_pending_power_) {
         has_pending_power_ = false;
         v = power(v, pending_power_, at);
     }
     return v;
+}
+
+std::optional<GiNaC::ex> Parser::coordinate_argument() {
+    const std::size_t at = pos_;
+    if (at == 0 || at + 2 >= t_.size() || t_[at].text != "(" ||
+        t_[at - 1].offset + t_[at - 1].length != t_[at].offset)
+        return std::nullopt;
+    const std::size_t saved_uses = side_.uses.size();
+    const bool saved_pending = has_pending_power_;
+    try {
+        ++pos_;
+        NameParts a;
+        if (read_name(a) && !has_pending_power_ && is_char(peek(), ")")) {
+            const auto it = ctx_.names.find(a.canonical());
+            if (it != ctx_.names.end() &&
+                std::any_of(ctx_.coordinates.begin(), ctx_.coordinates.end(),
+                            [&](const GiNaC::ex& q) { return q.is_equal(it->second); })) {
+                ++pos_;
+                return it->second;
+            }
+        }
+    } catch (const ParseFailure&) {
+    }
+    pos_ = at;
+    side_.uses.resize(saved_uses);
+    has_pending_power_ = saved_pending;
+    return std::nullopt;
 }
 
 GiNaC::ex Parser::resolve(const NameParts& n, std::size_t at) {

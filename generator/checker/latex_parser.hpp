@@ -43,6 +43,8 @@ struct LatexContext {
     std::map<std::string, GiNaC::ex> names;
     /// Time: `\frac{d}{dt}` needs `t` to be this symbol. Also `names["t"]` normally.
     GiNaC::ex time;
+    /// The model's coordinates: `V'(\theta)`, `I_p(\theta)` are read as functions of them.
+    std::vector<GiNaC::ex> coordinates;
     /// Names seen but not known, created on first use (by canonical name).
     std::map<std::string, FreeName> free_names;
 

@@ -230,3 +230,20 @@ TEST_CASE("definitions: a constant of the motion is held fixed where the text di
     const eomgen::checker::CheckReport w = eomgen::test::check_text(spherical, wrong);
     CHECK(w.count(Verdict::Disagrees) == 1);
 }
+
+TEST_CASE("definitions: a function of a coordinate, f(theta), and its derivative f'(theta)", "[checker][definitions]") {
+    const char* const pendulum = "tests/checker/models/plane_pendulum.toml";
+    const eomgen::checker::CheckReport r = eomgen::test::check_text(
+        pendulum, "Let $y(\\theta) = -l\\cos\\theta$ be the height.\n\n$$V = m g y(\\theta)$$\n\n"
+                  "$$y'(\\theta) = l\\sin\\theta$$\n\n$$V'(\\theta) = m g l \\sin\\theta$$\n\n"
+                  "$$m l^2\\ddot\\theta = -V'(\\theta)$$\n\n$$y''(\\theta) = l\\sin\\theta$$\n");
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    REQUIRE(r.equations.size() == 6);
+    for (std::size_t k = 1; k < 5; ++k) CHECK(r.equations[k].verdict == Verdict::Agrees);
+    CHECK(r.equations[5].verdict == Verdict::Disagrees);  // y'' = l cos θ
+    // A parameter before a bracket is a product, as before: m(g l) is m g l.
+    const eomgen::checker::CheckReport product =
+        eomgen::test::check_text(pendulum, "$$V = -m(\\theta)g l\\cos\\theta$$\n");
+    REQUIRE(product.equations.size() == 1);
+    CHECK(product.equations[0].verdict == Verdict::Disagrees);
+}
