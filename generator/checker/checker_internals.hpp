@@ -462,6 +462,14 @@ class Checker : public Comparisons {
     ExMap<std::string> part_origin_;  ///< part symbol → "line N"
     std::vector<GiNaC::ex> motion_;   ///< the equations of motion, = 0
     std::vector<GiNaC::symbol> multipliers_;  ///< λ_k per constraint, as a text names them (\lambda, \lambda_{1})
+    /// The text's sign of λ (+1 eomgen's, M q̈ = f + Aᵀλ; −1 the other), set by the first link that holds with one
+    /// sign only, and the line of that link: a later link that holds with the other sign only disagrees.
+    int multiplier_sign_ = 0;
+    int multiplier_sign_line_ = 0;
+    std::string multiplier_sign_section_;
+    /// False (r set to disagree) when a link that holds with eomgen's sign of λ only, or with the opposite only,
+    /// goes against the sign the text took before; true otherwise (and the first such link sets it).
+    bool keeps_multiplier_sign(bool with_eomgens, bool with_opposite, EquationCheck& r);
     std::vector<std::pair<GiNaC::ex, std::string>> integrals_of_motion_;
     ExMap<std::vector<Complex>> signatures_;
     TextDefinitions definitions_;   ///< K = ..., used where the text differentiates K

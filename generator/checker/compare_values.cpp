@@ -5,6 +5,27 @@
 
 namespace eomgen::checker::detail {
 
+bool Checker::keeps_multiplier_sign(bool with_eomgens, bool with_opposite, EquationCheck& r) {
+    if (with_eomgens == with_opposite || verifying_) return true;  // both (λ cancels) or neither: nothing learnt
+    const int sign = with_eomgens ? 1 : -1;
+    // The convention holds in its section; another section may take the other one.
+    if (multiplier_sign_ == 0 || r.section != multiplier_sign_section_) {
+        multiplier_sign_ = sign;
+        multiplier_sign_line_ = r.where.line;
+        multiplier_sign_section_ = r.section;
+        return true;
+    }
+    if (sign == multiplier_sign_) return true;
+    const std::string line = std::to_string(multiplier_sign_line_);
+    r.verdict = Verdict::Disagrees;
+    r.reason = "it holds only with λ of the sign opposite to the one the text takes on line " + line + " (" +
+               (multiplier_sign_ > 0 ? "eomgen's, M q'' = f + A^T λ" : "the opposite of eomgen's M q'' = f + A^T λ") +
+               ")";
+    r.wrong_terms = {"the multiplier, or the constraint force it gives, has the wrong sign for the text's own "
+                     "convention of line " + line};
+    return false;
+}
+
 void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a_read,
                            const Prepared& b_read, double tol, EquationCheck& r) {
     Prepared a = a_read, b = b_read;
@@ -205,17 +226,35 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     }
     // 2a. With the multipliers, written on the constraints (φ = ωt put in: cos ωt for cos φ, ω for φ̇, φ̈ = 0): it
     // holds at states on them, λ from the constrained equations.
-    if (std::any_of(multipliers_.begin(), multipliers_.end(), [&](const GiNaC::symbol& l) { return r_ex.has(l); }))
-        for (int sign : {1, -1}) {
-            const std::optional<bool> holds = holds_on_constrained_motion(r_ex, model_, eq_, tol, multipliers_, sign, numbers_.pinned());
-            if (!holds || !*holds) continue;
-            r.verdict = Verdict::Agrees;
+    if (std::any_of(multipliers_.begin(), multipliers_.end(), [&](const GiNaC::symbol& l) { return r_ex.has(l); })) {
+        bool holds[2] = {false, false};
+        for (int k = 0; k < 2; ++k) {
+            const std::optional<bool> h =
+                holds_on_constrained_motion(r_ex, model_, eq_, tol, multipliers_, k == 0 ? 1 : -1, numbers_.pinned());
+            holds[k] = h && *h;
+        }
+        if (holds[0] || holds[1]) {
+            const int sign = holds[0] ? 1 : -1;
             r.compared_with = "the equations of motion with the constraint forces";
+            if (!keeps_multiplier_sign(holds[0], holds[1], r)) {
+                // `\lambda = …` alone: corrected to the multiplier with the text's sign.
+                for (std::size_t k = 0; k < multipliers_.size() && !has_acceleration(r_ex); ++k) {
+                    const PSide* alone =
+                        a.value.is_equal(multipliers_[k]) ? &L : (b.value.is_equal(multipliers_[k]) ? &R : nullptr);
+                    const std::optional<GiNaC::ex> value = alone ? solved_multiplier(model_, eq_, k) : std::nullopt;
+                    if (!value || expanded_terms(*value) > kMaxExpandedTerms) continue;
+                    const GiNaC::ex shown = GiNaC::normal(*value * multiplier_sign_);
+                    r.corrected = alone == &L ? L.side->source + " = " + latex(shown) : latex(shown) + " = " + R.side->source;
+                }
+                return;
+            }
+            r.verdict = Verdict::Agrees;
             r.reason = std::string("it holds on every motion, with the constraints put in (checked at sample states)") +
                        (sign < 0 ? ", the multiplier taken with the opposite sign to eomgen's (M q'' = f + A^T λ)" : "") +
                        within;
             return;
         }
+    }
     // `\lambda = …` (no accelerations) that holds with neither sign: wrong, corrected to the multiplier solved from the
     // constrained equations where it stands alone on a side.
     if (!has_acceleration(r_ex) && !eq_.constraints.empty())
@@ -252,11 +291,14 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         // (M q̈ = f + Aᵀλ, A from the constraint as the model writes it) or the opposite one.
         const bool with_lambda = std::any_of(multipliers_.begin(), multipliers_.end(),
                                              [&](const GiNaC::symbol& l) { return r_ex.has(l); });
+        bool holds[2] = {false, false};
+        for (int k = 0; k < 2 && with_lambda; ++k)
+            holds[k] = euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor, nullptr, nullptr,
+                                                  k == 0 ? 1 : -1) == Tri::Yes;
         for (int sign : {1, -1}) {
-            if (!with_lambda) break;
-            if (euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor, nullptr, nullptr, sign) !=
-                Tri::Yes)
-                continue;
+            if (!holds[sign > 0 ? 0 : 1]) continue;
+            euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor, nullptr, nullptr, sign);
+            if (!keeps_multiplier_sign(holds[0], holds[1], r)) return;
             r.verdict = Verdict::Agrees;
             r.compared_with = (only >= 0 ? "the Euler–Lagrange equation for " +
                                                m(model_.coordinates[std::size_t(only)].latex)

@@ -496,3 +496,28 @@ TEST_CASE("roles: the Euler-Lagrange equation for a generic coordinate is read f
     // A derivative by a name that is no velocity's coordinate is not a generic coordinate.
     CHECK(one_verdict(spherical, "$$\\frac{\\partial L}{\\partial a} = 0$$\n") == Verdict::NotComparable);
 }
+
+TEST_CASE("roles: the text's sign of the multiplier, once taken, holds for the rest of its section", "[checker][roles]") {
+    const char* const atwood = "tests/checker/models/atwood_lambda.toml";
+    // m₁ÿ₁ = m₁g + λ takes eomgen's sign (M q̈ = f + Aᵀλ): λ = +2m₁m₂g/(m₁+m₂) then holds only with the other one.
+    const std::string eomgens = "$$m_1 \\ddot y_1 = m_1 g + \\lambda$$\n\n";
+    const CheckReport wrong = eomgen::test::check_text(
+        atwood, eomgens + "$$\\lambda = \\frac{2 m_1 m_2}{m_1 + m_2} g$$\n");
+    for (const EquationCheck& e : wrong.equations) INFO(eomgen::test::describe(e));
+    REQUIRE(wrong.equations.size() == 2);
+    CHECK(wrong.equations[0].verdict == Verdict::Agrees);
+    CHECK(wrong.equations[1].verdict == Verdict::Disagrees);
+    CHECK(wrong.equations[1].reason.find("the one the text takes on line 1") != std::string::npos);
+    CHECK(wrong.equations[1].corrected == "\\lambda = -2 \\frac{m_{1} m_{2} g}{m_{1} + m_{2}}");
+    // The same value after the opposite convention (m₁ÿ₁ = m₁g − λ) agrees; alone, with no convention yet, too.
+    const CheckReport other = eomgen::test::check_text(
+        atwood, "$$m_1 \\ddot y_1 = m_1 g - \\lambda$$\n\n$$\\lambda = \\frac{2 m_1 m_2}{m_1 + m_2} g$$\n");
+    REQUIRE(other.equations.size() == 2);
+    CHECK(other.equations[1].verdict == Verdict::Agrees);
+    CHECK(one_verdict(atwood, "$$\\lambda = \\frac{2 m_1 m_2}{m_1 + m_2} g$$\n") == Verdict::Agrees);
+    // Another section may take the other sign.
+    const CheckReport sections = eomgen::test::check_text(
+        atwood, "# One\n\n" + eomgens + "# Two\n\n$$\\lambda = \\frac{2 m_1 m_2}{m_1 + m_2} g$$\n");
+    REQUIRE(sections.equations.size() == 2);
+    CHECK(sections.equations[1].verdict == Verdict::Agrees);
+}
