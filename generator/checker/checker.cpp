@@ -227,7 +227,8 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
                              d_.position(at).line, until,
                              squared ? "\\sqrt{" + source + "}" : c.sides[k].side->source,
                              c.sides[0].base + c.sides[0].side->begin, conserved_on_motion(p.value),
-                             holding ? &*holding : nullptr);
+                             holding ? &*holding : nullptr,
+                             c.section >= 0 ? d_.sections[std::size_t(c.section)].begin : 0);
             break;
         }
     }

@@ -20,6 +20,27 @@ EquationCheck Checker::check_link_noting_uses(const FullChain& c, std::size_t i,
     EquationCheck r = safe_check_link(c, i, j, bridge);
     if (r.verdict == Verdict::NotComparable && r.reason.rfind("a partial derivative with respect to", 0) == 0)
         check_generic_coordinate(c, i, j, bridge, r);
+    // A name the text gives a value only later in the section: taken so where that makes the link agree, and only
+    // there (a later wrong value is the definition's slip, not this link's).
+    if (r.verdict == Verdict::NotComparable && (r.reason.rfind("unknown symbol", 0) == 0 ||
+                                               r.reason.rfind("the partial derivative of", 0) == 0 ||
+                                               r.reason.rfind("the time derivative of", 0) == 0)) {
+        const std::size_t blames = blames_.size();
+        const int sign = multiplier_sign_, sign_line = multiplier_sign_line_;
+        const std::string sign_section = multiplier_sign_section_;
+        definitions_.set_forward(true);
+        EquationCheck later = safe_check_link(c, i, j, bridge);
+        definitions_.set_forward(false);
+        if (later.verdict == Verdict::Agrees) {
+            later.notes.push_back("with a value the text gives the name only later in its section");
+            r = std::move(later);
+        } else {  // what the attempt set up is undone
+            blames_.resize(blames);
+            multiplier_sign_ = sign;
+            multiplier_sign_line_ = sign_line;
+            multiplier_sign_section_ = sign_section;
+        }
+    }
     const std::vector<TextDefinitions::Use> uses = definitions_.take_uses();
     const std::size_t head = c.sides[i].base + c.sides[i].side->begin;
     if (r.verdict == Verdict::Agrees && r.compared_with.rfind("an identity", 0) == 0 && !bridge &&

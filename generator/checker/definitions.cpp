@@ -11,12 +11,14 @@ namespace eomgen::checker {
 
 void TextDefinitions::add(const GiNaC::ex& symbol, const std::string& name, const GiNaC::ex& value,
                           std::size_t offset, int line, std::size_t until, const std::string& source,
-                          std::size_t head, bool conserved, const GiNaC::ex* value_holding) {
+                          std::size_t head, bool conserved, const GiNaC::ex* value_holding,
+                          std::size_t section_begin) {
     // A number (`\phi = 0`, `y' = 0`) is a condition or a particular value rather than an abbreviation: it is
     // used inside derivatives only.
     const bool abbreviation = !GiNaC::is_a<GiNaC::numeric>(value);
     Definition d{name, value, offset, line, abbreviation ? until : offset, source, head};
     d.conserved = conserved;
+    d.section_begin = section_begin;
     d.value_holding = value_holding ? *value_holding : value;
     if (conserved) {
         held_values_[d.held] = value;
@@ -34,6 +36,11 @@ const TextDefinitions::Definition* TextDefinitions::in_force(const std::vector<D
     if (!list.empty() && suspended_.count(list.front().name)) return nullptr;
     for (const Definition& d : list)
         if (d.offset < at && (!in_section || at < d.until) && (!best || d.offset > best->offset)) best = &d;
+    if (!best && forward_)  // the first abbreviation after `at` in its section
+        for (const Definition& d : list)
+            if (d.offset > at && at >= d.section_begin && d.until > d.offset && at < d.until &&
+                (!best || d.offset < best->offset))
+                best = &d;
     return best;
 }
 

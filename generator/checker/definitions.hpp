@@ -42,11 +42,14 @@ class TextDefinitions {
     void add(const GiNaC::ex& symbol, const std::string& name, const GiNaC::ex& value, std::size_t offset,
              int line, std::size_t until = std::string::npos, const std::string& source = "",
              std::size_t head = std::string::npos, bool conserved = false,
-             const GiNaC::ex* value_holding = nullptr);
+             const GiNaC::ex* value_holding = nullptr, std::size_t section_begin = 0);
 
     /// While on, abbreviate() puts in the held symbols of the constants of the motion, not their values (to take
     /// a definition's value with them held: `V_{eff}` in J).
     void set_holding(bool on) const { holding_ = on; }
+    /// While on, an abbreviation the text gives only later in the section of a use is in force there too, when none
+    /// is before it (`I` in `I\ddot\theta = -\lambda r`, "the moment of inertia … is $I = \frac12 m r^2$" after).
+    void set_forward(bool on) const { forward_ = on; }
     bool has_conserved() const { return !held_values_.empty(); }
 
     /**
@@ -123,6 +126,7 @@ class TextDefinitions {
         std::size_t until = std::string::npos;
         std::string source;
         std::size_t head = std::string::npos;
+        std::size_t section_begin = 0;  ///< where its section starts (forward uses, set_forward())
         bool conserved = false;   ///< a constant of the motion: held fixed in a derivative by a coordinate
         GiNaC::ex value_holding;  ///< `value` with the constants of the motion in it held
         GiNaC::symbol held;       ///< stands for it while it is held
@@ -134,6 +138,7 @@ class TextDefinitions {
     mutable std::vector<std::string> used_;
     mutable std::vector<Use> uses_;
     mutable bool holding_ = false;
+    mutable bool forward_ = false;
     GiNaC::exmap held_values_;  ///< each held symbol, its value
     std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> held_notes_;  ///< each held symbol, what the note says
     std::set<std::string> suspended_;

@@ -196,12 +196,19 @@ TEST_CASE("definitions: a definition after 'where' holds in the formula it expla
     REQUIRE(after.equations.size() == 2);
     for (const EquationCheck& e : after.equations) INFO(describe(e));
     CHECK(after.equations[0].verdict == Verdict::Agrees);
-    // Without the cue, a name used before the text defines it is still unknown there.
+    // Without the cue, a value the text gives later in the section is taken where it makes the link agree ...
     const eomgen::checker::CheckReport plain = eomgen::test::check_text(
         spherical, "$$m l^2 \\ddot\\theta + m g l \\sin\\theta = Q$$\n\nThe centrifugal term:\n\n"
                    "$$Q = m l^2 \\sin\\theta\\cos\\theta\\,\\dot\\phi^2$$\n");
     REQUIRE(plain.equations.size() == 2);
-    CHECK(plain.equations[0].verdict == Verdict::NotComparable);
+    CHECK(plain.equations[0].verdict == Verdict::Agrees);
+    CHECK(has_note(plain.equations[0], "with a value the text gives the name only later in its section"));
+    // ... and only there: with a wrong later value the earlier link is not judged by it (no false alarm on it).
+    const eomgen::checker::CheckReport wrong = eomgen::test::check_text(
+        spherical, "$$m l^2 \\ddot\\theta + m g l \\sin\\theta = Q$$\n\nThe centrifugal term:\n\n"
+                   "$$Q = m l^2 \\sin\\theta\\,\\dot\\phi^2$$\n");
+    REQUIRE(wrong.equations.size() == 2);
+    CHECK(wrong.equations[0].verdict == Verdict::NotComparable);
 }
 
 TEST_CASE("definitions: a constant of the motion is held fixed where the text differentiates by a coordinate",
