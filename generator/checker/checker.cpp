@@ -72,6 +72,7 @@ void Checker::setup_names() {
     add_label("PE", eq_.V, "V");
     add_label("L", eq_.L, "L");
     add_label("\\mathcal{L}", eq_.L, "L");
+    add_label("\\mathscr{L}", eq_.L, "L");  // the script L some texts write for the Lagrangian
     add_label("E", eq_.T + eq_.V, "E = T + V");
     add_label("H", eq_.energy, "h");
     add_label("h", eq_.energy, "h");

@@ -521,3 +521,10 @@ TEST_CASE("roles: the text's sign of the multiplier, once taken, holds for the r
     REQUIRE(sections.equations.size() == 2);
     CHECK(sections.equations[1].verdict == Verdict::Agrees);
 }
+
+TEST_CASE("roles: the script L is the Lagrangian", "[checker][roles]") {
+    CHECK(one_verdict(kPendulum, "$$\\mathscr{L} = \\frac12 m l^2 \\dot\\theta^2 + m g l \\cos\\theta$$\n") ==
+          Verdict::Agrees);
+    CHECK(one_verdict(kPendulum, "$$\\mathscr{L} = \\frac12 m l^2 \\dot\\theta^2 - m g l \\cos\\theta$$\n") ==
+          Verdict::Disagrees);
+}
