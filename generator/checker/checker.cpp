@@ -52,6 +52,7 @@ namespace detail {
 void Checker::setup_names() {
     ctx_.time = model_.t;
     ctx_.names["t"] = model_.t;
+    ctx_.primes_are_time_derivatives = d_.text.find("\\dot") == std::string::npos;
     for (const Coordinate& c : model_.coordinates) {
         ctx_.coordinates.push_back(c.q);
         add_name(c.latex, c.q);

@@ -113,7 +113,11 @@ GiNaC::ex Parser::postfix(GiNaC::ex base) {
         } else if (is_char(t, "!")) {
             fail(pos_, "factorials are not read");
         } else if (is_char(t, "'")) {
-            fail(pos_, "a prime after an expression (not a name) is not read");
+            // `(m l^2 \dot\theta)'`, `\left(\dots\right)'`: the time derivative of the bracket, as such texts mean it.
+            ++pos_;
+            base = ddt(base);
+            const std::string note = "a prime after a bracket read as its time derivative";
+            if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end()) side_.notes.push_back(note);
         } else if (is_char(t, "_")) {
             fail(pos_, "a subscript after an expression (not a name) is not read");
         } else {

@@ -283,6 +283,20 @@ GiNaC::ex Parser::resolve(const NameParts& n, std::size_t at) {
             return v;
         }
     }
+    // `\theta''`, `x'` of a coordinate: its time derivatives, as texts that write primes for them mean it.
+    if (n.primes > 0 && n.dots == 0 && ctx_.primes_are_time_derivatives) {
+        NameParts unprimed = n;
+        unprimed.primes = 0;
+        const auto q = ctx_.names.find(unprimed.canonical());
+        if (q != ctx_.names.end() &&
+            std::any_of(ctx_.coordinates.begin(), ctx_.coordinates.end(), [&](const GiNaC::ex& c) { return c.is_equal(q->second); })) {
+            GiNaC::ex v = q->second;
+            for (int i = 0; i < n.primes; ++i) v = ddt(v);
+            const std::string note = "primes on a coordinate read as time derivatives ($" + full + "$)";
+            if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end()) side_.notes.push_back(note);
+            return v;
+        }
+    }
     // \text{ml} where m and l are known: OCR'd products such as "2 \mathrm{ml}^{2}".
     if (n.dots == 0 && n.sub.empty() && n.primes == 0 && n.kind == NameKind::Unknown &&
         n.base.size() > 1 && is_plain_word(n.base)) {

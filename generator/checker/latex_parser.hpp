@@ -45,6 +45,9 @@ struct LatexContext {
     GiNaC::ex time;
     /// The model's coordinates: `V'(\theta)`, `I_p(\theta)` are read as functions of them.
     std::vector<GiNaC::ex> coordinates;
+    /// `\theta''` is θ̈: set for a text that writes no `\dot` anywhere (one that does uses primes for other
+    /// quantities: another frame's angle, an integration variable).
+    bool primes_are_time_derivatives = false;
     /// Names seen but not known, created on first use (by canonical name).
     std::map<std::string, FreeName> free_names;
 

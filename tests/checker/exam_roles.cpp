@@ -528,3 +528,17 @@ TEST_CASE("roles: the script L is the Lagrangian", "[checker][roles]") {
     CHECK(one_verdict(kPendulum, "$$\\mathscr{L} = \\frac12 m l^2 \\dot\\theta^2 - m g l \\cos\\theta$$\n") ==
           Verdict::Disagrees);
 }
+
+TEST_CASE("roles: primes for time derivatives, in a text that writes no dots, and after a bracket", "[checker][roles]") {
+    // A text with no \dot anywhere means θ'' as θ̈ ...
+    CHECK(one_verdict(kPendulum, "$$m l^2 \\theta'' = -m g l \\sin\\theta$$\n") == Verdict::Agrees);
+    CHECK(one_verdict(kPendulum, "$$m l^2 \\theta'' = m g l \\sin\\theta$$\n") == Verdict::Disagrees);
+    CHECK(one_verdict(kPendulum, "$$\\left(m l^2 \\theta'\\right)' = -m g l\\sin\\theta$$\n") == Verdict::Agrees);
+    // ... one that writes dots uses primes for other quantities (another frame's angle, an integration variable):
+    // θ' stays a name of its own there; a prime after a bracket is its time derivative in either.
+    const CheckReport dots = eomgen::test::check_text(
+        kPendulum, "$$(m l^2 \\dot\\theta)' = -m g l\\sin\\theta$$\n\n$$m l^2 \\theta'' = -m g l \\sin\\theta$$\n");
+    REQUIRE(dots.equations.size() == 2);
+    CHECK(dots.equations[0].verdict == Verdict::Agrees);
+    CHECK(dots.equations[1].verdict == Verdict::NotComparable);
+}
