@@ -225,6 +225,7 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
                     v.scalar = true;
                 }
             }
+            if (f.transpose && !v.scalar && f.kind != Factor::Tuple) v.m = v.m.transpose();
             if (v.scalar) {
                 coefficient *= v.m(0, 0);
                 continue;

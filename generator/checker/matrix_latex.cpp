@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstring>
 #include <iterator>
 
 namespace eomgen::checker::matrix_latex {
@@ -429,6 +430,25 @@ bool scan(std::string_view s, std::size_t b, std::size_t e, std::vector<Term>& t
         }
         if ((c == '^' || c == '_') && pending == std::string_view::npos && !terms.back().factors.empty() &&
             terms.back().factors.back().kind != Factor::Scalar) {
+            // `^T`, `^{T}`, `^\top`, `^{\mathsf{T}}`, `^\intercal`: the transpose.
+            if (c == '^') {
+                std::size_t k = i + 1;
+                while (k < e && s[k] == ' ') ++k;
+                const std::string_view rest = s.substr(k, e - k);
+                for (const char* t : {"{\\mathsf{T}}", "{\\mathrm{T}}", "{\\top}", "{\\intercal}", "{T}", "\\top",
+                                      "\\intercal", "T"}) {
+                    const std::size_t n = std::strlen(t);
+                    if (rest.substr(0, n) != t) continue;
+                    if (t[0] == '\\' && k + n < e && std::isalpha(static_cast<unsigned char>(s[k + n]))) continue;
+                    if (t[0] == 'T' && k + 1 < e && std::isalnum(static_cast<unsigned char>(s[k + 1]))) continue;
+                    Factor& f = terms.back().factors.back();
+                    f.transpose = !f.transpose;
+                    f.end = k + n;
+                    i = k + n;
+                    break;
+                }
+                if (i > k) continue;
+            }
             *why = "a power or an index of a matrix or vector is not read";
             return false;
         }

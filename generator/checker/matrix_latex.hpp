@@ -23,6 +23,9 @@ struct Factor {
     std::size_t inner_begin = 0, inner_end = 0;        ///< Group, Det: what it holds
     std::string key;  ///< Name: `n_{1}` (whatever its decoration), `I`, `1`, `\hat{k}`
     Cells cells;      ///< Array, Tuple, DetArray
+    /// `^T`, `^{\top}`, `^{\mathsf{T}}`, `^\intercal` after it: transposed (a tuple, read as a column already,
+    /// stays one: `[x, \theta]^T` is the column its text means)
+    bool transpose = false;
 };
 
 /// A term of a sum: ± a product of factors, left to right.

@@ -218,3 +218,17 @@ TEST_CASE("linear algebra: M and K (T and V in bold) are the model's mass and st
     REQUIRE(c.equations.size() == 1);
     CHECK(c.equations[0].compared_with.find("mass matrix") == std::string::npos);
 }
+
+TEST_CASE("linear algebra: a transpose, ^T, ^{\\top}, of an array and of a tuple", "[checker][linear_algebra]") {
+    const char* const pendulum = "tests/checker/models/plane_pendulum.toml";
+    const CheckReport r = eomgen::test::check_text(
+        pendulum,
+        "$$\\begin{bmatrix} \\theta & \\dot\\theta \\end{bmatrix}^T = \\begin{bmatrix} \\theta \\\\ \\dot\\theta \\end{bmatrix}$$\n\n"
+        "$$[\\theta, \\dot\\theta]^T = \\begin{bmatrix} \\theta \\\\ \\dot\\theta \\end{bmatrix}$$\n\n"
+        "$$\\begin{bmatrix} 1 & 0 \\\\ 2 & 1 \\end{bmatrix}^{\\top} = \\begin{bmatrix} 1 & 2 \\\\ 0 & 1 \\end{bmatrix}$$\n\n"
+        "$$\\begin{bmatrix} 1 & 0 \\\\ 2 & 1 \\end{bmatrix}^{T} = \\begin{bmatrix} 1 & 0 \\\\ 2 & 1 \\end{bmatrix}$$\n");
+    REQUIRE(r.equations.size() == 4);
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    for (std::size_t k = 0; k < 3; ++k) CHECK(r.equations[k].verdict == Verdict::Agrees);
+    CHECK(r.equations[3].verdict == Verdict::Disagrees);  // a non-symmetric matrix is not its transpose
+}
