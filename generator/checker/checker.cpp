@@ -132,7 +132,8 @@ void Checker::setup_names() {
     // own names first); each takes a value per state, as it is a function of the state.
     for (std::size_t k = 0; k < eq_.constraints.size(); ++k) {
         const std::string& name = eq_.constraints[k].name;
-        const GiNaC::symbol s("lambda_" + name, "\\lambda_{" + name + "}");
+        // (With one constraint the reports print it as the text writes it, λ.)
+        const GiNaC::symbol s("lambda_" + name, eq_.constraints.size() == 1 ? std::string("\\lambda") : "\\lambda_{" + name + "}");
         multipliers_.push_back(s);
         numbers_.add_state_symbol(s);
         if (eq_.constraints.size() == 1) add_name("\\lambda", s);

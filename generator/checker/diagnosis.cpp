@@ -427,7 +427,24 @@ void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, con
     out.compared_with = "the Euler–Lagrange equation for " + m(q.latex);
     if (!best_c.is_equal(1))
         out.notes.push_back("compared after scaling eomgen's equation by " + m(latex(best_c)));
-    const GiNaC::ex truth = (best_c * motion_[i]).expand();
+    GiNaC::ex truth = (best_c * motion_[i]).expand();
+    // Written with the multipliers: the equation with the constraint forces Σ_k A_ki λ_k, λ with the text's sign
+    // (keeps_multiplier_sign), else the sign that leaves fewer terms wrong.
+    GiNaC::ex force = 0;
+    for (std::size_t k = 0; k < multipliers_.size() && k < eq_.constraints.size(); ++k)
+        if (r.has(multipliers_[k])) force += GiNaC::diff(eq_.constraints[k].velocity, q.qd) * multipliers_[k];
+    if (!force.is_zero()) {
+        int sign = multiplier_sign_;
+        if (sign == 0)
+            sign = compare_to(r, (best_c * (motion_[i] + force)).expand(), tol).lines.size() <
+                           compare_to(r, (best_c * (motion_[i] - force)).expand(), tol).lines.size()
+                       ? -1
+                       : 1;
+        truth = (best_c * (motion_[i] - sign * force)).expand();
+        out.compared_with += " with the constraint forces";
+        if (multiplier_sign_ != 0)
+            out.notes.push_back("with the sign of λ the text takes on line " + std::to_string(multiplier_sign_line_));
+    }
     const Diagnosis dg = compare_to(r, truth, tol);
     out.difference = dg.difference;
     out.wrong_terms = dg.lines;

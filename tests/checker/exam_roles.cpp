@@ -542,3 +542,13 @@ TEST_CASE("roles: primes for time derivatives, in a text that writes no dots, an
     CHECK(dots.equations[0].verdict == Verdict::Agrees);
     CHECK(dots.equations[1].verdict == Verdict::NotComparable);
 }
+
+TEST_CASE("roles: an equation written with the multiplier is corrected with its constraint force", "[checker][roles]") {
+    const CheckReport r = eomgen::test::check_text("tests/checker/models/atwood_lambda.toml", "$$m_1 \\ddot y_1 = \\lambda$$\n");
+    REQUIRE(r.equations.size() == 1);
+    INFO(eomgen::test::describe(r.equations[0]));
+    CHECK(r.equations[0].verdict == Verdict::Disagrees);
+    CHECK(r.equations[0].compared_with == "the Euler–Lagrange equation for $y_{1}$ with the constraint forces");
+    REQUIRE(r.equations[0].wrong_terms.size() == 1);  // only m₁g is missing, not λ extra
+    CHECK(r.equations[0].corrected == "-\\lambda - m_{1} g + m_{1} \\ddot{y_{1}} = 0");
+}
