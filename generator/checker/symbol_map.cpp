@@ -4,6 +4,7 @@
 #include <toml++/toml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -103,6 +104,22 @@ std::vector<MapEntry> load_map_file(const std::string& path) {
         for (auto& [pos, e] : entries) out.push_back(std::move(e));
     }
     return out;
+}
+
+std::pair<std::string, double> parse_set_option(const std::string& text) {
+    const std::size_t eq = text.find('=');
+    if (eq == std::string::npos || eq == 0) throw CheckError("--set " + text + ": expected NAME=VALUE");
+    const std::string value = text.substr(eq + 1);
+    std::size_t used = 0;
+    double v = 0;
+    try {
+        v = std::stod(value, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != value.size() || !std::isfinite(v))
+        throw CheckError("--set " + text + ": '" + value + "' is not a finite number");
+    return {text.substr(0, eq), v};
 }
 
 }  // namespace eomgen::checker

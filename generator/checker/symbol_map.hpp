@@ -5,6 +5,7 @@
 #include "checker/checker.hpp"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace eomgen::checker {
@@ -27,5 +28,8 @@ MapEntry parse_map_option(const std::string& text);
  * @throws CheckError "file:line:col: message" for a TOML error, another table or key, or a non-string value
  */
 std::vector<MapEntry> load_map_file(const std::string& path);
+
+/// `--set NAME=VALUE` → {NAME, VALUE}. @throws CheckError when it is not NAME=<finite number>
+std::pair<std::string, double> parse_set_option(const std::string& text);
 
 }  // namespace eomgen::checker

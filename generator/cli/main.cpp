@@ -1,5 +1,5 @@
 /** @file main.cpp  The `eomgen` command: generate C++ from model files, show the derived mechanics. */
-#include "checker/check_command.hpp"
+#include "cli/check_command.hpp"
 #include "cli/fit_command.hpp"
 #include "cli/latex_equations.hpp"
 #include "cli/modes_command.hpp"
@@ -166,7 +166,7 @@ int main(int argc, char** argv) {
     bool standalone = false;
     show->add_flag("--standalone", standalone, "With --latex: a complete document that pdflatex compiles");
 
-    const eomgen::checker::CheckCommand check(app);  // `eomgen check MODEL DERIVATION.md`, see docs/checker.md
+    const eomgen::cli::CheckCommand check(app);  // `eomgen check MODEL DERIVATION.md`, see docs/checker.md
     eomgen::cli::RunCommand run(app);               // `eomgen run MODEL.toml`, `eomgen cache clear`
     eomgen::cli::ReportCommand report(app);         // `eomgen report MODEL.toml`
     const eomgen::cli::ModesCommand modes(app);     // `eomgen modes MODEL.toml`

@@ -3,7 +3,7 @@
  * their line and nothing else raises an alarm. */
 #include "checked_text.hpp"
 #include "checker/checker.hpp"
-#include "checker/check_command.hpp"
+#include "checker/symbol_map.hpp"
 #include "checker/printed_numbers.hpp"
 #include "checker/units.hpp"
 

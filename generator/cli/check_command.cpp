@@ -1,5 +1,6 @@
-/** @file check_command.cpp  Loading the model, the derivation and the map, checking, printing the report. */
-#include "checker/check_command.hpp"
+/** @file check_command.cpp  `eomgen check`: loading the model, the derivation and the map, checking, printing the
+ * report. */
+#include "cli/check_command.hpp"
 
 #include "checker/checker.hpp"
 #include "checker/report.hpp"
@@ -13,7 +14,9 @@
 #include <fstream>
 #include <iostream>
 
-namespace eomgen::checker {
+namespace eomgen::cli {
+
+using namespace checker;
 
 CheckCommand::CheckCommand(CLI::App& app) {
     command_ = app.add_subcommand(
@@ -37,22 +40,6 @@ CheckCommand::CheckCommand(CLI::App& app) {
                                           "(repeatable)")
         ->allow_extra_args(false);
     command_->add_option("-o,--output", output_, "Write the report to FILE instead of standard output");
-}
-
-std::pair<std::string, double> parse_set_option(const std::string& text) {
-    const std::size_t eq = text.find('=');
-    if (eq == std::string::npos || eq == 0) throw CheckError("--set " + text + ": expected NAME=VALUE");
-    const std::string value = text.substr(eq + 1);
-    std::size_t used = 0;
-    double v = 0;
-    try {
-        v = std::stod(value, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != value.size() || !std::isfinite(v))
-        throw CheckError("--set " + text + ": '" + value + "' is not a finite number");
-    return {text.substr(0, eq), v};
 }
 
 bool CheckCommand::selected() const {
@@ -103,4 +90,4 @@ int CheckCommand::run() const {
     return report.count(Verdict::Disagrees) > 0 ? kExitDisagrees : 0;
 }
 
-}  // namespace eomgen::checker
+}  // namespace eomgen::cli

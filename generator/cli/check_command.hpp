@@ -9,7 +9,7 @@ namespace CLI {
 class App;
 }
 
-namespace eomgen::checker {
+namespace eomgen::cli {
 
 /// Exit code of `eomgen check` when the derivation disagrees with the model somewhere (docs/checker.md).
 constexpr int kExitDisagrees = 5;
@@ -36,7 +36,4 @@ class CheckCommand {
     std::vector<std::string> sections_, maps_, map_files_, sets_;
 };
 
-/// `--set NAME=VALUE` → {NAME, VALUE}. @throws CheckError when it is not NAME=<finite number>
-std::pair<std::string, double> parse_set_option(const std::string& text);
-
-}  // namespace eomgen::checker
+}  // namespace eomgen::cli
