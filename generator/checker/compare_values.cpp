@@ -298,7 +298,10 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         for (int sign : {1, -1}) {
             if (!holds[sign > 0 ? 0 : 1]) continue;
             euler_lagrange_combination(r_ex, std::max(tol, 1e-9), &only, &factor, nullptr, nullptr, sign);
-            if (!keeps_multiplier_sign(holds[0], holds[1], r)) return;
+            if (!keeps_multiplier_sign(holds[0], holds[1], r)) {
+                r.compared_with = "the Euler–Lagrange equations with the constraint forces";
+                return;
+            }
             r.verdict = Verdict::Agrees;
             r.compared_with = (only >= 0 ? "the Euler–Lagrange equation for " +
                                                m(model_.coordinates[std::size_t(only)].latex)

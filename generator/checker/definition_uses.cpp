@@ -1,7 +1,9 @@
 /** @file definition_uses.cpp  The text's definitions of quantities of the motion (`x_1 = l_1\sin\theta_1`, the
  * positions of the masses) confirmed by the rows that use them: a definition is not a claim by itself, but once a
  * row that puts it in agrees with eomgen's T, V, L or an equation of motion, the definition is consistent with the
- * model, and the report says so at its row. (One that makes its uses disagree is blamed instead: checker.cpp.) */
+ * model, and the report says so at its row. (One that makes its uses disagree is blamed instead: checker.cpp.)
+ * Here too the link's second readings when the first could not compare it: a generic coordinate
+ * (generic_coordinate.cpp) and a value the text gives a name only later in its section. */
 #include "checker/checker_internals.hpp"
 
 namespace eomgen::checker::detail {
