@@ -4,6 +4,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstring>
 #include <string>
 
 namespace {
@@ -253,4 +254,22 @@ TEST_CASE("definitions: a function of a coordinate, f(theta), and its derivative
         eomgen::test::check_text(pendulum, "$$V = -m(\\theta)g l\\cos\\theta$$\n");
     REQUIRE(product.equations.size() == 1);
     CHECK(product.equations[0].verdict == Verdict::Disagrees);
+}
+
+TEST_CASE("definitions: notes on the Kepler problem's effective potential, written here, raise no alarm",
+          "[checker][definitions]") {
+    // Written after the readings above (a generic q, V'(r), ℓ held fixed in ∂U_eff/∂r, a value given later);
+    // first run at 94068ee: no false alarm.
+    const std::string text = eomgen::test::fixture("kepler_effective_potential_notes.md");
+    const eomgen::checker::CheckReport r = eomgen::test::check_text("tests/checker/models/central_force.toml", text);
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    CHECK(r.count(Verdict::Disagrees) == 0);
+    CHECK(r.count(Verdict::Agrees) == 12);
+    // A slip in V' is flagged at its line; one in U_eff makes its uses disagree.
+    std::string wrong = text;
+    wrong.replace(wrong.find("V'(r) = \\frac{k}{r^2}"), std::strlen("V'(r) = \\frac{k}{r^2}"), "V'(r) = -\\frac{k}{r^2}");
+    const eomgen::checker::CheckReport w = eomgen::test::check_text("tests/checker/models/central_force.toml", wrong);
+    REQUIRE(w.count(Verdict::Disagrees) == 1);
+    for (const EquationCheck& e : w.equations)
+        if (e.verdict == Verdict::Disagrees) CHECK(e.corrected == "V'(r) = \\frac{k}{r^{2}}");
 }
