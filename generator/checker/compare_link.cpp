@@ -26,6 +26,38 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
                    "rows of $(K - \\omega^2 M) A = 0$ about rest");
         return r;
     }
+    // `q = r, \theta` ("for q = r, θ" after the Euler–Lagrange equation of a generic q): the name stands for each
+    // of the model's coordinates listed.
+    if (j == i + 1 && L.side->ok && !R.side->ok && GiNaC::is_a<GiNaC::symbol>(L.side->value)) {
+        const FreeName* f = ctx_.free_name_of(L.side->value);
+        std::vector<std::string> listed;
+        std::string piece;
+        const auto coordinate = [&](const std::string& p) {
+            const auto it = ctx_.names.find(canonical_name(p));
+            return it != ctx_.names.end() &&
+                   std::any_of(model_.coordinates.begin(), model_.coordinates.end(),
+                               [&](const Coordinate& q) { return it->second.is_equal(q.q); });
+        };
+        bool all = f && f->kind == NameKind::Unknown;
+        for (const char ch : R.side->source + ",") {
+            if (ch != ',') {
+                piece += ch;
+                continue;
+            }
+            piece.erase(0, std::min(piece.find_first_not_of(" \t"), piece.size()));
+            piece.erase(std::min(piece.find_last_not_of(" \t") + 1, piece.size()));
+            all = all && coordinate(piece);
+            listed.push_back(piece);
+            piece.clear();
+        }
+        if (all && listed.size() >= 2) {
+            std::string names;
+            for (std::size_t k = 0; k < listed.size(); ++k) names += (k ? ", " : "") + std::string("$") + listed[k] + "$";
+            not_judged(r, Role::Definition,
+                       "a definition: the text's $" + f->name + "$ stands for each of " + names + " in turn");
+            return r;
+        }
+    }
     if (const Discourse::Naming* n = discourse_->naming_at(rel_at); n && j == i + 1) {
         not_judged(r, Role::Definition,
                    "a definition: the text names $" + n->quantity_latex + "$ $" + n->letter_latex +

@@ -265,6 +265,10 @@ TEST_CASE("definitions: notes on the Kepler problem's effective potential, writt
     for (const EquationCheck& e : r.equations) INFO(describe(e));
     CHECK(r.count(Verdict::Disagrees) == 0);
     CHECK(r.count(Verdict::Agrees) == 12);
+    CHECK(r.count(Verdict::NotComparable) == 1);  // U_eff''(r_0): a derivative at a point
+    // "for q = r, θ": the generic coordinate's meaning, a definition.
+    CHECK(r.equations[3].verdict == Verdict::NotJudged);
+    CHECK(r.equations[3].reason == "a definition: the text's $q$ stands for each of $r$, $\\theta$ in turn");
     // A slip in V' is flagged at its line; one in U_eff makes its uses disagree.
     std::string wrong = text;
     wrong.replace(wrong.find("V'(r) = \\frac{k}{r^2}"), std::strlen("V'(r) = \\frac{k}{r^2}"), "V'(r) = -\\frac{k}{r^2}");
