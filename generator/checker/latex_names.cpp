@@ -228,7 +228,19 @@ GiNaC::ex Parser::name_value() {
         v = resolve(unprimed, at);
         static const char* const kLabels[] = {"T", "V", "U", "L", "H", "E", "K"};
         const bool label = std::any_of(std::begin(kLabels), std::end(kLabels), [&](const char* l) { return n.base == l; });
-        if (ctx_.free_name_of(v) == nullptr && !label) {
+        const bool coordinate = std::any_of(ctx_.coordinates.begin(), ctx_.coordinates.end(),
+                                            [&](const GiNaC::ex& c) { return v.is_equal(c); });
+        if (coordinate && n.primes > 0 && !v.is_equal(*q)) {
+            // `r'(\theta)`, `r''(\theta)`: one coordinate as a function of another along the motion (an orbit),
+            // dr/dθ = ṙ/θ̇, each prime one more d/dθ = (1/θ̇) d/dt.
+            for (int k = 0; k < n.primes; ++k) v = ddt(v) / ddt(*q);
+            std::string by = t_[after + 1].text;
+            for (const auto& [name, value] : ctx_.names)
+                if (value.is_equal(*q)) by = name;
+            const std::string note =
+                "$" + n.canonical() + "(" + by + ")$ read as the derivative by it along the motion (d/dt over its rate)";
+            if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end()) side_.notes.push_back(note);
+        } else if (ctx_.free_name_of(v) == nullptr && !label) {
             pos_ = after;  // `m(\theta)`: a parameter times θ
             v = resolve(n, at);
         } else {

@@ -277,3 +277,17 @@ TEST_CASE("definitions: notes on the Kepler problem's effective potential, writt
     for (const EquationCheck& e : w.equations)
         if (e.verdict == Verdict::Disagrees) CHECK(e.corrected == "V'(r) = \\frac{k}{r^{2}}");
 }
+
+TEST_CASE("definitions: a coordinate as a function of another along the motion, r'(theta)", "[checker][definitions]") {
+    // An orbit r(θ): dr/dθ = ṙ/θ̇ on the motion, each prime one more (1/θ̇) d/dt.
+    const eomgen::checker::CheckReport r = eomgen::test::check_text(
+        "tests/checker/models/central_force.toml",
+        "$$r'(\\theta) = \\frac{\\dot r}{\\dot\\theta}$$\n\n"
+        "$$r''(\\theta) = \\frac{\\ddot r \\dot\\theta - \\dot r \\ddot\\theta}{\\dot\\theta^3}$$\n\n$$r'(\\theta) = \\dot r$$\n");
+    REQUIRE(r.equations.size() == 3);
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    CHECK(r.equations[0].verdict == Verdict::Agrees);
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    CHECK(r.equations[2].verdict != Verdict::Agrees);
+    CHECK(has_note(r.equations[0], "$r'(\\theta)$ read as the derivative by it along the motion"));
+}
