@@ -316,6 +316,23 @@ void Checker::blame_definition(const FullChain& c, std::size_t i, std::size_t j,
     }
 }
 
+void Checker::note_disagreeing_uses(const FullChain& c, std::size_t i, std::size_t j, const EquationCheck& r) {
+    std::set<std::string> seen;
+    for (const std::size_t k : {i, j}) {
+        const PSide& s = c.sides[k];
+        if (!s.side->ok) continue;
+        for (std::vector<GiNaC::ex> stack{s.side->value}; !stack.empty();) {
+            const GiNaC::ex e = stack.back();
+            stack.pop_back();
+            for (std::size_t q = 0; q < e.nops(); ++q) stack.push_back(e.op(q));
+            const FreeName* f = ctx_.free_name_of(e);
+            if (!f || seen.count(f->name) || !definitions_.value_at(e, s.base + s.side->begin)) continue;
+            seen.insert(f->name);
+            disagreeing_uses_.push_back({f->name, e, c, i, j, r.where, r.equation});
+        }
+    }
+}
+
 void Checker::apply_blames(std::vector<EquationCheck>& equations) {
     std::set<std::string> names;
     for (const Blame& b : blames_) names.insert(b.name);
@@ -323,7 +340,28 @@ void Checker::apply_blames(std::vector<EquationCheck>& equations) {
         std::vector<const Blame*> these;
         for (const Blame& b : blames_)
             if (b.name == name) these.push_back(&b);
-        if (these.size() < 2) continue;
+        // One bare use that says what the name must be, and other disagreeing uses (inside ∂/∂q, say) that agree
+        // once the name is that: they blame it alike.
+        std::vector<const DisagreeingUse*> confirming;
+        if (these.size() == 1) {
+            const Blame& only = *these.front();
+            bool all = false;
+            for (const DisagreeingUse& u : disagreeing_uses_) {
+                if (u.name != name || (u.where.line == only.where.line && u.where.column == only.where.column)) continue;
+                definitions_.override_with(u.symbol, only.needed);
+                const bool was = verifying_;
+                verifying_ = true;
+                const EquationCheck again = safe_check_link(u.chain, u.i, u.j, false);
+                verifying_ = was;
+                definitions_.reset_override();
+                all = again.verdict == Verdict::Agrees && (confirming.empty() || all);
+                if (!all) break;
+                confirming.push_back(&u);
+            }
+            if (!all || confirming.empty()) continue;
+        } else if (these.size() < 2) {
+            continue;
+        }
         bool alike = true;
         for (const Blame* b : these) alike = alike && equal(b->needed, these.front()->needed, 1e-9) == Tri::Yes;
         if (!alike) continue;
@@ -334,8 +372,11 @@ void Checker::apply_blames(std::vector<EquationCheck>& equations) {
             if (e.where.line == first.definition_line && e.reason.find(prefix) != std::string::npos) def = &e;
         if (!def) continue;
         std::string lines;
-        for (const Blame* b : these) {
-            const std::string l = std::to_string(b->where.line);
+        std::vector<std::pair<SourcePos, std::string>> uses;
+        for (const Blame* b : these) uses.emplace_back(b->where, b->equation);
+        for (const DisagreeingUse* u : confirming) uses.emplace_back(u->where, u->equation);
+        for (const auto& [where, equation] : uses) {
+            const std::string l = std::to_string(where.line);
             if (lines.find(l) == std::string::npos) lines += (lines.empty() ? "" : ", ") + l;
         }
         const std::string needed = latex(first.needed);
@@ -345,9 +386,9 @@ void Checker::apply_blames(std::vector<EquationCheck>& equations) {
         def->wrong_terms = {"with this $" + name + "$ the lines that use it disagree with eomgen; they hold with $" +
                             name + " = " + needed + "$"};
         def->corrected = name + " = " + needed;
-        for (const Blame* b : these)
+        for (const auto& [where, equation] : uses)
             for (EquationCheck& e : equations)
-                if (e.where.line == b->where.line && e.where.column == b->where.column && e.equation == b->equation &&
+                if (e.where.line == where.line && e.where.column == where.column && e.equation == equation &&
                     e.verdict == Verdict::Disagrees) {
                     e.verdict = Verdict::NotComparable;
                     e.reason = "it holds with $" + name + " = " + needed + "$: the text's $" + name + "$ of line " +

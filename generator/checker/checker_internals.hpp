@@ -322,7 +322,10 @@ class Checker : public Comparisons {
                     return n;
                 }
             }
-            if (r.verdict == Verdict::Disagrees && !verifying_) blame_definition(c, i, j, r);
+            if (r.verdict == Verdict::Disagrees && !verifying_) {
+                blame_definition(c, i, j, r);
+                note_disagreeing_uses(c, i, j, r);
+            }
             if (!r.corrected.empty() && !verifying_) verify_correction(c, j, r);
             if (!verifying_ && c.display) check_prose_label(c, i, j, r);
             return r;
@@ -346,6 +349,18 @@ class Checker : public Comparisons {
     };
     std::vector<Blame> blames_;
     void blame_definition(const FullChain& c, std::size_t i, std::size_t j, const EquationCheck& r);
+    /// A disagreeing link that uses a defined name in any way (inside ∂/∂q too): with what one bare use needs the
+    /// name to be, it may agree, and then it confirms that use's blame (apply_blames).
+    struct DisagreeingUse {
+        std::string name;
+        GiNaC::ex symbol;
+        FullChain chain;
+        std::size_t i = 0, j = 0;
+        SourcePos where;
+        std::string equation;
+    };
+    std::vector<DisagreeingUse> disagreeing_uses_;
+    void note_disagreeing_uses(const FullChain& c, std::size_t i, std::size_t j, const EquationCheck& r);
     /// A definition that two or more lines blame alike is the slip: it disagrees (corrected to what they need), and
     /// they are not comparable, pointing to it.
     void apply_blames(std::vector<EquationCheck>& equations);

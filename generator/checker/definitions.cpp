@@ -34,6 +34,7 @@ const TextDefinitions::Definition* TextDefinitions::in_force(const std::vector<D
                                                             bool in_section) const {
     const Definition* best = nullptr;
     if (!list.empty() && suspended_.count(list.front().name)) return nullptr;
+    if (override_active_ && !list.empty() && list.front().name == override_.name) return &override_;
     for (const Definition& d : list)
         if (d.offset < at && (!in_section || at < d.until) && (!best || d.offset > best->offset)) best = &d;
     if (!best && forward_)  // the first abbreviation after `at` in its section
@@ -80,6 +81,17 @@ std::string TextDefinitions::defined_at(std::size_t head) const {
     for (const auto& [offset, shown] : heads_)
         if (offset == head) return shown;
     return "";
+}
+
+void TextDefinitions::override_with(const GiNaC::ex& symbol, const GiNaC::ex& value) {
+    const auto it = defs_.find(symbol);
+    if (it == defs_.end() || it->second.empty()) return;
+    override_ = it->second.front();
+    override_.value = override_.value_holding = value;
+    override_.offset = 0;
+    override_.until = std::string::npos;
+    override_.conserved = false;
+    override_active_ = true;
 }
 
 void TextDefinitions::note_use(const GiNaC::ex& symbol, std::size_t at) const {

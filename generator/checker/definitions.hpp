@@ -117,6 +117,11 @@ class TextDefinitions {
     void suspend(const std::string& name) { suspended_.insert(name); }
     void resume() { suspended_.clear(); }
 
+    /// While set, the definition of `symbol` in force anywhere is `value` (what a line needs it to be: to try the
+    /// other lines that use it with that value); clear with reset_override().
+    void override_with(const GiNaC::ex& symbol, const GiNaC::ex& value);
+    void reset_override() { override_active_ = false; }
+
   private:
     struct Definition {
         std::string name;
@@ -142,6 +147,8 @@ class TextDefinitions {
     GiNaC::exmap held_values_;  ///< each held symbol, its value
     std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> held_notes_;  ///< each held symbol, what the note says
     std::set<std::string> suspended_;
+    Definition override_;
+    bool override_active_ = false;
     mutable std::vector<std::string> abbreviations_;
     /// The defined names where they are defined (never abbreviated): file offset, "k = g/l".
     std::vector<std::pair<std::size_t, std::string>> heads_;

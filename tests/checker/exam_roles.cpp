@@ -227,6 +227,15 @@ TEST_CASE("roles: a definition that two uses make wrong is the slip, not the use
         CHECK(r.equations[k].verdict == Verdict::NotComparable);
         CHECK(r.equations[k].reason.find("the text's $y$ of line 1 is what disagrees") != std::string::npos);
     }
+    // A bare use and one inside ∂/∂θ: the value the bare use needs makes the other agree, so they blame it alike.
+    const CheckReport derivative = eomgen::test::check_text(
+        kPendulum, "Let $y = l\\cos\\theta$ be the height of the bob.\n\n$$V = m g y$$\n\n"
+                   "$$m l^2 \\ddot\\theta = -m g \\frac{\\partial y}{\\partial \\theta}$$\n");
+    REQUIRE(derivative.equations.size() == 3);
+    for (const EquationCheck& e : derivative.equations) INFO(eomgen::test::describe(e));
+    CHECK(derivative.equations[0].verdict == Verdict::Disagrees);
+    CHECK(derivative.equations[0].corrected == "y = -l \\cos \\theta");
+    CHECK(derivative.equations[2].reason.find("the text's $y$ of line 1 is what disagrees") != std::string::npos);
     // One use alone does not say which of the two is wrong: the use disagrees, the definition stands.
     const CheckReport once = eomgen::test::check_text(kPendulum, "Let $y = l\\sin\\theta$ be the height.\n\n$$V = m g y$$\n");
     REQUIRE(once.equations.size() == 2);
