@@ -290,6 +290,11 @@ def test_check_finds_the_slip(pendulum):
     assert "sin" in slip.corrected
     assert r.counts["disagrees"] == 1
     assert "notes.md" in r.text and r.markdown and r.json.startswith("{")
+    assert all(e.role == "claim" for e in r)
+    # A row that is no claim: not judged, with the role it was taken for.
+    defined = eomgen.check(pendulum, "Let $k = g/l$.\n\n$$\\ddot\\phi = -k \\sin\\phi$$\n")
+    assert [(e.verdict, e.role) for e in defined] == [("not judged", "definition"), ("agrees", "claim")]
+    assert defined.counts["not judged"] == 1
     # The same through the model's method and with a path.
     assert [e.verdict for e in pendulum.check(text)] == verdicts
     assert [e.verdict for e in eomgen.check(model_path("pendulum"), text)] == verdicts
