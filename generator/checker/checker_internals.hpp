@@ -492,6 +492,8 @@ class Checker : public Comparisons {
     /// Derivatives the side takes that do not exist on a switching surface (kinks.hpp): (surface, variable), found
     /// while its operators are resolved and said in its notes.
     mutable std::vector<std::pair<Kink, GiNaC::ex>> kinks_;
+    /// Notes the operators add while resolved (d/dτ by a new time: the definitions it used), for prepare().
+    mutable std::vector<std::string> operator_notes_;
     void collect_definitions(const std::vector<FullChain>& chains);
     /// `\rho^2\dot\varphi = c_0`: the name c_0, introduced by a chain's last side, defined as the quantity before
     /// it (named_constants.cpp); its file offset → its name.

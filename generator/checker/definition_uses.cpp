@@ -51,7 +51,9 @@ EquationCheck Checker::check_link_noting_uses(const FullChain& c, std::size_t i,
             if (u.head != std::string::npos && u.head != head) derived_from_[head].insert(u.head);
     if (!compared_with_model(r)) return r;
     for (const TextDefinitions::Use& u : uses)
-        if (u.head != std::string::npos && (depends_on_state(u.value) || u.value.has(model_.t)))
+        if (u.head != std::string::npos &&
+            (depends_on_state(u.value) ||
+             (u.value.has(model_.t) && GiNaC::normal(u.value / model_.t).has(model_.t))))  // not a new time τ = c t
             confirmed_by_[u.head].insert(r.where.line);
     return r;
 }

@@ -41,6 +41,28 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
         for (const Kink& k : surfaces_without_derivative(inner, x)) kinks_.emplace_back(k, x);
         return GiNaC::diff(inner, x);
     }
+    // d/ds by a name the text defines as a multiple of t (τ = t/T): (1/c) d/dt.
+    if (is_ex_the_function(e, dby)) {
+        // (Inside another derivative by it, the name has its definition put in already.)
+        const FreeName* f = ctx_.free_name_of(e.op(1));
+        const GiNaC::ex* value = definitions_.value_at(e.op(1), current_offset_);
+        const GiNaC::ex by = value ? *value : e.op(1);
+        const GiNaC::ex c = GiNaC::normal(by / model_.t);
+        if (f && !value)
+            throw UndefinedInDerivative(f->name, "a derivative with respect to $" + f->name +
+                                                     "$, which the text does not define");
+        if (c.is_zero() || c.has(model_.t) || depends_on_state(c) || has_acceleration(c) || ctx_.free_name_of(by))
+            throw std::runtime_error("a derivative with respect to a variable the text does not define as a multiple "
+                                     "of t");
+        const GiNaC::ex inner = resolve_operators(definitions_.expand(e.op(0), current_offset_));
+        TextDefinitions::require_defined(inner, ctx_, "derivative by a new time");
+        // A change of the time variable, not a quantity the text defines: the side is compared as an equation of
+        // motion, not as that definition's derivative (the uses are said in a note).
+        for (const std::string& n : definitions_.take_used())
+            if (std::find(operator_notes_.begin(), operator_notes_.end(), n) == operator_notes_.end())
+                operator_notes_.push_back(n);
+        return time_derivative(inner, model_) / c;
+    }
     if (is_ex_the_function(e, pbracket))
         return hamilton_.poisson(resolve_operators(definitions_.expand(e.op(0), current_offset_)),
                                  resolve_operators(definitions_.expand(e.op(1), current_offset_)));
@@ -156,6 +178,8 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
             p.notes.push_back(n);
             p.from_definition = true;
         }
+        p.notes.insert(p.notes.end(), operator_notes_.begin(), operator_notes_.end());
+        operator_notes_.clear();
         // The text's abbreviations ("with \Omega = ..."), everywhere in the rest of their section.
         definitions_.take_abbreviations();
         v = definitions_.abbreviate(v, current_offset_);

@@ -220,8 +220,18 @@ GiNaC::ex Parser::derivative(std::size_t at, std::pair<std::size_t, std::size_t>
         GiNaC::ex tv;
         auto it = ctx_.names.find(v);
         if (it != ctx_.names.end()) tv = it->second;
-        if (v != "t" && !(it != ctx_.names.end() && tv.is_equal(ctx_.time)))
+        if (v != "t" && !(it != ctx_.names.end() && tv.is_equal(ctx_.time))) {
+            // (By one of the model's coordinates, `\frac{d}{d\phi}`, it is not read: texts write it for a partial
+            // derivative of a function of several, the seed's f_x(θ, φ), as often as for one along the motion.)
+            // By a name the text introduces (a dimensionless time τ = t/T): the checker reads its definition.
+            if (it == ctx_.names.end() && var.dots == 0) {
+                side_.uses.push_back({v, offset_of(at)});
+                const GiNaC::ex s = ctx_.free_symbol(v, var.kind);
+                for (int i = 0; i < order; ++i) operand = dby(operand, s);
+                return operand;
+            }
             fail(at, "a derivative with respect to " + v + " (only d/dt is read)");
+        }
         for (int i = 0; i < order; ++i) operand = ddt(operand);
         return operand;
     }

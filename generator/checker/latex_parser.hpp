@@ -17,6 +17,7 @@ namespace eomgen::checker {
 DECLARE_FUNCTION_1P(ddt)    ///< ddt(x): the total time derivative d/dt x (`\frac{d}{dt} x`, `\frac{dx}{dt}`)
 DECLARE_FUNCTION_2P(pdiff)  ///< pdiff(x, y): ∂x/∂y (`\frac{\partial L}{\partial \dot{\theta}}`)
 DECLARE_FUNCTION_2P(pbracket)  ///< pbracket(a, b): the Poisson bracket {a, b} (`\{\theta, p_\theta\}`)
+DECLARE_FUNCTION_2P(dby)  ///< dby(x, s): dx/ds by a name the text introduces (`\frac{d^2X}{d\tau^2}`, τ = t/T)
 
 /// What a name the parser did not find among the known names stands for.
 enum class NameKind {

@@ -291,3 +291,20 @@ TEST_CASE("definitions: a coordinate as a function of another along the motion, 
     CHECK(r.equations[2].verdict != Verdict::Agrees);
     CHECK(has_note(r.equations[0], "$r'(\\theta)$ read as the derivative by it along the motion"));
 }
+
+TEST_CASE("definitions: derivatives by a new time tau = c t",
+          "[checker][definitions]") {
+    const eomgen::checker::CheckReport r = eomgen::test::check_text(
+        "tests/checker/models/plane_pendulum.toml",
+        "With the time $\\tau = t\\sqrt{g/l}$,\n\n$$\\frac{d^2\\theta}{d\\tau^2} = -\\sin\\theta$$\n\n"
+        "$$\\frac{d^2\\theta}{d\\tau^2} = \\sin\\theta$$\n\n"
+        "$$\\frac{d^2\\theta}{d s^2} = -\\sin\\theta$$\n");
+    REQUIRE(r.equations.size() == 4);
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    CHECK(r.equations[0].verdict == Verdict::NotJudged);  // a new time is a definition, not a quantity of the motion
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    CHECK(r.equations[2].verdict == Verdict::Disagrees);
+    CHECK(r.equations[2].compared_with == "the Euler–Lagrange equation for $\\theta$");
+    CHECK(r.equations[3].verdict == Verdict::NotComparable);  // s: not defined by the text
+    CHECK(r.equations[3].reason.find("which the text does not define") != std::string::npos);
+}

@@ -182,7 +182,10 @@ TEST_CASE("latex: what is not read gets a reason and the place", "[checker][pars
           std::string::npos);
     CHECK(n.fail("\\sum_{i} x_{i}").error.find("sums") != std::string::npos);
     CHECK(n.fail("l^{1000}").error.find("too large") != std::string::npos);
-    CHECK(n.fail("\\frac{d y}{d x}").error.find("with respect to x") != std::string::npos);
+    // By a known name other than t: not read; by a name the text introduces (a new time τ = t/T), the checker
+    // reads its definition (exam_definitions.cpp).
+    CHECK(n.fail("\\frac{d y}{d \\theta}").error.find("with respect to \\theta") != std::string::npos);
+    CHECK(is_ex_the_function(n.parse("\\frac{d y}{d x}"), eomgen::checker::dby));
     s = n.fail("m + ");
     CHECK(s.error_offset == 3);  // the end of the formula
     n.fail("\\frac{1}{2");
