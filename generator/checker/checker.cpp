@@ -181,9 +181,7 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
                 until = std::min(until, point);
                 at_a_point_.insert(c.sides[0].base + c.sides[0].side->begin);
             }
-            std::string source = c.sides[k].side->source;
-            source.erase(0, std::min(source.find_first_not_of(" \t"), source.size()));
-            source.erase(std::min(source.find_last_not_of(" \t") + 1, source.size()));
+            const std::string source = trimmed(c.sides[k].side->source);
             // The value with the text's constants of the motion in it held (an effective potential in J).
             std::optional<GiNaC::ex> holding;
             if (definitions_.has_conserved()) {

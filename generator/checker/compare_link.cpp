@@ -44,8 +44,7 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
                 piece += ch;
                 continue;
             }
-            piece.erase(0, std::min(piece.find_first_not_of(" \t"), piece.size()));
-            piece.erase(std::min(piece.find_last_not_of(" \t") + 1, piece.size()));
+            piece = trimmed(piece);
             all = all && coordinate(piece);
             listed.push_back(piece);
             piece.clear();
@@ -226,9 +225,7 @@ void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j
         {"T", "kinetic"},          {"K", "kinetic"},        {"V", "potential"},      {"U", "potential"},
         {"L", "lagrangian"},       {"H", "hamiltonian"},    {"E", "energy"},         {"\\mathcal{L}", "lagrangian"},
         {"\\mathscr{L}", "lagrangian"}};
-    std::string head = c.sides[0].side->source;
-    head.erase(0, std::min(head.find_first_not_of(" \t"), head.size()));
-    head.erase(std::min(head.find_last_not_of(" \t") + 1, head.size()));
+    const std::string head = trimmed(c.sides[0].side->source);
     bool self_labelled = false;
     for (const auto& [letter, noun] : kSelfLabels)
         if (head == letter) {

@@ -279,12 +279,6 @@ void blank_equation_number(std::string& t) {
         if (t[q] != '\n') t[q] = ' ';
 }
 
-std::string trimmed(const std::string& s) {
-    std::size_t a = 0, b = s.size();
-    while (a < b && (is_space(s[a]) || s[a] == '~')) ++a;
-    while (b > a && (is_space(s[b - 1]) || s[b - 1] == '~')) --b;
-    return s.substr(a, b - a);
-}
 
 /// The row ends with an operator that needs a right operand: `=`, `+`, `-`, `\cdot`, `\times`.
 bool ends_open(const std::string& row) {
@@ -318,6 +312,13 @@ bool only_breaks_between(const std::string& file, std::size_t from, std::size_t 
 }
 
 }  // namespace
+
+std::string trimmed(const std::string& s) {
+    std::size_t a = 0, b = s.size();
+    while (a < b && (is_space(s[a]) || s[a] == '~')) ++a;
+    while (b > a && (is_space(s[b - 1]) || s[b - 1] == '~')) --b;
+    return s.substr(a, b - a);
+}
 
 std::optional<Spelling> spelled_as_latex(std::string_view s, std::size_t i) {
     if (i >= s.size()) return std::nullopt;

@@ -34,6 +34,9 @@ bool entity_at(std::string_view s, std::size_t i);
 /// True for the names of an arbitrary additive constant: `\text{const}`, `\mathrm{const.}`, `\text{constant}`.
 bool is_constant_name(const std::string& canonical_name);
 
+/// `s` without the spaces, tabs, line ends and `~` (LaTeX's tie) at its two ends.
+std::string trimmed(const std::string& s);
+
 /**
  * Rewrites the math rows of `d` as the parser reads them, keeping `offset + i` the file offset of `text[i]`:
  * - an equation number at the end of a row (`\quad (1)`, `\qquad (2.14)`, `\hfill (3)`, `\eqno(4)`,
