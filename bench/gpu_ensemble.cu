@@ -8,6 +8,8 @@
  *   - the heavy symmetric top (3 coordinates, spinning at 100 rad/s) from theta0 in [0.2, 1.2] to t = 2.
  * Each with fixed-step RK4 (dt 1e-3) and adaptive Dormand–Prince 5(4) (rtol 1e-10, atol 1e-12), run
  *   - on the device by cuda_ensemble.cuh (one member per thread), wall time with the copies both ways;
+ *   - the same kernel alone on members already resident on the device (CUDA events around the launch), which
+ *     splits the device's wall time into the kernel and the allocations and copies around it;
  *   - on the host by the same member integrator (device_ensemble.hpp) on every core (eomgen::for_each_index);
  *   - for the door with Dormand–Prince also by eomgen::ensemble, the engine of `eomgen run --sweep`, on every core.
  * Each time is the fastest of `repeats` runs after one unmeasured run (the device's first launch loads the module).
@@ -75,6 +77,38 @@ Problem<Top> top(std::size_t n) {
     return p;
 }
 
+/// The fastest of `repeats` launches of kernel(blocks, threads, params, x0, n, out) on members already on the
+/// device (one unmeasured launch first), timed by CUDA events: the kernel alone, without allocations or copies.
+template <class M, class Kernel>
+double kernel_seconds(const Problem<M>& p, int repeats, Kernel kernel) {
+    using eomgen::device::detail::cuda_check;
+    const std::size_t n = p.params.size();
+    eomgen::device::detail::DeviceArray<typename M::Params> d_params(n);
+    eomgen::device::detail::DeviceArray<typename M::State> d_x0(n);
+    eomgen::device::detail::DeviceArray<eomgen::device::Member<M>> d_out(n);
+    cuda_check(cudaMemcpy(d_params.data, p.params.data(), n * sizeof(typename M::Params), cudaMemcpyHostToDevice),
+               "cudaMemcpy");
+    cuda_check(cudaMemcpy(d_x0.data, p.x0.data(), n * sizeof(typename M::State), cudaMemcpyHostToDevice), "cudaMemcpy");
+    const int threads = 128, blocks = int((n + 127) / 128);
+    cudaEvent_t start, stop;
+    cuda_check(cudaEventCreate(&start), "cudaEventCreate");
+    cuda_check(cudaEventCreate(&stop), "cudaEventCreate");
+    double best = HUGE_VAL;
+    for (int r = 0; r <= repeats; ++r) {
+        cuda_check(cudaEventRecord(start), "cudaEventRecord");
+        kernel(blocks, threads, d_params.data, d_x0.data, int(n), d_out.data);
+        cuda_check(cudaGetLastError(), "launch");
+        cuda_check(cudaEventRecord(stop), "cudaEventRecord");
+        cuda_check(cudaEventSynchronize(stop), "kernel");
+        float ms = 0;
+        cuda_check(cudaEventElapsedTime(&ms, start, stop), "cudaEventElapsedTime");
+        if (r > 0) best = std::min(best, double(ms) * 1e-3);
+    }
+    cudaEventDestroy(start);
+    cudaEventDestroy(stop);
+    return best;
+}
+
 /// The largest relative difference between two members' results (t and x), or +inf when a status differs.
 template <class M>
 double difference(const eomgen::device::Member<M>& a, const eomgen::device::Member<M>& b) {
@@ -87,27 +121,29 @@ double difference(const eomgen::device::Member<M>& a, const eomgen::device::Memb
 struct Row {
     std::string problem, method;
     std::size_t members = 0;
-    double device_s = 0, host_s = 0, ensemble_s = -1, worst = 0, closed_form = -1;
+    double device_s = 0, kernel_s = 0, host_s = 0, ensemble_s = -1, worst = 0, closed_form = -1;
     int failed = 0;
 };
 
 void print(const Row& r, unsigned threads) {
-    std::printf("{\"problem\": \"%s\", \"method\": \"%s\", \"members\": %zu, \"device_s\": %.6f, \"host_s\": %.6f, "
+    std::printf("{\"problem\": \"%s\", \"method\": \"%s\", \"members\": %zu, \"device_s\": %.6f, \"kernel_s\": %.6f, \"host_s\": %.6f, "
                 "\"host_threads\": %u, \"speedup\": %.2f, \"ensemble_s\": %.6f, \"device_vs_host\": %.3e, "
                 "\"closed_form\": %.3e, \"failed\": %d}\n",
-                r.problem.c_str(), r.method.c_str(), r.members, r.device_s, r.host_s, threads, r.host_s / r.device_s,
+                r.problem.c_str(), r.method.c_str(), r.members, r.device_s, r.kernel_s, r.host_s, threads, r.host_s / r.device_s,
                 r.ensemble_s, r.worst, r.closed_form, r.failed);
     std::fflush(stdout);
 }
 
-/// Runs problem p by `method` (on_device(params, x0) and on_host(params, x0) of one member) and prints the row.
-template <class M, class OnDevice, class OnHost>
+/// Runs problem p by `method` (on_device(params, x0), the kernel alone on resident members, and on_host(params, x0)
+/// of one member) and returns the row.
+template <class M, class OnDevice, class Kernel, class OnHost>
 Row compare(const Problem<M>& p, const char* method, int repeats, unsigned threads, OnDevice on_device,
-            OnHost on_host) {
+            Kernel kernel, OnHost on_host) {
     const std::size_t n = p.params.size();
     Row row{p.name, method, n};
     std::vector<eomgen::device::Member<M>> dev, host(n);
     row.device_s = fastest(repeats, [&] { dev = on_device(p.params, p.x0); });
+    row.kernel_s = kernel_seconds(p, repeats, kernel);
     const std::size_t chunk = eomgen::chunk_size(n, threads);
     row.host_s = fastest(repeats, [&] {
         eomgen::for_each_index(0, n, threads, chunk, [&](std::size_t i) { host[i] = on_host(p.params[i], p.x0[i]); });
@@ -151,11 +187,13 @@ int main(int argc, char** argv) {
         Row rk4 = compare(
             d, "rk4", repeats, threads,
             [&](const auto& params, const auto& x0) { return eomgen::device::ensemble_rk4<Door>(params, x0, d.t_end, dt, d.event); },
+            [&](int b, int th, const auto* p, const auto* x, int n, auto* out) { eomgen::device::rk4_members<Door><<<b, th>>>(p, x, n, d.t_end, dt, d.event, out); },
             [&](const auto& params, const auto& x0) { return eomgen::device::integrate_member_rk4<Door>(params, x0, d.t_end, dt, d.event); });
         print(rk4, threads);
         Row dp = compare(
             d, "dopri5", repeats, threads,
             [&](const auto& params, const auto& x0) { return eomgen::device::ensemble_dopri5<Door>(params, x0, d.t_end, o, d.event); },
+            [&](int b, int th, const auto* p, const auto* x, int n, auto* out) { eomgen::device::dopri5_members<Door><<<b, th>>>(p, x, n, d.t_end, o, d.event, out); },
             [&](const auto& params, const auto& x0) { return eomgen::device::integrate_member_dopri5<Door>(params, x0, d.t_end, o, d.event); });
         // The CLI's engine: eomgen::ensemble with the runtime's integrate(), dense output and the event by name.
         eomgen::EnsembleOptions eo;
@@ -181,11 +219,13 @@ int main(int argc, char** argv) {
         print(compare(
                   s, "rk4", repeats, threads,
                   [&](const auto& params, const auto& x0) { return eomgen::device::ensemble_rk4<Top>(params, x0, s.t_end, dt, s.event); },
+                  [&](int b, int th, const auto* p, const auto* x, int n, auto* out) { eomgen::device::rk4_members<Top><<<b, th>>>(p, x, n, s.t_end, dt, s.event, out); },
                   [&](const auto& params, const auto& x0) { return eomgen::device::integrate_member_rk4<Top>(params, x0, s.t_end, dt, s.event); }),
               threads);
         print(compare(
                   s, "dopri5", repeats, threads,
                   [&](const auto& params, const auto& x0) { return eomgen::device::ensemble_dopri5<Top>(params, x0, s.t_end, o, s.event); },
+                  [&](int b, int th, const auto* p, const auto* x, int n, auto* out) { eomgen::device::dopri5_members<Top><<<b, th>>>(p, x, n, s.t_end, o, s.event, out); },
                   [&](const auto& params, const auto& x0) { return eomgen::device::integrate_member_dopri5<Top>(params, x0, s.t_end, o, s.event); }),
               threads);
     }
