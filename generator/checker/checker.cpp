@@ -251,6 +251,10 @@ void Checker::check_chain(const FullChain& c, std::vector<EquationCheck>& out) {
         comparable[k] = p.comparable() || is_part(c.sides[k].side->value);
     }
     for (std::size_t k = 0; k + 1 < n; ++k) out.push_back(check_link_noting_uses(c, k, k + 1, false));
+    // A name written only here where the model has a parameter of the same letter (misspelled_names.cpp).
+    for (std::size_t k = 0; k < n; ++k)
+        if (!comparable[k])
+            if (std::optional<EquationCheck> slip = misspelled_name(c, k, comparable)) out.push_back(std::move(*slip));
     // Across sides that cannot be compared (an integral over a region, an unknown function): compare the
     // comparable sides on either side of them, so that a claim is not lost behind a step the checker cannot
     // read.
@@ -548,10 +552,12 @@ CheckReport Checker::run() {
         break;
     }
     collect_parts(chains);
+    all_chains_ = &chains;
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2) continue;  // an expression, not an equation
         check_chain(c, report.equations);
     }
+    all_chains_ = nullptr;
     apply_blames(report.equations);
     apply_confirmations(report.equations);
     {  // never silent: a row with a relation that gave no equation is "not read", with the reason

@@ -368,6 +368,12 @@ class Checker : public Comparisons {
     /// `\frac{d}{dt}\frac{\partial L}{\partial \dot q} - \frac{\partial L}{\partial q} = 0` with q none of the model's
     /// coordinates: judged with q as each of them in turn (generic_coordinate.cpp). False when it is no such link.
     bool check_generic_coordinate(const FullChain& c, std::size_t i, std::size_t j, bool bridge, EquationCheck& r);
+    /// Side k of c, not comparable for one name the text writes only there, agrees with the nearest comparable side
+    /// of its chain once exactly one like-named parameter the text uses elsewhere stands in its place (`m` for
+    /// M_2): that link, disagreeing, with the parameter written in (misspelled_names.cpp).
+    std::optional<EquationCheck> misspelled_name(const FullChain& c, std::size_t k, const std::vector<bool>& comparable);
+    /// Every chain of the text while run() checks them.
+    const std::vector<FullChain>* all_chains_ = nullptr;
 
     // ----- definitions confirmed by their uses (definition_uses.cpp)
     /// The rows of the text's definitions (`x_1 = l_1 \sin\theta_1`), by the file offset of the defined name.
