@@ -20,6 +20,15 @@ const EquationCheck* on_line(const eomgen::checker::CheckReport& r, int line, Ve
     return nullptr;
 }
 
+/// No line of `text` disagrees.
+void never_disagrees(const std::string& text) {
+    const auto r = eomgen::test::check_text(kCart, text);
+    for (const EquationCheck& e : r.equations) {
+        INFO(eomgen::test::describe(e));
+        CHECK(e.verdict != Verdict::Disagrees);
+    }
+}
+
 }  // namespace
 
 TEST_CASE("misspelled names: m_b written once for the text's m is a slip, corrected to m", "[checker][misspelled]") {
@@ -47,29 +56,17 @@ TEST_CASE("misspelled names: the text's own notation, or a name no parameter fit
             "\\dot{\\theta}^2 + m_b g l \\cos\\theta$$\n"
             "\n"
             "$$V = -m_b g l \\cos\\theta$$\n";
-        const auto r = eomgen::test::check_text(kCart, text);
-        for (const EquationCheck& e : r.equations) {
-            INFO(eomgen::test::describe(e));
-            CHECK(e.verdict != Verdict::Disagrees);
-        }
+        never_disagrees(text);
     }
     SECTION("no parameter of the letter makes the line agree") {
         const std::string text =
             "$$L = \\frac{1}{2}(M+m)\\dot{x}^2 + m l \\dot{x}\\dot{\\theta}\\cos\\theta + \\frac{1}{2} m l^2 "
             "\\dot{\\theta}^2 + 2 m_b g l \\cos\\theta$$\n";
-        const auto r = eomgen::test::check_text(kCart, text);
-        for (const EquationCheck& e : r.equations) {
-            INFO(eomgen::test::describe(e));
-            CHECK(e.verdict != Verdict::Disagrees);
-        }
+        never_disagrees(text);
     }
     SECTION("a parameter the text never writes is not offered") {
         // m_b -> m would agree, but the text writes no m (nor M): its m_b is its own name for the bob's mass.
         const std::string text = "$$V = -m_b g l \\cos\\theta$$\n";
-        const auto r = eomgen::test::check_text(kCart, text);
-        for (const EquationCheck& e : r.equations) {
-            INFO(eomgen::test::describe(e));
-            CHECK(e.verdict != Verdict::Disagrees);
-        }
+        never_disagrees(text);
     }
 }
