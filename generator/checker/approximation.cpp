@@ -1,4 +1,5 @@
-/** @file approximation.cpp  Taylor expansions about q = 0 to the order the text keeps. */
+/** @file approximation.cpp  Taylor expansions about q = 0 (or the point a change of variable sets) to the order
+ * the text keeps. */
 #include "checker/approximation.hpp"
 
 #include "checker/linear_solve.hpp"
@@ -35,6 +36,18 @@ int polynomial_degree(const GiNaC::ex& e, const GiNaC::symbol& eps) {
     }
 }
 
+/// Whether `text` holds `name` as a whole name: not inside a longer word or command (`r` in "for", `\rho` in
+/// `\rhod`).
+bool names(const std::string& text, const std::string& name) {
+    const auto letter = [](char ch) { return std::isalpha(static_cast<unsigned char>(ch)) != 0; };
+    for (std::size_t k = text.find(name); k != std::string::npos; k = text.find(name, k + 1)) {
+        const bool starts = k == 0 || !letter(text[k - 1]) || name[0] == '\\';
+        const bool ends = k + name.size() >= text.size() || !letter(text[k + name.size()]) || !letter(name.back());
+        if (starts && ends) return true;
+    }
+    return false;
+}
+
 std::string lower(std::string s) {
     for (char& c : s) c = char(std::tolower(static_cast<unsigned char>(c)));
     return s;
@@ -55,7 +68,8 @@ std::string ordinal(int order) {
     }
 }
 
-std::vector<std::size_t> small_coordinates_in_prose(const Derivation& d, std::size_t at, const Model& model) {
+std::vector<std::size_t> small_coordinates_in_prose(const Derivation& d, std::size_t at, const Model& model,
+                                                    const ExpansionPoints& points) {
     const std::string& s = d.text;
     if (at > s.size()) return {};
     std::size_t begin = s.rfind("\n\n", at);
@@ -71,10 +85,17 @@ std::vector<std::size_t> small_coordinates_in_prose(const Derivation& d, std::si
             for (std::size_t i = 0; i < model.coordinates.size(); ++i) out.push_back(i);
             break;
         }
+        // "with $\rho$ and $\theta$ small": the names before it in its clause, as whole names.
+        std::size_t from = k > 60 ? k - 60 : 0;
+        for (const char* stop : {". ", ";", ":", "\n"})
+            if (const std::size_t at_stop = window.rfind(stop, k); at_stop != std::string::npos && at_stop >= from)
+                from = at_stop + 1;
+        const std::string before = window.substr(from, k - from);
         for (std::size_t i = 0; i < model.coordinates.size(); ++i) {
             const Coordinate& c = model.coordinates[i];
-            for (const std::string& spelled : {lower(c.latex), lower(c.name)})
-                if (!spelled.empty() && after.find(spelled) != std::string::npos &&
+            const std::string deviation = i < points.deviation.size() ? lower(points.deviation[i]) : "";
+            for (const std::string& spelled : {lower(c.latex), lower(c.name), deviation})
+                if (!spelled.empty() && (after.find(spelled) != std::string::npos || names(before, spelled)) &&
                     std::find(out.begin(), out.end(), i) == out.end())
                     out.push_back(i);
         }
@@ -118,19 +139,29 @@ std::optional<std::size_t> small_motion_stated_before(const Derivation& d, std::
 
 ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int reference_side, const Model& model,
                                     const std::vector<GiNaC::ex>& motion, const std::vector<std::size_t>& small,
-                                    const std::function<bool(const GiNaC::ex&, const GiNaC::ex&)>& same) {
+                                    const std::function<bool(const GiNaC::ex&, const GiNaC::ex&)>& same,
+                                    const ExpansionPoints& points) {
     ApproxVerdict v;
     if (small.empty()) return v;
     const GiNaC::symbol eps("__eps");
     GiNaC::exmap scale, at_zero;
+    bool own_point = false;
     for (std::size_t i : small) {
         const Coordinate& c = model.coordinates[i];
-        scale[c.q] = eps * c.q;
+        const GiNaC::ex p = points.point(i);
+        scale[c.q] = p + eps * (c.q - p);
         scale[c.qd] = eps * c.qd;
         scale[c.qdd] = eps * c.qdd;
-        at_zero[c.q] = 0;
+        at_zero[c.q] = p;
         at_zero[c.qd] = 0;
+        own_point = own_point || points.own_point(i);
     }
+    // The reference's terms of order 0 are left out where the text, about a point of its own, writes none.
+    const auto leave_out_order_0 = [&](const GiNaC::ex& text_scaled) {
+        if (!own_point) return false;
+        const auto t0 = taylor(text_scaled, eps, 0);
+        return t0 && same(*t0, 0);
+    };
     const GiNaC::ex A = a.subs(scale), B = b.subs(scale);
     int k = std::max(polynomial_degree(A, eps), polynomial_degree(B, eps));
     // `\cos\alpha \approx 1`: a constant for a function of small coordinates holds to first order (its first-order
@@ -142,9 +173,10 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
     v.applies = true;
     v.order = k;
     v.text = *R;
+    const bool drop_0 = leave_out_order_0(A - B);
     // The lowest order at which x and y differ (x, y scaled), or 0.
     auto first_difference = [&](const GiNaC::ex& x, const GiNaC::ex& y) {
-        for (int o = 0; o <= k; ++o) {
+        for (int o = drop_0 ? 1 : 0; o <= k; ++o) {
             const auto tx = taylor(x, eps, o), ty = taylor(y, eps, o);
             if (!tx || !ty || !same(*tx, *ty)) return o;
         }
@@ -162,7 +194,9 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
         for (std::size_t i = 0; i < motion.size(); ++i) {
             const GiNaC::symbol& qdd = model.coordinates[i].qdd;
             if (!R->has(qdd)) continue;
-            const GiNaC::ex E = motion[i].subs(scale);
+            GiNaC::ex E = motion[i].subs(scale);
+            if (drop_0)
+                if (const auto E0 = taylor(E, eps, 0)) E = E - *E0;
             const auto Ek = taylor(E, eps, k);
             if (!Ek) continue;
             GiNaC::ex c;
@@ -181,6 +215,7 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
                 v.equation = int(i);
                 v.reference = ref;
                 v.wrong_order = first_difference((A - B), c * E);
+                v.dropped_order_0 = drop_0;
             }
             if (same(*R, ref)) {
                 v.agrees = true;
@@ -209,7 +244,9 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
                 if (!solved_at) throw std::runtime_error("singular");
                 const GiNaC::ex solved = *solved_at;
                 const GiNaC::symbol& qdd = model.coordinates[only].qdd;
-                const GiNaC::ex E = (qdd - solved).subs(scale);
+                GiNaC::ex E = (qdd - solved).subs(scale);
+                if (drop_0)
+                    if (const auto E0 = taylor(E, eps, 0)) E = E - *E0;
                 if (const auto Ek = taylor(E, eps, k)) {
                     const std::optional<GiNaC::ex> c_at = subs_unless_pole(GiNaC::diff(*R, qdd), at_zero);
                     if (!c_at) throw std::runtime_error("pole");
@@ -218,6 +255,7 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
                     // The text eliminated the other accelerations: this is what it should be, right or wrong.
                     v.equation = int(only);
                     v.solved = true;
+                    v.dropped_order_0 = drop_0;
                     v.reference = ref;
                     v.wrong_order = first_difference((A - B), c * E);
                     if (same(*R, ref)) {
@@ -244,8 +282,9 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
 
 bool check_approximation(const Derivation& d, const Model& model, const std::vector<GiNaC::ex>& motion, std::size_t at,
                          const std::pair<std::string, std::string>& sources, const GiNaC::ex& a, const GiNaC::ex& b,
-                         int reference_side, bool implied, Comparisons& cmp, EquationCheck& r) {
-    std::vector<std::size_t> small = small_coordinates_in_prose(d, at, model);
+                         int reference_side, bool implied, Comparisons& cmp, EquationCheck& r,
+                         const ExpansionPoints& points) {
+    std::vector<std::size_t> small = small_coordinates_in_prose(d, at, model, points);
     std::string said = small.empty() ? "" : " (the text says it is small)";
     // "… makes small oscillations" in the statement of the problem: what it derives after is about them.
     if (small.empty() && !implied)
@@ -256,14 +295,16 @@ bool check_approximation(const Derivation& d, const Model& model, const std::vec
     if (small.empty() && implied)  // implied: every coordinate the equation holds
         for (std::size_t k = 0; k < model.dof(); ++k)
             if ((a - b).has(model.coordinates[k].q) || (a - b).has(model.coordinates[k].qd)) small.push_back(k);
-    const ApproxVerdict v = compare_approximation(a, b, reference_side, model, motion, small,
-                                                  [&](const GiNaC::ex& x, const GiNaC::ex& y) { return cmp.same(x, y, 1e-9); });
+    const ApproxVerdict v = compare_approximation(
+        a, b, reference_side, model, motion, small,
+        [&](const GiNaC::ex& x, const GiNaC::ex& y) { return cmp.same(x, y, 1e-9); }, points);
     if (!v.applies) return false;
     auto m = [](const std::string& latex) { return "$" + latex + "$"; };
     std::string vars, point;
     for (std::size_t k : small) {
-        vars += (vars.empty() ? "" : ", ") + m(model.coordinates[k].latex);
-        point += (point.empty() ? "" : ", ") + model.coordinates[k].latex + " = 0";
+        const bool moved = k < points.deviation.size() && !points.deviation[k].empty();
+        vars += (vars.empty() ? "" : ", ") + m(moved ? points.deviation[k] : model.coordinates[k].latex);
+        point += (point.empty() ? "" : ", ") + model.coordinates[k].latex + " = " + (moved ? points.latex[k] : "0");
     }
     const std::string about = " about " + m(point) + said;
     if (v.agrees || !v.reference.is_zero() || v.equation >= 0)
@@ -274,6 +315,9 @@ bool check_approximation(const Derivation& d, const Model& model, const std::vec
                                                              ", expanded") +
                                                 about
                                           : "the Taylor expansion" + about;
+    if (v.dropped_order_0)
+        r.notes.push_back("the terms of order 0 left out: the text writes none, taking its point where they vanish "
+                          "(an equilibrium)");
     if (v.agrees) {
         r.verdict = Verdict::Agrees;
         r.reason = "agrees to " + ordinal(v.order) + " order in " + vars;
@@ -283,11 +327,14 @@ bool check_approximation(const Derivation& d, const Model& model, const std::vec
     r.verdict = Verdict::Disagrees;
     r.reason = "disagrees at " + ordinal(std::max(v.wrong_order, 1)) + " order in " + vars +
                " (the text keeps order " + std::to_string(v.order) + ")";
-    r.difference = cmp.latex((v.text - v.reference).expand());
-    r.wrong_terms = cmp.wrong_terms(v.text, v.reference, 1e-9);
-    r.corrected = v.equation >= 0 ? cmp.latex(v.reference) + " \\approx 0"
+    // In the text's deviations where it writes them (`\tilde\phi` for φ − φ₀).
+    const auto shown = [&](const GiNaC::ex& e) { return points.in_text.empty() ? e : e.subs(points.in_text).expand(); };
+    const GiNaC::ex text = shown(v.text), reference = shown(v.reference);
+    r.difference = cmp.latex((text - reference).expand());
+    r.wrong_terms = cmp.wrong_terms(text, reference, 1e-9);
+    r.corrected = v.equation >= 0 ? cmp.latex(reference) + " \\approx 0"
                                   : (reference_side == 0 ? sources.first : sources.second) + " \\approx " +
-                                        cmp.latex(v.reference);
+                                        cmp.latex(reference);
     return true;
 }
 

@@ -308,7 +308,8 @@ class Checker : public Comparisons {
             };
             if (r.verdict == Verdict::Disagrees && !verifying_ && c.sides[i].side->ok && c.sides[j].side->ok &&
                 !label_claim(i, j) && !label_claim(j, i) && !amplitudes() &&
-                sets_a_value(c.sides[i].side->value, c.sides[j].side->value, model_)) {
+                sets_a_value(c.sides[i].side->value, c.sides[j].side->value, model_) &&
+                !defined_quantity(c.sides[i]) && !defined_quantity(c.sides[j])) {
                 // "started with θ̇ = 0", "with m₁ = m₂ = m": values set for what follows, not an equation of motion.
                 const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
                 if (!cue.empty()) {
@@ -337,6 +338,13 @@ class Checker : public Comparisons {
             r.reason = std::string("cannot be evaluated: ") + e.what();
             return r;
         }
+    }
+    /// A side that is one free name the text defined (`\ddot{\tilde\phi}` after `\phi = \phi_0 + \tilde\phi`): its
+    /// quantity, not a name a condition gives a value.
+    bool defined_quantity(const PSide& s) {
+        if (!s.side->ok || !ctx_.free_name_of(s.side->value)) return false;
+        const Prepared p = prepare(s);
+        return p.ok && !p.value.is_equal(s.side->value);
     }
     /// A line that disagrees only through a name the text defined (`V = m g y` with the text's y of line 23), its
     /// other side eomgen's value: what the name would have to be for it to hold (apply_blames decides).
@@ -375,6 +383,28 @@ class Checker : public Comparisons {
     /// Every chain of the text while run() checks them.
     const std::vector<FullChain>* all_chains_ = nullptr;
 
+    // ----- changes of variable (change_of_variable.cpp)
+    /// `r = r_{eq} + \rho`: from `from` to `until` (file offsets) the text's `deviation` is q − point.
+    struct VariableChange {
+        std::size_t from = 0, until = 0;
+        std::size_t coordinate = 0;
+        GiNaC::ex point;
+        bool own = false;         ///< the point is a constant of the text's own, with no value given
+        std::string point_latex;  ///< as the text writes it
+        std::string deviation;    ///< the new name, canonical LaTeX
+        GiNaC::ex sign;           ///< ±1: the deviation is sign·(q − point)
+    };
+    std::vector<VariableChange> variable_changes_;
+    /// The rows that make a change of variable (the file offset of their relation), with what the report says.
+    std::map<std::size_t, std::string> variable_change_rows_;
+    /// Reads the changes of variable of the text and defines their names (after collect_definitions).
+    void collect_changes_of_variable(const std::vector<FullChain>& chains);
+    /// The value the text gives `name` (a constant) in the last chain `name = …` before file offset `before`.
+    std::optional<GiNaC::ex> earlier_value(const std::vector<FullChain>& chains, const GiNaC::ex& name,
+                                           std::size_t before, int* line);
+    /// Where the approximations at file offset `at` are expanded.
+    ExpansionPoints expansion_points(std::size_t at) const;
+
     // ----- definitions confirmed by their uses (definition_uses.cpp)
     /// The rows of the text's definitions (`x_1 = l_1 \sin\theta_1`), by the file offset of the defined name.
     std::map<std::size_t, SourcePos> definition_rows_;
@@ -398,6 +428,9 @@ class Checker : public Comparisons {
     /// not apply (no side is a polynomial in them).
     bool approximation(std::size_t at, const std::string& left, const std::string& right, const Prepared& a,
                        const Prepared& b, bool implied, EquationCheck& r);
+    /// Whether the text says the link c[i] = c[j] approximates: the prose calls coordinates small, or the link writes
+    /// a deviation from the point of a change of variable.
+    bool approximation_stated(const FullChain& c, std::size_t i, std::size_t j) const;
     bool verifying_ = false;
     void check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other, double tol,
                     EquationCheck& r);

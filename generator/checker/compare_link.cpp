@@ -26,6 +26,11 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
                    "rows of $(K - \\omega^2 M) A = 0$ about rest");
         return r;
     }
+    // `r = r_{eq} + \rho`: the text's new name for the deviation from a point (change_of_variable.cpp).
+    if (const auto change = variable_change_rows_.find(rel_at); change != variable_change_rows_.end() && j == i + 1) {
+        not_judged(r, Role::Definition, change->second);
+        return r;
+    }
     // `q = r, \theta` ("for q = r, θ" after the Euler–Lagrange equation of a generic q): the name stands for each
     // of the model's coordinates listed.
     if (j == i + 1 && L.side->ok && !R.side->ok && GiNaC::is_a<GiNaC::symbol>(L.side->value)) {
@@ -200,7 +205,10 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         alt.section = r.section;
         alt.equation = r.equation;
         if (!divided.empty()) alt.notes.push_back(divided);
-        if (approximation(rel_at, L.side->source, R.side->source, a, b, false, alt) && alt.verdict == Verdict::Agrees)
+        // Its verdict stands, agreeing or not, where the text says it approximates: it calls the coordinates small
+        // ("linearizing", "for small θ"), or writes the deviation from the point of a change of variable.
+        if (approximation(rel_at, L.side->source, R.side->source, a, b, false, alt) &&
+            (alt.verdict == Verdict::Agrees || approximation_stated(c, i, j)))
             return alt;
     }
     return r;
@@ -249,11 +257,23 @@ void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j
     }
 }
 
+bool Checker::approximation_stated(const FullChain& c, std::size_t i, std::size_t j) const {
+    const std::size_t at = c.relation_offsets[j - 1];
+    const ExpansionPoints points = expansion_points(at);
+    if (!small_coordinates_in_prose(d_, at, model_, points).empty()) return true;
+    for (const std::size_t k : {i, j})
+        for (const NameUse& u : c.sides[k].side->uses)
+            for (const std::string& deviation : points.deviation)
+                if (!deviation.empty() && u.name.find(deviation) != std::string::npos) return true;
+    return false;
+}
+
 bool Checker::approximation(std::size_t at, const std::string& left, const std::string& right, const Prepared& a,
                             const Prepared& b, bool implied, EquationCheck& r) {
     if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
     const int ref_side = a.has_truth_label && !a.has_part ? 0 : (b.has_truth_label && !b.has_part ? 1 : -1);
-    return check_approximation(d_, model_, motion_, at, {left, right}, a.value, b.value, ref_side, implied, *this, r);
+    return check_approximation(d_, model_, motion_, at, {left, right}, a.value, b.value, ref_side, implied, *this, r,
+                               expansion_points(at));
 }
 
 void Checker::verify_correction(const FullChain& c, std::size_t j, EquationCheck& r) {

@@ -88,3 +88,74 @@ TEST_CASE("approximation: 'linearizing about theta = 0' is the point of an expan
     for (const auto& e : r.equations)
         if (e.equation == "\\theta = 0") CHECK(e.reason.rfind("the point the text expands about", 0) == 0);
 }
+
+namespace {
+
+const EquationCheck* at_line(const CheckReport& r, int line) {
+    for (const EquationCheck& e : r.equations)
+        if (e.where.line == line) return &e;
+    return nullptr;
+}
+
+}  // namespace
+
+TEST_CASE("changes of variable: the inverted pendulum, theta = pi + phi, expanded about theta = pi",
+          "[checker][approximation][change_of_variable]") {
+    const char* const model = "tests/checker/models/plane_pendulum.toml";
+    const std::string head = "Let $\\theta = \\pi + \\varphi$ with $\\varphi$ small. Then\n";
+    const CheckReport r = eomgen::test::check_text(model, head + "$$\\ddot\\varphi = \\frac{g}{l}\\varphi$$\n");
+    for (const EquationCheck& e : r.equations) INFO(describe(e));
+    const EquationCheck* change = at_line(r, 1);
+    REQUIRE(change != nullptr);
+    CHECK(change->verdict == Verdict::NotJudged);
+    CHECK(change->reason.rfind("a change of variable: $\\phi$ is $", 0) == 0);
+    const EquationCheck* linear = at_line(r, 2);
+    REQUIRE(linear != nullptr);
+    INFO(describe(*linear));
+    CHECK(linear->verdict == Verdict::Agrees);
+    CHECK(linear->compared_with.find("expanded about $\\theta = \\pi$") != std::string::npos);
+    // The hanging pendulum's sign, about the inverted position, is the slip; the correction is in the text's φ.
+    const CheckReport w = eomgen::test::check_text(model, head + "$$\\ddot\\varphi = -\\frac{g}{l}\\varphi$$\n");
+    const EquationCheck* wrong = at_line(w, 2);
+    REQUIRE(wrong != nullptr);
+    INFO(describe(*wrong));
+    CHECK(wrong->verdict == Verdict::Disagrees);
+    CHECK(wrong->reason.rfind("disagrees at first order in $\\phi$", 0) == 0);
+    CHECK(wrong->corrected.find("\\ddot{\\phi}") != std::string::npos);
+    CHECK(wrong->corrected.find("\\theta") == std::string::npos);
+}
+
+TEST_CASE("changes of variable: about a point of the text's own, the terms of order 0 it leaves out",
+          "[checker][approximation][change_of_variable]") {
+    // θ₀ has no value in the text: a constant of its own. The linearized equation writes no term of order 0 (θ₀
+    // an equilibrium), and is compared from order 1: cos θ₀ is right, sin θ₀ (the Kapitza post's slip) is not.
+    const char* const model = "tests/checker/models/plane_pendulum.toml";
+    const std::string head = "Split the angle as $\\theta = \\theta_0 + \\eta$. Linearizing, the equation of $\\eta$ is\n";
+    const CheckReport r =
+        eomgen::test::check_text(model, head + "$$\\ddot\\eta = -\\frac{g}{l}\\cos\\theta_0\\,\\eta$$\n");
+    const EquationCheck* right = at_line(r, 2);
+    REQUIRE(right != nullptr);
+    INFO(describe(*right));
+    CHECK(right->verdict == Verdict::Agrees);
+    CHECK(eomgen::test::has_note(*right, "the terms of order 0 left out"));
+    const CheckReport w =
+        eomgen::test::check_text(model, head + "$$\\ddot\\eta = -\\frac{g}{l}\\sin\\theta_0\\,\\eta$$\n");
+    const EquationCheck* wrong = at_line(w, 2);
+    REQUIRE(wrong != nullptr);
+    INFO(describe(*wrong));
+    CHECK(wrong->verdict == Verdict::Disagrees);
+    REQUIRE(!wrong->wrong_terms.empty());
+    CHECK(wrong->wrong_terms.front().find("($\\sin$ where $\\cos$ belongs)") != std::string::npos);
+    CHECK(wrong->corrected.find("\\eta") != std::string::npos);
+}
+
+TEST_CASE("changes of variable: a value stated with no word of a new variable is not one",
+          "[checker][approximation][change_of_variable]") {
+    // The seed's torque-free top: "the rotation about the symmetry axis is ψ = π/2 − Ω" is a claim about ψ.
+    const char* const model = "tests/checker/models/plane_pendulum.toml";
+    const CheckReport r = eomgen::test::check_text(model, "The angle of the motion is $\\theta = \\pi/2 - \\Omega$.\n");
+    for (const EquationCheck& e : r.equations) {
+        INFO(describe(e));
+        CHECK(e.reason.find("a change of variable") == std::string::npos);
+    }
+}

@@ -415,6 +415,33 @@ TEST_CASE("roles: notes on the elastic pendulum, checked as written (the energie
         }
     }
     CHECK(conditions == 5);
+    // `r = r_{eq} + \rho` moves r: the small-oscillation equations in ρ and θ are expanded about r = r_eq (the value
+    // of line 24), where they agree; a wrong sign in the ρ equation disagrees.
+    int expanded = 0;
+    for (const EquationCheck& e : r.equations) {
+        if (e.where.line == 28) {
+            CHECK(e.verdict == Verdict::NotJudged);
+            CHECK(e.role == Role::Definition);
+            CHECK(e.reason.find("as the text gives it on line 24") != std::string::npos);
+        }
+        if (e.where.line == 29) {
+            INFO(eomgen::test::describe(e));
+            CHECK(e.verdict == Verdict::Agrees);
+            CHECK(e.compared_with.find("expanded about $r = r_{eq}, \\theta = 0$") != std::string::npos);
+            ++expanded;
+        }
+    }
+    CHECK(expanded == 2);
+    {
+        std::string sign = text;
+        const std::size_t rho = sign.find("m\\ddot\\rho \\approx -k\\rho");
+        REQUIRE(rho != std::string::npos);
+        sign.replace(rho, 25, "m\\ddot\\rho \\approx k\\rho");
+        int slips = 0;
+        for (const EquationCheck& e : eomgen::test::check_text(model, sign).equations)
+            if (e.where.line == 29 && e.verdict == Verdict::Disagrees) ++slips;
+        CHECK(slips == 1);
+    }
     // A wrong equilibrium value disagrees, with the value the equation of motion needs.
     std::string wrong = text;
     const std::size_t at = wrong.find("r_{eq} = l_0 + \\frac{mg}{k}");
