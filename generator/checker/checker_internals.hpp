@@ -327,7 +327,8 @@ class Checker : public Comparisons {
                 blame_definition(c, i, j, r);
                 note_disagreeing_uses(c, i, j, r);
             }
-            if (!r.corrected.empty() && !verifying_) verify_correction(c, j, r);
+            if (!r.corrected.empty() && !verifying_ && !solved_corrections_.count({r.where.line, r.where.column}))
+                verify_correction(c, j, r);
             if (!verifying_ && c.display) check_prose_label(c, i, j, r);
             return r;
         } catch (const std::exception& e) {
@@ -382,6 +383,14 @@ class Checker : public Comparisons {
     std::optional<EquationCheck> misspelled_name(const FullChain& c, std::size_t k, const std::vector<bool>& comparable);
     /// Every chain of the text while run() checks them.
     const std::vector<FullChain>* all_chains_ = nullptr;
+
+    /// A definition (name = value, side i = 0 of c) written after "⇒" and the relation it follows from: agrees or
+    /// disagrees with that relation solved for the name (implication.cpp); false when it follows no such relation.
+    bool check_implied_definition(const FullChain& c, std::size_t i, std::size_t j, const GiNaC::ex& name,
+                                  const std::string& name_latex, const GiNaC::ex& value, EquationCheck& r);
+    /// Where a correction is the relation before solved (implication.cpp): it names a new symbol, so it cannot be
+    /// parsed back and checked alone (verify_correction), and needs not be.
+    std::set<std::pair<int, int>> solved_corrections_;
 
     // ----- changes of variable (change_of_variable.cpp)
     /// `r = r_{eq} + \rho`: from `from` to `until` (file offsets) the text's `deviation` is q − point.

@@ -116,6 +116,11 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return n.rfind("read as a normal frequency", 0) == 0;
         });
         if (!def.empty() && !frequency_claim) {
+            // `… = l_2 - y_3 \Rightarrow y_3 = …`: derived from the relation before it (implication.cpp).
+            if (L.side->ok && b.ok && b.vectors.empty() && GiNaC::is_a<GiNaC::symbol>(L.side->value))
+                if (const FreeName* f = ctx_.free_name_of(L.side->value);
+                    f && check_implied_definition(c, i, j, L.side->value, f->name, b.value, r))
+                    return;
             describe(R, b);
             std::string reason = "a definition: the text's abbreviation $" + def + "$ for the rest of its " +
                                  (at_a_point_.count(L.base + L.side->begin)

@@ -308,3 +308,33 @@ TEST_CASE("definitions: derivatives by a new time tau = c t",
     CHECK(r.equations[3].verdict == Verdict::NotComparable);  // s: not defined by the text
     CHECK(r.equations[3].reason.find("which the text does not define") != std::string::npos);
 }
+
+TEST_CASE("definitions: one derived with an implication sign is the relation before it solved for the name",
+          "[checker][definitions][implication]") {
+    // The double Atwood machine of the corpus: `\frac{1}{2}(y_1+y_2) = l_2-y_3 \Rightarrow y_3 = l_2 - \frac{1}{2}
+    // (y_1 - y_2)`, a sign slipped in the solving.
+    const char* const model = "tests/checker/models/two_carts.toml";
+    const auto verdict_of_s = [&](const std::string& text) -> const EquationCheck {
+        const auto r = eomgen::test::check_text(model, text);
+        for (const EquationCheck& e : r.equations)
+            if (e.equation.rfind("s = ", 0) == 0) return e;
+        FAIL("no verdict on s = …");
+        return {};
+    };
+    const EquationCheck right =
+        verdict_of_s("The midpoint: $x_1 + x_2 = 2 s$ $\\Rightarrow$ $s = \\frac{1}{2}(x_1 + x_2)$.\n");
+    INFO(describe(right));
+    CHECK(right.verdict == Verdict::Agrees);
+    CHECK(right.compared_with.rfind("the relation it follows from (line 1)", 0) == 0);
+    const EquationCheck wrong =
+        verdict_of_s("The midpoint: $x_1 + x_2 = 2 s$ $\\Rightarrow$ $s = \\frac{1}{2}(x_1 - x_2)$.\n");
+    INFO(describe(wrong));
+    CHECK(wrong.verdict == Verdict::Disagrees);
+    CHECK(wrong.reason.rfind("it does not follow from", 0) == 0);
+    CHECK(wrong.corrected == "s = \\frac{1}{2} x_{1} + \\frac{1}{2} x_{2}");
+    // Without the sign, or where solving would divide by a quantity of the motion, it stays a definition.
+    const EquationCheck apart = verdict_of_s("$x_1 + x_2 = 2 s$ and, for later, $s = \\frac{1}{2}(x_1 - x_2)$.\n");
+    CHECK(apart.verdict == Verdict::NotJudged);
+    const EquationCheck divided = verdict_of_s("$x_1 s = 1$ $\\Rightarrow$ $s = 2/x_1$.\n");
+    CHECK(divided.verdict == Verdict::NotJudged);
+}
