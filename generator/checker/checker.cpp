@@ -216,13 +216,16 @@ std::size_t Checker::in_force_from(std::size_t head, std::size_t at) const {
     for (std::size_t r = 0; r < d_.rows.size() && d_.rows[r].offset <= head; ++r) row = r;
     if (row == d_.rows.size()) return at;
     const MathRow& here = d_.rows[row];
+    // (From just before the row: a definition is in force after its offset, and the formula's first side may
+    // start right at the row's.)
+    const auto before_row = [](std::size_t offset) { return offset == 0 ? offset : offset - 1; };
     const std::size_t lead = d_.text.find_first_not_of(" \t\r\n", here.offset);
-    if (lead != std::string::npos && lead < head) return here.offset;
+    if (lead != std::string::npos && lead < head) return before_row(here.offset);
     // The formula before: the row before, past inline mentions without a relation ("where $Q$ is").
     for (std::size_t r = row; r-- > 0;) {
         if (d_.rows[r].section != here.section) break;
         if (!d_.rows[r].display && d_.rows[r].text.find('=') == std::string::npos) continue;
-        return d_.rows[r].offset;
+        return before_row(d_.rows[r].offset);
     }
     return at;
 }
@@ -374,10 +377,15 @@ void Checker::apply_blames(std::vector<EquationCheck>& equations) {
             if (e.where.line == first.definition_line && e.reason.find(prefix) != std::string::npos) def = &e;
         if (!def) continue;
         std::string lines;
-        std::vector<std::pair<SourcePos, std::string>> uses;
-        for (const Blame* b : these) uses.emplace_back(b->where, b->equation);
-        for (const DisagreeingUse* u : confirming) uses.emplace_back(u->where, u->equation);
-        for (const auto& [where, equation] : uses) {
+        struct Use {
+            SourcePos where;
+            std::string equation;
+            bool forward;
+        };
+        std::vector<Use> uses;
+        for (const Blame* b : these) uses.push_back({b->where, b->equation, b->forward});
+        for (const DisagreeingUse* u : confirming) uses.push_back({u->where, u->equation, u->forward});
+        for (const auto& [where, equation, forward] : uses) {
             const std::string l = std::to_string(where.line);
             if (lines.find(l) == std::string::npos) lines += (lines.empty() ? "" : ", ") + l;
         }
@@ -388,10 +396,11 @@ void Checker::apply_blames(std::vector<EquationCheck>& equations) {
         def->wrong_terms = {"with this $" + name + "$ the lines that use it disagree with eomgen; they hold with $" +
                             name + " = " + needed + "$"};
         def->corrected = name + " = " + needed;
-        for (const auto& [where, equation] : uses)
+        // (A use before a later definition was not comparable: it is said so too.)
+        for (const auto& [where, equation, forward] : uses)
             for (EquationCheck& e : equations)
                 if (e.where.line == where.line && e.where.column == where.column && e.equation == equation &&
-                    e.verdict == Verdict::Disagrees) {
+                    (e.verdict == Verdict::Disagrees || (forward && e.verdict == Verdict::NotComparable))) {
                     e.verdict = Verdict::NotComparable;
                     e.reason = "it holds with $" + name + " = " + needed + "$: the text's $" + name + "$ of line " +
                                std::to_string(first.definition_line) + " is what disagrees (see there)";

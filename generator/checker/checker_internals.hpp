@@ -355,6 +355,7 @@ class Checker : public Comparisons {
         int definition_line;  ///< where the text defines it
         SourcePos where;      ///< the line's verdict
         std::string equation;
+        bool forward = false;  ///< the definition comes later in the section: the line's own verdict is "not comparable"
     };
     std::vector<Blame> blames_;
     void blame_definition(const FullChain& c, std::size_t i, std::size_t j, const EquationCheck& r);
@@ -367,6 +368,7 @@ class Checker : public Comparisons {
         std::size_t i = 0, j = 0;
         SourcePos where;
         std::string equation;
+        bool forward = false;  ///< as Blame::forward
     };
     std::vector<DisagreeingUse> disagreeing_uses_;
     void note_disagreeing_uses(const FullChain& c, std::size_t i, std::size_t j, const EquationCheck& r);
@@ -440,6 +442,8 @@ class Checker : public Comparisons {
     /// Whether the text says the link c[i] = c[j] approximates: the prose calls coordinates small, or the link writes
     /// a deviation from the point of a change of variable.
     bool approximation_stated(const FullChain& c, std::size_t i, std::size_t j) const;
+    /// The user's symbol-map entry for the name a side is, alone (`I` with `--map I='m k^2'`), in force on its line.
+    const MapEntry* map_entry_for(const PSide& s) const;
     bool verifying_ = false;
     void check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other, double tol,
                     EquationCheck& r);

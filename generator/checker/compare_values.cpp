@@ -589,9 +589,39 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         }
     }
+    // `I = m(kR)^2` where the symbol map says what the text's I stands for: compared with the map's value, as a
+    // definition of a name the model knows is (not a condition on the parameters).
+    for (const bool left : {true, false}) {
+        const PSide& named = left ? L : R;
+        const Prepared& other = left ? b : a;
+        const MapEntry* entry = map_entry_for(named);
+        const GiNaC::ex mapped = left ? a.value : b.value;
+        // (Not a value at an instant, `\phi = 0` at t = 0 with φ mapped to αt, nor a number the text picks.)
+        if (!entry || depends_on_state(other.value) || has_acceleration(other.value) || other.value.has(model_.t) ||
+            mapped.has(model_.t) || GiNaC::is_a<GiNaC::numeric>(other.value))
+            continue;
+        r.verdict = Verdict::Disagrees;
+        r.compared_with = "the symbol map's " + m(entry->name + " = " + entry->value) + " (" + entry->origin + ")";
+        r.reason = "the text's " + m(trimmed(named.side->source)) + " is not what the symbol map says it stands for";
+        const Diagnosis dg = compare_to(other.value, mapped, tol);
+        r.difference = dg.difference;
+        r.wrong_terms = dg.lines;
+        r.corrected = left ? L.side->source + " = " + latex(mapped) : latex(mapped) + " = " + R.side->source;
+        return;
+    }
     r.reason =
         "not an identity, and not an equation of this model (a condition or an assumption, such as a "
         "particular value)";
+}
+
+const MapEntry* Checker::map_entry_for(const PSide& s) const {
+    const std::string name = canonical_name(trimmed(s.side->source));
+    if (name.empty()) return nullptr;
+    const int line = d_.position(s.base + s.side->begin).line;
+    for (const MapEntry& e : options_.map)
+        if (canonical_name(e.name) == name && (e.first_line == 0 || (line >= e.first_line && line <= e.last_line)))
+            return &e;
+    return nullptr;
 }
 
 }  // namespace eomgen::checker::detail

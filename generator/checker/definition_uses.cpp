@@ -23,11 +23,12 @@ EquationCheck Checker::check_link_noting_uses(const FullChain& c, std::size_t i,
     if (r.verdict == Verdict::NotComparable && r.reason.rfind("a partial derivative with respect to", 0) == 0)
         check_generic_coordinate(c, i, j, bridge, r);
     // A name the text gives a value only later in the section: taken so where that makes the link agree, and only
-    // there (a later wrong value is the definition's slip, not this link's).
+    // there (a later wrong value is the definition's slip, not this link's: blamed at the definition when its uses
+    // need another value alike, apply_blames).
     if (r.verdict == Verdict::NotComparable && (r.reason.rfind("unknown symbol", 0) == 0 ||
                                                r.reason.rfind("the partial derivative of", 0) == 0 ||
                                                r.reason.rfind("the time derivative of", 0) == 0)) {
-        const std::size_t blames = blames_.size();
+        const std::size_t blames = blames_.size(), disagreeing = disagreeing_uses_.size();
         const int sign = multiplier_sign_, sign_line = multiplier_sign_line_;
         const std::string sign_section = multiplier_sign_section_;
         definitions_.set_forward(true);
@@ -36,8 +37,9 @@ EquationCheck Checker::check_link_noting_uses(const FullChain& c, std::size_t i,
         if (later.verdict == Verdict::Agrees) {
             later.notes.push_back("with a value the text gives the name only later in its section");
             r = std::move(later);
-        } else {  // what the attempt set up is undone
-            blames_.resize(blames);
+        } else {  // what the attempt set up is undone, but for what the later value is blamed for (apply_blames)
+            for (std::size_t k = blames; k < blames_.size(); ++k) blames_[k].forward = true;
+            for (std::size_t k = disagreeing; k < disagreeing_uses_.size(); ++k) disagreeing_uses_[k].forward = true;
             multiplier_sign_ = sign;
             multiplier_sign_line_ = sign_line;
             multiplier_sign_section_ = sign_section;

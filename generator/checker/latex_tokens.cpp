@@ -236,6 +236,30 @@ std::vector<Token> tokenize_text(std::string_view s) {
             i += 2;
             continue;
         }
+        // The same after a bracketed power, `(x^2 ) ̇` as a word processor writes ẋ²: the dot on the power's base.
+        if (c == 0xCC && i + 1 < s.size() && (static_cast<unsigned char>(s[i + 1]) == 0x87 ||
+                                              static_cast<unsigned char>(s[i + 1]) == 0x88) &&
+            !out.empty() && out.back().kind == Tok::Char && out.back().text == ")" &&
+            s.find_first_not_of(" \t", out.back().offset + out.back().length) == i) {
+            std::size_t open = out.size() - 1;
+            for (int depth = 0; open-- > 0;) {
+                if (out[open].kind == Tok::Char && out[open].text == ")") ++depth;
+                if (out[open].kind == Tok::Char && out[open].text == "(" && depth-- == 0) break;
+            }
+            const bool power_of_a_name =
+                open + 3 < out.size() && out[open].kind == Tok::Char && out[open].text == "(" &&
+                (out[open + 1].kind == Tok::Letter || (out[open + 1].kind == Tok::Word && out[open + 1].raw.empty())) &&
+                out[open + 2].kind == Tok::Char && out[open + 2].text == "^";
+            if (power_of_a_name) {
+                const Token base = out[open + 1];
+                out.insert(out.begin() + std::ptrdiff_t(open + 1),
+                           Token{Tok::Word, static_cast<unsigned char>(s[i + 1]) == 0x87 ? "\\dot" : "\\ddot",
+                                 base.offset, 0, "", false});
+                out.back().length = i + 2 - out.back().offset;
+                i += 2;
+                continue;
+            }
+        }
         // HTML entities, Unicode letters and signs, combining dots (latex_normalize): their LaTeX tokens.
         if (c >= 0x80 || c == '&' ||
             (std::isalpha(c) && i + 1 < s.size() && (static_cast<unsigned char>(s[i + 1]) == 0xCC || s[i + 1] == '&'))) {

@@ -1,6 +1,8 @@
 /** @file prose.cpp  The sentences around a derivation's math (prose.hpp). */
 #include "checker/prose.hpp"
 
+#include "checker/latex_normalize.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <iterator>
@@ -98,7 +100,13 @@ bool explains_formula_before(const Derivation& d, std::size_t offset) {
         const std::size_t first = lead.find_first_not_of(" \t\r\n");
         if (first == std::string::npos) continue;
         lead = lead.substr(first);
-        return lead.rfind("where ", 0) == 0 || lead.rfind("where,", 0) == 0;
+        // (Or its last line: a display's lines before it and a heading are not part of the sentence.)
+        const std::size_t line = lead.find_last_of('\n');
+        const std::string last = line == std::string::npos ? lead : trimmed(lead.substr(line + 1));
+        const auto starts_where = [](const std::string& x) {
+            return x.rfind("where ", 0) == 0 || x.rfind("where,", 0) == 0;
+        };
+        return starts_where(lead) || starts_where(last);
     }
     return false;
 }

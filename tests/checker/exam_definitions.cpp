@@ -338,3 +338,53 @@ TEST_CASE("definitions: one derived with an implication sign is the relation bef
     const EquationCheck divided = verdict_of_s("$x_1 s = 1$ $\\Rightarrow$ $s = 2/x_1$.\n");
     CHECK(divided.verdict == Verdict::NotJudged);
 }
+
+TEST_CASE("definitions: a wrong value given only after its uses is blamed at its line when the uses agree on another",
+          "[checker][definitions]") {
+    // The yo-yo of the corpus: I used in L and in the equation of motion, then "defined by I = m(kR)^2".
+    const char* const model = "tests/checker/models/plane_pendulum.toml";
+    const std::string text = "$$L = \\frac{1}{2} I \\dot\\theta^2 + m g l \\cos\\theta$$\n"
+                             "\n"
+                             "$$I \\ddot\\theta = -m g l \\sin\\theta$$\n"
+                             "\n"
+                             "where the moment of inertia about the pivot is $I = m l$.\n";
+    const auto r = eomgen::test::check_text(model, text);
+    bool blamed = false;
+    for (const EquationCheck& e : r.equations) {
+        INFO(describe(e));
+        if (e.where.line == 5) {
+            CHECK(e.verdict == Verdict::Disagrees);
+            CHECK(e.corrected == "I = m l^{2}");
+            blamed = true;
+        } else {
+            CHECK(e.verdict == Verdict::NotComparable);
+            CHECK(e.reason.find("the text's $I$ of line 5 is what disagrees") != std::string::npos);
+        }
+    }
+    CHECK(blamed);
+    // Right, it makes them agree (a value given later, taken where it does).
+    std::string right = text;
+    right.replace(right.find("I = m l$"), 8, "I = m l^2$");
+    for (const EquationCheck& e : eomgen::test::check_text(model, right).equations) {
+        INFO(describe(e));
+        CHECK(e.verdict != Verdict::Disagrees);
+    }
+}
+
+TEST_CASE("definitions: a name the symbol map gives is compared with the map's value", "[checker][definitions]") {
+    eomgen::checker::CheckOptions options;
+    options.map.push_back({"\\omega_{0}", "\\sqrt{g/l}", "--map", 0, 0});
+    const char* const model = "tests/checker/models/plane_pendulum.toml";
+    const auto wrong = eomgen::test::check_text(model, "The frequency is $\\omega_0 = \\sqrt{l/g}$.\n", options);
+    REQUIRE(wrong.equations.size() == 1);
+    INFO(describe(wrong.equations[0]));
+    CHECK(wrong.equations[0].verdict == Verdict::Disagrees);
+    CHECK(wrong.equations[0].compared_with.rfind("the symbol map's $\\omega_{0} = \\sqrt{g/l}$", 0) == 0);
+    const auto right = eomgen::test::check_text(model, "The frequency is $\\omega_0 = \\sqrt{g/l}$.\n", options);
+    REQUIRE(right.equations.size() == 1);
+    CHECK(right.equations[0].verdict == Verdict::Agrees);
+    // A number the text picks for it is its choice, not compared with the map.
+    const auto picked = eomgen::test::check_text(model, "Take $\\omega_0 = 2$.\n", options);
+    REQUIRE(picked.equations.size() == 1);
+    CHECK(picked.equations[0].verdict != Verdict::Disagrees);
+}
