@@ -309,7 +309,7 @@ class Checker : public Comparisons {
             if (r.verdict == Verdict::Disagrees && !verifying_ && c.sides[i].side->ok && c.sides[j].side->ok &&
                 !label_claim(i, j) && !label_claim(j, i) && !amplitudes() &&
                 sets_a_value(c.sides[i].side->value, c.sides[j].side->value, model_) &&
-                !defined_quantity(c.sides[i]) && !defined_quantity(c.sides[j])) {
+                !defined_quantity(c.sides[i]) && !defined_quantity(c.sides[j]) && !after_implication(c)) {
                 // "started with θ̇ = 0", "with m₁ = m₂ = m": values set for what follows, not an equation of motion.
                 const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
                 if (!cue.empty()) {
@@ -390,6 +390,9 @@ class Checker : public Comparisons {
     /// disagrees with that relation solved for the name (implication.cpp); false when it follows no such relation.
     bool check_implied_definition(const FullChain& c, std::size_t i, std::size_t j, const GiNaC::ex& name,
                                   const std::string& name_latex, const GiNaC::ex& value, EquationCheck& r);
+    /// Whether the chain follows the one before it with only an implication sign between (`\Rightarrow`): a
+    /// consequence, not a value the text sets.
+    bool after_implication(const FullChain& c) const;
     /// Where a correction is the relation before solved (implication.cpp): it names a new symbol, so it cannot be
     /// parsed back and checked alone (verify_correction), and needs not be.
     std::set<std::pair<int, int>> solved_corrections_;

@@ -125,6 +125,15 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         ~Unpin() { n.pin({}); }
     } const unpin{numbers_};
     numbers_.pin(chosen);
+    // A name an assumption gives the parameters' common value (`m_1 = m_2 = m`) is known in its paragraph.
+    for (Prepared* p : {&a, &b})
+        p->unknown.erase(std::remove_if(p->unknown.begin(), p->unknown.end(),
+                                        [&](const FreeName* f) {
+                                            return std::any_of(chosen.begin(), chosen.end(), [&](const auto& kv) {
+                                                return kv.second.is_equal(f->symbol);
+                                            });
+                                        }),
+                         p->unknown.end());
     for (const Prepared* p : {&a, &b}) r.notes.insert(r.notes.end(), p->notes.begin(), p->notes.end());
     std::sort(r.notes.begin(), r.notes.end());
     r.notes.erase(std::unique(r.notes.begin(), r.notes.end()), r.notes.end());

@@ -59,6 +59,12 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         amplitudes_.check(a.value, b.value, L.side->source, R.side->source, written_names(L, R), *trial,
                           discourse_->stated_frequency(c.relation_offsets[j - 1]), ctx_, *this, r))
         return;
+    // `\Rightarrow m = -\frac{m_3}{4}`: a name the text solves for from the relation before (implication.cpp), also
+    // where an assumption made the name known (the parameters' common value).
+    if (i == 0 && j == 1 && L.side->ok && b.ok && b.vectors.empty() && GiNaC::is_a<GiNaC::symbol>(L.side->value))
+        if (const FreeName* f = ctx_.free_name_of(L.side->value);
+            f && after_implication(c) && check_implied_definition(c, i, j, L.side->value, f->name, b.value, r))
+            return;
     // `s(t) = s_0\cos(\omega t)`: a solution the text claims for a coordinate, put into its equation of motion.
     if (a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
         check_claimed_solution(a.value, b.value, model_, eq_, motion_, ctx_, *this, r,
@@ -81,6 +87,24 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             r.verdict = Verdict::Agrees;
             r.compared_with = "an identity";
             r.reason = "both sides are equal (in the text's own symbols)" + within;
+            return;
+        }
+        // `m_2 = m` in `m_1 = m_2 = m`: an assumption that names the common value of parameters (discourse.hpp
+        // pins it): a chain of parameters that ends in one new name.
+        const auto parameter = [&](const PSide& x) {
+            return x.side->ok && std::any_of(model_.parameters.begin(), model_.parameters.end(),
+                                             [&](const Parameter& p) { return x.side->value.is_equal(p.symbol); });
+        };
+        const auto new_name = [&](const PSide& x) {
+            return x.side->ok && GiNaC::is_a<GiNaC::symbol>(x.side->value) && ctx_.free_name_of(x.side->value);
+        };
+        const bool names_common_value =
+            j + 1 == c.sides.size() && j >= 2 && new_name(R) &&
+            std::all_of(c.sides.begin(), c.sides.begin() + std::ptrdiff_t(j), parameter);
+        if (names_common_value && discourse_->states_assumption(c.relation_offsets[j - 1])) {
+            not_judged(r, Role::Assumption,
+                       "an assumption on the parameters, for the rest of its paragraph, that names their common value: "
+                       "the equations that follow there are compared with it");
             return;
         }
         // `k = g/l`: a definition, used in the rest of its section (definitions.hpp), not a line of a motion.

@@ -30,35 +30,59 @@ bool only_implication(const std::string& text, std::size_t from, std::size_t to)
 
 }  // namespace
 
+bool Checker::after_implication(const FullChain& c) const {
+    if (!all_chains_) return false;
+    const FullChain* before = nullptr;
+    for (const FullChain& other : *all_chains_) {
+        if (&other == &c) break;
+        before = &other;
+    }
+    if (!before || before->sides.empty() || c.sides.empty()) return false;
+    return only_implication(d_.text, before->sides.back().base + before->sides.back().side->end,
+                            c.sides.front().base + c.sides.front().side->begin);
+}
+
 bool Checker::check_implied_definition(const FullChain& c, std::size_t i, std::size_t j, const GiNaC::ex& name,
                                        const std::string& name_latex, const GiNaC::ex& value, EquationCheck& r) {
-    if (!all_chains_ || i != 0 || all_chains_->empty()) return false;
+    if (!all_chains_ || i != 0 || !after_implication(c)) return false;
     const FullChain* before = nullptr;
     for (const FullChain& other : *all_chains_) {
         if (&other == &c) break;
         before = &other;
     }
     if (!before || before->sides.size() < 2) return false;
-    const std::size_t end = before->sides.back().base + before->sides.back().side->end;
-    const std::size_t begin = c.sides[i].base + c.sides[i].side->begin;
-    if (!only_implication(d_.text, end, begin)) return false;
     // The relation before, first side = last side, in which the name must stand with a constant coefficient.
     for (std::size_t k = 0; k + 1 < before->relations.size() + 1; ++k)
         if (k < before->relations.size() && before->relations[k] != Relation::Equal) return false;
     const Prepared a = prepare(before->sides.front()), b = prepare(before->sides.back());
     if (!a.ok || !b.ok || !a.vectors.empty() || !b.vectors.empty()) return false;
-    GiNaC::ex solved;
+    GiNaC::ex solved, coefficient;
     try {
         const GiNaC::ex e = (a.value - b.value).expand();
         if (e.degree(name) != 1 || e.ldegree(name) != 0) return false;
-        const GiNaC::ex coefficient = e.coeff(name, 1);
-        if (coefficient.is_zero() || depends_on_state(coefficient) || has_acceleration(coefficient)) return false;
+        coefficient = GiNaC::factor(e.coeff(name, 1));
+        if (coefficient.is_zero()) return false;
         solved = GiNaC::normal(-e.coeff(name, 0) / coefficient);
     } catch (const std::exception&) {
         return false;
     }
     const int line = d_.position(before->relation_offsets.front()).line;
     const std::string relation = m(before->sides.front().side->source + " = " + before->sides.back().side->source);
+    if (depends_on_state(coefficient) || has_acceleration(coefficient)) {
+        // `m(\ddot y_1 - \ddot y_2) = -\frac{m_3}{4}(\ddot y_1 - \ddot y_2) \Rightarrow m = -\frac{m_3}{4}`: solving
+        // divides by the name's coefficient, a quantity of the motion; where that vanishes on the motion (a
+        // combination of the equations of motion, under the text's assumptions), the step divides by zero.
+        if (!has_acceleration(coefficient) || !equation_of_motion(coefficient, 1e-9)) return false;
+        r.compared_with = "the relation it follows from (line " + std::to_string(line) + ")";
+        r.verdict = Verdict::Disagrees;
+        r.reason = "it divides " + relation + " by " + m(latex(coefficient)) +
+                   ", which is 0 on the motion (the equations of motion make it so" +
+                   (numbers_.pinned().empty() ? "" : ", with the text's assumptions") + "): the relation says only " +
+                   m(latex(coefficient) + " = 0") + ", nothing about " + m(name_latex);
+        r.wrong_terms = {"a division by " + m(latex(coefficient)) + ", which vanishes on the motion"};
+        r.corrected = latex(coefficient) + " = 0";
+        return true;
+    }
     r.compared_with = "the relation it follows from (line " + std::to_string(line) + "), solved for " +
                       m(name_latex);
     if (equal(value, solved, 1e-9) == Tri::Yes) {

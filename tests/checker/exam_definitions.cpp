@@ -388,3 +388,34 @@ TEST_CASE("definitions: a name the symbol map gives is compared with the map's v
     REQUIRE(picked.equations.size() == 1);
     CHECK(picked.equations[0].verdict != Verdict::Disagrees);
 }
+
+TEST_CASE("definitions: solving by dividing by a quantity that vanishes on the motion is a slip",
+          "[checker][definitions][implication]") {
+    // The double Atwood machine of the corpus: with m_1 = m_2 = m the motion has ÿ₁ = ÿ₂, and the asker divides
+    // m(ÿ₁ − ÿ₂) = −m₃/4 (ÿ₁ − ÿ₂) by ÿ₁ − ÿ₂ to get m = −m₃/4.
+    const char* const model = "tests/checker/corpus/atwood_double_mse/model.toml";
+    const std::string head = "For equal masses, with $m_1 = m_2 = m$,\n"
+                             "$$\nm(\\ddot{y_1} - \\ddot{y_2}) = -\\frac{m_3}{4} ( \\ddot{y_1} - \\ddot{y_2})\n$$\n";
+    const auto r = eomgen::test::check_text(model, head + "$$\n\\Rightarrow m = -\\frac{m_3}{4}\n$$\n");
+    int judged = 0;
+    for (const EquationCheck& e : r.equations) {
+        INFO(describe(e));
+        if (e.where.line == 1) CHECK(e.verdict == Verdict::NotJudged);  // the assumption, naming m
+        if (e.where.line == 3) CHECK(e.verdict == Verdict::Agrees);     // on the motion, with the masses equal
+        if (e.where.line == 6) {
+            CHECK(e.verdict == Verdict::Disagrees);
+            CHECK(e.reason.find("which is 0 on the motion") != std::string::npos);
+            CHECK(e.corrected == "\\ddot{y_{1}} - \\ddot{y_{2}} = 0");
+            ++judged;
+        }
+    }
+    CHECK(judged == 1);
+    // Without the assumption the factor does not vanish on the motion: the step is not judged a slip.
+    const auto apart = eomgen::test::check_text(
+        model, "$$\nm_1(\\ddot{y_1} - \\ddot{y_2}) = -\\frac{m_3}{4} ( \\ddot{y_1} - \\ddot{y_2})\n$$\n"
+               "$$\n\\Rightarrow m = -\\frac{m_3}{4}\n$$\n");
+    for (const EquationCheck& e : apart.equations) {
+        INFO(describe(e));
+        if (e.where.line == 5) CHECK(e.reason.find("which is 0 on the motion") == std::string::npos);
+    }
+}
