@@ -113,6 +113,7 @@ void split_display(const std::string& file, const Block& b, int block, std::vect
     // `\left\{ \begin{array}…\end{array} \right.` (a system of equations), to the one whose rows are equations.
     for (int depth = 0; depth < 4; ++depth) {
         std::size_t k = i;
+        bool wrapped = false;
         for (const char* wrap : {"\\left\\{", "\\left\\lbrace", "\\left."})
             if (starts_with(s, k, wrap)) {
                 std::size_t w = k + std::string_view(wrap).size();
@@ -122,6 +123,7 @@ void split_display(const std::string& file, const Block& b, int block, std::vect
                 if (inner == "array" || inner == "cases" || inner == "aligned") {
                     blank(s, k, w);
                     k = w;
+                    wrapped = true;
                 }
                 break;
             }
@@ -156,6 +158,16 @@ void split_display(const std::string& file, const Block& b, int block, std::vect
             }
         }
         blank(s, end_at, end_after);
+        // ... and the `\right.` that closes the wrap, or the last row would end with it.
+        if (wrapped) {
+            std::size_t r = end_after;
+            while (r < s.size() && std::isspace(static_cast<unsigned char>(s[r]))) ++r;
+            for (const char* close : {"\\right.", "\\right\\}", "\\right\\rbrace"})
+                if (starts_with(s, r, close)) {
+                    blank(s, r, r + std::string_view(close).size());
+                    break;
+                }
+        }
         body_begin = body;
         body_end = end_at;
         rows_env = is_row_environment(env) || env == "cases";

@@ -68,6 +68,7 @@ const std::map<char32_t, Tokens>& unicode_table() {
         m[0x2153] = {"\\frac", "1", "3"};
         m[0x2154] = {"\\frac", "2", "3"};
         m[0x00B0] = {"^", "\\circ"};
+        m[0x00BA] = {"^", "\\circ"};  // º, the ordinal sign, typed for the degree sign (`120º`)
         // Spaces: no token.
         for (char32_t sp : {0x00A0, 0x2009, 0x200A, 0x202F, 0x2002, 0x2003, 0x2005, 0x2006, 0x200B})
             m[sp] = {};

@@ -5,6 +5,7 @@
 
 #include "checker/latex_normalize.hpp"
 #include "checker/latex_tokens.hpp"
+#include "checker/units.hpp"
 
 #include <algorithm>
 
@@ -108,8 +109,33 @@ Side make_side(std::string_view text, const std::vector<Token>& t, std::size_t b
     s.begin = t[b].offset;
     s.end = t[e - 1].offset + t[e - 1].length;
     s.source = std::string(text.substr(s.begin, s.end - s.begin));
+    // `1.993 \cdot 10^{-26} kg`, `3628 N/m`: a unit written in bare letters after a number, one of them no name
+    // the text may mean (g here is no symbol of the model): read as \mathrm{~kg}.
+    std::vector<Token> with_unit;
+    {
+        std::size_t u = e;
+        while (u > b && (t[u - 1].kind == Tok::Letter ||
+                         (t[u - 1].kind == Tok::Char && (t[u - 1].text == "/" || t[u - 1].text == "^")) ||
+                         (t[u - 1].kind == Tok::Digit && u - 1 > b && t[u - 2].kind == Tok::Char && t[u - 2].text == "^")))
+            --u;
+        while (u < e && t[u].kind != Tok::Letter) ++u;  // starts with a letter
+        const bool after_number = u > b && u < e && (t[u - 1].kind == Tok::Digit || (t[u - 1].kind == Tok::Char && t[u - 1].text == "}"));
+        std::string unit;
+        bool unknown_letter = false;
+        for (std::size_t k = u; k < e; ++k) {
+            unit += t[k].text;
+            if (t[k].kind == Tok::Letter && !ctx.names.count(t[k].text)) unknown_letter = true;
+        }
+        if (after_number && unknown_letter && unit.size() >= 2 && is_unit(unit)) {
+            with_unit.assign(t.begin(), t.begin() + std::ptrdiff_t(u));
+            with_unit.push_back({Tok::Word, "\\mathrm", t[u].offset, t[e - 1].offset + t[e - 1].length - t[u].offset,
+                                 "~" + unit, false});
+            e = u + 1;
+        }
+    }
+    const std::vector<Token>& tokens = with_unit.empty() ? t : with_unit;
     try {
-        Parser p(t, b, e, ctx, s);
+        Parser p(tokens, b, e, ctx, s);
         s.value = p.parse_all();
         s.ok = true;
     } catch (const ParseFailure& f) {

@@ -333,8 +333,9 @@ std::vector<Token> tokenize_text(std::string_view s) {
             }
             if (j < s.size()) {
                 const char d = s[j];
-                // Spacing commands: \, \; \: \! and "\ ".
-                if (d == ',' || d == ';' || d == ':' || d == '!' || d == ' ' || d == '>') {
+                // Spacing commands: \, \; \: \! and "\ " (also a backslash at the end of a line: a space too).
+                if (d == ',' || d == ';' || d == ':' || d == '!' || d == ' ' || d == '>' || d == '\n' || d == '\t' ||
+                    d == '\r') {
                     i = j + 1;
                     continue;
                 }

@@ -169,6 +169,7 @@ TEST_CASE("derivation: forums' delimiters, math in headings, wrapped environment
     CHECK(rows[5].find("b") != std::string::npos);
     CHECK(rows[6].find("x = l\\sin\\phi") != std::string::npos);
     CHECK(rows[7].find("y = -l\\cos\\phi") != std::string::npos);
+    CHECK(rows[7].find("\\right") == std::string::npos);  // the wrap's `\right.` closes the system, not the row
     CHECK(d.sections.size() == 2);
     CHECK(d.sections[0].title == "The Lagrangian $L = T - V$");
 }

@@ -263,6 +263,21 @@ TEST_CASE("latex: notation variants of notes and notebooks", "[checker][parser]"
     CHECK(same(n.parse("\\frac{m}{a + l \\,. }"), n.m / (n.a + n.l)));
     CHECK(same(n.parse("g \\sin\\theta \\text{. }"), n.g * GiNaC::sin(n.th)));
     n.fail("\\left. g \\right|");  // a delimiter's '.' is not a full stop
+    // Pasted from a word processor: a combining dot after a bracketed power dots its base (`(θ^2 ) ̇` is θ̇²).
+    CHECK(same(n.parse("\\frac{m}{2}(\\theta^2 ) \xCC\x87"), n.m / 2 * n.thd * n.thd));
+    // The ordinal sign typed for degrees; a number's large power of ten; a backslash ending a line is a space.
+    CHECK(same(n.parse("120\xC2\xBA"), 120 * GiNaC::Pi / 180));
+    CHECK(same(n.parse("1.993 \\cdot 10^{-26} m"), GiNaC::numeric(1993, 1000) * GiNaC::pow(10, -26) * n.m));
+    CHECK(same(n.parse("a \\\n \\sin\\theta"), n.a * GiNaC::sin(n.th)));
+    n.fail("(g + l)^{20}");  // large powers of sums are still refused
+    // A unit in bare letters after a number, one of them no known name (k here), is a unit; known letters are a
+    // product as before.
+    n.parse("3628 N/k");  // not a unit: N/k is no unit
+    n.parse("2.66 \\cdot 10^{-26} kg");
+    bool unit = false;
+    for (const auto& [name, f] : n.ctx.free_names) unit = unit || f.kind == eomgen::checker::NameKind::Unit;
+    CHECK(unit);
+    CHECK(same(n.parse("2 m g"), 2 * n.m * n.g));
     // e to a power is the exponential.
     CHECK(same(n.parse("a e^{-g t}"), n.a * GiNaC::exp(-n.g * n.t)));
     CHECK(same(n.parse("\\mathrm{e}^{g t}"), GiNaC::exp(n.g * n.t)));
