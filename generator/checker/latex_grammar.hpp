@@ -310,6 +310,8 @@ class Parser {
 
     GiNaC::ex fraction(std::size_t at);
 
+    /// `\partial L/\partial \theta`: the derivative written with a slash (latex_words.cpp).
+    GiNaC::ex slashed_partial(std::size_t at);
     GiNaC::ex derivative(std::size_t at, std::pair<std::size_t, std::size_t> num, const NameParts& var,
                          int order, bool partial);
 

@@ -77,8 +77,7 @@ GiNaC::ex Parser::word(std::size_t at) {
         fail(at, "text '" + content + "' in a formula is not read");
     }
     if (starts_name(&t)) return name_value();
-    if (w == "\\partial")
-        fail(at, "a partial derivative outside \\frac{\\partial ...}{\\partial ...} is not read");
+    if (w == "\\partial") return slashed_partial(at);
     if (w == "\\begin") fail(at, "a matrix or array is not compared");
     if (w == "\\sum" || w == "\\prod") fail(at, "sums and products (" + w + ") are not evaluated");
     if (w == "\\lim") fail(at, "limits are not evaluated");
@@ -165,6 +164,45 @@ GiNaC::ex Parser::function(const std::string& f, std::size_t at) {
     else
         v = GiNaC::atan(arg);
     return has_pw ? power(v, pw, at) : v;
+}
+
+GiNaC::ex Parser::slashed_partial(std::size_t at) {
+    // `\partial L/\partial \theta`, `\partial (T - V)/\partial q`: plain text's ∂L/∂θ, read as the \frac it stands
+    // for. The operand runs to the `/` (outside brackets, before any + or −); a name follows the second ∂.
+    std::size_t slash = pos_ + 1;
+    for (int depth = 0; slash < end_; ++slash) {
+        const Token& k = t_[slash];
+        if (k.kind != Tok::Char) continue;
+        if (k.text == "{" || k.text == "(" || k.text == "[") ++depth;
+        if (k.text == "}" || k.text == ")" || k.text == "]") {
+            if (depth == 0) break;
+            --depth;
+        }
+        if (depth == 0 && (k.text == "/" || k.text == "+" || k.text == "-")) break;
+    }
+    std::size_t second = slash + 1;
+    while (second < end_ && t_[second].space) ++second;
+    const bool slashed = slash < end_ && t_[slash].kind == Tok::Char && t_[slash].text == "/" && slash > pos_ + 1 &&
+                         second < end_ && t_[second].kind == Tok::Word && t_[second].text == "\\partial";
+    if (!slashed) fail(at, "a partial derivative outside \\frac{\\partial ...}{\\partial ...} is not read");
+    const std::pair<std::size_t, std::size_t> num{pos_, slash};
+    pos_ = second + 1;
+    skip_spaces();
+    std::size_t close = 0;
+    if (is_char(peek(), "{")) {
+        close = match_brace(pos_);
+        ++pos_;
+    }
+    has_pending_power_ = false;
+    NameParts var;
+    if (!read_name(var) || has_pending_power_)
+        fail(at, "a partial derivative outside \\frac{\\partial ...}{\\partial ...} is not read");
+    if (close != 0) {
+        skip_spaces();
+        if (pos_ != close) fail(at, "a partial derivative outside \\frac{\\partial ...}{\\partial ...} is not read");
+        ++pos_;
+    }
+    return derivative(at, num, var, 1, true);
 }
 
 }  // namespace eomgen::checker::parsing

@@ -278,6 +278,12 @@ TEST_CASE("latex: notation variants of notes and notebooks", "[checker][parser]"
     for (const auto& [name, f] : n.ctx.free_names) unit = unit || f.kind == eomgen::checker::NameKind::Unit;
     CHECK(unit);
     CHECK(same(n.parse("2 m g"), 2 * n.m * n.g));
+    // ∂L/∂θ written with a slash, as plain text and some notes do: the fraction; an operand in brackets too.
+    CHECK(same(n.parse("\\partial (m l^2 \\theta)/\\partial \\theta"),
+               n.parse("\\frac{\\partial (m l^2 \\theta)}{\\partial \\theta}")));
+    CHECK(same(n.parse("\\partial (m \\theta^2)/\\partial\\theta + g"),
+               n.parse("\\frac{\\partial (m \\theta^2)}{\\partial\\theta} + g")));
+    n.fail("\\partial m");  // no slash: still refused
     // e to a power is the exponential.
     CHECK(same(n.parse("a e^{-g t}"), n.a * GiNaC::exp(-n.g * n.t)));
     CHECK(same(n.parse("\\mathrm{e}^{g t}"), GiNaC::exp(n.g * n.t)));
