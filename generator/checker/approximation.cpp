@@ -95,7 +95,7 @@ std::vector<std::size_t> small_coordinates_in_prose(const Derivation& d, std::si
             const Coordinate& c = model.coordinates[i];
             const std::string deviation = i < points.deviation.size() ? lower(points.deviation[i]) : "";
             for (const std::string& spelled : {lower(c.latex), lower(c.name), deviation})
-                if (!spelled.empty() && (after.find(spelled) != std::string::npos || names(before, spelled)) &&
+                if (!spelled.empty() && (names(after, spelled) || names(before, spelled)) &&
                     std::find(out.begin(), out.end(), i) == out.end())
                     out.push_back(i);
         }
@@ -191,6 +191,7 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
     if (accelerations) {
         // c·EL_i to order k, c constant: the ratio of the q̈_i coefficients at q = 0. The equation whose
         // acceleration the text has, the best match first.
+        std::size_t closest = 0;
         for (std::size_t i = 0; i < motion.size(); ++i) {
             const GiNaC::symbol& qdd = model.coordinates[i].qdd;
             if (!R->has(qdd)) continue;
@@ -211,11 +212,15 @@ ApproxVerdict compare_approximation(const GiNaC::ex& a, const GiNaC::ex& b, int 
                 continue;
             }
             const GiNaC::ex ref = (c * *Ek).expand();
-            if (v.equation < 0 || same(*R, ref)) {
+            // The equation it is closest to (the fewest terms apart), when it agrees with none.
+            const GiNaC::ex apart = (*R - ref).expand();
+            const std::size_t distance = GiNaC::is_a<GiNaC::add>(apart) ? apart.nops() : (apart.is_zero() ? 0 : 1);
+            if (v.equation < 0 || distance < closest || same(*R, ref)) {
                 v.equation = int(i);
                 v.reference = ref;
                 v.wrong_order = first_difference((A - B), c * E);
                 v.dropped_order_0 = drop_0;
+                closest = distance;
             }
             if (same(*R, ref)) {
                 v.agrees = true;

@@ -159,3 +159,34 @@ TEST_CASE("changes of variable: a value stated with no word of a new variable is
         CHECK(e.reason.find("a change of variable") == std::string::npos);
     }
 }
+
+TEST_CASE("changes of variable: notes on the pendulum on a cart near the upright position, checked as written",
+          "[checker][approximation][change_of_variable]") {
+    // Written here after changes of variable were read: on its first run (12325b3) every line agreed, the cart's x
+    // was taken for small (the x in "\approx" after "small"), and a slip in the φ equation was compared with the x
+    // equation; both fixed.
+    const char* const model = "tests/checker/models/cart_pendulum_free.toml";
+    const std::string text = eomgen::test::fixture("cart_pendulum_upright_notes.md");
+    const CheckReport r = eomgen::test::check_text(model, text);
+    for (const EquationCheck& e : r.equations) {
+        INFO(describe(e));
+        CHECK(e.verdict != Verdict::Disagrees);
+        CHECK(e.verdict != Verdict::NotComparable);
+        if (e.verdict == Verdict::Agrees && e.reason.rfind("agrees to first order", 0) == 0)
+            CHECK(e.reason == "agrees to first order in $\\phi$");
+    }
+    CHECK(r.count(Verdict::Agrees) == 6);
+    std::string wrong = text;
+    const std::string line = "l\\ddot{\\phi} - \\ddot{x} - g\\phi = 0";
+    REQUIRE(wrong.find(line) != std::string::npos);
+    wrong.replace(wrong.find(line), line.size(), "l\\ddot{\\phi} - \\ddot{x} + g\\phi = 0");
+    const CheckReport w = eomgen::test::check_text(model, wrong);
+    REQUIRE(w.count(Verdict::Disagrees) == 1);
+    for (const EquationCheck& e : w.equations)
+        if (e.verdict == Verdict::Disagrees) {
+            INFO(describe(e));
+            CHECK(e.compared_with.rfind("the Euler–Lagrange equation for $\\theta$", 0) == 0);
+            REQUIRE(e.wrong_terms.size() == 1);
+            CHECK(e.wrong_terms[0].find("(a flipped sign)") != std::string::npos);
+        }
+}
