@@ -136,10 +136,15 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         };
         // A definition names its left side; what its value uses that the model does not know is said after it.
         // (A frequency the normal-mode check read as a claim and could not compare stays a claim.)
-        const bool frequency_claim = std::any_of(r.notes.begin(), r.notes.end(), [](const std::string& n) {
-            return n.rfind("read as a normal frequency", 0) == 0;
-        });
+        // (One that explains the formula before it, "where $\omega^2 = k/m$", is the formula's abbreviation.)
+        const bool frequency_claim =
+            !explains_formula_before(d_, L.base + L.side->begin) &&
+            std::any_of(r.notes.begin(), r.notes.end(),
+                        [](const std::string& n) { return n.rfind("read as a normal frequency", 0) == 0; });
         if (!def.empty() && !frequency_claim) {
+            r.notes.erase(std::remove_if(r.notes.begin(), r.notes.end(),
+                                         [](const std::string& n) { return n.rfind("read as a normal frequency", 0) == 0; }),
+                          r.notes.end());
             // `… = l_2 - y_3 \Rightarrow y_3 = …`: derived from the relation before it (implication.cpp).
             if (L.side->ok && b.ok && b.vectors.empty() && GiNaC::is_a<GiNaC::symbol>(L.side->value))
                 if (const FreeName* f = ctx_.free_name_of(L.side->value);

@@ -234,6 +234,32 @@ std::vector<Chain> parse_math(std::string_view text, LatexContext& context) {
             out.push_back(make_chain(text, t, d, b, e, context));
         }
     }
+    // Math inside a display's text (`\qquad \text{where $\omega^2 = k/m$}`): its own chains, at their places.
+    for (const Token& k : t) {
+        if (k.kind != Tok::Word || k.raw.find('$') == std::string::npos || k.offset + k.length > text.size()) continue;
+        const std::string_view whole = text.substr(k.offset, k.length);
+        const std::size_t raw_at = whole.find(k.raw);
+        if (raw_at == std::string_view::npos) continue;
+        for (std::size_t open = k.raw.find('$'); open != std::string::npos;) {
+            const std::size_t close = k.raw.find('$', open + 1);
+            if (close == std::string::npos) break;
+            const std::size_t at = k.offset + raw_at + open + 1;
+            std::vector<Chain> inner = parse_math(text.substr(at, close - open - 1), context);
+            for (Chain& c : inner) {
+                c.begin += at;
+                c.end += at;
+                for (std::size_t& r : c.relation_offsets) r += at;
+                for (Side& sd : c.sides) {
+                    sd.begin += at;
+                    sd.end += at;
+                    sd.error_offset += at;
+                    for (NameUse& u : sd.uses) u.offset += at;
+                }
+                out.push_back(std::move(c));
+            }
+            open = k.raw.find('$', close + 1);
+        }
+    }
     return out;
 }
 

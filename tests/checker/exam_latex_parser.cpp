@@ -215,6 +215,14 @@ TEST_CASE("latex: rows split into chains of relations", "[checker][parser]") {
     c = eomgen::checker::parse_math("=\\dot{\\phi}", n.ctx);
     REQUIRE(c.size() == 1);
     CHECK(c[0].sides[0].empty());
+    // Math inside the display's text, `\text{where $c = d$}`: a chain of its own, at its place in the row.
+    const std::string with_text = "a = g \\qquad \\text{where $m = l$}";
+    c = eomgen::checker::parse_math(with_text, n.ctx);
+    REQUIRE(c.size() == 2);
+    REQUIRE(c[1].sides.size() == 2);
+    CHECK(c[1].sides[0].source == "m");
+    CHECK(c[1].sides[0].begin == with_text.find("m = l"));
+    CHECK(c[1].relation_offsets[0] == with_text.find("= l"));
     CHECK(eomgen::checker::has_relation("a = b"));
     CHECK_FALSE(eomgen::checker::has_relation("\\left(a = b\\right)"));
 }
