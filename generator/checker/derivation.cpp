@@ -271,7 +271,14 @@ std::string prose_in_display(const Derivation& d, std::size_t begin, std::size_t
         if (c == '\n') {
             std::size_t j = k + 1;
             while (j < end && (s[j] == ' ' || s[j] == '\t' || s[j] == '\r')) ++j;
-            if (j < end && s[j] == '\n') return "a blank line at " + at(k + 1);
+            // (Blank lines between the formula and a delimiter are space: `$$ a = b` then a blank line, `$$`.)
+            const auto blank = [&](std::size_t from, std::size_t to) {
+                for (std::size_t q = from; q < to; ++q)
+                    if (!std::isspace(static_cast<unsigned char>(s[q]))) return false;
+                return true;
+            };
+            if (j < end && s[j] == '\n' && !blank(j, end) && !blank(begin, k))
+                return "a blank line at " + at(k + 1);
         }
     }
     return "";

@@ -279,9 +279,30 @@ Tri Checker::equal(const GiNaC::ex& a, const GiNaC::ex& b, double tol) {
         } catch (...) {
         }
     }
+    // Roots of the parameters alone (`\sqrt{(R - r)/g}`) stand for real quantities: points where one is the root of
+    // a negative number (R < r) are outside what the text means, and the branches there would tell 1/√x from √(1/x).
+    std::vector<GiNaC::ex> radicands;
+    if (has_root(a) || has_root(b))
+        for (std::vector<GiNaC::ex> stack{a, b}; !stack.empty();) {
+            const GiNaC::ex e = stack.back();
+            stack.pop_back();
+            for (std::size_t i = 0; i < e.nops(); ++i) stack.push_back(e.op(i));
+            if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+                !GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer() && !depends_on_state(e.op(0)) &&
+                !has_acceleration(e.op(0)) && !e.op(0).has(model_.t))
+                radicands.push_back(e.op(0));
+        }
+    const auto real_roots = [&](const GiNaC::exmap& at) {
+        for (const GiNaC::ex& x : radicands) {
+            const auto v = numbers_.value(x, at);
+            if (v && std::abs(v->imag()) <= 1e-12 * std::abs(v->real()) && v->real() < 0) return false;
+        }
+        return true;
+    };
     int good = 0;
-    for (unsigned seed = 1; seed <= 10 && good < 4; ++seed) {
+    for (unsigned seed = 1; seed <= (radicands.empty() ? 10u : 24u) && good < 4; ++seed) {
         const GiNaC::exmap at = numbers_.point(seed);
+        if (!real_roots(at)) continue;
         const auto va = numbers_.value(a, at), vb = numbers_.value(b, at);
         if (!va || !vb) continue;
         const double scale =

@@ -115,8 +115,10 @@ TEST_CASE("derivation: delimiters that do not pair up are reported at their plac
         CHECK(d.problems[3].message.find("\\(") != std::string::npos);
     }
     SECTION("what is not a problem") {
+        // (A blank line between the formula and its closing or opening `$$` is space, as renderers take it.)
         for (const char* t : {"$$ a = b \\text{ for $x > 0$} $$", "a price of $5 and $", "\\$ x", "$$\na\n$$\n\n$b$",
-                              "costs 5 $ or so", "$$\na = b % planted[$b$ where $c$ belongs]\n$$"}) {
+                              "costs 5 $ or so", "$$\na = b % planted[$b$ where $c$ belongs]\n$$",
+                              "$$ \\omega^2 = g/l\n\n$$\n", "$$\n\n a = b $$\n"}) {
             const auto d = parse_derivation(t, "t.md");
             INFO(t << "\n" << messages(d));
             CHECK(d.problems.empty());

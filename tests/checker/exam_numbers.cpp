@@ -236,3 +236,18 @@ TEST_CASE("numbers: signs and an integer's trailing zeros", "[checker][numbers]"
     INFO(describe(r.equations[2]));
     CHECK(r.equations[2].verdict == Verdict::Agrees);  // 588 J to two digits
 }
+
+TEST_CASE("numbers: roots of the parameters are real where they are compared", "[checker][numbers]") {
+    // The cylinder rolling inside a cylinder of the corpus: 2π/ω = 2π√(3(R − r)/(2g)) with ω² = 2g/(3(R − r)).
+    // At sample points with R < r the root of a negative number took another branch on each side: a false alarm.
+    const char* const model = "tests/checker/corpus/roll_cylinder_in_cylinder_cheenta/model.toml";
+    const auto r = eomgen::test::check_text(
+        model, "$$\\frac{1}{\\sqrt{\\frac{2}{3}\\frac{g}{R-r}}} = \\sqrt{\\frac{3(R-r)}{2g}}$$\n");
+    REQUIRE(r.equations.size() == 1);
+    INFO(eomgen::test::describe(r.equations[0]));
+    CHECK(r.equations[0].verdict == eomgen::checker::Verdict::Agrees);
+    const auto w = eomgen::test::check_text(
+        model, "$$\\frac{1}{\\sqrt{\\frac{2}{3}\\frac{g}{R-r}}} = \\sqrt{\\frac{2(R-r)}{3g}}$$\n");
+    REQUIRE(w.equations.size() == 1);
+    CHECK(w.equations[0].verdict != eomgen::checker::Verdict::Agrees);  // (a relation of parameters: not comparable)
+}
