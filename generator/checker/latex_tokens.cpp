@@ -242,12 +242,14 @@ std::vector<Token> tokenize_text(std::string_view s) {
             !out.empty() && out.back().kind == Tok::Char && out.back().text == ")" &&
             s.find_first_not_of(" \t", out.back().offset + out.back().length) == i) {
             std::size_t open = out.size() - 1;
-            for (int depth = 0; open-- > 0;) {
+            bool matched = false;
+            for (int depth = 0; open > 0 && !matched;) {
+                --open;
                 if (out[open].kind == Tok::Char && out[open].text == ")") ++depth;
-                if (out[open].kind == Tok::Char && out[open].text == "(" && depth-- == 0) break;
+                if (out[open].kind == Tok::Char && out[open].text == "(") matched = depth-- == 0;
             }
             const bool power_of_a_name =
-                open + 3 < out.size() && out[open].kind == Tok::Char && out[open].text == "(" &&
+                matched && open + 3 < out.size() && out[open].kind == Tok::Char && out[open].text == "(" &&
                 (out[open + 1].kind == Tok::Letter || (out[open + 1].kind == Tok::Word && out[open + 1].raw.empty())) &&
                 out[open + 2].kind == Tok::Char && out[open + 2].text == "^";
             if (power_of_a_name) {

@@ -273,6 +273,9 @@ TEST_CASE("latex: notation variants of notes and notebooks", "[checker][parser]"
     n.fail("\\left. g \\right|");  // a delimiter's '.' is not a full stop
     // Pasted from a word processor: a combining dot after a bracketed power dots its base (`(θ^2 ) ̇` is θ̇²).
     CHECK(same(n.parse("\\frac{m}{2}(\\theta^2 ) \xCC\x87"), n.m / 2 * n.thd * n.thd));
+    // (A dot after a ')' that no '(' opens: refused, and read within bounds — the sanitized fuzz test found it.)
+    n.fail("a ) \xCC\x87");
+    n.fail(") \xCC\x87");
     // The ordinal sign typed for degrees; a number's large power of ten; a backslash ending a line is a space.
     CHECK(same(n.parse("120\xC2\xBA"), 120 * GiNaC::Pi / 180));
     CHECK(same(n.parse("1.993 \\cdot 10^{-26} m"), GiNaC::numeric(1993, 1000) * GiNaC::pow(10, -26) * n.m));
