@@ -445,8 +445,14 @@ class Checker : public Comparisons {
     /// Whether the text says the link c[i] = c[j] approximates: the prose calls coordinates small, or the link writes
     /// a deviation from the point of a change of variable.
     bool approximation_stated(const FullChain& c, std::size_t i, std::size_t j) const;
+    // ----- names stated outside the text's definitions (stated_names.cpp)
     /// The user's symbol-map entry for the name a side is, alone (`I` with `--map I='m k^2'`), in force on its line.
     const MapEntry* map_entry_for(const PSide& s) const;
+    /// L = R where one side is a map entry's name and the other a constant: disagrees when it is not the map's value.
+    bool check_against_map(const PSide& L, const PSide& R, const Prepared& a, const Prepared& b, double tol,
+                           EquationCheck& r);
+    /// The link ending at side j of c is `m_2 = m` in the assumption `m_1 = m_2 = m`: it names the common value.
+    bool names_common_value(const FullChain& c, std::size_t j) const;
     bool verifying_ = false;
     void check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other, double tol,
                     EquationCheck& r);

@@ -59,9 +59,9 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         amplitudes_.check(a.value, b.value, L.side->source, R.side->source, written_names(L, R), *trial,
                           discourse_->stated_frequency(c.relation_offsets[j - 1]), ctx_, *this, r))
         return;
-    // `\Rightarrow m = -\frac{m_3}{4}`: a name the text solves for from the relation before (implication.cpp), also
-    // where an assumption made the name known (the parameters' common value).
-    if (i == 0 && j == 1 && L.side->ok && b.ok && b.vectors.empty() && GiNaC::is_a<GiNaC::symbol>(L.side->value))
+    // `… = l_2 - y_3 \Rightarrow y_3 = …`, `\Rightarrow m = -\frac{m_3}{4}`: a name the text solves for from the
+    // relation before (implication.cpp), a definition or a name an assumption made known (the common value).
+    if (i == 0 && L.side->ok && b.ok && b.vectors.empty() && GiNaC::is_a<GiNaC::symbol>(L.side->value))
         if (const FreeName* f = ctx_.free_name_of(L.side->value);
             f && after_implication(c) && check_implied_definition(c, i, j, L.side->value, f->name, b.value, r))
             return;
@@ -89,19 +89,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             r.reason = "both sides are equal (in the text's own symbols)" + within;
             return;
         }
-        // `m_2 = m` in `m_1 = m_2 = m`: an assumption that names the common value of parameters (discourse.hpp
-        // pins it): a chain of parameters that ends in one new name.
-        const auto parameter = [&](const PSide& x) {
-            return x.side->ok && std::any_of(model_.parameters.begin(), model_.parameters.end(),
-                                             [&](const Parameter& p) { return x.side->value.is_equal(p.symbol); });
-        };
-        const auto new_name = [&](const PSide& x) {
-            return x.side->ok && GiNaC::is_a<GiNaC::symbol>(x.side->value) && ctx_.free_name_of(x.side->value);
-        };
-        const bool names_common_value =
-            j + 1 == c.sides.size() && j >= 2 && new_name(R) &&
-            std::all_of(c.sides.begin(), c.sides.begin() + std::ptrdiff_t(j), parameter);
-        if (names_common_value && discourse_->states_assumption(c.relation_offsets[j - 1])) {
+        // `m_2 = m` in `m_1 = m_2 = m` (stated_names.cpp).
+        if (names_common_value(c, j)) {
             not_judged(r, Role::Assumption,
                        "an assumption on the parameters, for the rest of its paragraph, that names their common value: "
                        "the equations that follow there are compared with it");
@@ -137,19 +126,11 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         // A definition names its left side; what its value uses that the model does not know is said after it.
         // (A frequency the normal-mode check read as a claim and could not compare stays a claim.)
         // (One that explains the formula before it, "where $\omega^2 = k/m$", is the formula's abbreviation.)
-        const bool frequency_claim =
-            !explains_formula_before(d_, L.base + L.side->begin) &&
-            std::any_of(r.notes.begin(), r.notes.end(),
-                        [](const std::string& n) { return n.rfind("read as a normal frequency", 0) == 0; });
+        const auto frequency_note = [](const std::string& n) { return n.rfind("read as a normal frequency", 0) == 0; };
+        const bool frequency_claim = !explains_formula_before(d_, L.base + L.side->begin) &&
+                                     std::any_of(r.notes.begin(), r.notes.end(), frequency_note);
         if (!def.empty() && !frequency_claim) {
-            r.notes.erase(std::remove_if(r.notes.begin(), r.notes.end(),
-                                         [](const std::string& n) { return n.rfind("read as a normal frequency", 0) == 0; }),
-                          r.notes.end());
-            // `… = l_2 - y_3 \Rightarrow y_3 = …`: derived from the relation before it (implication.cpp).
-            if (L.side->ok && b.ok && b.vectors.empty() && GiNaC::is_a<GiNaC::symbol>(L.side->value))
-                if (const FreeName* f = ctx_.free_name_of(L.side->value);
-                    f && check_implied_definition(c, i, j, L.side->value, f->name, b.value, r))
-                    return;
+            r.notes.erase(std::remove_if(r.notes.begin(), r.notes.end(), frequency_note), r.notes.end());
             describe(R, b);
             std::string reason = "a definition: the text's abbreviation $" + def + "$ for the rest of its " +
                                  (at_a_point_.count(L.base + L.side->begin)
@@ -618,39 +599,11 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         }
     }
-    // `I = m(kR)^2` where the symbol map says what the text's I stands for: compared with the map's value, as a
-    // definition of a name the model knows is (not a condition on the parameters).
-    for (const bool left : {true, false}) {
-        const PSide& named = left ? L : R;
-        const Prepared& other = left ? b : a;
-        const MapEntry* entry = map_entry_for(named);
-        const GiNaC::ex mapped = left ? a.value : b.value;
-        // (Not a value at an instant, `\phi = 0` at t = 0 with φ mapped to αt, nor a number the text picks.)
-        if (!entry || depends_on_state(other.value) || has_acceleration(other.value) || other.value.has(model_.t) ||
-            mapped.has(model_.t) || GiNaC::is_a<GiNaC::numeric>(other.value))
-            continue;
-        r.verdict = Verdict::Disagrees;
-        r.compared_with = "the symbol map's " + m(entry->name + " = " + entry->value) + " (" + entry->origin + ")";
-        r.reason = "the text's " + m(trimmed(named.side->source)) + " is not what the symbol map says it stands for";
-        const Diagnosis dg = compare_to(other.value, mapped, tol);
-        r.difference = dg.difference;
-        r.wrong_terms = dg.lines;
-        r.corrected = left ? L.side->source + " = " + latex(mapped) : latex(mapped) + " = " + R.side->source;
-        return;
-    }
+    // `I = m(kR)^2` where the symbol map says what the text's I stands for (stated_names.cpp).
+    if (check_against_map(L, R, a, b, tol, r)) return;
     r.reason =
         "not an identity, and not an equation of this model (a condition or an assumption, such as a "
         "particular value)";
-}
-
-const MapEntry* Checker::map_entry_for(const PSide& s) const {
-    const std::string name = canonical_name(trimmed(s.side->source));
-    if (name.empty()) return nullptr;
-    const int line = d_.position(s.base + s.side->begin).line;
-    for (const MapEntry& e : options_.map)
-        if (canonical_name(e.name) == name && (e.first_line == 0 || (line >= e.first_line && line <= e.last_line)))
-            return &e;
-    return nullptr;
 }
 
 }  // namespace eomgen::checker::detail
