@@ -5,6 +5,8 @@
  * expanded about the point (approximation.hpp). The row itself is a definition, not judged. */
 #include "checker/checker_internals.hpp"
 
+#include <cstring>
+
 namespace eomgen::checker::detail {
 
 namespace {

@@ -5,6 +5,8 @@
  * follows no relation stays a definition, not judged. */
 #include "checker/checker_internals.hpp"
 
+#include <cstring>
+
 namespace eomgen::checker::detail {
 
 namespace {
