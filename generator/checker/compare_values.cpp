@@ -65,6 +65,19 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         if (const FreeName* f = ctx_.free_name_of(L.side->value);
             f && after_implication(c) && check_implied_definition(c, i, j, L.side->value, f->name, b.value, r))
             return;
+    // `t = 0`, `t = t_c`: an instant the text considers (conditions.hpp).
+    if (names_an_instant(a.value, b.value, model_)) {
+        not_judged(r, Role::Condition, "an instant the text considers, not an equation of the motion");
+        return;
+    }
+    // `x_0 = 1`: the initial value of a coordinate the text picks.
+    for (const auto& [name, value] : {std::pair(a.value, b.value), std::pair(b.value, a.value)})
+        if (const FreeName* f = GiNaC::is_a<GiNaC::symbol>(name) ? ctx_.free_name_of(name) : nullptr;
+            f && sets_initial_value(f->name, value, model_)) {
+            not_judged(r, Role::ChosenValue, "a value the text chooses: the initial value of " +
+                                                 m(f->name.substr(0, f->name.size() - 4)));
+            return;
+        }
     // `s(t) = s_0\cos(\omega t)`: a solution the text claims for a coordinate, put into its equation of motion.
     if (a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
         check_claimed_solution(a.value, b.value, model_, eq_, motion_, ctx_, *this, r,

@@ -1,5 +1,6 @@
 /** @file conditions.cpp  A row that sets values after a cue such as "started with" or "with". */
 #include "checker/conditions.hpp"
+#include "checker/latex_parser.hpp"
 
 #include "checker/prose.hpp"
 
@@ -43,6 +44,45 @@ bool sets_a_value(const GiNaC::ex& a, const GiNaC::ex& b, const Model& model) {
     if (holds_motion(a, model, true) || holds_motion(b, model, true)) return false;
     auto name = [](const GiNaC::ex& e) { return GiNaC::is_a<GiNaC::symbol>(e); };
     return (name(a) && !holds_motion(b, model, false)) || (name(b) && !holds_motion(a, model, false));
+}
+
+namespace {
+
+/// A real number, written exactly or with constants (`20`, `\frac{\pi}{3}`): no symbol in it.
+bool real_number(const GiNaC::ex& x) {
+    try {
+        const GiNaC::ex v = GiNaC::evalf(x);
+        return GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real();
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+}  // namespace
+
+bool names_an_instant(const GiNaC::ex& a, const GiNaC::ex& b, const Model& model) {
+    const auto model_symbol = [&](const GiNaC::ex& x) {
+        if (x.is_equal(model.t)) return true;
+        for (const Parameter& p : model.parameters)
+            if (x.is_equal(p.symbol)) return true;
+        for (const Coordinate& c : model.coordinates)
+            if (x.is_equal(c.q) || x.is_equal(c.qd) || x.is_equal(c.qdd)) return true;
+        return false;
+    };
+    for (const auto& [time, other] : {std::pair(a, b), std::pair(b, a)}) {
+        if (!time.is_equal(model.t)) continue;
+        if (real_number(other)) return true;
+        if (GiNaC::is_a<GiNaC::symbol>(other) && !model_symbol(other)) return true;
+    }
+    return false;
+}
+
+bool sets_initial_value(const std::string& name, const GiNaC::ex& value, const Model& model) {
+    if (!real_number(value)) return false;
+    for (const Coordinate& c : model.coordinates)
+        for (const std::string& spelled : {c.latex, c.name})
+            if (!spelled.empty() && name == canonical_name(spelled) + "_{0}") return true;
+    return false;
 }
 
 }  // namespace eomgen::checker

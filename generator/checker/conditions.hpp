@@ -26,4 +26,17 @@ std::string condition_cue(const Derivation& d, std::size_t offset);
  */
 bool sets_a_value(const GiNaC::ex& a, const GiNaC::ex& b, const Model& model);
 
+/**
+ * True when `a = b` names an instant: one side is the model's time t, the other a number or a single symbol that is
+ * no symbol of the model (`t = 0`, `t = 20` for a plotted interval, `t = t_c` for the arrival time). Not an
+ * equation of the motion. (A time the text works out, `t = 1.51\sqrt{w/g}`, holds parameters: not an instant.)
+ */
+bool names_an_instant(const GiNaC::ex& a, const GiNaC::ex& b, const Model& model);
+
+/**
+ * True when `name = value` gives a coordinate's initial value: `name` (canonical LaTeX) is a coordinate's name with
+ * the subscript 0 (`x_{0}`, `\theta_{0}`) and `value` a number (`x_0 = 1`, "start at distance 1").
+ */
+bool sets_initial_value(const std::string& name, const GiNaC::ex& value, const Model& model);
+
 }  // namespace eomgen::checker

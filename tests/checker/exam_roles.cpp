@@ -588,3 +588,21 @@ TEST_CASE("roles: an equation written with the multiplier is corrected with its 
     REQUIRE(r.equations[0].wrong_terms.size() == 1);  // only m₁g is missing, not λ extra
     CHECK(r.equations[0].corrected == "-\\lambda - m_{1} g + m_{1} \\ddot{y_{1}} = 0");
 }
+
+TEST_CASE("roles: an instant and a coordinate's initial value are given, not claimed", "[checker][roles]") {
+    // The rotating-frame blog of the corpus: "from t = 0 to t = 20", "at t = t_c", "x_0 = 1".
+    const char* const model = "tests/checker/models/plane_pendulum.toml";
+    const auto role_of = [&](const std::string& math) {
+        const CheckReport r = eomgen::test::check_text(model, "Plotted with $" + math + "$.\n");
+        REQUIRE(r.equations.size() == 1);
+        INFO(eomgen::test::describe(r.equations[0]));
+        return std::make_pair(r.equations[0].verdict, r.equations[0].role);
+    };
+    for (const char* instant : {"t = 0", "t = 20", "t = t_c", "t = \\frac{\\pi}{2}"})
+        CHECK(role_of(instant) == std::make_pair(Verdict::NotJudged, Role::Condition));
+    for (const char* start : {"\\theta_0 = 1", "\\theta_{0} = \\frac{\\pi}{3}"})
+        CHECK(role_of(start) == std::make_pair(Verdict::NotJudged, Role::ChosenValue));
+    // A time the text works out from the parameters is a claim, compared as before (not given).
+    CHECK(role_of("t = 2\\pi\\sqrt{l/g}").first != Verdict::NotJudged);
+    CHECK(role_of("\\theta_0 = g").second != Role::ChosenValue);  // a definition of the text's, as before
+}
