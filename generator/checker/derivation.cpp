@@ -2,6 +2,7 @@
 #include "checker/derivation.hpp"
 
 #include "checker/latex_normalize.hpp"
+#include "checker/latex_parser.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -181,6 +182,7 @@ void split_display(const std::string& file, const Block& b, int block, std::vect
     std::vector<std::pair<std::size_t, std::size_t>> pieces;
     std::size_t start = 0;
     int brace = 0, envs = 0;
+    std::vector<std::size_t> cells;  // where the rows' `&` were
     for (std::size_t k = body_begin; k < body_end; ++k) {
         const char c = s[k];
         std::size_t a = 0;
@@ -225,17 +227,20 @@ void split_display(const std::string& file, const Block& b, int block, std::vect
         if (c == '}' && brace > 0) --brace;
         if (c == '&' && brace == 0 && envs == 0 && rows_env) {
             // `&amp;` is the alignment mark of a page written in HTML; `&theta;` is a letter.
-            if (s.compare(k, 5, "&amp;") == 0)
+            if (s.compare(k, 5, "&amp;") == 0) {
                 blank(s, k, k + 5);
-            else if (!entity_at(s, k))
+                cells.push_back(k);
+            } else if (!entity_at(s, k)) {
                 s[k] = ' ';
+                cells.push_back(k);
+            }
         }
     }
     pieces.push_back({start, s.size()});
     int n = 0;
-    for (const auto& [pb, pe] : pieces) {
+    const auto add_row = [&](std::size_t pb, std::size_t pe) {
         const std::string text = s.substr(pb, pe - pb);
-        if (text.find_first_not_of(" \t\r\n.,;") == std::string::npos) continue;
+        if (text.find_first_not_of(" \t\r\n.,;") == std::string::npos) return;
         MathRow r;
         r.offset = b.begin + pb;
         r.text = text;
@@ -243,6 +248,27 @@ void split_display(const std::string& file, const Block& b, int block, std::vect
         r.block = block;
         r.row_in_block = n++;
         rows.push_back(std::move(r));
+    };
+    for (const auto& [pb, pe] : pieces) {
+        // An array whose cells are equations each (`x_1 = x & y_1 = 0`): one row per cell. (In `a &= b` the cell
+        // before `&` holds no relation: the row stays whole, its `&` an alignment mark.)
+        std::vector<std::pair<std::size_t, std::size_t>> row_cells;
+        std::size_t from = pb;
+        for (const std::size_t k : cells)
+            if (k >= pb && k < pe) {
+                row_cells.push_back({from, k});
+                from = k + 1;
+            }
+        row_cells.push_back({from, pe});
+        const bool equations = env == "array" && row_cells.size() >= 2 &&
+                               std::all_of(row_cells.begin(), row_cells.end(), [&](const auto& cell) {
+                                   return has_relation(s.substr(cell.first, cell.second - cell.first));
+                               });
+        if (!equations) {
+            add_row(pb, pe);
+            continue;
+        }
+        for (const auto& [cb, ce] : row_cells) add_row(cb, ce);
     }
 }
 

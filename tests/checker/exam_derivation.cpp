@@ -175,3 +175,30 @@ TEST_CASE("derivation: forums' delimiters, math in headings, wrapped environment
     CHECK(d.sections.size() == 2);
     CHECK(d.sections[0].title == "The Lagrangian $L = T - V$");
 }
+
+TEST_CASE("derivation: an array whose cells are equations gives one row per cell", "[checker]") {
+    // The free cart's README: `\begin{array}{cc} x_1 = x & y_1 = 0 \\ … \end{array}`; its `&` were alignment marks,
+    // so `x_1 = x y_1 = 0` was read as one chain.
+    const auto d = eomgen::checker::parse_derivation(
+        "$$\\begin{array}{cc} x_1 = x & y_1 = 0 \\\\ x_2 = x + l & y_2 = -l \\end{array}$$\n"
+        "$$\\begin{aligned} a &= b \\\\ c &= d \\end{aligned}$$\n"
+        "$$\\begin{array}{rcl} e & = & f \\end{array}$$\n",
+        "t.md");
+    std::vector<std::string> rows;
+    for (const auto& r : d.rows) {
+        std::string t = r.text;
+        t.erase(0, t.find_first_not_of(' '));
+        t.erase(t.find_last_not_of(' ') + 1);
+        rows.push_back(t);
+    }
+    INFO(Catch::Detail::stringify(rows));
+    REQUIRE(rows.size() == 7);
+    CHECK(rows[0] == "x_1 = x");
+    CHECK(rows[1] == "y_1 = 0");
+    CHECK(d.position(d.rows[1].offset).column == 30);  // the cell starts just after its `&`, in the file
+    CHECK(rows[3] == "y_2 = -l");
+    CHECK(rows[4].find("a") != std::string::npos);  // aligned: `a &= b` stays one row
+    CHECK(rows[4].find("b") != std::string::npos);
+    CHECK(rows[6].find("e") != std::string::npos);  // `e & = & f`: cells without a relation, one row
+    CHECK(rows[6].find("f") != std::string::npos);
+}
