@@ -102,6 +102,23 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             r.reason = "both sides are equal (in the text's own symbols)" + within;
             return;
         }
+        // `T = T_C + T_P` with a part the text never gives a value: it names the parts it will add up.
+        const auto part_sum = [&](const PSide& x) {
+            if (!x.side->ok) return false;
+            const GiNaC::ex v = x.side->value;
+            if (!GiNaC::is_a<GiNaC::add>(v)) return false;
+            for (std::size_t q = 0; q < v.nops(); ++q)
+                if (!is_part(v.op(q))) return false;
+            return true;
+        };
+        if ((part_sum(R) && L.side->ok && truth_.count(L.side->value)) ||
+            (part_sum(L) && R.side->ok && truth_.count(R.side->value))) {
+            r.compared_with.clear();
+            not_judged(r, Role::Definition, "a definition: the text splits " + m(trimmed(part_sum(R) ? L.side->source : R.side->source)) +
+                                                " into the parts " + m(trimmed(part_sum(R) ? R.side->source : L.side->source)) +
+                                                ", not all of which it gives a value");
+            return;
+        }
         // `m_2 = m` in `m_1 = m_2 = m` (stated_names.cpp).
         if (names_common_value(c, j)) {
             not_judged(r, Role::Assumption,

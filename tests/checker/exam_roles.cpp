@@ -606,3 +606,20 @@ TEST_CASE("roles: an instant and a coordinate's initial value are given, not cla
     CHECK(role_of("t = 2\\pi\\sqrt{l/g}").first != Verdict::NotJudged);
     CHECK(role_of("\\theta_0 = g").second != Role::ChosenValue);  // a definition of the text's, as before
 }
+
+TEST_CASE("roles: T split into named parts, one never given a value, names them", "[checker][roles]") {
+    // The cart pushed by a force (corpus): "T = T_C + T_P", then only T_C = ½ M ẋ² in math.
+    const char* const model = "tests/checker/models/cart_pendulum_free.toml";
+    const CheckReport r = eomgen::test::check_text(model, "$$T = T_C + T_P$$\n\nThe cart's part is $T_C = \\frac{1}{2} M \\dot{x}^2$.\n");
+    REQUIRE(!r.equations.empty());
+    INFO(eomgen::test::describe(r.equations[0]));
+    CHECK(r.equations[0].verdict == Verdict::NotJudged);
+    CHECK(r.equations[0].role == Role::Definition);
+    // With both parts given, the sum is compared with T as before.
+    const CheckReport both = eomgen::test::check_text(
+        model, "$$T = T_C + T_P$$\n\n$T_C = \\frac{1}{2} M \\dot{x}^2$ and $T_P = \\frac{1}{2} m \\dot{x}^2 + m l \\dot{x}\\dot{\\theta}"
+               "\\cos\\theta + \\frac{1}{2} m l^2 \\dot{\\theta}^2$.\n");
+    REQUIRE(!both.equations.empty());
+    INFO(eomgen::test::describe(both.equations[0]));
+    CHECK(both.equations[0].verdict == Verdict::Agrees);
+}
