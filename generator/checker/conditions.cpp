@@ -5,6 +5,7 @@
 #include "checker/prose.hpp"
 
 #include <algorithm>
+#include <vector>
 #include <cctype>
 
 namespace eomgen::checker {
@@ -48,8 +49,22 @@ bool sets_a_value(const GiNaC::ex& a, const GiNaC::ex& b, const Model& model) {
 
 namespace {
 
-/// A real number, written exactly or with constants (`20`, `\frac{\pi}{3}`): no symbol in it.
+/// A real number, written exactly or with constants (`20`, `\frac{\pi}{3}`): no symbol in it. (Anything with a
+/// symbol or a function of the checker's is refused before evalf, which would throw on it, and GiNaC leaks what it
+/// built when it throws.)
 bool real_number(const GiNaC::ex& x) {
+    if (GiNaC::is_a<GiNaC::numeric>(x)) return GiNaC::ex_to<GiNaC::numeric>(x).is_real();
+    for (std::vector<GiNaC::ex> stack{x}; !stack.empty();) {
+        const GiNaC::ex e = stack.back();
+        stack.pop_back();
+        if (GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::integral>(e)) return false;
+        if (GiNaC::is_a<GiNaC::function>(e)) {
+            const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
+            if (name != "sin" && name != "cos" && name != "tan" && name != "sqrt" && name != "exp" && name != "log")
+                return false;
+        }
+        for (std::size_t i = 0; i < e.nops(); ++i) stack.push_back(e.op(i));
+    }
     try {
         const GiNaC::ex v = GiNaC::evalf(x);
         return GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real();
