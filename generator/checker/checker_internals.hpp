@@ -393,6 +393,8 @@ class Checker : public Comparisons {
     /// Whether the chain follows the one before it with only an implication sign between (`\Rightarrow`): a
     /// consequence, not a value the text sets.
     bool after_implication(const FullChain& c) const;
+    /// The text's chain just before c, or nullptr (the first, or a chain built for a verification).
+    const FullChain* chain_before(const FullChain& c) const;
     /// Where a correction is the relation before solved (implication.cpp): it names a new symbol, so it cannot be
     /// parsed back and checked alone (verify_correction), and needs not be.
     std::set<std::pair<int, int>> solved_corrections_;
@@ -445,6 +447,12 @@ class Checker : public Comparisons {
     /// Whether the text says the link c[i] = c[j] approximates: the prose calls coordinates small, or the link writes
     /// a deviation from the point of a change of variable.
     bool approximation_stated(const FullChain& c, std::size_t i, std::size_t j) const;
+    // ----- rows that give rather than claim (given_rows.cpp)
+    /// `t = 0`, `t = t_c` (an instant), `x_0 = 1` (an initial value): not judged, with the role.
+    bool given_value(const Prepared& a, const Prepared& b, EquationCheck& r);
+    /// `T = T_C + T_P` with a part never given a value: a definition naming the parts.
+    bool names_parts(const PSide& L, const PSide& R, EquationCheck& r);
+
     // ----- names stated outside the text's definitions (stated_names.cpp)
     /// The user's symbol-map entry for the name a side is, alone (`I` with `--map I='m k^2'`), in force on its line.
     const MapEntry* map_entry_for(const PSide& s) const;

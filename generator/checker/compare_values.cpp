@@ -65,19 +65,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         if (const FreeName* f = ctx_.free_name_of(L.side->value);
             f && after_implication(c) && check_implied_definition(c, i, j, L.side->value, f->name, b.value, r))
             return;
-    // `t = 0`, `t = t_c`: an instant the text considers (conditions.hpp).
-    if (names_an_instant(a.value, b.value, model_)) {
-        not_judged(r, Role::Condition, "an instant the text considers, not an equation of the motion");
-        return;
-    }
-    // `x_0 = 1`: the initial value of a coordinate the text picks.
-    for (const auto& [name, value] : {std::pair(a.value, b.value), std::pair(b.value, a.value)})
-        if (const FreeName* f = GiNaC::is_a<GiNaC::symbol>(name) ? ctx_.free_name_of(name) : nullptr;
-            f && sets_initial_value(f->name, value, model_)) {
-            not_judged(r, Role::ChosenValue, "a value the text chooses: the initial value of " +
-                                                 m(f->name.substr(0, f->name.size() - 4)));
-            return;
-        }
+    // `t = 0`, `x_0 = 1`: an instant, an initial value (given_rows.cpp).
+    if (given_value(a, b, r)) return;
     // `s(t) = s_0\cos(\omega t)`: a solution the text claims for a coordinate, put into its equation of motion.
     if (a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
         check_claimed_solution(a.value, b.value, model_, eq_, motion_, ctx_, *this, r,
@@ -102,23 +91,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             r.reason = "both sides are equal (in the text's own symbols)" + within;
             return;
         }
-        // `T = T_C + T_P` with a part the text never gives a value: it names the parts it will add up.
-        const auto part_sum = [&](const PSide& x) {
-            if (!x.side->ok) return false;
-            const GiNaC::ex v = x.side->value;
-            if (!GiNaC::is_a<GiNaC::add>(v)) return false;
-            for (std::size_t q = 0; q < v.nops(); ++q)
-                if (!is_part(v.op(q))) return false;
-            return true;
-        };
-        if ((part_sum(R) && L.side->ok && truth_.count(L.side->value)) ||
-            (part_sum(L) && R.side->ok && truth_.count(R.side->value))) {
-            r.compared_with.clear();
-            not_judged(r, Role::Definition, "a definition: the text splits " + m(trimmed(part_sum(R) ? L.side->source : R.side->source)) +
-                                                " into the parts " + m(trimmed(part_sum(R) ? R.side->source : L.side->source)) +
-                                                ", not all of which it gives a value");
-            return;
-        }
+        // `T = T_C + T_P` with a part never given a value (given_rows.cpp).
+        if (names_parts(L, R, r)) return;
         // `m_2 = m` in `m_1 = m_2 = m` (stated_names.cpp).
         if (names_common_value(c, j)) {
             not_judged(r, Role::Assumption,

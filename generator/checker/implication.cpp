@@ -32,13 +32,18 @@ bool only_implication(const std::string& text, std::size_t from, std::size_t to)
 
 }  // namespace
 
-bool Checker::after_implication(const FullChain& c) const {
-    if (!all_chains_) return false;
+const FullChain* Checker::chain_before(const FullChain& c) const {
+    if (!all_chains_) return nullptr;
     const FullChain* before = nullptr;
     for (const FullChain& other : *all_chains_) {
-        if (&other == &c) break;
+        if (&other == &c) return before;
         before = &other;
     }
+    return nullptr;  // not one of the text's chains
+}
+
+bool Checker::after_implication(const FullChain& c) const {
+    const FullChain* before = chain_before(c);
     if (!before || before->sides.empty() || c.sides.empty()) return false;
     return only_implication(d_.text, before->sides.back().base + before->sides.back().side->end,
                             c.sides.front().base + c.sides.front().side->begin);
@@ -46,12 +51,8 @@ bool Checker::after_implication(const FullChain& c) const {
 
 bool Checker::check_implied_definition(const FullChain& c, std::size_t i, std::size_t j, const GiNaC::ex& name,
                                        const std::string& name_latex, const GiNaC::ex& value, EquationCheck& r) {
-    if (!all_chains_ || i != 0 || !after_implication(c)) return false;
-    const FullChain* before = nullptr;
-    for (const FullChain& other : *all_chains_) {
-        if (&other == &c) break;
-        before = &other;
-    }
+    if (i != 0 || !after_implication(c)) return false;
+    const FullChain* before = chain_before(c);
     if (!before || before->sides.size() < 2) return false;
     // The relation before, first side = last side, in which the name must stand with a constant coefficient.
     for (std::size_t k = 0; k + 1 < before->relations.size() + 1; ++k)
