@@ -183,7 +183,8 @@ IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State
         if (stepper.done()) {
             if constexpr (can_switch) {
                 if (switching != none) {
-                    const State xs = stepper.x();
+                    State xs = stepper.x();
+                    if (events[switching].jump) events[switching].jump(t_switch, xs);
                     // At the crossing: on afresh, with the step size the crossing step had.
                     stepper.set_end(t_end);
                     stepper.restart(f, t_switch, xs, h_switch);
@@ -230,6 +231,45 @@ IntegrationResult<State> drive(Stepper& stepper, System& f, const typename State
         std::stable_sort(crossings.begin(), crossings.end(), [dir](const Crossing& a, const Crossing& b) {
             return (a.t - b.t) * dir < Scalar(0);
         });
+
+        // Arriving at a surface that holds the motion (sliding: sticking friction), the steps shrink and their ends
+        // never cross it, because the field beyond pushes back: no crossing is ever seen. Where a step brings a
+        // Switch event's g towards 0 fast enough to cross within one more such step, and the surface holds the
+        // motion at the step's end (stop_at_switch: true only within round-off of it), the run ends there.
+        std::size_t held = none;
+        for (std::size_t i = 0; i < events.size() && crossings.empty() && held == none; ++i)
+            if (events[i].action == EventAction::Switch && events[i].stop_at_switch && g_now[i] != Scalar(0) &&
+                (g_now[i] > Scalar(0)) == (g_prev[i] > Scalar(0)) && abs(g_now[i]) < abs(g_prev[i]) &&
+                abs(g_now[i]) <= abs(g_now[i] - g_prev[i]) && events[i].stop_at_switch(tb, stepper.x()))
+                held = i;
+        if (held != none) {
+            for (; next_sample < sample_times.size() && not_after(sample_times[next_sample], tb); ++next_sample) {
+                stepper.dense(sample_times[next_sample], x_tmp);
+                emit(sample_times[next_sample], x_tmp);
+            }
+            if (per_step) observer(tb, stepper.x());
+            if constexpr (can_switch) {
+                // The rest of the way, on the side the motion is on: steps from tb that end where g, extrapolated
+                // linearly (it is within round-off of 0), reaches 0; the switch there ends the run as above.
+                const Scalar tc = tb + (tb - ta) * g_now[held] / (g_prev[held] - g_now[held]);
+                if ((tc - tb) * dir > Scalar(0) && not_after(tc, t_end)) {
+                    const State xb = stepper.x();
+                    stepper.restart(f, tb, xb, tb - ta);
+                    stepper.set_end(tc);
+                    switching = held;
+                    t_switch = tc;
+                    h_switch = tb - ta;
+                    std::swap(g_prev, g_now);
+                    continue;
+                }
+            }
+            result.switches.push_back({events[held].name, tb, stepper.x()});
+            result.t = tb;
+            result.x = stepper.x();
+            result.stop_reason = StopReason::TerminalEvent;
+            result.stopped_by = events[held].name;
+            break;
+        }
 
         if constexpr (can_switch) {
             if (!crossings.empty() && events[crossings.front().index].action == EventAction::Switch &&
