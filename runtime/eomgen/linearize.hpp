@@ -36,6 +36,50 @@ inline AutoDiffScalar<typename internal::remove_all<DerType>::type::PlainObject>
 
 namespace eomgen {
 
+namespace detail {
+
+/// The arguments of ModelT<AD> seeded for forward differentiation at (x; p): derivative j is x_j's (q, then q̇), nx + k
+/// parameter k's; `n` is the derivative vector's length (a time's may follow them).
+template <template <class> class ModelT, class AD>
+struct Seeded {
+    using D = ModelT<double>;
+    using M = ModelT<AD>;
+    typename M::State x;
+    typename M::Config q, qd;
+    typename M::Params p;
+
+    Seeded(const typename D::State& x0, const typename D::Params& p0, int n) {
+        for (int i = 0; i < D::nx; ++i) x(i) = AD(x0(i), n, i);
+        for (int i = 0; i < D::nq; ++i) {
+            q(i) = x(i);
+            qd(i) = x(D::nq + i);
+        }
+        const auto values = D::param_values(p0);
+        for (int k = 0; k < D::n_params; ++k)
+            M::set_param(p, D::param_names[std::size_t(k)], AD(values[std::size_t(k)], n, D::nx + k));
+    }
+};
+
+/// Derivative j of v: 0 where v depends on nothing (an empty derivative vector).
+template <class AD>
+double derivative(const AD& v, int j) {
+    return v.derivatives().size() == 0 ? 0.0 : v.derivatives()(j);
+}
+
+/// Rows of values v (a vector of AD) into X = ∂v/∂x and P = ∂v/∂p.
+template <int nx, int np, class Values, class MatX, class MatP>
+void split_derivatives(const Values& v, MatX& X, MatP& P) {
+    const int rows = int(v.size());
+    X.resize(rows, nx);
+    P.resize(rows, np);
+    for (int i = 0; i < rows; ++i) {
+        for (int j = 0; j < nx; ++j) X(i, j) = derivative(v(i), j);
+        for (int k = 0; k < np; ++k) P(i, k) = derivative(v(i), nx + k);
+    }
+}
+
+}  // namespace detail
+
 /// A and B of a generated model class template (`eomgen::models::<name>::Model`) at (t, x) with parameters p.
 template <template <class> class ModelT, class MatA, class MatB>
 void linearize(double t, const typename ModelT<double>::State& x, const typename ModelT<double>::Params& p, MatA& A,
@@ -43,20 +87,10 @@ void linearize(double t, const typename ModelT<double>::State& x, const typename
     using D = ModelT<double>;
     constexpr int nx = D::nx, np = D::n_params, N = nx + np;
     using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
-    using M = ModelT<AD>;
-    typename M::State xa;
-    for (int i = 0; i < nx; ++i) xa(i) = AD(x(i), N, i);
-    typename M::Params pa;
-    const auto values = D::param_values(p);
-    for (int k = 0; k < np; ++k) M::set_param(pa, D::param_names[std::size_t(k)], AD(values[std::size_t(k)], N, nx + k));
-    typename M::State f;
-    M::rhs(AD(t), xa, pa, f);
-    A.resize(nx, nx);
-    B.resize(nx, np);
-    for (int i = 0; i < nx; ++i) {
-        for (int j = 0; j < nx; ++j) A(i, j) = f(i).derivatives()(j);
-        for (int k = 0; k < np; ++k) B(i, k) = f(i).derivatives()(nx + k);
-    }
+    const detail::Seeded<ModelT, AD> a(x, p, N);
+    typename ModelT<AD>::State f;
+    ModelT<AD>::rhs(AD(t), a.x, a.p, f);
+    detail::split_derivatives<nx, np>(f, A, B);
 }
 
 /// Yx = ∂y/∂x and Yp = ∂y/∂p (param_names order) of a generated model's declared outputs y(t, q, q̇; p) ([outputs]
@@ -65,27 +99,12 @@ template <template <class> class ModelT, class MatX, class MatP>
 void linearize_outputs(double t, const typename ModelT<double>::State& x, const typename ModelT<double>::Params& p,
                        MatX& Yx, MatP& Yp) {
     using D = ModelT<double>;
-    constexpr int nq = D::nq, nx = D::nx, np = D::n_params, ny = D::n_outputs, N = nx + np;
+    constexpr int nx = D::nx, np = D::n_params, N = nx + np;
     using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
-    using M = ModelT<AD>;
-    typename M::Config q, qd;
-    for (int i = 0; i < nq; ++i) {
-        q(i) = AD(x(i), N, i);
-        qd(i) = AD(x(nq + i), N, nq + i);
-    }
-    typename M::Params pa;
-    const auto values = D::param_values(p);
-    for (int k = 0; k < np; ++k) M::set_param(pa, D::param_names[std::size_t(k)], AD(values[std::size_t(k)], N, nx + k));
-    typename M::Outputs y;
-    M::outputs(AD(t), q, qd, pa, y);
-    Yx.resize(ny, nx);
-    Yp.resize(ny, np);
-    for (int i = 0; i < ny; ++i) {
-        // An output that does not depend on anything has an empty derivative vector.
-        const bool constant = y(i).derivatives().size() == 0;
-        for (int j = 0; j < nx; ++j) Yx(i, j) = constant ? 0.0 : y(i).derivatives()(j);
-        for (int k = 0; k < np; ++k) Yp(i, k) = constant ? 0.0 : y(i).derivatives()(nx + k);
-    }
+    const detail::Seeded<ModelT, AD> a(x, p, N);
+    typename ModelT<AD>::Outputs y;
+    ModelT<AD>::outputs(AD(t), a.q, a.qd, a.p, y);
+    detail::split_derivatives<nx, np>(y, Yx, Yp);  // an output that depends on nothing: zero rows
 }
 
 /// Lx = ∂λ/∂x and Lp = ∂λ/∂p of a constrained generated model's multipliers λ(t, x; p) at (t, x; p), by the same
@@ -94,22 +113,46 @@ template <template <class> class ModelT, class MatX, class MatP>
 void linearize_multipliers(double t, const typename ModelT<double>::State& x, const typename ModelT<double>::Params& p,
                            MatX& Lx, MatP& Lp) {
     using D = ModelT<double>;
+    constexpr int nx = D::nx, np = D::n_params, N = nx + np;
+    using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
+    const detail::Seeded<ModelT, AD> a(x, p, N);
+    typename ModelT<AD>::ConstraintVector lambda;
+    ModelT<AD>::multipliers(AD(t), a.x, a.p, lambda);
+    detail::split_derivatives<nx, np>(lambda, Lx, Lp);
+}
+
+/// Rx = ∂(g, c)/∂x and Rp = ∂(g, c)/∂p (2 n_constraints rows: the position residuals g, then the velocity
+/// residuals c = A q̇ + b) of a constrained generated model's constraint_residuals at (t, x; p), by the same forward
+/// differentiation: what a consistent start of the sensitivities needs (consistent_sensitivities.hpp).
+template <template <class> class ModelT, class MatX, class MatP>
+void linearize_constraint_residuals(double t, const typename ModelT<double>::State& x,
+                                    const typename ModelT<double>::Params& p, MatX& Rx, MatP& Rp) {
+    using D = ModelT<double>;
     constexpr int nx = D::nx, np = D::n_params, nc = D::n_constraints, N = nx + np;
     using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
-    using M = ModelT<AD>;
-    typename M::State xa;
-    for (int i = 0; i < nx; ++i) xa(i) = AD(x(i), N, i);
-    typename M::Params pa;
-    const auto values = D::param_values(p);
-    for (int k = 0; k < np; ++k) M::set_param(pa, D::param_names[std::size_t(k)], AD(values[std::size_t(k)], N, nx + k));
-    typename M::ConstraintVector lambda;
-    M::multipliers(AD(t), xa, pa, lambda);
-    Lx.resize(nc, nx);
-    Lp.resize(nc, np);
-    for (int i = 0; i < nc; ++i) {
-        for (int j = 0; j < nx; ++j) Lx(i, j) = lambda(i).derivatives()(j);
-        for (int k = 0; k < np; ++k) Lp(i, k) = lambda(i).derivatives()(nx + k);
-    }
+    const detail::Seeded<ModelT, AD> a(x, p, N);
+    typename ModelT<AD>::ConstraintVector g, c;
+    ModelT<AD>::constraint_residuals(AD(t), a.q, a.qd, a.p, g, c);
+    Eigen::Matrix<AD, 2 * nc, 1> both;
+    both << g, c;
+    detail::split_derivatives<nx, np>(both, Rx, Rp);
+}
+
+/// Sx = ∂s/∂x, Sp = ∂s/∂p and St = ∂s/∂t of a generated model's switching functions s(t, q, q̇; p) (the surfaces
+/// where its rhs() jumps or kinks) at (t, x; p), by the same forward differentiation: where a motion crosses one,
+/// the sensitivities jump by the saltation matrix (saltation.hpp).
+template <template <class> class ModelT, class MatX, class MatP, class VecT>
+void linearize_switching(double t, const typename ModelT<double>::State& x, const typename ModelT<double>::Params& p,
+                         MatX& Sx, MatP& Sp, VecT& St) {
+    using D = ModelT<double>;
+    constexpr int nx = D::nx, np = D::n_params, ns = D::n_switches, N = nx + np + 1;
+    using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
+    const detail::Seeded<ModelT, AD> a(x, p, N);
+    typename ModelT<AD>::Switches s;
+    ModelT<AD>::switching(AD(t, N, nx + np), a.q, a.qd, a.p, s);
+    detail::split_derivatives<nx, np>(s, Sx, Sp);
+    St.resize(ns);
+    for (int i = 0; i < ns; ++i) St(i) = detail::derivative(s(i), nx + np);
 }
 
 }  // namespace eomgen

@@ -8,8 +8,8 @@
  * model's functions and the driver is compiled once into eomgen, instantiated for TableModel.
  *
  * The model's side (the shared object): model_table<Model<double>>() is the table of one generated model;
- * its functions take and fill arrays (matrices column-major), catch every exception and return its kind
- * (TableStatus), with the message and time kept per thread for error_message().
+ * its functions (table_wrappers.hpp) take and fill arrays (matrices column-major), catch every exception and
+ * return its kind (TableStatus), with the message and time kept per thread for error_message().
  *
  * The program's side: TableModel is a Model (docs/generated_code.md) whose sizes are known at run time
  * (nq = Eigen::Dynamic; Config, State, ... are Eigen's dynamic vectors), calling through the table bound
@@ -21,6 +21,7 @@
 #include "eomgen/model_jacobian.hpp"
 #include "eomgen/column_units.hpp"
 #include "eomgen/model_traits.hpp"
+#include "eomgen/table_wrappers.hpp"
 
 #include <Eigen/Core>
 
@@ -35,17 +36,7 @@
 namespace eomgen {
 
 /// Raised when ModelTable's layout changes: a table of another layout is refused.
-constexpr std::uint32_t kModelTableAbi = 6;
-
-/// What a table function reports: success, or which of the runtime's errors it caught.
-enum TableStatus : int {
-    kTableOk = 0,
-    kTableSimulationError,
-    kTableSingularMassMatrix,
-    kTableNonFiniteState,
-    kTableSingularConstraints,
-    kTableOtherError,
-};
+constexpr std::uint32_t kModelTableAbi = 7;
 
 /// One model as data and plain functions. Parameters live in an opaque block of params_size bytes that
 /// init_params fills with the model's defaults. Functions without constraints are null when n_constraints = 0.
@@ -105,214 +96,15 @@ struct ModelTable {
     const char* const* multiplier_units;           ///< n_constraints
     const char* const* param_declared_units;       ///< n_params
     const char* const* coordinate_declared_units;  ///< nq
+    /// Rx = ∂(g, c)/∂x (2 n_constraints × 2 nq) and Rp = ∂(g, c)/∂p of the constraint residuals (position rows, then
+    /// velocity rows), column-major, by forward differentiation (linearize_constraint_residuals): a consistent start
+    /// of the sensitivities; null without constraints and as `jacobian` is.
+    int (*constraint_residual_jacobian)(double t, const double* x, const void* p, double* Rx, double* Rp);
+    /// Sx = ∂s/∂x (n_switches × 2 nq), Sp = ∂s/∂p and St = ∂s/∂t of the switching functions, column-major, by
+    /// forward differentiation (linearize_switching): the saltation of the sensitivities; null without switches and
+    /// as `jacobian` is.
+    int (*switching_jacobian)(double t, const double* x, const void* p, double* Sx, double* Sp, double* St);
 };
-
-namespace table_detail {
-
-struct LastError {
-    std::string message;
-    double t = 0;
-};
-inline LastError& last_error() {
-    thread_local LastError e;
-    return e;
-}
-
-/// Runs f, turning what it throws into a TableStatus (the message kept for error_message()).
-template <class F>
-int guarded(F&& f) noexcept {
-    auto keep = [](const char* what, double t, int status) {
-        try {
-            last_error().message = what;
-            last_error().t = t;
-        } catch (...) {
-        }
-        return status;
-    };
-    try {
-        f();
-        return kTableOk;
-    } catch (const SingularMassMatrix& e) {
-        return keep(e.what(), e.t(), kTableSingularMassMatrix);
-    } catch (const NonFiniteState& e) {
-        return keep(e.what(), e.t(), kTableNonFiniteState);
-    } catch (const SingularConstraints& e) {
-        return keep(e.what(), e.t(), kTableSingularConstraints);
-    } catch (const SimulationError& e) {
-        return keep(e.what(), e.t(), kTableSimulationError);
-    } catch (const std::exception& e) {
-        return keep(e.what(), 0, kTableOtherError);
-    } catch (...) {
-        return keep("unknown error", 0, kTableOtherError);
-    }
-}
-
-template <class V>
-V read(const double* a) {
-    return Eigen::Map<const V>(a);
-}
-template <class V>
-void write(const V& v, double* a) {
-    Eigen::Map<V> out(a);
-    out = v;
-}
-
-/// The table's functions for generated model M (Model<double>).
-template <class M>
-struct Wrappers {
-    using Config = typename M::Config;
-    using State = typename M::State;
-    using Params = typename M::Params;
-    static const Params& params(const void* p) { return *static_cast<const Params*>(p); }
-
-    static void init_params(void* p) { new (p) Params(); }
-    static bool set_param(void* p, const char* name, double value) {
-        return M::set_param(*static_cast<Params*>(p), name, value);
-    }
-    static void param_values(const void* p, double* values) {
-        const auto v = M::param_values(params(p));
-        for (std::size_t i = 0; i < v.size(); ++i) values[i] = v[i];
-    }
-    static void default_state(double* x) { write<State>(M::default_state(), x); }
-    static int rhs(double t, const double* x, const void* p, double* xdot) {
-        return guarded([&] {
-            State out;
-            M::rhs(t, read<State>(x), params(p), out);
-            write<State>(out, xdot);
-        });
-    }
-    static int energy(double t, const double* q, const double* qd, const void* p, double* h) {
-        return guarded([&] { *h = M::energy(t, read<Config>(q), read<Config>(qd), params(p)); });
-    }
-    static int conserved(double t, const double* q, const double* qd, const void* p, double* out) {
-        return guarded([&] {
-            typename M::Conserved c;
-            M::conserved(t, read<Config>(q), read<Config>(qd), params(p), c);
-            write(c, out);
-        });
-    }
-    static int outputs(double t, const double* q, const double* qd, const void* p, double* out) {
-        return guarded([&] {
-            typename M::Outputs o;
-            M::outputs(t, read<Config>(q), read<Config>(qd), params(p), o);
-            write(o, out);
-        });
-    }
-    static int power(double t, const double* q, const double* qd, const void* p, double* out) {
-        return guarded([&] { *out = M::power(t, read<Config>(q), read<Config>(qd), params(p)); });
-    }
-    static int switching(double t, const double* q, const double* qd, const void* p, double* out) {
-        return guarded([&] {
-            typename M::Switches s;
-            M::switching(t, read<Config>(q), read<Config>(qd), params(p), s);
-            write(s, out);
-        });
-    }
-    static int mass_matrix(double t, const double* q, const void* p, double* out) {
-        return guarded([&] {
-            typename M::MassMatrix m;
-            M::mass_matrix(t, read<Config>(q), params(p), m);
-            write(m, out);
-        });
-    }
-    static int momenta(double t, const double* q, const double* qd, const void* p, double* out) {
-        return guarded([&] {
-            Config m;
-            M::momenta(t, read<Config>(q), read<Config>(qd), params(p), m);
-            write(m, out);
-        });
-    }
-    static int lagrangian_gradient(double t, const double* q, const double* qd, const void* p, double* out) {
-        return guarded([&] {
-            Config g;
-            M::lagrangian_gradient(t, read<Config>(q), read<Config>(qd), params(p), g);
-            write(g, out);
-        });
-    }
-    static int constraints(double t, const double* q, const double* qd, const void* p, double* A, double* gamma) {
-        return guarded([&] {
-            if constexpr (is_constrained<M>::value) {
-                typename M::ConstraintJacobian a;
-                typename M::ConstraintVector g;
-                M::constraints(t, read<Config>(q), read<Config>(qd), params(p), a, g);
-                write(a, A);
-                write(g, gamma);
-            }
-        });
-    }
-    static int constraint_residuals(double t, const double* q, const double* qd, const void* p, double* g,
-                                    double* c) {
-        return guarded([&] {
-            if constexpr (is_constrained<M>::value) {
-                typename M::ConstraintVector position, velocity;
-                M::constraint_residuals(t, read<Config>(q), read<Config>(qd), params(p), position, velocity);
-                write(position, g);
-                write(velocity, c);
-            }
-        });
-    }
-    static int multipliers(double t, const double* x, const void* p, double* lambda) {
-        return guarded([&] {
-            if constexpr (is_constrained<M>::value) {
-                typename M::ConstraintVector l;
-                M::multipliers(t, read<State>(x), params(p), l);
-                write(l, lambda);
-            }
-        });
-    }
-    // J and Jp: the header's analytic ones where it has them, else both from one forward differentiation
-    // (linearize(), one instantiation of the model's template for the two).
-    static int jacobian(double t, const double* x, const void* p, double* J) {
-        return guarded([&] {
-            Eigen::Matrix<double, M::nx, M::nx> j;
-            if constexpr (has_analytic_jacobian<M>::value) {
-                M::state_jacobian(t, read<State>(x), params(p), j);
-            } else {
-                Eigen::Matrix<double, M::nx, M::n_params> jp;
-                linearize<detail::model_template<M>::template type>(t, read<State>(x), params(p), j, jp);
-            }
-            write(j, J);
-        });
-    }
-    static int parameter_jacobian(double t, const double* x, const void* p, double* Jp) {
-        return guarded([&] {
-            Eigen::Matrix<double, M::nx, M::n_params> jp;
-            if constexpr (has_parameter_jacobian<M>::value) {
-                M::parameter_jacobian(t, read<State>(x), params(p), jp);
-            } else {
-                Eigen::Matrix<double, M::nx, M::nx> j;
-                linearize<detail::model_template<M>::template type>(t, read<State>(x), params(p), j, jp);
-            }
-            write(jp, Jp);
-        });
-    }
-    static int output_jacobian(double t, const double* x, const void* p, double* Yx, double* Yp) {
-        return guarded([&] {
-            Eigen::Matrix<double, M::n_outputs, M::nx> yx;
-            Eigen::Matrix<double, M::n_outputs, M::n_params> yp;
-            linearize_outputs<detail::model_template<M>::template type>(t, read<State>(x), params(p), yx, yp);
-            write(yx, Yx);
-            write(yp, Yp);
-        });
-    }
-    static int multiplier_jacobian(double t, const double* x, const void* p, double* Lx, double* Lp) {
-        return guarded([&] {
-            if constexpr (is_constrained<M>::value) {
-                Eigen::Matrix<double, M::n_constraints, M::nx> lx;
-                Eigen::Matrix<double, M::n_constraints, M::n_params> lp;
-                linearize_multipliers<detail::model_template<M>::template type>(t, read<State>(x), params(p), lx, lp);
-                write(lx, Lx);
-                write(lp, Lp);
-            }
-        });
-    }
-    static const char* error_message(double* t) {
-        if (t) *t = last_error().t;
-        return last_error().message.c_str();
-    }
-};
-
-}  // namespace table_detail
 
 /// The table of generated model M (a Model<double> of a generated header). With `WithJacobian` the table's
 /// `jacobian` and `parameter_jacobian` are filled (one forward differentiation through rhs() for both where the
@@ -362,7 +154,11 @@ const ModelTable& model_table() {
             t.jacobian = &W::jacobian;
             t.parameter_jacobian = &W::parameter_jacobian;
             t.output_jacobian = &W::output_jacobian;
-            if constexpr (constrained) t.multiplier_jacobian = &W::multiplier_jacobian;
+            if constexpr (constrained) {
+                t.multiplier_jacobian = &W::multiplier_jacobian;
+                t.constraint_residual_jacobian = &W::constraint_residual_jacobian;
+            }
+            if constexpr (has_switching<M>::value) t.switching_jacobian = &W::switching_jacobian;
         }
         t.error_message = &W::error_message;
         if constexpr (declares_power<M>::value) t.power = &W::power;
@@ -582,6 +378,30 @@ class TableModel {
         if (!table().multiplier_jacobian)
             throw std::logic_error("the compiled model has no Jacobians (model_table<M, true> compiles them)");
         check(table().multiplier_jacobian(t, x.data(), p.data(), Lx.data(), Lp.data()));
+    }
+
+    /// Rx = ∂(g, c)/∂x and Rp = ∂(g, c)/∂p of the constraint residuals, computed in the shared object
+    /// (consistent_sensitivities.hpp).
+    static void constraint_residual_jacobian(double t, const State& x, const Params& p, Eigen::MatrixXd& Rx,
+                                             Eigen::MatrixXd& Rp) {
+        Rx.resize(2 * n_constraints, x.size());
+        Rp.resize(2 * n_constraints, n_params);
+        if (n_constraints == 0) return;
+        if (!table().constraint_residual_jacobian)
+            throw std::logic_error("the compiled model has no Jacobians (model_table<M, true> compiles them)");
+        check(table().constraint_residual_jacobian(t, x.data(), p.data(), Rx.data(), Rp.data()));
+    }
+
+    /// Sx = ∂s/∂x, Sp = ∂s/∂p and St = ∂s/∂t of the switching functions, computed in the shared object (saltation.hpp).
+    static void switching_jacobian(double t, const State& x, const Params& p, Eigen::MatrixXd& Sx, Eigen::MatrixXd& Sp,
+                                   Eigen::VectorXd& St) {
+        Sx.resize(n_switches, x.size());
+        Sp.resize(n_switches, n_params);
+        St.resize(n_switches);
+        if (n_switches == 0) return;
+        if (!table().switching_jacobian)
+            throw std::logic_error("the compiled model has no Jacobians (model_table<M, true> compiles them)");
+        check(table().switching_jacobian(t, x.data(), p.data(), Sx.data(), Sp.data(), St.data()));
     }
 
     /// Jp = ∂ẋ/∂p (columns in param_names order), computed in the shared object (sensitivities.hpp asks for it).

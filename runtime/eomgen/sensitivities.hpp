@@ -23,22 +23,24 @@
  * gives them (state_jacobian, parameter_jacobian); a compiled table (eomgen run) gives its own; any other generated
  * model is differentiated forward through its rhs() (linearize.hpp), constrained solve included.
  *
- * What is refused (std::invalid_argument), because the answer would be wrong rather than approximate:
- *  - a model with switching surfaces (abs, sign, … in its file): S jumps where a trajectory crosses one (the
- *    saltation matrix), which is not done;
- *  - for a constrained model, an initial value's column (a change of one coordinate leaves the constraints)
- *    and a parameter the constraints depend on (the consistent initial state moves with it): the integration
- *    is of the index-1 equations without projection, whose sensitivities are the constrained motion's only when
- *    the perturbed motion starts on the same constraints.
+ * A constrained model integrates its index-1 equations without projection; S starts on the tangent of the
+ * constraint manifold (consistent_sensitivities.hpp: a changed initial value or a parameter the constraints contain
+ * moves the start as --project-initial would move it), and the linearized constraints then hold along the motion.
+ * Its x0 must be consistent (InconsistentInitialConditions otherwise). Where a motion crosses a switching surface
+ * (abs, sign, … in the model file) S jumps by the saltation matrix (saltation.hpp); a motion that slides along
+ * one is refused (SimulationError) at that time.
  */
 #pragma once
 
+#include "eomgen/consistent_sensitivities.hpp"
+#include "eomgen/constraints.hpp"
 #include "eomgen/errors.hpp"
 #include "eomgen/integrate.hpp"
 #include "eomgen/linearize.hpp"
 #include "eomgen/model_jacobian.hpp"
 #include "eomgen/model_traits.hpp"
 #include "eomgen/radau5.hpp"
+#include "eomgen/saltation.hpp"
 
 #include <Eigen/Core>
 
@@ -47,6 +49,8 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <memory>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -131,7 +135,10 @@ struct SensitivityResult {
     Eigen::VectorXd x;
     Eigen::MatrixXd S;
     std::vector<SensitivitySample> samples;
+    SensitivitySample end;  ///< where the run ended (t, x, S as above) with the outputs' and multipliers' sensitivities
     std::vector<SensitivityEventHit> events;
+    /// Where the motion crossed a switching surface and S jumped by the saltation matrix: the surface and the time.
+    std::vector<std::pair<std::string, double>> switches;
     StopReason stop_reason = StopReason::ReachedEnd;
     std::string stopped_by;
     std::size_t accepted_steps = 0, rejected_steps = 0, rhs_evaluations = 0;
@@ -307,55 +314,16 @@ inline void event_gradient(const SensitivityEvent& e, double t, const Eigen::Vec
     }
 }
 
-/// Checks what integrate_sensitivities refuses (see the file's comment), with the model's names in the message.
+/// Checks that each column names a parameter or a state of M (std::invalid_argument otherwise).
 template <class M>
-void check_sensitivity_columns(double t0, const typename M::State& x0, const typename M::Params& p,
+void check_sensitivity_columns([[maybe_unused]] double t0, const typename M::State& x0,
+                               [[maybe_unused]] const typename M::Params& p,
                                const std::vector<SensitivityColumn>& columns) {
     const Eigen::Index nx = x0.size();
     for (const SensitivityColumn& c : columns) {
         const bool parameter = c.kind == SensitivityColumn::Kind::Parameter;
         if (c.index < 0 || c.index >= (parameter ? Eigen::Index(M::param_names.size()) : nx))
             throw std::invalid_argument("integrate_sensitivities: a column's index is out of range");
-    }
-    if constexpr (has_switching<M>::value) {
-        if (M::n_switches > 0)
-            throw std::invalid_argument(
-                std::string(M::name) +
-                " has switching surfaces (abs, sign, heaviside, max or min in its file): its sensitivities jump where a "
-                "motion crosses one (the saltation matrix), which is not done");
-    }
-    if constexpr (is_constrained<M>::value) {
-        if (M::n_constraints == 0) return;
-        // The parameters the constraints depend on: g, c, A and γ at x0 and at a second state, with p_k moved.
-        const auto probe = [&](const typename M::Params& q, const typename M::State& x) {
-            typename M::ConstraintVector g, v, gamma;
-            typename M::ConstraintJacobian A;
-            M::constraint_residuals(t0, positions<M::nq>(x), velocities<M::nq>(x), q, g, v);
-            M::constraints(t0, positions<M::nq>(x), velocities<M::nq>(x), q, A, gamma);
-            std::vector<double> all(g.data(), g.data() + g.size());
-            all.insert(all.end(), v.data(), v.data() + v.size());
-            all.insert(all.end(), A.data(), A.data() + A.size());
-            all.insert(all.end(), gamma.data(), gamma.data() + gamma.size());
-            return all;
-        };
-        typename M::State x1 = x0;
-        for (Eigen::Index i = 0; i < nx; ++i) x1(i) += 0.1 + 0.037 * double(i);
-        const auto values = M::param_values(p);
-        for (const SensitivityColumn& c : columns) {
-            if (c.kind == SensitivityColumn::Kind::InitialValue)
-                throw std::invalid_argument(
-                    "the sensitivity to the initial value of " + std::string(M::state_names[std::size_t(c.index)]) +
-                    " of a constrained model is not done: a change of one state leaves the constraints");
-            const std::string name = M::param_names[std::size_t(c.index)];
-            typename M::Params moved = p;
-            const double v = values[std::size_t(c.index)];
-            M::set_param(moved, name, v + 1e-3 * std::max(1.0, std::abs(v)));
-            for (const typename M::State* x : {&x0, static_cast<const typename M::State*>(&x1)})
-                if (probe(p, *x) != probe(moved, *x))
-                    throw std::invalid_argument("the sensitivity to " + name + ", which the constraints of " +
-                                                std::string(M::name) +
-                                                " depend on, is not done: the consistent initial state moves with it");
-        }
     }
 }
 
@@ -380,6 +348,18 @@ SensitivityResult integrate_sensitivities_radau5(const typename M::Params& p, do
                                                  const std::vector<SensitivityEvent>& events = {},
                                                  const std::vector<double>& sample_times = {});
 
+/**
+ * The same by classic RK4 on the fixed grid t0 + k·dt (integrate_rk4). RK4 applied to the augmented system is the
+ * exact derivative of RK4's own discrete motion (the variational equations of a Runge–Kutta step are that step of the
+ * variational equations), so S is the sensitivity of the numbers the run gives, whatever dt; the jumps at switching
+ * surfaces need steps that end there, which RK4's do not (std::invalid_argument for a model with switches).
+ */
+template <class M>
+SensitivityResult integrate_sensitivities_rk4(const typename M::Params& p, double t0, const typename M::State& x0,
+                                              double t_end, double dt, const std::vector<SensitivityColumn>& columns,
+                                              const std::vector<SensitivityEvent>& events = {},
+                                              const std::vector<double>& sample_times = {});
+
 namespace detail {
 
 /// The augmented system's start, its events, and the result from the augmented run's.
@@ -395,18 +375,59 @@ struct SensitivityRun {
                    const std::vector<SensitivityColumn>& columns, const std::vector<SensitivityEvent>& given)
         : system(p, x0.size(), columns), events(given) {
         check_sensitivity_columns<M>(t0, x0, p, columns);
+        if constexpr (is_constrained<M>::value)
+            if (M::n_constraints > 0) check_consistent<M>(t0, x0, p);
         const Eigen::Index nx = x0.size(), k = Eigen::Index(columns.size());
         z0 = Eigen::VectorXd::Zero(system.size());
         z0.head(nx) = x0;
-        for (Eigen::Index c = 0; c < k; ++c)
-            if (columns[std::size_t(c)].kind == SensitivityColumn::Kind::InitialValue)
-                z0(nx + c * nx + columns[std::size_t(c)].index) = 1;
+        Eigen::MatrixXd S0 = Eigen::MatrixXd::Zero(nx, k);
+        std::vector<int> parameter_of;
+        for (Eigen::Index c = 0; c < k; ++c) {
+            const SensitivityColumn& column = columns[std::size_t(c)];
+            const bool initial = column.kind == SensitivityColumn::Kind::InitialValue;
+            if (initial) S0(column.index, c) = 1;
+            parameter_of.push_back(initial ? -1 : column.index);
+        }
+        consistent_sensitivity_start<M>(t0, x0, p, parameter_of, S0);
+        z0.tail(nx * k) = Eigen::Map<const Eigen::VectorXd>(S0.data(), nx * k);
         for (const SensitivityEvent& e : events)
             augmented_events.push_back({e.event.name,
                                         [g = e.event.g, nx](const double& t, const Eigen::VectorXd& z) {
                                             return g(t, Eigen::VectorXd(z.head(nx)));
                                         },
                                         e.event.direction, e.event.action});
+        // Each switching surface ends the steps where the motion crosses it, and S jumps there (saltation.hpp).
+        if constexpr (has_switching<M>::value) {
+            for (int s = 0; s < M::n_switches; ++s) {
+                Event<Eigen::VectorXd> e{M::switch_names[std::size_t(s)],
+                                         [p, s, nx](const double& t, const Eigen::VectorXd& z) {
+                                             const typename M::State x = detail::model_state<M>(z.head(nx));
+                                             typename M::Switches values;
+                                             M::switching(t, positions<M::nq>(x), velocities<M::nq>(x), p, values);
+                                             return double(values(s));
+                                         },
+                                         EventDirection::Both, EventAction::Switch};
+                // A surface that holds the motion (sticking) ends the run: finish() refuses it there.
+                const auto surface = std::make_shared<SlidingSurface<Eigen::VectorXd>>(
+                    [p](const double& t, const Eigen::VectorXd& x, Eigen::VectorXd& xdot) {
+                        const typename M::State xs = detail::model_state<M>(x);
+                        typename M::State f = xs;
+                        M::rhs(t, xs, p, f);
+                        xdot = f;
+                    },
+                    [g = e.g](const double& t, const Eigen::VectorXd& x) { return g(t, x); });  // g reads x only
+                e.stop_at_switch = [surface, nx](const double& t, const Eigen::VectorXd& z) {
+                    return surface->attracting(t, Eigen::VectorXd(z.head(nx)));
+                };
+                e.jump = [saltation = Saltation<M>(p, s, parameter_of), nx](const double& t, Eigen::VectorXd& z) {
+                    Eigen::Map<Eigen::MatrixXd> S(z.data() + nx, nx, (z.size() - nx) / nx);
+                    Eigen::MatrixXd jumped = S;
+                    saltation.apply(t, Eigen::VectorXd(z.head(nx)), jumped);
+                    S = jumped;
+                };
+                augmented_events.push_back(std::move(e));
+            }
+        }
     }
 
     Observer<Eigen::VectorXd> observer() {
@@ -428,6 +449,20 @@ struct SensitivityRun {
         for (SensitivitySample& s : out.samples) {
             system.outputs(s);
             system.multipliers(s);
+        }
+        out.end = end;
+        system.outputs(out.end);
+        system.multipliers(out.end);
+        for (const auto& hit : r.switches) out.switches.emplace_back(hit.name, hit.t);
+        if (r.stop_reason == StopReason::TerminalEvent &&
+            std::none_of(events.begin(), events.end(),
+                         [&](const SensitivityEvent& e) { return e.event.name == r.stopped_by; })) {
+            std::ostringstream os;
+            os.precision(15);
+            os << "the motion sticks on the switching surface " << r.stopped_by << " = 0 at t = " << r.t
+               << " (both sides of its jump push into it, as static friction holds a door): the sensitivities of a "
+                  "motion that slides along a surface are not done";
+            throw SimulationError(os.str(), r.t);
         }
         out.stop_reason = r.stop_reason;
         out.stopped_by = r.stopped_by;
@@ -470,11 +505,31 @@ SensitivityResult integrate_sensitivities(const typename M::Params& p, double t0
 }
 
 template <class M>
+SensitivityResult integrate_sensitivities_rk4(const typename M::Params& p, double t0, const typename M::State& x0,
+                                              double t_end, double dt, const std::vector<SensitivityColumn>& columns,
+                                              const std::vector<SensitivityEvent>& events,
+                                              const std::vector<double>& sample_times) {
+    if constexpr (has_switching<M>::value)
+        if (M::n_switches > 0)
+            throw std::invalid_argument(std::string(M::name) +
+                                        " has switching surfaces, where the sensitivities jump: rk4's fixed steps do "
+                                        "not end there; use dopri5, dop853 or adams");
+    detail::SensitivityRun<M> run(p, t0, x0, columns, events);
+    const auto r = integrate_rk4(run.system, t0, run.z0, t_end, dt, run.augmented_events, sample_times, run.observer());
+    return run.finish(r);
+}
+
+template <class M>
 SensitivityResult integrate_sensitivities_radau5(const typename M::Params& p, double t0, const typename M::State& x0,
                                                  double t_end, const std::vector<SensitivityColumn>& columns,
                                                  const Radau5Options<double>& options,
                                                  const std::vector<SensitivityEvent>& events,
                                                  const std::vector<double>& sample_times) {
+    if constexpr (has_switching<M>::value)
+        if (M::n_switches > 0)
+            throw std::invalid_argument(std::string(M::name) +
+                                        " has switching surfaces, where the sensitivities jump: radau5 does not end its "
+                                        "steps there; use dopri5, dop853 or adams");
     detail::SensitivityRun<M> run(p, t0, x0, columns, events);
     auto jac = [&run](const double& t, const Eigen::VectorXd& z, Eigen::MatrixXd& J) {
         run.system.newton_jacobian(t, z, J);

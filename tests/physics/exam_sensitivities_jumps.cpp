@@ -1,0 +1,183 @@
+/**
+ * @file exam_sensitivities_jumps.cpp  Sensitivities where the plain variational equations are not the whole story,
+ * against fourth-order central differences of whole motions:
+ *  - a constrained model's start (consistent_sensitivities.hpp): an initial value, or a parameter the constraints
+ *    contain, moves the consistent start as --project-initial moves it (the differences project each perturbed start
+ *    with project_onto_constraints, the definition);
+ *  - a switching surface (saltation.hpp): the hinge friction of a swinging door, sign(ψ̇), turns at each reversal,
+ *    and S jumps there (the differences integrate each perturbed motion with its steps ended at the reversals);
+ *  - a motion that sticks (static friction holds the door) is refused at that time, with the surface named.
+ */
+#include "eomgen/constraints.hpp"
+#include "eomgen/errors.hpp"
+#include "eomgen/integrate.hpp"
+#include "eomgen/models/friction_door.hpp"
+#include "eomgen/models/hoop_driven.hpp"
+#include "eomgen/models/pendulum_cartesian.hpp"
+#include "eomgen/sensitivities.hpp"
+
+#include <Eigen/Core>
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace {
+
+using eomgen::SensitivityColumn;
+
+constexpr double kRtol = 1e-12, kAtol = 1e-14;
+
+/// x(t_end) of M from x0 (projected onto the constraints first, where M has them), its steps ended at every
+/// crossing of a switching surface: the reference motion.
+template <class M>
+Eigen::VectorXd end_state(const typename M::Params& p, typename M::State x0, double t_end) {
+    using State = typename M::State;
+    if constexpr (eomgen::is_constrained<M>::value) eomgen::project_onto_constraints<M>(0.0, x0, p);
+    auto f = [&p](const double& t, const State& x, State& xd) { M::rhs(t, x, p, xd); };
+    std::vector<eomgen::Event<State>> events;
+    if constexpr (eomgen::has_switching<M>::value)
+        for (int k = 0; k < M::n_switches; ++k)
+            events.push_back({M::switch_names[std::size_t(k)],
+                              [&p, k](const double& t, const State& x) {
+                                  typename M::Switches s;
+                                  M::switching(t, eomgen::positions<M::nq>(x), eomgen::velocities<M::nq>(x), p, s);
+                                  return s(k);
+                              },
+                              eomgen::EventDirection::Both, eomgen::EventAction::Switch});
+    eomgen::Dop853Options<double> o;
+    o.rtol = kRtol;
+    o.atol = kAtol;
+    o.max_steps = 2000000;
+    return eomgen::integrate_with<eomgen::Dop853>(f, 0.0, x0, t_end, o, events).x;
+}
+
+/// ∂x(t_end)/∂(column) by fourth-order central differences of whole reference motions.
+template <class M>
+Eigen::VectorXd difference(const typename M::Params& p, const typename M::State& x0, double t_end,
+                           const SensitivityColumn& c, double step = 2e-4) {
+    const auto values = M::param_values(p);
+    const double v = c.kind == SensitivityColumn::Kind::Parameter ? values[std::size_t(c.index)] : x0(c.index);
+    const double h = step * std::max(0.1, std::abs(v));  // theta = 0.0234: a step of 1 % of it left 7e-8
+    auto at = [&](double offset) {
+        typename M::Params q = p;
+        typename M::State y = x0;
+        if (c.kind == SensitivityColumn::Kind::Parameter)
+            M::set_param(q, M::param_names[std::size_t(c.index)], v + offset);
+        else
+            y(c.index) = v + offset;
+        return end_state<M>(q, y, t_end);
+    };
+    return (-at(2 * h) + 8 * at(h) - 8 * at(-h) + at(-2 * h)) / (12 * h);
+}
+
+/// S at t_end by dop853 against the differences, column by column (relative to the column's largest entry).
+template <class M>
+eomgen::SensitivityResult check_columns(const typename M::Params& p, const typename M::State& x0, double t_end,
+                                        const std::vector<SensitivityColumn>& columns, double bound = 1e-7) {
+    eomgen::Dop853Options<double> o;
+    o.rtol = kRtol;
+    o.atol = kAtol;
+    o.max_steps = 2000000;
+    const auto r = eomgen::integrate_sensitivities<M, eomgen::Dop853>(p, 0.0, x0, t_end, columns, o);
+    REQUIRE(r.t == Approx(t_end));
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        const Eigen::VectorXd fd = difference<M>(p, x0, t_end, columns[k]);
+        const double scale = std::max(fd.cwiseAbs().maxCoeff(), 1e-3);
+        INFO(M::name << " column " << k << ": S = " << r.S.col(Eigen::Index(k)).transpose()
+                     << "\n differences = " << fd.transpose());
+        CHECK((r.S.col(Eigen::Index(k)) - fd).cwiseAbs().maxCoeff() / scale < bound);
+    }
+    return r;
+}
+
+}  // namespace
+
+TEST_CASE("a constrained model's initial values and the parameters in its constraints start on the constraints",
+          "[sensitivities]") {
+    using C = eomgen::models::pendulum_cartesian::Model<double>;
+    C::Params p;
+    const double l = C::param_values(p)[1];
+    C::State x0;
+    x0 << l * std::sin(0.6), -l * std::cos(0.6), 0.8 * std::cos(0.6), 0.8 * std::sin(0.6);
+    const auto r = check_columns<C>(p, x0, 2.0,
+                                    {eomgen::parameter_column(C::param_names, "l"),
+                                     eomgen::initial_column(C::state_names, "x"),
+                                     eomgen::initial_column(C::state_names, "y_dot"),
+                                     eomgen::parameter_column(C::param_names, "g")});
+    // The linearized rod x δx + y δy = l δl holds at the end: S stayed on the constraints' tangent.
+    const double x = r.x(0), y = r.x(1);
+    CHECK(std::abs(x * r.S(0, 0) + y * r.S(1, 0) - l) < 1e-8);
+    CHECK(std::abs(x * r.S(0, 1) + y * r.S(1, 1)) < 1e-8);
+
+    // A rheonomic constraint, phi = w t: w moves phi_dot's start (1 per unit), phi's own start cannot move.
+    using H = eomgen::models::hoop_driven::Model<double>;
+    H::Params q;
+    H::State z0;
+    z0 << 0.5, 0.0, 2.0, H::param_values(q)[2];  // a = 0 is where the coordinates are singular: start off it
+    const auto h = check_columns<H>(q, z0, 1.5,
+                                    {eomgen::parameter_column(H::param_names, "w"),
+                                     eomgen::initial_column(H::state_names, "a"),
+                                     eomgen::initial_column(H::state_names, "phi"),
+                                     eomgen::initial_column(H::state_names, "a_dot")});
+    CHECK(std::abs(h.S(1, 0) - 1.5) < 1e-9);  // d phi(t)/dw = t
+    CHECK(h.S.col(2).cwiseAbs().maxCoeff() < 1e-12);
+}
+
+TEST_CASE("the sensitivities jump by the saltation matrix where the hinge friction turns", "[sensitivities]") {
+    using F = eomgen::models::friction_door::Model<double>;
+    F::Params p;
+    p.tau_f = 0.8;  // light enough for the door to swing back twice before it sticks (near t = 17 s)
+    F::State x0;
+    x0 << 0.3, -0.5;  // swinging down, through psi = -pi/2, and back: sign(psi') turns at each reversal
+    std::vector<SensitivityColumn> columns;
+    for (const char* name : {"theta", "tau_f", "w"}) columns.push_back(eomgen::parameter_column(F::param_names, name));
+    columns.push_back(eomgen::initial_column(F::state_names, "psi"));
+    columns.push_back(eomgen::initial_column(F::state_names, "psi_dot"));
+    const auto r = check_columns<F>(p, x0, 12.0, columns);
+    REQUIRE(r.switches.size() >= 2);
+    INFO("reversals at t = " << r.switches[0].second << ", " << r.switches[1].second);
+    CHECK(r.switches[0].first == "sign(psi')");
+    // S jumps there (by O(1), not O(the 2e-6 between the samples)): the agreement above needs the saltation.
+    const double ts = r.switches[0].second;
+    eomgen::Dop853Options<double> o;
+    o.rtol = kRtol;
+    o.atol = kAtol;
+    const auto around = eomgen::integrate_sensitivities<F, eomgen::Dop853>(p, 0.0, x0, ts + 1e-6, columns, o, {},
+                                                                           {ts - 1e-6, ts + 1e-6});
+    REQUIRE(around.samples.size() == 2);
+    const Eigen::MatrixXd jump = around.samples[1].S - around.samples[0].S;
+    INFO("S before the reversal:\n" << around.samples[0].S << "\nafter:\n" << around.samples[1].S);
+    CHECK(jump.row(1).cwiseAbs().maxCoeff() > 1e-2 * around.samples[0].S.row(1).cwiseAbs().maxCoeff());
+
+}
+
+TEST_CASE("a motion that sticks on a switching surface is refused where it sticks", "[sensitivities]") {
+    using F = eomgen::models::friction_door::Model<double>;
+    F::Params p;
+    p.tau_f = 2.5;  // more than gravity's torque near the turning point: static friction holds the door there
+    F::State x0;
+    x0 << -1.2, 0.8;
+    try {
+        (void)eomgen::integrate_sensitivities<F, eomgen::Dop853>(p, 0.0, x0, 20.0,
+                                                                 {eomgen::parameter_column(F::param_names, "theta")});
+        FAIL("no error");
+    } catch (const eomgen::SimulationError& e) {
+        CHECK_THAT(e.what(), Catch::Contains("switching surface sign(psi') = 0") &&
+                                 Catch::Contains("not done"));
+        CHECK(e.t() > 0);
+    }
+    // radau5 does not end its steps at the surfaces.
+    CHECK_THROWS_WITH(eomgen::integrate_sensitivities_radau5<F>(p, 0.0, x0, 1.0,
+                                                                {eomgen::parameter_column(F::param_names, "theta")}),
+                      Catch::Contains("use dopri5, dop853 or adams"));
+    // A constrained model's start must be on its constraints.
+    using C = eomgen::models::pendulum_cartesian::Model<double>;
+    C::State off = C::default_state();
+    off(0) += 0.1;
+    CHECK_THROWS_AS((eomgen::integrate_sensitivities<C, eomgen::Dop853>(
+                        C::Params{}, 0.0, off, 1.0, {eomgen::parameter_column(C::param_names, "g")})),
+                    eomgen::InconsistentInitialConditions);
+}
