@@ -93,10 +93,12 @@ void add_rows(std::vector<double>& out, const Eigen::MatrixXd& m) {
 py::dict simulate(LoadedModel& m, double t_end, const std::string& method, double rtol, double atol, double dt,
                   int samples, std::size_t max_steps, const std::vector<std::string>& set,
                   const std::vector<std::string>& init, const std::string& until, bool project_initial,
-                  bool switch_events, const std::vector<std::string>& sensitivities, bool use_cache) {
+                  bool switch_events, const std::vector<std::string>& sensitivities, bool state_error_only,
+                  bool use_cache) {
     sim::Options o = run_options(m, t_end, method, rtol, atol, dt, samples, max_steps, set, init, until,
                                  project_initial, switch_events);
     o.sensitivities = sensitivities;
+    o.state_error_only = state_error_only;
     // Derives and compiles, holding the GIL; the Jacobians for radau5 and for the sensitivities.
     const ModelTable& table = m.table(method == "radau5" || !sensitivities.empty(), use_cache);
     Samples out;

@@ -138,7 +138,8 @@ py::dict check(LoadedModel& m, const std::string& text, const std::string& path,
 py::dict simulate(LoadedModel& m, double t_end, const std::string& method, double rtol, double atol, double dt,
                   int samples, std::size_t max_steps, const std::vector<std::string>& set,
                   const std::vector<std::string>& init, const std::string& until, bool project_initial,
-                  bool switch_events, const std::vector<std::string>& sensitivities, bool use_cache);
+                  bool switch_events, const std::vector<std::string>& sensitivities, bool state_error_only,
+                  bool use_cache);
 /**
  * An ensemble of members on `threads` threads (0: every core), member k with values(k, j) for names[j] (a parameter
  * or a state's initial value, in its declared unit) on top of the model's defaults and `set`, `init`; each member

@@ -89,7 +89,7 @@ PYBIND11_MODULE(_eomgen, m) {
         .def("simulate", &simulate, py::arg("t_end"), py::arg("method"), py::arg("rtol"), py::arg("atol"),
              py::arg("dt"), py::arg("samples"), py::arg("max_steps"), py::arg("set"), py::arg("init"),
              py::arg("until"), py::arg("project_initial"), py::arg("switch_events"), py::arg("sensitivities"),
-             py::arg("use_cache"))
+             py::arg("state_error_only"), py::arg("use_cache"))
         .def("sweep", &sweep, py::arg("names"), py::arg("values"), py::arg("t_end"), py::arg("method"), py::arg("rtol"),
              py::arg("atol"), py::arg("dt"), py::arg("max_steps"), py::arg("set"), py::arg("init"), py::arg("until"),
              py::arg("project_initial"), py::arg("switch_events"), py::arg("threads"), py::arg("use_cache"))

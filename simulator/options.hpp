@@ -7,8 +7,8 @@
 
 namespace eomgen::sim {
 
-/// Adds --t-end, --method, --rtol, --atol, --dt, --set, --init, --until, --sensitivities, --csv, --samples, --max-steps and
-/// --project-initial to `app`, writing into `o`.
+/// Adds --t-end, --method, --rtol, --atol, --dt, --set, --init, --until, --sensitivities, --state-error-only, --csv,
+/// --samples, --max-steps and --project-initial to `app`, writing into `o`.
 inline void add_options(CLI::App& app, Options& o) {
     app.add_option("--t-end", o.t_end, "End time")->capture_default_str();
     app.add_option("--method", o.method,
@@ -27,6 +27,9 @@ inline void add_options(CLI::App& app, Options& o) {
                    "Integrate dx/d(...) with the state: parameters NAME and initial values x0:STATE, comma-separated "
                    "(e.g. theta,x0:psi); S at the end on stdout, its columns in the CSV")
         ->delimiter(',');
+    app.add_flag("--state-error-only", o.state_error_only,
+                 "With --sensitivities: the state alone sets the steps (S left out of the error norm: fewer steps, "
+                 "S as accurate as those steps make it)");
     app.add_option("--csv", o.csv, "Write samples (state, energy, conserved quantities) to this CSV file");
     app.add_option("--samples", o.samples, "Number of sample intervals on [0, t_end] for the CSV")->capture_default_str();
     app.add_option("--max-steps", o.max_steps, "Largest number of steps (dopri5, dop853, adams, radau5)")->capture_default_str();

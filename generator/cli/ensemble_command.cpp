@@ -38,7 +38,8 @@ using eomgen::csv_number;
 /// The row of one member: its varied values, then what it gave (ensemble_columns' order). Only t may be
 /// unknown (a failure without a time: empty); any other NaN, e.g. an output's, is written as nan.
 std::vector<std::string> row(const eomgen::MemberResult<TableModel>& r, const std::vector<double>& varied,
-                             std::size_t n_state, std::size_t n_outputs) {
+                             std::size_t n_state, std::size_t n_outputs, std::size_t n_sensitivities,
+                             bool with_event_time) {
     std::vector<std::string> f{std::to_string(r.index)};
     for (const double v : varied) f.push_back(csv_number(v));
     f.push_back(r.ok ? "ok" : "failed");
@@ -47,6 +48,14 @@ std::vector<std::string> row(const eomgen::MemberResult<TableModel>& r, const st
     for (std::size_t i = 0; i < n_state; ++i) f.push_back(r.ok ? csv_number(r.x(Eigen::Index(i))) : "");
     f.push_back(r.ok ? csv_number(r.energy) : "");
     for (std::size_t i = 0; i < n_outputs; ++i) f.push_back(r.ok ? csv_number(r.outputs(Eigen::Index(i))) : "");
+    // The sensitivities' columns (ensemble_columns): per column, the state's, the outputs', and the event time's.
+    for (std::size_t c = 0; c < n_sensitivities; ++c) {
+        const Eigen::Index k = Eigen::Index(c);
+        for (std::size_t i = 0; i < n_state; ++i) f.push_back(r.ok ? csv_number(r.S(Eigen::Index(i), k)) : "");
+        for (std::size_t i = 0; i < n_outputs; ++i)
+            f.push_back(r.ok && r.Y.size() > 0 ? csv_number(r.Y(Eigen::Index(i), k)) : "");
+        if (with_event_time) f.push_back(r.ok && r.dt.size() > 0 ? csv_number(r.dt(k)) : "");
+    }
     f.push_back(r.error);
     return f;
 }
@@ -107,20 +116,28 @@ bool first_rank() {
 }
 
 std::vector<std::string> ensemble_columns(const EnsembleDesign& design, const std::vector<std::string>& states,
-                                          const std::vector<std::string>& outputs) {
+                                          const std::vector<std::string>& outputs,
+                                          const std::vector<std::string>& sensitivities, bool with_event_time) {
     std::vector<std::string> c{"member"};
     for (const EnsembleVariable& v : design.variables()) c.push_back(v.is_state ? v.name + "(0)" : v.name);
     c.insert(c.end(), {"status", "stopped", "t"});
     c.insert(c.end(), states.begin(), states.end());
     c.push_back("energy");
     c.insert(c.end(), outputs.begin(), outputs.end());
+    for (const std::string& by : sensitivities) {
+        for (const std::string& s : states) c.push_back("d" + s + "/d" + by);
+        for (const std::string& y : outputs) c.push_back("d" + y + "/d" + by);
+        if (with_event_time) c.push_back("dt/d" + by);
+    }
     c.push_back("message");
     return c;
 }
 
 /// The SI unit of each of ensemble_columns' columns (TableModel bound): the varied values', t's, the state's, h's
 /// and the outputs'; "" for the member, status, stopped and message, and where the model declares none.
-static std::vector<std::string> ensemble_units(const EnsembleDesign& design, std::size_t n_columns) {
+static std::vector<std::string> ensemble_units(const EnsembleDesign& design,
+                                               const std::vector<eomgen::sim::SensitivityLabel>& labels,
+                                               bool with_event_time, std::size_t n_columns) {
     std::vector<std::string> u{""};
     for (const EnsembleVariable& v : design.variables()) {
         const auto& names = v.is_state ? TableModel::state_names : TableModel::param_names;
@@ -134,6 +151,14 @@ static std::vector<std::string> ensemble_units(const EnsembleDesign& design, std
     u.insert(u.end(), TableModel::state_units.begin(), TableModel::state_units.end());
     u.push_back(TableModel::energy_unit);
     u.insert(u.end(), TableModel::output_units.begin(), TableModel::output_units.end());
+    using eomgen::sim::unit_ratio;
+    for (const auto& label : labels) {
+        for (std::size_t i = 0; i < TableModel::state_names.size(); ++i)
+            u.push_back(unit_ratio(eomgen::state_unit<TableModel>(i), label.unit));
+        for (std::size_t i = 0; i < TableModel::output_names.size(); ++i)
+            u.push_back(unit_ratio(eomgen::output_unit<TableModel>(i), label.unit));
+        if (with_event_time) u.push_back(unit_ratio(eomgen::time_unit<TableModel>(), label.unit));
+    }
     u.push_back("");
     u.resize(n_columns);
     return u;
@@ -161,6 +186,9 @@ int run_ensemble(const EnsembleRequest& req) {
     TableModel::Params base;
     TableModel::State x0 = TableModel::default_state();
     std::vector<std::string> columns;
+    std::vector<eomgen::sim::SensitivityLabel> labels;  // --sensitivities' columns
+    std::vector<std::string> by;                        // their names in the headers: "theta", "psi(0)"
+    const bool with_event_time = !o.until.empty();
     std::pair<PlotColumn, PlotColumn> xy;
     try {
         const EnsembleNames names{{TableModel::param_names.begin(), TableModel::param_names.end()}, states};
@@ -175,7 +203,10 @@ int run_ensemble(const EnsembleRequest& req) {
                     throw UsageError((v.is_state ? "--init " : "--set ") + s + ": " + v.name +
                                      " is varied by the ensemble; leave it out of " +
                                      (v.is_state ? "--init" : "--set"));
-        columns = ensemble_columns(*design, states, outputs);
+        labels = eomgen::sim::sensitivity_labels<TableModel>(o);
+        if (!labels.empty()) eomgen::sim::check_sensitivity_method<TableModel>(o);
+        for (const auto& label : labels) by.push_back(label.name);
+        columns = ensemble_columns(*design, states, outputs, by, with_event_time);
 #ifndef EOMGEN_HAVE_HDF5
         if (is_hdf5(req.out))
             throw UsageError("--out " + req.out + ": this eomgen was built without HDF5 (libhdf5-dev); write a .csv");
@@ -240,7 +271,7 @@ int run_ensemble(const EnsembleRequest& req) {
     try {
         std::optional<TableSink> table;
         // The CSV's header names each column with its unit ("psi [rad]"); HDF5 gives units as attributes.
-        std::vector<std::string> units = ensemble_units(*design, columns.size()), header;
+        std::vector<std::string> units = ensemble_units(*design, labels, with_event_time, columns.size()), header;
         for (std::size_t k = 0; k < columns.size(); ++k) header.push_back(eomgen::with_unit(columns[k], units[k]));
         if (rank == 0) table.emplace(table_path, req.out.empty(), header);
 #ifdef EOMGEN_HAVE_HDF5
@@ -275,7 +306,7 @@ int run_ensemble(const EnsembleRequest& req) {
 #endif
         auto sink = [&](const eomgen::MemberResult<TableModel>& r) {
             failed += r.ok ? 0 : 1;
-            table->write(row(r, design->values(r.index), states.size(), outputs.size()));
+            table->write(row(r, design->values(r.index), states.size(), outputs.size(), labels.size(), with_event_time));
         };
 #ifdef EOMGEN_HAVE_MPI
         if (mpi.size() > 1)

@@ -27,9 +27,12 @@ struct EnsembleRequest {
 };
 
 /// The table's columns: member, the varied values (a state's initial value as `q(0)`), status (ok or
-/// failed), stopped (the --until event or t_end), t, the state, energy, the model's outputs, message.
+/// failed), stopped (the --until event or t_end), t, the state, energy, the model's outputs, then for each
+/// --sensitivities column BY: dX/dBY of each state, dY/dBY of each output, and with --until dt/dBY; message.
 std::vector<std::string> ensemble_columns(const EnsembleDesign& design, const std::vector<std::string>& states,
-                                          const std::vector<std::string>& outputs);
+                                          const std::vector<std::string>& outputs,
+                                          const std::vector<std::string>& sensitivities = {},
+                                          bool with_event_time = false);
 
 /// False in a rank other than 0 of an MPI job (its launcher's OMPI_COMM_WORLD_RANK, PMI_RANK or PMIX_RANK),
 /// so that a mistake every rank finds is said once.

@@ -80,6 +80,12 @@ void serialize(const Result& r, std::string& bytes) {
     put(bytes, r.energy);
     put_doubles(bytes, r.x);
     put_doubles(bytes, r.outputs);
+    // The sensitivities (empty without --sensitivities): S and Y column-major with their row counts, then dt.
+    put<std::uint64_t>(bytes, std::uint64_t(r.S.rows()));
+    put_doubles(bytes, Eigen::Map<const Eigen::VectorXd>(r.S.data(), r.S.size()));
+    put<std::uint64_t>(bytes, std::uint64_t(r.Y.rows()));
+    put_doubles(bytes, Eigen::Map<const Eigen::VectorXd>(r.Y.data(), r.Y.size()));
+    put_doubles(bytes, r.dt.transpose());
     put_text(bytes, r.stopped_by);
     put_text(bytes, r.error);
 }
@@ -92,6 +98,14 @@ Result deserialize(Reader& in) {
     r.energy = in.get<double>();
     r.x = in.doubles();
     r.outputs = in.doubles();
+    const auto matrix = [&in] {
+        const Eigen::Index rows = Eigen::Index(in.get<std::uint64_t>());
+        const Eigen::VectorXd v = in.doubles();
+        return rows == 0 ? Eigen::MatrixXd() : Eigen::MatrixXd(Eigen::Map<const Eigen::MatrixXd>(v.data(), rows, v.size() / rows));
+    };
+    r.S = matrix();
+    r.Y = matrix();
+    r.dt = in.doubles().transpose();
     r.stopped_by = in.text();
     r.error = in.text();
     return r;

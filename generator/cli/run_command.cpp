@@ -178,10 +178,6 @@ int RunCommand::run_model() {
             return 2;
         }
     }
-    if (ensemble && !options_.sensitivities.empty()) {
-        std::cerr << "eomgen run: --sensitivities of an ensemble's members is not done; run one member with its values\n";
-        return 2;
-    }
     // The Jacobians ∂ẋ/∂x (radau5) and ∂ẋ/∂p (sensitivities), analytic in the header where the model allows.
     const bool jacobians = options_.method == "radau5" || !options_.sensitivities.empty();
     auto header = [&] {

@@ -167,21 +167,22 @@ class Model:
 
     def simulate(self, t_end=10.0, method="dopri5", rtol=1e-10, atol=1e-12, dt=0.0, samples=200, until=None,
                  set=None, init=None, project_initial=False, max_steps=10_000_000, switch_events=True,
-                 sensitivities=None, cache=True):
+                 sensitivities=None, state_error_only=False, cache=True):
         """Integrates from t = 0 to t_end (or the `until` event, e.g. "psi=-pi/2") as `eomgen run` does, with the
         same defaults, and returns a Solution of samples + 1 rows. `set` and `init` are dicts of values: a number
         is in the unit the model file declares for it (SI where it declares none), a string carries its own unit
         ({"alpha": "30 deg"}); `init` names states (q or q_dot). method: dopri5, dop853, adams, radau5, rk4 or
         symplectic (the last two with dt). `sensitivities` (as `eomgen run --sensitivities`: parameter names and
         "x0:STATE" for initial values) integrates S = dx/d(those) beside the state under the same error control
-        (dopri5, dop853, adams, radau5; docs/sensitivities.md): Solution.S and the rest. cache=False compiles
+        (dopri5, dop853, adams, radau5; rk4 with dt; docs/sensitivities.md): Solution.S and the rest;
+        state_error_only=True leaves S out of the step-size control (as --state-error-only). cache=False compiles
         afresh and keeps nothing."""
         if isinstance(sensitivities, str):
             sensitivities = [sensitivities]
         r = self._m.simulate(float(t_end), str(method), float(rtol), float(atol), float(dt), int(samples),
                              int(max_steps), _assignments(set, "set"), _assignments(init, "init"),
                              "" if until is None else str(until), bool(project_initial), bool(switch_events),
-                             [str(c) for c in (sensitivities or [])], bool(cache))
+                             [str(c) for c in (sensitivities or [])], bool(state_error_only), bool(cache))
         return Solution(self, r)
 
     def sweep(self, values, grid=True, t_end=10.0, method="dopri5", rtol=1e-10, atol=1e-12, dt=0.0, until=None,

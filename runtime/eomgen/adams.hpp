@@ -27,6 +27,8 @@ struct AdamsOptions {
     Scalar hmax = Scalar(0);         ///< largest |h|; 0: |t_end - t0|
     std::size_t max_steps = 100000;  ///< attempted steps (accepted + rejected) before TooManySteps
     int max_order = 12;              ///< highest order k of the formulas, 1 … 12 (see Adams)
+    /// The leading components the error norm counts; 0: all (as Dopri5Options::error_components).
+    std::size_t error_components = 0;
 };
 
 /**
@@ -334,8 +336,13 @@ class Adams {
     void update_scale() {
         using std::abs;
         using std::sqrt;
-        const Scalar root_n = sqrt(Scalar(x_.size()));
-        for (Eigen::Index i = 0; i < x_.size(); ++i) sc_(i) = (opts_.atol + opts_.rtol * abs(x_(i))) * root_n;
+        // Components past error_components count for nothing: an infinite weight.
+        const Eigen::Index m = opts_.error_components > 0 && Eigen::Index(opts_.error_components) < x_.size()
+                                   ? Eigen::Index(opts_.error_components)
+                                   : x_.size();
+        const Scalar root_n = sqrt(Scalar(m));
+        for (Eigen::Index i = 0; i < x_.size(); ++i)
+            sc_(i) = i < m ? (opts_.atol + opts_.rtol * abs(x_(i))) * root_n : std::numeric_limits<Scalar>::infinity();
     }
 
     Scalar weighted_norm(const State& v) const {

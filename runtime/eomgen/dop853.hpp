@@ -297,7 +297,7 @@ class Dop853 : public detail::EmbeddedRk<Dop853<State>, State> {
         const Scalar err5 = this->scaled_sum_of_squares(e3_);
         Scalar deno = err5 + Scalar(0.01) * err3;
         if (deno <= Scalar(0)) deno = Scalar(1);
-        const Scalar err = abs(h) * err5 / sqrt(Scalar(x.size()) * deno);
+        const Scalar err = abs(h) * err5 / sqrt(Scalar(this->error_count()) * deno);
         if (!(err <= Scalar(1))) return err;  // rejected (or NaN): stage 13 is not needed
         this->evaluate(f, t + h, x_new, k13_);
         if (!k13_.allFinite()) return std::numeric_limits<Scalar>::quiet_NaN();

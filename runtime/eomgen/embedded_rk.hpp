@@ -35,6 +35,9 @@ struct Dopri5Options {
     Scalar min_factor = Scalar(0.2);  ///< h_new / h is kept within [min_factor, max_factor]
     Scalar max_factor = Scalar(10);
     Scalar beta = Scalar(0.04);  ///< PI (Gustafsson) stabilisation exponent; 0 = plain I controller
+    /// The leading components the error norm counts; 0: all. Sensitivities (sensitivities.hpp) set it to the state's
+    /// size to leave S out of the step-size control (CVODES's errconS = false).
+    std::size_t error_components = 0;
 };
 
 namespace detail {
@@ -52,11 +55,13 @@ EOMGEN_HD bool all_finite(const Vec& v) {
 template <class Vec, class State>
 EOMGEN_HD typename State::Scalar scaled_sum_of_squares(const Vec& e, const State& x, const State& x_new,
                                                        const typename State::Scalar& atol,
-                                                       const typename State::Scalar& rtol) {
+                                                       const typename State::Scalar& rtol,
+                                                       Eigen::Index count = -1) {
     using Scalar = typename State::Scalar;
     using std::abs;
     Scalar sum(0);
-    for (Eigen::Index i = 0; i < x.size(); ++i) {
+    const Eigen::Index n = count < 0 ? x.size() : count;
+    for (Eigen::Index i = 0; i < n; ++i) {
         const Scalar a = abs(x(i)), b = abs(x_new(i));
         const Scalar sc = atol + rtol * (a < b ? b : a);
         sum += (e(i) / sc) * (e(i) / sc);
@@ -286,16 +291,22 @@ class EmbeddedRk {
         ++n_rhs_;
     }
 
-    /// The scaled norm sqrt((1/n) Σ (e_i / sc_i)²), sc_i = atol + rtol·max(|x_i|, |x_new_i|), of an error e.
+    /// The scaled norm sqrt((1/n) Σ (e_i / sc_i)²), sc_i = atol + rtol·max(|x_i|, |x_new_i|), of an error e, over
+    /// the first n = error_count() components.
     template <class Vec>
     Scalar scaled_norm(const Vec& e) const {
         using std::sqrt;
-        return sqrt(scaled_sum_of_squares(e) / Scalar(x_.size()));
+        return sqrt(scaled_sum_of_squares(e) / Scalar(error_count()));
     }
     /// Σ (e_i / sc_i)², the sum inside scaled_norm.
     template <class Vec>
     Scalar scaled_sum_of_squares(const Vec& e) const {
-        return detail::scaled_sum_of_squares(e, x_, x_new_, opts_.atol, opts_.rtol);
+        return detail::scaled_sum_of_squares(e, x_, x_new_, opts_.atol, opts_.rtol, error_count());
+    }
+    /// How many leading components the error norm counts (Options::error_components; all when 0 or too many).
+    Eigen::Index error_count() const {
+        const Eigen::Index m = Eigen::Index(opts_.error_components);
+        return m > 0 && m < x_.size() ? m : x_.size();
     }
 
     /// The dense output where it is exact by construction: x at t == t() or t == t_prev(). Returns whether

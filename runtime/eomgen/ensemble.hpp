@@ -61,6 +61,10 @@ struct MemberResult {
     std::string stopped_by;  ///< ok: the terminal event's name, "" when t_end was reached
     double energy = std::numeric_limits<double>::quiet_NaN();  ///< ok: h at (t, x)
     typename M::Outputs outputs;  ///< ok: the model's declared outputs at (t, x)
+    /// With sim::Options::sensitivities (ok): S = ∂x/∂(columns) at (t, x), the outputs' Y = ∂y/∂(columns), and for a
+    /// member stopped by the --until event its time's dt/d(columns) (sensitivities.hpp); empty otherwise.
+    Eigen::MatrixXd S, Y;
+    Eigen::RowVectorXd dt;
     std::string error;            ///< failed: the message (with the time and state where the runtime gives them)
 };
 
@@ -201,6 +205,23 @@ MemberResult<M> simulate_member(const sim::Options& o, const std::vector<Event<t
     MemberResult<M> r;
     r.index = index;
     try {
+        if (!o.sensitivities.empty()) {
+            const SensitivityResult run = sim::sensitivities_from<M>(o, member.params, member.x0, false);
+            const typename M::State x(run.x);
+            typename M::Config q = positions<M::nq>(x), qd = velocities<M::nq>(x);
+            r.energy = M::energy(run.t, q, qd, member.params);
+            M::outputs(run.t, q, qd, member.params, r.outputs);
+            r.t = run.t;
+            r.x = x;
+            r.S = run.S;
+            r.Y = run.end.Y;
+            if (run.stop_reason == StopReason::TerminalEvent && !run.events.empty()) {
+                r.stopped_by = run.stopped_by;
+                r.dt = run.events.back().dt;
+            }
+            r.ok = true;
+            return r;
+        }
         const sim::Trajectory<M> run = sim::simulate<M>(o, member.params, member.x0, events, false, nullptr);
         typename M::Config q = positions<M::nq>(run.x), qd = velocities<M::nq>(run.x);
         r.energy = M::energy(run.t, q, qd, member.params);

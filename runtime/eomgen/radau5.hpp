@@ -49,6 +49,9 @@ struct Radau5Options {
     Scalar keep_h_low = Scalar(1);     ///< keep h (and the LU factors) when h_new / h lies in [low, high]
     Scalar keep_h_high = Scalar(1.2);
     bool gustafsson = true;            ///< Gustafsson's predictive controller (else the classical one)
+    /// The leading components the error estimate counts (Newton's convergence test counts all); 0: all. As
+    /// Dopri5Options::error_components.
+    std::size_t error_components = 0;
 };
 
 /**
@@ -443,22 +446,30 @@ class Radau5 {
         const Constants& k = constants();
         const State f2 = (k.d1 / h) * z1_ + (k.d2 / h) * z2_ + (k.d3 / h) * z3_;
         tmp_ = lu_real_.solve(f0_ + f2);
-        Scalar err = scaled_norm(tmp_);
+        Scalar err = scaled_norm(tmp_, error_count());
         if (err >= Scalar(1) && (first_ || rejected_last_)) {  // filter once more (stiff components)
             tmp_ += x_;
             evaluate(f, t_, tmp_, f1_);
             tmp_ = lu_real_.solve(f1_ + f2);
-            err = scaled_norm(tmp_);
+            err = scaled_norm(tmp_, error_count());
         }
         return err;
     }
 
-    Scalar scaled_norm(const State& e) const {
+    /// How many leading components the error estimate counts (Options::error_components; all when 0 or too many).
+    Eigen::Index error_count() const {
+        const Eigen::Index m = Eigen::Index(opts_.error_components);
+        return m > 0 && m < x_.size() ? m : x_.size();
+    }
+
+    /// sqrt((1/n) Σ (e_i / sc_i)²) over the first n components (all where n < 0), at least 1e-10.
+    Scalar scaled_norm(const State& e, Eigen::Index count = -1) const {
         using std::max;
         using std::sqrt;
+        const Eigen::Index n = count < 0 ? e.size() : count;
         Scalar sum(0);
-        for (Eigen::Index i = 0; i < e.size(); ++i) sum += (e(i) / scal_(i)) * (e(i) / scal_(i));
-        const Scalar err = sqrt(sum / Scalar(e.size()));
+        for (Eigen::Index i = 0; i < n; ++i) sum += (e(i) / scal_(i)) * (e(i) / scal_(i));
+        const Scalar err = sqrt(sum / Scalar(n));
         return err != err ? err : max(err, Scalar(1e-10));
     }
 

@@ -71,30 +71,34 @@ std::vector<SensitivityLabel> sensitivity_labels(const Options& o) {
     return labels;
 }
 
-/// integrate_sensitivities (or its radau5 form) by o's method, tolerances and steps; the method must be one with
-/// error control (dopri5, dop853, adams, radau5: UsageError otherwise).
+/// integrate_sensitivities (or its radau5 or rk4 form) by o's method, tolerances and steps (o.dt for rk4); dopri5,
+/// dop853, adams, radau5 or rk4 (UsageError otherwise).
 template <class M>
 SensitivityResult integrate_sensitivities_by(const Options& o, const typename M::Params& params,
                                              const typename M::State& x0, double t_end,
                                              const std::vector<SensitivityColumn>& columns,
                                              const std::vector<SensitivityEvent>& events,
                                              const std::vector<double>& sample_times) {
+    // --state-error-only: the error norm counts the state's components only, not S's.
+    const std::size_t counted = o.state_error_only ? std::size_t(x0.size()) : 0;
     if (o.method == "radau5") {
         Radau5Options<double> opt;
         opt.rtol = o.rtol;
         opt.atol = o.atol;
         opt.max_steps = o.max_steps;
+        opt.error_components = counted;
         return integrate_sensitivities_radau5<M>(params, 0.0, x0, t_end, columns, opt, events, sample_times);
     }
+    if (o.method == "rk4") return integrate_sensitivities_rk4<M>(params, 0.0, x0, t_end, o.dt, columns, events, sample_times);
     SensitivityResult r;
     if (!with_adaptive_method(o.method, [&](auto method) {
             using Method = decltype(method);
-            r = integrate_sensitivities<M, Method::template type>(params, 0.0, x0, t_end, columns,
-                                                                  Method::template options<Eigen::VectorXd>(o), events,
+            auto opt = Method::template options<Eigen::VectorXd>(o);
+            opt.error_components = counted;
+            r = integrate_sensitivities<M, Method::template type>(params, 0.0, x0, t_end, columns, opt, events,
                                                                   sample_times);
         }))
-        throw UsageError("sensitivities need a method with error control (dopri5, dop853, adams or radau5), not " +
-                         o.method);
+        throw UsageError("sensitivities need dopri5, dop853, adams, radau5 or rk4, not " + o.method);
     return r;
 }
 
@@ -107,24 +111,36 @@ struct SensitivityRun {
     SensitivityResult result;
 };
 
-/// The integration of run_sensitivities() without its report: o's settings applied, o.sensitivities' columns
-/// checked, the state and S integrated to o.t_end (or the --until event), sampled at o.samples + 1 times. Throws
-/// UsageError for a bad option or column, SimulationError when the integration fails; writes nothing. What
-/// `eomgen run --sensitivities` prints and the Python module's simulate(sensitivities=...) returns.
+/**
+ * The state and S of Model M from x0 with `params` (o's settings already applied), o.sensitivities' columns
+ * checked, to o.t_end or the --until event; sampled at o.samples + 1 times when `with_samples` (an ensemble's
+ * member needs only the end). A constrained model's x0 is projected onto its constraints with --project-initial.
+ * Throws UsageError for a bad option or column, SimulationError when the integration fails; writes nothing.
+ */
+/// UsageError where o's method cannot integrate Model M's sensitivities: one without them (symplectic), or one whose
+/// steps do not end at switching surfaces (radau5, rk4) for a model that has them; --state-error-only with rk4.
 template <class M>
-SensitivityRun<M> sensitivity_run(const Options& o) {
-    using State = typename M::State;
-    check_options(o);
-    if (!is_adaptive_method(o.method) && o.method != "radau5")
-        throw UsageError("--sensitivities needs a method with error control (dopri5, dop853, adams or radau5), not " +
-                         o.method);
-    check_method_for<M>(o);
-    typename M::Params params;
-    State x0 = M::default_state();
-    apply_settings<M>(o, params, x0);
-    const std::vector<SensitivityLabel> labels = sensitivity_labels<M>(o);
+void check_sensitivity_method(const Options& o) {
+    if (!is_adaptive_method(o.method) && o.method != "radau5" && o.method != "rk4")
+        throw UsageError("--sensitivities needs dopri5, dop853, adams, radau5 or rk4, not " + o.method +
+                         (o.method == "symplectic" ? " (the variational integrator's sensitivities are not done)" : ""));
+    if (o.state_error_only && o.method == "rk4")
+        throw UsageError("--state-error-only: rk4 takes fixed steps (--dt) and has no error control");
+    if constexpr (has_switching<M>::value)
+        if (M::n_switches > 0 && (o.method == "radau5" || o.method == "rk4"))
+            throw UsageError("--sensitivities: " + std::string(M::name) +
+                             " has switching surfaces, where the sensitivities jump: " + o.method +
+                             " does not end its steps there; use dopri5, dop853 or adams");
+}
+
+template <class M>
+SensitivityResult sensitivities_from(const Options& o, const typename M::Params& params, typename M::State x0,
+                                     bool with_samples = true) {
+    check_sensitivity_method<M>(o);
+    if constexpr (is_constrained<M>::value)
+        if (o.project_initial && constraint_count<M>() > 0) project_onto_constraints<M>(0.0, x0, params);
     std::vector<SensitivityColumn> columns;
-    for (const auto& l : labels) columns.push_back(l.column);
+    for (const auto& l : sensitivity_labels<M>(o)) columns.push_back(l.column);
 
     std::vector<SensitivityEvent> events;
     if (!o.until.empty()) {
@@ -136,19 +152,26 @@ SensitivityRun<M> sensitivity_run(const Options& o) {
         events.push_back(state_crossing(o.until, i, value));
     }
     std::vector<double> sample_times;
-    for (int k = 0; k <= o.samples; ++k) sample_times.push_back(o.t_end * double(k) / double(o.samples));
-
+    for (int k = 0; with_samples && k <= o.samples; ++k) sample_times.push_back(o.t_end * double(k) / double(o.samples));
     try {
         check_sensitivity_columns<M>(0.0, x0, params, columns);
+        return integrate_sensitivities_by<M>(o, params, x0, o.t_end, columns, events, sample_times);
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("--sensitivities: ") + e.what());
     }
-    SensitivityRun<M> run{params, labels, {}};
-    try {
-        run.result = integrate_sensitivities_by<M>(o, params, x0, o.t_end, columns, events, sample_times);
-    } catch (const std::invalid_argument& e) {
-        throw UsageError(std::string("--sensitivities: ") + e.what());
-    }
+}
+
+/// The integration of run_sensitivities() without its report: o's settings applied, then sensitivities_from().
+/// What `eomgen run --sensitivities` prints and the Python module's simulate(sensitivities=...) returns.
+template <class M>
+SensitivityRun<M> sensitivity_run(const Options& o) {
+    check_options(o);
+    check_method_for<M>(o);
+    typename M::Params params;
+    typename M::State x0 = M::default_state();
+    apply_settings<M>(o, params, x0);
+    SensitivityRun<M> run{params, sensitivity_labels<M>(o), {}};
+    run.result = sensitivities_from<M>(o, params, x0);
     return run;
 }
 
@@ -163,8 +186,13 @@ int run_sensitivities(const Options& o) {
     print_heading<M>(params, std::cout);
 
     std::cout << "method:  " << o.method << " with the sensitivities of " << labels.size() << " column"
-              << (labels.size() == 1 ? "" : "s") << " under the same error control, rtol " << o.rtol << ", atol "
-              << o.atol << (constraint_count<M>() > 0 ? "; no projection onto the constraints" : "") << "\n";
+              << (labels.size() == 1 ? "" : "s");
+    if (o.method == "rk4")
+        std::cout << ", fixed steps of " << o.dt << " (S is the derivative of RK4's own motion)";
+    else
+        std::cout << (o.state_error_only ? ", the state alone in the error control" : " under the same error control")
+                  << ", rtol " << o.rtol << ", atol " << o.atol;
+    std::cout << (constraint_count<M>() > 0 ? "; no projection onto the constraints" : "") << "\n";
     std::cout << "steps:   " << r.accepted_steps << " accepted, " << r.rejected_steps << " rejected, "
               << r.rhs_evaluations << " right-hand sides (each with J and Jp)\n";
     const std::string s = time_unit<M>().empty() ? "" : " s";

@@ -82,6 +82,8 @@ struct Options {
     /// --sensitivities: the columns of S = dx/d(...), a parameter NAME or an initial value x0:STATE
     /// (sensitivity_run.hpp); empty: none.
     std::vector<std::string> sensitivities;
+    /// --state-error-only: with sensitivities, the state alone in the error norm (S left out of the step-size control).
+    bool state_error_only = false;
     int samples = 200;
     std::size_t max_steps = 10000000;
     bool project_initial = false;

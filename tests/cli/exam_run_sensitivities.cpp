@@ -102,13 +102,17 @@ std::vector<double> end_state(const fs::path& model, const std::vector<std::stri
     return last_row(csv, states);
 }
 
-/// Central differences of end_state in `option` (--set or --init) NAME about `value` with step h.
+/// Central differences of end_state in `option` (--set or --init) NAME about `value` with step h, each run with
+/// `also` (--project-initial, a method).
 std::vector<double> central(const fs::path& model, const std::vector<std::string>& states, const std::string& option,
-                            const std::string& name, double value, double h) {
+                            const std::string& name, double value, double h,
+                            const std::vector<std::string>& also = {}) {
     const auto at = [&](double v, const std::string& tag) {
         char text[64];
         std::snprintf(text, sizeof text, "%.17g", v);
-        return end_state(model, states, {option, name + "=" + text}, tag);
+        std::vector<std::string> extra{option, name + "=" + text};
+        extra.insert(extra.end(), also.begin(), also.end());
+        return end_state(model, states, extra, tag);
     };
     const auto plus = at(value + h, "plus"), minus = at(value - h, "minus");
     std::vector<double> d;
@@ -174,14 +178,89 @@ TEST_CASE("eomgen run --sensitivities of a constrained model, and what it refuse
     for (const auto& s : states) dg.push_back("d" + s + "/dg");
     check_close(last_row(csv, dg), central(model, states, "--set", "g", 9.81, 9.81e-4), 1e-6);
 
-    // The rod's length moves the consistent initial state; an initial value leaves the constraints.
-    for (const std::string& column : {"l", "x0:x"}) {
-        const Result refused = eomgen({"run", model.string(), "--sensitivities", column, "--quiet"});
-        INFO(refused.output);
-        CHECK(refused.code == 2);
-        CHECK(refused.output.find("is not done") != std::string::npos);
-        CHECK(refused.output.find("model:") == std::string::npos);  // refused before the report starts
+    // The rod's length and an initial value move the consistent start: as --project-initial moves each changed
+    // start onto the rod (the differences' runs project theirs).
+    const fs::path csv2 = kWork / "cartesian_s2.csv";
+    args = {"run", model.string(), "--sensitivities", "l,x0:x", "--csv", csv2.string()};
+    args.insert(args.end(), kTight.begin(), kTight.end());
+    const Result moved = eomgen(args);
+    INFO(moved.output);
+    REQUIRE(moved.code == 0);
+    std::vector<std::string> dl, dx0;
+    for (const auto& s : states) {
+        dl.push_back("d" + s + "/dl");
+        dx0.push_back("d" + s + "/dx(0)");
     }
+    check_close(last_row(csv2, dl), central(model, states, "--set", "l", 1, 1e-4, {"--project-initial"}), 1e-6);
+    check_close(last_row(csv2, dx0), central(model, states, "--init", "x", 0.6, 1e-4, {"--project-initial"}), 1e-6);
+}
+
+TEST_CASE("eomgen run --sensitivities by rk4, and with the state alone in the error control", "[run][sensitivities]") {
+    const fs::path model = write_whole(kWork, "spring_pendulum_s.toml", kSpringPendulum);
+    const std::vector<std::string> states{"r", "phi", "r_dot", "phi_dot"};
+    std::vector<std::string> dk;
+    for (const auto& s : states) dk.push_back("d" + s + "/dk");
+    // rk4: S is the derivative of RK4's own motion, so differences of rk4 runs with the same steps agree with it.
+    const std::vector<std::string> rk4{"--method", "rk4", "--dt", "0.01"};
+    const fs::path csv = kWork / "spring_rk4.csv";
+    std::vector<std::string> args{"run", model.string(), "--sensitivities", "k", "--csv", csv.string()};
+    args.insert(args.end(), kTight.begin(), kTight.end());
+    args.insert(args.end(), rk4.begin(), rk4.end());
+    const Result r = eomgen(args);
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    CHECK(r.output.find("fixed steps of 0.01") != std::string::npos);
+    check_close(last_row(csv, dk), central(model, states, "--set", "k", 30, 30e-4, rk4), 1e-6);
+
+    // --state-error-only: fewer steps, S still close to the differences (at the accuracy of those steps).
+    const fs::path both = kWork / "spring_both.csv", state = kWork / "spring_state.csv";
+    const auto steps = [&](const fs::path& out, bool state_only) {
+        std::vector<std::string> a{"run", model.string(), "--sensitivities", "k,x0:phi", "--csv", out.string(),
+                                   "--t-end", "2", "--rtol", "1e-9", "--atol", "1e-12"};
+        if (state_only) a.push_back("--state-error-only");
+        const Result run = eomgen(a);
+        INFO(run.output);
+        REQUIRE(run.code == 0);
+        const auto at = run.output.find("steps:   ");
+        REQUIRE(at != std::string::npos);
+        CHECK(run.output.find(state_only ? "the state alone in the error control" : "under the same error control") !=
+              std::string::npos);
+        return std::stoi(run.output.substr(at + 9));
+    };
+    const int all = steps(both, false), state_alone = steps(state, true);
+    CHECK(state_alone < all);
+    check_close(last_row(state, dk), central(model, states, "--set", "k", 30, 30e-4), 1e-5);
+}
+
+TEST_CASE("eomgen run --sweep --sensitivities: each member's S in the table", "[run][sensitivities]") {
+    const fs::path model = write_whole(kWork, "spring_pendulum_s.toml", kSpringPendulum);
+    const fs::path table = kWork / "sweep_s.csv";
+    std::vector<std::string> args{"run", model.string(), "--sweep", "g=9:10:3", "--sensitivities", "k,x0:phi",
+                                  "--out", table.string(), "--t-end", "2", "--rtol", "1e-12", "--atol", "1e-14",
+                                  "--until", "phi=0"};
+    const Result r = eomgen(args);
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const auto rows = read_csv(table);
+    REQUIRE(rows.size() == 4);
+    for (const std::string& name : {"dr/dk [m/(N/m)]", "dphi_dot/dphi(0) [1/s]", "dt/dk [s/(N/m)]", "dt/dphi(0) [s/rad]"})
+        CHECK(std::find(rows[0].begin(), rows[0].end(), name) != rows[0].end());
+    // Member 1 (g = 9.5) against one run with its values: the same numbers.
+    const Result single = eomgen({"run", model.string(), "--set", "g=9.5", "--sensitivities", "k,x0:phi", "--t-end",
+                                  "2", "--rtol", "1e-12", "--atol", "1e-14", "--until", "phi=0"});
+    INFO(single.output);
+    REQUIRE(single.code == 0);
+    const auto at = single.output.find("dt/dk = ");
+    REQUIRE(at != std::string::npos);
+    const double dt_dk = std::stod(single.output.substr(at + 8));
+    const double member = std::stod(rows[2][std::size_t(column(rows[0], "dt/dk [s/(N/m)]"))]);
+    CHECK(std::abs(member - dt_dk) <= 1e-9 * std::abs(dt_dk));
+    const auto dr = single.output.find("dr/dk = ");  // S where the run ended: the report's
+    REQUIRE(dr != std::string::npos);
+    const double dr_dk = std::stod(single.output.substr(dr + 8));
+    CHECK(std::abs(std::stod(rows[2][std::size_t(column(rows[0], "dr/dk [m/(N/m)]"))]) - dr_dk) <=
+          1e-9 * std::max(1e-6, std::abs(dr_dk)));
+    CHECK(rows[2][std::size_t(column(rows[0], "stopped"))] == "phi=0");
 }
 
 TEST_CASE("eomgen run --sensitivities: a user's mistakes", "[run][sensitivities]") {
@@ -190,8 +269,9 @@ TEST_CASE("eomgen run --sensitivities: a user's mistakes", "[run][sensitivities]
         {{"--sensitivities", "kk"}, "has no parameter 'kk'; did you mean 'k'?"},
         {{"--sensitivities", "x0:rr"}, "no state 'rr'; did you mean 'r'?"},
         {{"--sensitivities", "k,k"}, "--sensitivities k: given twice"},
-        {{"--sensitivities", "k", "--method", "rk4", "--dt", "0.01"}, "needs a method with error control"},
-        {{"--sensitivities", "k", "--sweep", "g=9:10:3"}, "of an ensemble's members is not done"},
+        {{"--sensitivities", "k", "--method", "symplectic", "--dt", "0.01"},
+         "the variational integrator's sensitivities are not done"},
+        {{"--sensitivities", "k", "--method", "rk4", "--dt", "0.01", "--state-error-only"}, "rk4 takes fixed steps"},
     };
     for (const auto& [extra, message] : cases) {
         std::vector<std::string> args{"run", model.string(), "--quiet"};
