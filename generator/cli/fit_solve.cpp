@@ -65,8 +65,11 @@ struct Series {
             if (free[i].experiment < 0 || free[i].experiment == experiment) mine.push_back(i);
     }
 
-    /// The parameters and initial state at the unknowns θ, counting one integration.
-    void at(const double* theta, TableModel::Params& params, TableModel::State& start) const {
+    /// The parameters and initial state at the unknowns θ, counting one integration. A constrained model's start is
+    /// projected onto its constraints (as --project-initial does: a free initial value or a parameter the
+    /// constraints contain moves the consistent start, which is what the sensitivities differentiate); false, with
+    /// the message, where the projection fails.
+    bool at(const double* theta, TableModel::Params& params, TableModel::State& start, std::string& why) const {
         params = p;
         start = x0;
         for (std::size_t i : mine) {
@@ -77,6 +80,14 @@ struct Series {
                 start(c.index) = theta[i];
         }
         ++*count;
+        if (constraint_count<TableModel>() == 0) return true;
+        try {
+            project_onto_constraints<TableModel>(0.0, start, params);
+        } catch (const SimulationError& e) {
+            why = e.what();
+            return false;
+        }
+        return true;
     }
 };
 
@@ -93,7 +104,7 @@ class SeriesCost : public ceres::CostFunction {
     bool Evaluate(double const* const* parameters, double* residuals, double** jacobians) const override {
         TableModel::Params p;
         TableModel::State x0;
-        s_.at(parameters[0], p, x0);
+        if (!s_.at(parameters[0], p, x0, last_failure_)) return false;
         const MeasuredSeries& data = s_.data;
         SensitivityResult r;
         if (!trajectory(s_.o, p, x0, columns_, data.t, r, last_failure_)) return false;
@@ -132,7 +143,8 @@ class SeriesResiduals {
     bool operator()(double const* const* parameters, double* residuals) const {
         TableModel::Params p;
         TableModel::State x0;
-        s_.at(parameters[0], p, x0);
+        std::string why;
+        if (!s_.at(parameters[0], p, x0, why)) return false;
         const MeasuredSeries& data = s_.data;
         const auto f = [&p](const double& t, const TableModel::State& x, TableModel::State& xdot) {
             TableModel::rhs(t, x, p, xdot);

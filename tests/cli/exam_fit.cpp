@@ -197,6 +197,43 @@ TEST_CASE("eomgen fit: data and options that do not fit the model file", "[fit]"
     }
 }
 
+namespace {
+
+/// The first two columns (t and the first state) of an `eomgen run` CSV, as a data file in kWork named `name`.
+std::string first_two_columns(const std::string& csv, const std::string& name) {
+    const std::string path = (kWork / name).string();
+    std::ifstream in(csv);
+    std::ofstream out(path);
+    for (std::string line; std::getline(in, line);) out << line.substr(0, line.find(',', line.find(',') + 1)) << "\n";
+    return path;
+}
+
+/// The value printed as "  NAME = VALUE" in eomgen fit's report.
+double estimate(const std::string& report, const std::string& name) {
+    const auto at = report.find("  " + name + " = ");
+    REQUIRE(at != std::string::npos);
+    return std::stod(report.substr(at + name.size() + 5));
+}
+
+}  // namespace
+
+TEST_CASE("eomgen fit of a constrained model: the rod's length and where the bob starts", "[fit]") {
+    // l is in the constraint x^2 + y^2 = l^2 and x(0) leaves it: each evaluation projects the start onto the rod, as
+    // the sensitivities' consistent start assumes (consistent_sensitivities.hpp).
+    const std::string model = std::string(EOMGEN_SOURCE_DIR) + "/models/pendulum_cartesian.toml";
+    const std::string csv = (kWork / "cartesian_truth.csv").string();
+    const Result truth = eomgen({"run", model, "--t-end", "2", "--samples", "40", "--rtol", "1e-12", "--atol", "1e-14",
+                                 "--csv", csv, "--quiet"});
+    INFO(truth.output);
+    REQUIRE(truth.code == 0);
+    const Result fitted = eomgen({"fit", model, first_two_columns(csv, "cartesian_data.csv"), "--free", "l=1.2:0.5:2",
+                                  "--free", "x0:x=0.45:0:1", "--rtol", "1e-12", "--atol", "1e-14", "--quiet"});
+    INFO(fitted.output);
+    REQUIRE(fitted.code == 0);
+    CHECK(std::abs(estimate(fitted.output, "l") - 1.0) < 1e-7);
+    CHECK(std::abs(estimate(fitted.output, "x0:x") - 0.479425538604203) < 1e-7);
+}
+
 TEST_CASE("eomgen fit of a model with switching surfaces: the friction door's tilt and friction", "[fit]") {
     // The door's hinge friction is sign(psi'): the sensitivities jump where a motion reverses (saltation.hpp). Data
     // without noise from the model's own motion (released at rest, closing in 4.46 s) give back its values.
@@ -206,25 +243,11 @@ TEST_CASE("eomgen fit of a model with switching surfaces: the friction door's ti
                                  "1e-14", "--csv", csv, "--quiet"});
     INFO(truth.output);
     REQUIRE(truth.code == 0);
-    // The data: t and psi, the run's first two columns.
-    const std::string data_path = (kWork / "friction_door_data.csv").string();
-    {
-        std::ifstream in(csv);
-        std::ofstream out(data_path);
-        for (std::string line; std::getline(in, line);) {
-            const auto second = line.find(',', line.find(',') + 1);
-            out << line.substr(0, second) << "\n";
-        }
-    }
+    const std::string data_path = first_two_columns(csv, "friction_door_data.csv");  // t and psi
     const Result fitted = eomgen({"fit", model, data_path, "--free", "tau_f=1:0:5", "--free", "theta=0.03:0.001:0.5",
                                   "--rtol", "1e-12", "--atol", "1e-14", "--quiet"});
     INFO(fitted.output);
     REQUIRE(fitted.code == 0);
-    const auto value = [&](const std::string& name) {
-        const auto at = fitted.output.find("  " + name + " = ");
-        REQUIRE(at != std::string::npos);
-        return std::stod(fitted.output.substr(at + name.size() + 5));
-    };
-    CHECK(std::abs(value("tau_f") - 1.5) < 1e-6);
-    CHECK(std::abs(value("theta") - 0.0234) < 1e-8);
+    CHECK(std::abs(estimate(fitted.output, "tau_f") - 1.5) < 1e-6);
+    CHECK(std::abs(estimate(fitted.output, "theta") - 0.0234) < 1e-8);
 }
