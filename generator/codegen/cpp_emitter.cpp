@@ -507,19 +507,12 @@ std::string emit_model_header(const Model& model, const Equations& eq, const std
         momenta.push_back({fmt::format("out_({})", i), eq.momenta[i]});
         grad.push_back({fmt::format("out_({})", i), eq.dLdq[i]});
     }
-    // h = Σ q̇ ∂L/∂q̇ − L, expanded by derive_equations, is T + V when T is quadratic in q̇ (no T₁, T₀
-    // terms) and V is free of q̇. Then energy() returns kinetic_energy() + potential_energy(), lagrangian()
-    // their difference and conserved() calls energy() and momenta(), instead of each computing its own copy:
-    // the expanded h was the longest function of the n-link pendulum's header (38 kB of 297 kB at n = 20,
-    // twice with conserved()), and the header's compile time grows with its code.
-    // T is quadratic + linear + zero order in q̇ (derive_equations checks it): T₀ = T(q̇ = 0) and
-    // T₁ = Σ q̇_i ∂T/∂q̇_i (q̇ = 0), with ∂T/∂q̇_i = p_i when V is free of q̇.
-    GiNaC::exmap at_rest;
-    for (const Coordinate& c : model.coordinates) at_rest[c.qd] = 0;
-    bool natural = eq.T.subs(at_rest, GiNaC::subs_options::no_pattern).expand().is_zero();
-    for (const Coordinate& c : model.coordinates) natural = natural && !eq.V.has(c.qd);
-    for (std::size_t i = 0; i < n && natural; ++i)
-        natural = eq.momenta[i].subs(at_rest, GiNaC::subs_options::no_pattern).expand().is_zero();
+    // h = Σ q̇ ∂L/∂q̇ − L is T + V when T is homogeneous quadratic in q̇ and V is free of q̇ (eq.natural).
+    // Then energy() returns kinetic_energy() + potential_energy(), lagrangian() their difference and
+    // conserved() calls energy() and momenta(), instead of each computing its own copy: the expanded h was the
+    // longest function of the n-link pendulum's header (38 kB of 297 kB at n = 20, twice with conserved()), and
+    // the header's compile time grows with its code.
+    const bool natural = eq.natural;
     // With T homogeneous quadratic in q̇ and V free of q̇, p = M q̇ (Euler's theorem): momenta() from M's entries,
     // whose code is short, instead of the expanded p_i (the n-link pendulum's p_i has O(n²) terms; their CSE was
     // as long as that of M and f at n = 60).

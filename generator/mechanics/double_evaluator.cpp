@@ -8,7 +8,31 @@
 
 namespace eomgen {
 
-DoubleEvaluator DoubleEvaluator::at(const GiNaC::exmap& at) {
+namespace {
+
+/// A number of the tree as Real: a rational p/q from its integers where they are exact in a double (so that
+/// long double keeps its extra digits), else through double.
+/// The pairs and the overall coefficient of a sum or product (protected members, reached through a derived
+/// class as the language allows).
+struct SequenceAccess : GiNaC::expairseq {
+    static const GiNaC::epvector& pairs(const GiNaC::expairseq& s) { return s.*(&SequenceAccess::seq); }
+    static const GiNaC::ex& constant(const GiNaC::expairseq& s) { return s.*(&SequenceAccess::overall_coeff); }
+};
+
+template <class Real>
+Real to_real(const GiNaC::numeric& n) {
+    if (n.is_rational() && !n.is_integer()) {
+        const GiNaC::numeric p = n.numer(), q = n.denom();
+        const GiNaC::numeric limit = GiNaC::numeric(1L << 53);
+        if (GiNaC::abs(p) < limit && q < limit) return Real(p.to_double()) / Real(q.to_double());
+    }
+    return Real(n.to_double());
+}
+
+}  // namespace
+
+template <class Real>
+FloatEvaluator<Real> FloatEvaluator<Real>::at(const GiNaC::exmap& at) {
     SymbolValues values;
     for (const auto& [s, v] : at) {
         if (!GiNaC::is_a<GiNaC::symbol>(s)) continue;
@@ -16,53 +40,61 @@ DoubleEvaluator DoubleEvaluator::at(const GiNaC::exmap& at) {
         if (GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_real())
             values[s] = GiNaC::ex_to<GiNaC::numeric>(x).to_double();
     }
-    return DoubleEvaluator(std::move(values));
+    return FloatEvaluator(std::move(values));
 }
 
-std::optional<double> DoubleEvaluator::operator()(const GiNaC::ex& e) {
-    const std::optional<double> v = evaluate(e);
+template <class Real>
+std::optional<Real> FloatEvaluator<Real>::operator()(const GiNaC::ex& e) {
+    const std::optional<Real> v = evaluate(e);
     if (!v || !std::isfinite(*v)) return std::nullopt;
     return v;
 }
 
-std::optional<double> DoubleEvaluator::evaluate(const GiNaC::ex& e) {
+template <class Real>
+std::optional<Real> FloatEvaluator<Real>::evaluate(const GiNaC::ex& e) {
     const GiNaC::basic* node = &GiNaC::ex_to<GiNaC::basic>(e);
     if (const auto hit = cache_.find(node); hit != cache_.end()) return hit->second.second;
-    std::optional<double> out;
+    std::optional<Real> out;
     if (GiNaC::is_a<GiNaC::numeric>(e)) {
         const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(e);
-        if (n.is_real()) out = n.to_double();
+        if (n.is_real()) out = to_real<Real>(n);
     } else if (GiNaC::is_a<GiNaC::symbol>(e)) {
         const auto it = values_.find(e);
         if (it != values_.end()) out = it->second;
     } else if (GiNaC::is_a<GiNaC::constant>(e)) {
         const GiNaC::ex x = GiNaC::evalf(e);
         if (GiNaC::is_a<GiNaC::numeric>(x)) out = GiNaC::ex_to<GiNaC::numeric>(x).to_double();
-    } else if (GiNaC::is_a<GiNaC::add>(e) || GiNaC::is_a<GiNaC::mul>(e)) {
-        const bool sum = GiNaC::is_a<GiNaC::add>(e);
-        double acc = sum ? 0.0 : 1.0;
-        for (const GiNaC::ex& term : e) {
-            const std::optional<double> v = evaluate(term);
+    } else if (GiNaC::is_exactly_a<GiNaC::add>(e) || GiNaC::is_exactly_a<GiNaC::mul>(e)) {
+        // The pairs (rest, coefficient) as GiNaC stores them: the rests are shared nodes, whose values the cache
+        // keeps, where e.op(k) would build a new product c·rest for every term.
+        const bool sum = GiNaC::is_exactly_a<GiNaC::add>(e);
+        const std::optional<Real> constant = evaluate(SequenceAccess::constant(GiNaC::ex_to<GiNaC::expairseq>(e)));
+        if (!constant) return std::nullopt;
+        Real acc = *constant;
+        for (const GiNaC::expair& pair : SequenceAccess::pairs(GiNaC::ex_to<GiNaC::expairseq>(e))) {
+            const std::optional<Real> v = evaluate(pair.rest);
             if (!v) return std::nullopt;
-            acc = sum ? acc + *v : acc * *v;
+            const GiNaC::numeric& c = GiNaC::ex_to<GiNaC::numeric>(pair.coeff);
+            if (sum) acc += (c == 1 ? Real(1) : to_real<Real>(c)) * *v;
+            else acc *= c == 1 ? *v : std::pow(*v, to_real<Real>(c));
         }
         out = acc;
     } else if (GiNaC::is_a<GiNaC::power>(e)) {
-        const std::optional<double> b = evaluate(e.op(0)), x = evaluate(e.op(1));
+        const std::optional<Real> b = evaluate(e.op(0)), x = evaluate(e.op(1));
         if (b && x) out = std::pow(*b, *x);
     } else if (is_nonsmooth_function(e)) {
         double args[2] = {0, 0}, value = 0;
         for (std::size_t i = 0; i < e.nops() && i < 2; ++i) {
-            const std::optional<double> a = evaluate(e.op(i));
+            const std::optional<Real> a = evaluate(e.op(i));
             if (!a) return std::nullopt;
-            args[i] = *a;
+            args[i] = static_cast<double>(*a);
         }
         if (nonsmooth_value(GiNaC::ex_to<GiNaC::function>(e).get_name(), args, e.nops(), value)) out = value;
     } else if (GiNaC::is_a<GiNaC::function>(e) && e.nops() == 1) {
-        const std::optional<double> a = evaluate(e.op(0));
+        const std::optional<Real> a = evaluate(e.op(0));
         if (!a) return std::nullopt;
         const std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
-        const double x = *a;
+        const Real x = *a;
         if (name == "sin") out = std::sin(x);
         else if (name == "cos") out = std::cos(x);
         else if (name == "tan") out = std::tan(x);
@@ -79,5 +111,8 @@ std::optional<double> DoubleEvaluator::evaluate(const GiNaC::ex& e) {
     cache_.emplace(node, std::make_pair(e, *out));
     return out;
 }
+
+template class FloatEvaluator<double>;
+template class FloatEvaluator<long double>;
 
 }  // namespace eomgen

@@ -1,8 +1,11 @@
 /** @file lagrangian.cpp  Euler–Lagrange equations by the chain rule on plain symbols. */
 #include "mechanics/lagrangian.hpp"
+
+#include "mechanics/double_evaluator.hpp"
 #include "mechanics/results.hpp"
 
 #include "mechanics/constraints.hpp"
+#include "mechanics/differentiator.hpp"
 #include "mechanics/noether.hpp"
 #include "mechanics/pole_free_subs.hpp"
 #include "mechanics/time_dependence.hpp"
@@ -28,15 +31,23 @@ double to_double(const GiNaC::ex& e) {
     return n.to_double();
 }
 
-// The maps from random_point() have plain symbols as keys: subs_options::no_pattern makes each node one hash
-// look-up instead of a pattern match against every key (the same result, several times faster).
+// In doubles, one walk of the entries sharing the values of their common subexpressions (DoubleEvaluator):
+// GiNaC's subs() and evalf() of every entry were a fifth of deriving the 60-link pendulum. An entry the walk
+// cannot evaluate (a function it does not know) goes through subs() and evalf(); the maps from random_point()
+// have plain symbols as keys, so subs_options::no_pattern makes each node one hash look-up.
 Eigen::MatrixXd evaluate(const GiNaC::matrix& m, const GiNaC::exmap& at) {
+    DoubleEvaluator fast = DoubleEvaluator::at(at);
     Eigen::MatrixXd out(m.rows(), m.cols());
     for (unsigned i = 0; i < m.rows(); ++i)
-        for (unsigned j = 0; j < m.cols(); ++j)
+        for (unsigned j = 0; j < m.cols(); ++j) {
             // M(j, i) is the same expression as M(i, j) (derive_equations stores it twice): evaluated once.
-            out(i, j) = j < i && m(i, j).is_equal(m(j, i)) ? out(j, i)
-                                                            : to_double(m(i, j).subs(at, GiNaC::subs_options::no_pattern));
+            if (j < i && m(i, j).is_equal(m(j, i))) {
+                out(i, j) = out(j, i);
+                continue;
+            }
+            const std::optional<double> v = fast(m(i, j));
+            out(i, j) = v ? *v : to_double(m(i, j).subs(at, GiNaC::subs_options::no_pattern));
+        }
     return out;
 }
 
@@ -72,146 +83,6 @@ void check_quadratic_in_velocities(const Model& model, const GiNaC::matrix& M) {
         }
 }
 
-// GiNaC 1.8's function::derivative calls expl_derivative() inside a try block and, for a function without
-// an explicit derivative (sin, cos, exp, ... all of them), applies the chain rule in the catch block: every
-// derivative of a sin or cos throws and catches an exception, which was a fifth of derive_equations' time.
-// Registering, for those functions, an explicit derivative that is that same chain rule (the catch block's
-// code: Σ_i pderivative(i)·∂arg_i/∂s over the arguments with a nonzero derivative) gives the same
-// expressions without the exception. pderivative and the function registry are protected members: reached
-// through derived classes, as the language allows.
-struct FunctionAccess : GiNaC::function {
-    static std::vector<GiNaC::function_options>& registry() { return registered_functions(); }
-    static GiNaC::ex partial(const GiNaC::function& f, unsigned i) { return (f.*(&FunctionAccess::pderivative))(i); }
-};
-struct FunctionOptionsAccess : GiNaC::function_options {
-    static bool has_explicit_derivative(const GiNaC::function_options& o) {
-        return o.*(&FunctionOptionsAccess::expl_derivative_f) != nullptr;
-    }
-};
-
-/// The serials of the functions install_chain_rule() gave the chain rule (the others, abs or conjugate with
-/// explicit derivatives of their own, are left to GiNaC::diff).
-std::vector<char>& chain_rule_functions() {
-    static std::vector<char> serials;
-    return serials;
-}
-
-GiNaC::ex chain_rule(const GiNaC::exvector& args, const GiNaC::symbol& s) {
-    const GiNaC::function f(GiNaC::function::current_serial, args);
-    GiNaC::ex result;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const GiNaC::ex d = args[i].diff(s);
-        if (!d.is_zero()) result += FunctionAccess::partial(f, static_cast<unsigned>(i)) * d;
-    }
-    return result;
-}
-
-struct AddAccess : GiNaC::add {
-    static const GiNaC::epvector& terms(const GiNaC::add& a) { return a.*(&AddAccess::seq); }
-};
-struct MulAccess : GiNaC::mul {
-    static const GiNaC::epvector& factors(const GiNaC::mul& m) { return m.*(&MulAccess::seq); }
-    static const GiNaC::ex& coefficient(const GiNaC::mul& m) { return m.*(&MulAccess::overall_coeff); }
-    static GiNaC::expair split(const GiNaC::mul& m, const GiNaC::ex& e) { return (m.*(&MulAccess::split_ex_to_pair))(e); }
-};
-
-/**
- * ∂e/∂x for one symbol x over many expressions, by the rules GiNaC's own diff applies (add::derivative,
- * mul::derivative, power::derivative, the chain rule for functions; anything else is handed to GiNaC::diff),
- * remembering the derivative of every subexpression it has met. The expressions differentiated here share
- * most of their subexpressions (every p_i of the n-link pendulum holds the same velocity sums ẋ_k), and
- * GiNaC's diff differentiates each occurrence again: for M and f, O(n⁴) work becomes O(n³).
- */
-class Differentiator {
-public:
-    /// d/dx.
-    explicit Differentiator(const GiNaC::symbol& x) : seeds_{{x, 1}} {}
-    /// The directional derivative Σ_k v_k ∂/∂x_k, one walk for every direction's component (seeds: x_k → v_k):
-    /// Σ_j q̇_j ∂p_i/∂q_j in one pass instead of n derivatives each multiplied back.
-    explicit Differentiator(GiNaC::exmap seeds) : seeds_(std::move(seeds)) {}
-
-    GiNaC::ex operator()(const GiNaC::ex& e) {
-        if (GiNaC::is_exactly_a<GiNaC::numeric>(e) || GiNaC::is_exactly_a<GiNaC::constant>(e)) return 0;
-        if (GiNaC::is_a<GiNaC::symbol>(e)) {
-            const auto it = seeds_.find(e);
-            return it == seeds_.end() ? GiNaC::ex(0) : it->second;
-        }
-        const GiNaC::basic* key = &GiNaC::ex_to<GiNaC::basic>(e);
-        if (auto it = memo_.find(key); it != memo_.end()) return it->second.second;
-        GiNaC::ex d = derivative(e);
-        memo_.emplace(key, std::make_pair(e, d));  // e kept alive so that its address stays its own
-        return d;
-    }
-
-private:
-    GiNaC::ex derivative(const GiNaC::ex& e) {
-        if (GiNaC::is_exactly_a<GiNaC::add>(e)) {
-            GiNaC::epvector terms;
-            for (const GiNaC::expair& t : AddAccess::terms(GiNaC::ex_to<GiNaC::add>(e))) {
-                GiNaC::ex d = (*this)(t.rest);
-                if (!d.is_zero()) terms.push_back(GiNaC::expair(d, t.coeff));
-            }
-            if (terms.empty()) return 0;
-            return GiNaC::dynallocate<GiNaC::add>(std::move(terms));
-        }
-        if (GiNaC::is_exactly_a<GiNaC::mul>(e)) {
-            // D(a·b·c) = D(a)·b·c + a·D(b)·c + a·b·D(c), each factor a = rest^coeff.
-            const GiNaC::mul& m = GiNaC::ex_to<GiNaC::mul>(e);
-            const GiNaC::epvector& factors = MulAccess::factors(m);
-            GiNaC::exvector terms;
-            for (std::size_t k = 0; k < factors.size(); ++k) {
-                const GiNaC::ex d = (*this)(factors[k].rest);
-                if (d.is_zero()) continue;
-                GiNaC::epvector seq = factors;
-                seq[k] = MulAccess::split(m, GiNaC::pow(factors[k].rest, factors[k].coeff - 1) * d);
-                terms.push_back(GiNaC::dynallocate<GiNaC::mul>(std::move(seq), MulAccess::coefficient(m) * factors[k].coeff));
-            }
-            if (terms.empty()) return 0;
-            if (terms.size() == 1) return terms[0];
-            return GiNaC::dynallocate<GiNaC::add>(std::move(terms));
-        }
-        if (GiNaC::is_exactly_a<GiNaC::power>(e) && GiNaC::is_exactly_a<GiNaC::numeric>(e.op(1))) {
-            // D(b^r) = r·b^(r−1)·D(b)
-            const GiNaC::ex d = (*this)(e.op(0));
-            if (d.is_zero()) return 0;
-            GiNaC::epvector seq{GiNaC::expair(e.op(0), e.op(1) - 1), GiNaC::expair(d, 1)};
-            return GiNaC::dynallocate<GiNaC::mul>(std::move(seq), e.op(1));
-        }
-        const std::vector<char>& chain = chain_rule_functions();
-        if (GiNaC::is_exactly_a<GiNaC::function>(e) && GiNaC::ex_to<GiNaC::function>(e).get_serial() < chain.size() &&
-            chain[GiNaC::ex_to<GiNaC::function>(e).get_serial()]) {
-            const GiNaC::function& f = GiNaC::ex_to<GiNaC::function>(e);
-            GiNaC::ex result;
-            for (std::size_t i = 0; i < f.nops(); ++i) {
-                const GiNaC::ex d = (*this)(f.op(i));
-                if (!d.is_zero()) result += FunctionAccess::partial(f, static_cast<unsigned>(i)) * d;
-            }
-            return result;
-        }
-        GiNaC::ex d;
-        for (const auto& [x, v] : seeds_) d += GiNaC::diff(e, GiNaC::ex_to<GiNaC::symbol>(x)) * v;
-        return d;
-    }
-
-    GiNaC::exmap seeds_;
-    std::unordered_map<const GiNaC::basic*, std::pair<GiNaC::ex, GiNaC::ex>> memo_;
-};
-
-/// Once per process, before the first derivative: the chain rule as the explicit derivative of every
-/// registered function that has none.
-void install_chain_rule() {
-    static const bool installed = [] {
-        std::vector<GiNaC::function_options>& registry = FunctionAccess::registry();
-        chain_rule_functions().assign(registry.size(), 0);
-        for (std::size_t serial = 0; serial < registry.size(); ++serial)
-            if (!FunctionOptionsAccess::has_explicit_derivative(registry[serial])) {
-                registry[serial].expl_derivative_func(chain_rule);
-                chain_rule_functions()[serial] = 1;
-            }
-        return true;
-    }();
-    static_cast<void>(installed);
-}
 
 }  // namespace
 
@@ -238,6 +109,31 @@ namespace {
 /// that unless the terms cancel across 20 orders of magnitude). False when undecided (e does not evaluate
 /// to a real number there, or a pole): the caller then goes on with the exact tests.
 bool clearly_nonzero(const GiNaC::ex& e, const Model& model) {
+    // First in double and in long double from the same inputs (a walk of the tree each, no CLN): a value well
+    // above its terms' round-off on which both precisions agree to three digits is not round-off. Undecided
+    // otherwise (a symbolic zero evaluates to round-off, on which the two disagree, or to exactly 0), and the
+    // 40-digit look below decides; the 60-link pendulum's ∂L/∂q took a second at 40 digits.
+    {
+        const GiNaC::exmap at = random_point(model, 1);
+        DoubleEvaluator in_double = DoubleEvaluator::at(at);
+        LongDoubleEvaluator in_long = LongDoubleEvaluator::at(at);
+        double sum = 0, scale = 1.0;
+        long double sum_long = 0;
+        bool decided = true;
+        for (std::size_t k = 0, terms = GiNaC::is_a<GiNaC::add>(e) ? e.nops() : 1; k < terms && decided; ++k) {
+            const GiNaC::ex term = terms > 1 ? e.op(k) : e;
+            const std::optional<double> v = in_double(term);
+            const std::optional<long double> w = in_long(term);
+            decided = v && w;
+            if (!decided) break;
+            sum += *v;
+            sum_long += *w;
+            scale = std::max(scale, std::abs(*v));
+        }
+        if (decided && std::isfinite(sum) && std::abs(sum) > 1e-9 * scale &&
+            std::abs(static_cast<long double>(sum) - sum_long) <= 1e-3L * std::abs(sum_long))
+            return true;
+    }
     struct Precision {
         long saved = GiNaC::Digits;
         Precision() { GiNaC::Digits = 40; }
@@ -422,18 +318,26 @@ Equations derive_equations(const Model& model) {
     const std::vector<GiNaC::ex> body_forces = body_generalized_forces(model);
     eq.L = eq.T - eq.V;
 
+    // Which of q, q̇, t each node holds, once: every derivative below skips the parts without its variable.
+    std::vector<GiNaC::ex> variables{model.t};
+    for (const Coordinate& c : model.coordinates) {
+        variables.push_back(c.q);
+        variables.push_back(c.qd);
+    }
+    SymbolSupport support(variables);
+
     eq.momenta.resize(n);
     eq.dLdq.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
-        eq.momenta[i] = GiNaC::diff(eq.L, model.coordinates[i].qd);
-        eq.dLdq[i] = GiNaC::diff(eq.L, model.coordinates[i].q);
+        eq.momenta[i] = Differentiator(model.coordinates[i].qd, &support)(eq.L);
+        eq.dLdq[i] = Differentiator(model.coordinates[i].q, &support)(eq.L);
     }
 
     // M = ∂p/∂q̇; for T quadratic in q̇ it is free of q̇, which is checked before anything else relies on it.
     // One Differentiator per variable, over all p_i: they share their subexpressions.
     eq.M = GiNaC::matrix(n, n);
     for (std::size_t j = 0; j < n; ++j) {
-        Differentiator d_dqdj(model.coordinates[j].qd);
+        Differentiator d_dqdj(model.coordinates[j].qd, &support);
         for (std::size_t i = 0; i <= j; ++i) {
             const GiNaC::ex mij = d_dqdj(eq.momenta[i]);
             eq.M(i, j) = mij;
@@ -447,11 +351,11 @@ Equations derive_equations(const Model& model) {
     {
         GiNaC::exmap along_velocity;
         for (const Coordinate& c : model.coordinates) along_velocity[c.q] = c.qd;
-        Differentiator d_along(along_velocity);
+        Differentiator d_along(along_velocity, &support);
         for (std::size_t i = 0; i < n; ++i) dp_dq_qd[i] = d_along(eq.momenta[i]);
     }
     {
-        Differentiator d_dt(model.t);
+        Differentiator d_dt(model.t, &support);
         for (std::size_t i = 0; i < n; ++i) dp_dt[i] = d_dt(eq.momenta[i]);
     }
 
@@ -541,11 +445,27 @@ Equations derive_equations(const Model& model) {
 
     warn_singular_configurations(model, eq);
 
-    // h = Σ q̇ ∂L/∂q̇ − L is conserved when L has no explicit t (no non-conservative forces here).
-    eq.energy = -eq.L;
-    for (std::size_t i = 0; i < n; ++i) eq.energy += model.coordinates[i].qd * eq.momenta[i];
-    // Expanded, the T₁ terms cancel and h reads T₂ − T₀ + V, as a person would write it.
-    eq.energy = eq.energy.expand();
+    // h = Σ q̇ ∂L/∂q̇ − L is conserved when L has no explicit t (no non-conservative forces here). With T
+    // homogeneous quadratic in q̇ and V free of q̇ it is T + V (Euler's theorem), as a person writes it: T's
+    // terms as the model wrote them. Otherwise expanded, so that the T₁ terms cancel and h reads T₂ − T₀ + V.
+    // (Expanding T + V of the 60-link pendulum, O(n³) terms, was a sixth of generating its header.)
+    // T is quadratic + linear + zero order in q̇ (checked above): T₀ = T(q̇ = 0), and T₁ = 0 when every
+    // ∂T/∂q̇_i = p_i vanishes at q̇ = 0.
+    {
+        GiNaC::exmap at_rest;
+        for (const Coordinate& c : model.coordinates) at_rest[c.qd] = 0;
+        eq.natural = eq.T.subs(at_rest, GiNaC::subs_options::no_pattern).expand().is_zero();
+        for (const Coordinate& c : model.coordinates) eq.natural = eq.natural && !eq.V.has(c.qd);
+        for (std::size_t i = 0; i < n && eq.natural; ++i)
+            eq.natural = eq.momenta[i].subs(at_rest, GiNaC::subs_options::no_pattern).expand().is_zero();
+    }
+    if (eq.natural) {
+        eq.energy = eq.T + eq.V;
+    } else {
+        eq.energy = -eq.L;
+        for (std::size_t i = 0; i < n; ++i) eq.energy += model.coordinates[i].qd * eq.momenta[i];
+        eq.energy = eq.energy.expand();
+    }
     eq.explicit_time = depends_on_time(eq.L, model);  // after sin² + cos² = 1 (mechanics/time_dependence.hpp)
     // dh/dt = −∂L/∂t + q̇·(Q − ∂R/∂q̇) − λ·b (constraint forces do work only through b = ∂g/∂t).
     const bool forced = std::any_of(eq.generalized_forces.begin(), eq.generalized_forces.end(),

@@ -57,7 +57,9 @@ struct Equations {
     std::vector<GiNaC::ex> generalized_forces;  ///< Q_i − ∂R/∂q̇_i: euler_lagrange = these + Aᵀλ
     std::vector<ConstraintEquations> constraints;  ///< M q̈ = f + Aᵀλ, A q̈ = γ
     std::string frobenius;                  ///< verdict on the nonholonomic constraints together ("" if < 2)
-    GiNaC::ex energy;                       ///< h
+    GiNaC::ex energy;                       ///< h: T + V where `natural`, else Σ q̇ p − L expanded
+    /// T is homogeneous quadratic in q̇ (no T₁, T₀ terms) and V free of q̇: h = T + V and p = M q̇.
+    bool natural = false;
     std::vector<bool> cyclic;               ///< ∂L/∂q_i ≡ 0
     bool explicit_time = false;             ///< ∂L/∂t ≢ 0
     std::vector<ConservedQuantity> conserved;
