@@ -466,17 +466,33 @@ Term ExprDag::optimize_node(NodeId id) {
 
 void ExprDag::note_angles(const std::vector<Term>& roots) {
     std::vector<NodeId> stack;
-    std::unordered_map<NodeId, bool> seen;
+    std::vector<char> seen(nodes_.size(), 0);
+    // Expansions asked for more than once: a root, a child of several nodes, or a child whose parent expands
+    // it twice (the base of a power, a sum in a denominator: expand_node(), then optimize_node()).
+    expansion_users_.assign(nodes_.size(), 0);
+    auto use = [this](NodeId id, int k) { expansion_users_[static_cast<std::size_t>(id)] += k; };
     for (const Term& r : roots)
-        if (r.node != kOne && seen.emplace(r.node, true).second) stack.push_back(r.node);
+        if (r.node != kOne) {
+            use(r.node, 1);
+            if (!seen[static_cast<std::size_t>(r.node)]) {
+                seen[static_cast<std::size_t>(r.node)] = 1;
+                stack.push_back(r.node);
+            }
+        }
     while (!stack.empty()) {
         const Node& n = node(stack.back());
         stack.pop_back();
         if (n.op == Op::Func && (n.name == "sin" || n.name == "cos") && n.args.size() == 1 &&
             node(n.args[0]).op == Op::Symbol)
             angles_.emplace(n.args[0], true);
-        for (NodeId a : n.args)
-            if (seen.emplace(a, true).second) stack.push_back(a);
+        for (std::size_t i = 0; i < n.args.size(); ++i) {
+            const NodeId a = n.args[i];
+            use(a, n.op == Op::Pow || (n.op == Op::Mul && !n.coeffs[i].is_equal(1)) ? 2 : 1);
+            if (!seen[static_cast<std::size_t>(a)]) {
+                seen[static_cast<std::size_t>(a)] = 1;
+                stack.push_back(a);
+            }
+        }
     }
 }
 
@@ -620,7 +636,10 @@ bool ExprDag::expand_node(NodeId id, std::shared_ptr<const Poly>& out) {
         }
     }
     out = std::make_shared<const Poly>(std::move(result));
-    expanded_.emplace(id, out);
+    // Kept only where it will be asked for again: the expansions of the 60-link pendulum's M and f, every
+    // intermediate product kept, were 1.5 million monomials (200 MB) for a function that needs its roots'.
+    if (static_cast<std::size_t>(id) >= expansion_users_.size() || expansion_users_[static_cast<std::size_t>(id)] > 1)
+        expanded_.emplace(id, out);
     return true;
 }
 
@@ -906,7 +925,8 @@ void ExprDag::share_partial(std::vector<Term>& roots) {
     SharePlan plan;
     const std::size_t count = nodes_.size();
     plan.position.assign(count, -1);
-    plan.holders.resize(count);
+    plan.sum_holders.resize(count);
+    plan.product_holders.resize(count);
     plan.done.assign(count, SharePlan::kNone);
     plan.hits.assign(count, 0);
     // Reachable sums and products in a deterministic order (depth-first from the roots, children in their
@@ -940,8 +960,19 @@ void ExprDag::share_partial(std::vector<Term>& roots) {
         if ((n.op == Op::Add && n.value.is_zero()) || n.op == Op::Mul)
             if (n.args.size() >= 2)
                 for (NodeId a : n.args)
-                    if (a >= 0) plan.holders[std::size_t(a)].push_back(id);
+                    if (a >= 0) (n.op == Op::Add ? plan.sum_holders : plan.product_holders)[std::size_t(a)].push_back(id);
     }
+    // Smallest candidates first: a node looks only at candidates with fewer terms than its own (the rest cannot be
+    // parts of it), and stops at the first that is not. Which candidate is taken does not depend on this order
+    // (size, then the preference order decide).
+    plan.arity.assign(count, 0);
+    for (NodeId id : order) plan.arity[std::size_t(id)] = static_cast<int>(node(id).args.size());
+    for (auto* holders : {&plan.sum_holders, &plan.product_holders})
+        for (std::vector<NodeId>& h : *holders)
+            std::sort(h.begin(), h.end(), [&plan](NodeId a, NodeId b) {
+                return plan.arity[std::size_t(a)] != plan.arity[std::size_t(b)] ? plan.arity[std::size_t(a)] < plan.arity[std::size_t(b)]
+                                                                                : a < b;
+            });
     for (Term& r : roots)
         if (r.node != kOne) r.node = rewrite_shared(r.node, plan);
 }
@@ -965,14 +996,16 @@ NodeId ExprDag::rewrite_shared(NodeId id, SharePlan& plan) {
         // terms are used, rather than recounted for every part taken (the same choices, byte-identical headers).
         // Only a candidate holding all of its terms among ours can be taken, and the count only falls: those are
         // kept. The counts live in plan.hits (indexed by node) and are set back to 0 before returning.
+        // Candidates of our own kind only (sums for a sum, products for a product), indexed apart.
+        const std::vector<std::vector<NodeId>>& holders = n.op == Op::Add ? plan.sum_holders : plan.product_holders;
         std::vector<NodeId>& touched = plan.touched;
         const std::size_t touched_from = touched.size();
         for (std::size_t i = 0; i < n.args.size(); ++i) {
-            if (n.args[i] < 0 || std::size_t(n.args[i]) >= plan.holders.size()) continue;
-            for (NodeId cand : plan.holders[std::size_t(n.args[i])])
-                if (cand != id && node(cand).op == n.op) {
-                    if (plan.hits[std::size_t(cand)]++ == 0) touched.push_back(cand);
-                }
+            if (n.args[i] < 0 || std::size_t(n.args[i]) >= holders.size()) continue;
+            for (NodeId cand : holders[std::size_t(n.args[i])]) {
+                if (static_cast<std::size_t>(plan.arity[std::size_t(cand)]) >= n.args.size()) break;  // (id among them)
+                if (plan.hits[std::size_t(cand)]++ == 0) touched.push_back(cand);
+            }
         }
         std::vector<NodeId> whole;
         for (std::size_t k = touched_from; k < touched.size(); ++k) {
@@ -1006,8 +1039,10 @@ NodeId ExprDag::rewrite_shared(NodeId id, SharePlan& plan) {
             if (best == kOne) break;
             for (NodeId a : node(best).args) {
                 used[where.at(a)] = true;
-                for (NodeId cand : plan.holders[std::size_t(a)])
-                    if (cand != id && node(cand).op == n.op) --plan.hits[std::size_t(cand)];
+                for (NodeId cand : holders[std::size_t(a)]) {
+                    if (static_cast<std::size_t>(plan.arity[std::size_t(cand)]) >= n.args.size()) break;
+                    --plan.hits[std::size_t(cand)];
+                }
             }
             parts.emplace_back(best, best_factor);
         }

@@ -130,7 +130,9 @@ private:
     /// not hash maps, which were a fifth of a 60-link chain's emission.
     struct SharePlan {
         std::vector<int> position;                 ///< preference order of reachable sums and products; -1 none
-        std::vector<std::vector<NodeId>> holders;  ///< per term (factor): the sums (products) holding it
+        std::vector<std::vector<NodeId>> sum_holders;      ///< per term: the sums holding it
+        std::vector<std::vector<NodeId>> product_holders;  ///< per factor: the products holding it
+        std::vector<int> arity;  ///< per candidate: its number of terms (factors); holders are sorted by it
         std::vector<NodeId> done;                  ///< rewritten node per original node; kNone when not yet
         std::vector<int> hits;                     ///< per candidate: scratch of rewrite_shared(), kept at 0
         std::vector<NodeId> touched;               ///< candidates whose hits are not 0
@@ -154,6 +156,7 @@ private:
     std::unordered_map<NodeId, Term> optimized_;  ///< optimize() of single nodes (arguments, opaque sums)
     std::unordered_map<NodeId, std::shared_ptr<const Poly>> expanded_;  ///< expansions, shared between outputs
     std::unordered_map<NodeId, bool> angles_;  ///< note_angles(): symbols with sin or cos computed
+    std::vector<int> expansion_users_;         ///< note_angles(): how often each node's expansion is asked for
     std::size_t expansion_budget_ = 0;           ///< monomials optimize() may still create for this term
 };
 

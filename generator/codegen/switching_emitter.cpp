@@ -46,9 +46,12 @@ std::vector<SwitchingSurface> dynamics_switches(const Equations& eq) {
 
 SwitchingCode switching_code(const Model& model, const Equations& eq, MathPrinter& printer) {
     SwitchingCode c;
+    c.include_runtime = uses_nonsmooth(model, eq);
+    // M and the constraints' terms are derived from what uses_nonsmooth() reads: without abs, sign, heaviside,
+    // max or min there, they have none (and their n² entries need no walk).
+    if (!c.include_runtime) return c;
     c.surfaces = dynamics_switches(eq);
     for (const SwitchingSurface& w : c.surfaces) c.names.push_back(switch_name(w, printer));
-    c.include_runtime = uses_nonsmooth(model, eq);
     return c;
 }
 

@@ -1,6 +1,8 @@
 /** @file differentiator.cpp  Remembered, support-skipping symbolic derivatives (differentiator.hpp). */
 #include "mechanics/differentiator.hpp"
 
+#include "model/stored_terms.hpp"
+
 #include <algorithm>
 
 namespace eomgen {
@@ -40,12 +42,7 @@ GiNaC::ex chain_rule(const GiNaC::exvector& args, const GiNaC::symbol& s) {
     return result;
 }
 
-struct AddAccess : GiNaC::add {
-    static const GiNaC::epvector& terms(const GiNaC::add& a) { return a.*(&AddAccess::seq); }
-};
 struct MulAccess : GiNaC::mul {
-    static const GiNaC::epvector& factors(const GiNaC::mul& m) { return m.*(&MulAccess::seq); }
-    static const GiNaC::ex& coefficient(const GiNaC::mul& m) { return m.*(&MulAccess::overall_coeff); }
     static GiNaC::expair split(const GiNaC::mul& m, const GiNaC::ex& e) { return (m.*(&MulAccess::split_ex_to_pair))(e); }
 };
 
@@ -71,6 +68,13 @@ std::vector<std::uint64_t> SymbolSupport::mask(const GiNaC::exmap& of, bool& ind
     return m;
 }
 
+std::vector<std::uint64_t> SymbolSupport::mask(const std::vector<GiNaC::ex>& of) const {
+    GiNaC::exmap keys;
+    for (const GiNaC::ex& s : of) keys[s] = 1;
+    bool indexed = false;
+    return mask(keys, indexed);
+}
+
 bool SymbolSupport::holds(const GiNaC::ex& e, const std::vector<std::uint64_t>& mask) {
     const std::size_t at = bits_of(e);
     for (std::size_t w = 0; w < words_per_node_; ++w)
@@ -90,13 +94,8 @@ std::size_t SymbolSupport::bits_of(const GiNaC::ex& e) {
     if (GiNaC::is_a<GiNaC::symbol>(e)) {
         if (const auto it = index_.find(e); it != index_.end())
             bits[it->second / 64] |= std::uint64_t{1} << (it->second % 64);
-    } else if (GiNaC::is_exactly_a<GiNaC::add>(e)) {
-        // The stored rests (e.op(k) would build a new node c·rest per term); the coefficients are numbers.
-        for (const GiNaC::expair& p : AddAccess::terms(GiNaC::ex_to<GiNaC::add>(e))) merge(p.rest);
-    } else if (GiNaC::is_exactly_a<GiNaC::mul>(e)) {
-        for (const GiNaC::expair& p : MulAccess::factors(GiNaC::ex_to<GiNaC::mul>(e))) merge(p.rest);
     } else {
-        for (std::size_t i = 0; i < e.nops(); ++i) merge(e.op(i));
+        StoredTerms::for_each_child(e, merge);
     }
     const std::size_t at = words_.size();
     words_.insert(words_.end(), bits.begin(), bits.end());
@@ -127,7 +126,7 @@ GiNaC::ex Differentiator::operator()(const GiNaC::ex& e) {
 GiNaC::ex Differentiator::derivative(const GiNaC::ex& e) {
     if (GiNaC::is_exactly_a<GiNaC::add>(e)) {
         GiNaC::epvector terms;
-        for (const GiNaC::expair& t : AddAccess::terms(GiNaC::ex_to<GiNaC::add>(e))) {
+        for (const GiNaC::expair& t : StoredTerms::pairs(e)) {
             GiNaC::ex d = (*this)(t.rest);
             if (!d.is_zero()) terms.push_back(GiNaC::expair(d, t.coeff));
         }
@@ -137,14 +136,14 @@ GiNaC::ex Differentiator::derivative(const GiNaC::ex& e) {
     if (GiNaC::is_exactly_a<GiNaC::mul>(e)) {
         // D(a·b·c) = D(a)·b·c + a·D(b)·c + a·b·D(c), each factor a = rest^coeff.
         const GiNaC::mul& m = GiNaC::ex_to<GiNaC::mul>(e);
-        const GiNaC::epvector& factors = MulAccess::factors(m);
+        const GiNaC::epvector& factors = StoredTerms::pairs(e);
         GiNaC::exvector terms;
         for (std::size_t k = 0; k < factors.size(); ++k) {
             const GiNaC::ex d = (*this)(factors[k].rest);
             if (d.is_zero()) continue;
             GiNaC::epvector seq = factors;
             seq[k] = MulAccess::split(m, GiNaC::pow(factors[k].rest, factors[k].coeff - 1) * d);
-            terms.push_back(GiNaC::dynallocate<GiNaC::mul>(std::move(seq), MulAccess::coefficient(m) * factors[k].coeff));
+            terms.push_back(GiNaC::dynallocate<GiNaC::mul>(std::move(seq), StoredTerms::overall_coefficient(e) * factors[k].coeff));
         }
         if (terms.empty()) return 0;
         if (terms.size() == 1) return terms[0];

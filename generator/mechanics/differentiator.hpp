@@ -31,8 +31,10 @@ class SymbolSupport {
 public:
     explicit SymbolSupport(const std::vector<GiNaC::ex>& symbols);
 
-    /// The bits of the symbols in `of`; `indexed` is false when one of them is not in the list.
+    /// The bits of the symbols in `of` (its keys); `indexed` is false when one of them is not in the list.
     std::vector<std::uint64_t> mask(const GiNaC::exmap& of, bool& indexed) const;
+    /// The bits of the symbols in `of` that are in the list.
+    std::vector<std::uint64_t> mask(const std::vector<GiNaC::ex>& of) const;
     /// True when e holds one of the symbols of `mask`.
     bool holds(const GiNaC::ex& e, const std::vector<std::uint64_t>& mask);
 

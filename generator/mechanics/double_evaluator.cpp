@@ -2,6 +2,7 @@
 #include "mechanics/double_evaluator.hpp"
 
 #include "model/nonsmooth.hpp"
+#include "model/stored_terms.hpp"
 
 #include <cmath>
 #include <string>
@@ -12,13 +13,6 @@ namespace {
 
 /// A number of the tree as Real: a rational p/q from its integers where they are exact in a double (so that
 /// long double keeps its extra digits), else through double.
-/// The pairs and the overall coefficient of a sum or product (protected members, reached through a derived
-/// class as the language allows).
-struct SequenceAccess : GiNaC::expairseq {
-    static const GiNaC::epvector& pairs(const GiNaC::expairseq& s) { return s.*(&SequenceAccess::seq); }
-    static const GiNaC::ex& constant(const GiNaC::expairseq& s) { return s.*(&SequenceAccess::overall_coeff); }
-};
-
 template <class Real>
 Real to_real(const GiNaC::numeric& n) {
     if (n.is_rational() && !n.is_integer()) {
@@ -68,10 +62,10 @@ std::optional<Real> FloatEvaluator<Real>::evaluate(const GiNaC::ex& e) {
         // The pairs (rest, coefficient) as GiNaC stores them: the rests are shared nodes, whose values the cache
         // keeps, where e.op(k) would build a new product c·rest for every term.
         const bool sum = GiNaC::is_exactly_a<GiNaC::add>(e);
-        const std::optional<Real> constant = evaluate(SequenceAccess::constant(GiNaC::ex_to<GiNaC::expairseq>(e)));
+        const std::optional<Real> constant = evaluate(StoredTerms::overall_coefficient(e));
         if (!constant) return std::nullopt;
         Real acc = *constant;
-        for (const GiNaC::expair& pair : SequenceAccess::pairs(GiNaC::ex_to<GiNaC::expairseq>(e))) {
+        for (const GiNaC::expair& pair : StoredTerms::pairs(e)) {
             const std::optional<Real> v = evaluate(pair.rest);
             if (!v) return std::nullopt;
             const GiNaC::numeric& c = GiNaC::ex_to<GiNaC::numeric>(pair.coeff);

@@ -1,6 +1,8 @@
 /** @file particle_tree.cpp  Finding a tree of point masses in T (particle_tree.hpp). */
 #include "mechanics/particle_tree.hpp"
 
+#include "mechanics/differentiator.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -29,7 +31,27 @@ struct Square {
 
 class Finder {
   public:
-    Finder(const Model& model, const Equations& eq) : model_(model), eq_(eq), n_(model.dof()) {}
+    Finder(const Model& model, const Equations& eq)
+        : model_(model), eq_(eq), n_(model.dof()), support_(symbols(model)) {
+        // Which of t, q, q̇, q̈ a node holds, from one walk of each tree (SymbolSupport): e.has(x) for every
+        // coordinate, on every term and lever, was most of finding the 60-link pendulum's tree.
+        std::vector<GiNaC::ex> state{model.t}, velocities, all_q;
+        for (const Coordinate& c : model.coordinates) {
+            state.insert(state.end(), {c.q, c.qd, c.qdd});
+            velocities.push_back(c.qd);
+            all_q.push_back(c.q);
+        }
+        moving_ = support_.mask(state);
+        time_or_velocity_ = support_.mask(velocities);
+        time_or_velocity_[0] |= support_.mask({model.t})[0];
+        for (std::size_t k = 0; k < n_; ++k) {
+            velocity_.push_back(support_.mask({model.coordinates[k].qd}));
+            std::vector<GiNaC::ex> others;
+            for (std::size_t j = 0; j < n_; ++j)
+                if (j != k) others.push_back(model.coordinates[j].q);
+            other_coordinates_.push_back(support_.mask(others));
+        }
+    }
 
     ParticleTree find() {
         if (!eq_.constraints.empty() || eq_.T.has(model_.t) || eq_.V.has(model_.t)) throw NotATree{};
@@ -45,17 +67,12 @@ class Finder {
     }
 
   private:
-    bool moving(const ex& e) const {
-        if (e.has(model_.t)) return true;
-        for (const Coordinate& c : model_.coordinates)
-            if (e.has(c.q) || e.has(c.qd) || e.has(c.qdd)) return true;
-        return false;
+    static std::vector<ex> symbols(const Model& model) {
+        std::vector<ex> out{model.t};
+        for (const Coordinate& c : model.coordinates) out.insert(out.end(), {c.q, c.qd, c.qdd});
+        return out;
     }
-    bool has_velocity(const ex& e) const {
-        for (const Coordinate& c : model_.coordinates)
-            if (e.has(c.qd)) return true;
-        return false;
-    }
+    bool moving(const ex& e) { return support_.holds(e, moving_); }
 
     /// T's terms as ½ w s²: sums term by term, constant factors into w, squares (also products of squares,
     /// which GiNaC makes of (a·b)²) as s.
@@ -96,12 +113,11 @@ class Finder {
         Square sq{w, s, std::vector<ex>(n_, 0), {}, -1, 1};
         ex rebuilt = 0;
         for (std::size_t k = 0; k < n_; ++k) {
+            if (!support_.holds(s, velocity_[k])) continue;
             const ex a = s.diff(model_.coordinates[k].qd);
             if (a.is_zero()) continue;
             // The lever of q̇_k: of q_k alone (and the parameters).
-            if (a.has(model_.t) || has_velocity(a)) throw NotATree{};
-            for (std::size_t j = 0; j < n_; ++j)
-                if (j != k && a.has(model_.coordinates[j].q)) throw NotATree{};
+            if (support_.holds(a, time_or_velocity_) || support_.holds(a, other_coordinates_[k])) throw NotATree{};
             sq.alpha[k] = a;
             sq.support.push_back(int(k));
             rebuilt += a * model_.coordinates[k].qd;
@@ -231,7 +247,7 @@ class Finder {
     }
 
     /// a / b when it is free of the state, else nothing.
-    std::optional<ex> constant_ratio(const ex& a, const ex& b) const {
+    std::optional<ex> constant_ratio(const ex& a, const ex& b) {
         ex r;
         try {
             r = (a / b).normal();
@@ -314,6 +330,11 @@ class Finder {
     const Model& model_;
     const Equations& eq_;
     std::size_t n_;
+    SymbolSupport support_;                  ///< over t and every q, q̇, q̈
+    std::vector<std::uint64_t> moving_;      ///< t, q, q̇, q̈
+    std::vector<std::uint64_t> time_or_velocity_;
+    std::vector<std::vector<std::uint64_t>> velocity_;           ///< q̇_k
+    std::vector<std::vector<std::uint64_t>> other_coordinates_;  ///< every q_j but q_k
     std::vector<Square> out_;
     std::vector<int> end_;  ///< per square: its deepest coordinate
     std::vector<ex> joint_inertia_;

@@ -1,7 +1,10 @@
 /** @file nonsmooth.cpp  abs, sign, heaviside, max and min for real arguments (nonsmooth.hpp). */
 #include "model/nonsmooth.hpp"
 
+#include "model/stored_terms.hpp"
+
 #include <algorithm>
+#include <unordered_set>
 
 namespace eomgen {
 namespace {
@@ -156,8 +159,18 @@ ex signs_of_quotients(const ex& product);
 }  // namespace
 
 bool contains_nonsmooth(const ex& e) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (is_nonsmooth_function(*it)) return true;
+    // Each distinct node once, through the stored children (a preorder walk by op() built a node per term and
+    // met a shared subexpression once per occurrence: a tenth of emitting the 60-link pendulum).
+    std::unordered_set<const GiNaC::basic*> seen;
+    std::vector<ex> stack{e};
+    while (!stack.empty()) {
+        const ex x = std::move(stack.back());
+        stack.pop_back();
+        if (is_nonsmooth_function(x)) return true;
+        StoredTerms::for_each_child(x, [&](const ex& child) {
+            if (child.nops() > 0 && seen.insert(&GiNaC::ex_to<GiNaC::basic>(child)).second) stack.push_back(child);
+        });
+    }
     return false;
 }
 
@@ -234,8 +247,11 @@ ex signs_of_quotients(const ex& product) {
     return out;
 }
 
-void collect_surfaces(const ex& e, std::vector<SwitchingSurface>& out) {
-    for (const ex& op : e) collect_surfaces(op, out);
+/// Children before their parent, each distinct node once (`walked`: by address, through the stored children; the
+/// surfaces found are in the order of a walk by op(), which met shared nodes again and built a node per term).
+void collect_surfaces(const ex& e, std::vector<SwitchingSurface>& out, std::unordered_set<const GiNaC::basic*>& walked) {
+    if (e.nops() == 0 || !walked.insert(&GiNaC::ex_to<GiNaC::basic>(e)).second) return;
+    StoredTerms::for_each_child(e, [&](const ex& child) { collect_surfaces(child, out, walked); });
     if (!is_nonsmooth_function(e)) return;
     const ex s = e.nops() == 2 ? ex(e.op(0) - e.op(1)) : e.op(0);
     if (GiNaC::is_exactly_a<numeric>(s)) return;
@@ -249,7 +265,8 @@ void collect_surfaces(const ex& e, std::vector<SwitchingSurface>& out) {
 
 std::vector<SwitchingSurface> switching_surfaces(const std::vector<ex>& exprs) {
     std::vector<SwitchingSurface> out;
-    for (const ex& e : exprs) collect_surfaces(e, out);
+    std::unordered_set<const GiNaC::basic*> seen;
+    for (const ex& e : exprs) collect_surfaces(e, out, seen);
     return out;
 }
 
