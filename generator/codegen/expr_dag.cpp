@@ -881,21 +881,30 @@ Term ExprDag::build(Poly p, const std::unordered_map<NodeId, int>& rank) {
     if (!content.is_equal(1))
         for (auto& t : terms) t.second = t.second / content;
 
-    // The atom in most terms (ties: structural order) comes out of those terms: a·Q + R.
-    std::unordered_map<NodeId, int> count;
+    // The atom in most terms (ties: structural order) comes out of those terms: a·Q + R. Counted in a vector by
+    // node id (a hash map per call was 4 % of generating the 60-link pendulum), set back to 0 after.
+    std::vector<NodeId> counted;
     for (const auto& t : terms)
         for (const auto& [a, e] : t.first)
-            if (e > 0) ++count[a];
+            if (e > 0) {
+                if (static_cast<std::size_t>(a) >= atom_count_.size()) atom_count_.resize(nodes_.size(), 0);
+                if (atom_count_[static_cast<std::size_t>(a)]++ == 0) counted.push_back(a);
+            }
     NodeId best = kOne;
     int best_count = 1;
-    for (const auto& [a, c] : count)
+    for (NodeId a : counted) {
+        const int c = atom_count_[static_cast<std::size_t>(a)];
         if (c > best_count || (c == best_count && best != kOne && rank.at(a) < rank.at(best))) {
             best = a;
             best_count = c;
         }
+    }
+    for (NodeId a : counted) atom_count_[static_cast<std::size_t>(a)] = 0;
     Term inner;
     if (best != kOne) {
         Poly q, r;
+        q.terms.reserve(static_cast<std::size_t>(best_count));
+        r.terms.reserve(terms.size() - static_cast<std::size_t>(best_count));
         for (auto& t : terms) {
             if (exponent_of(t.first, best) > 0)
                 q.terms.emplace_back(shift(t.first, best, -1), t.second);

@@ -157,6 +157,7 @@ private:
     std::unordered_map<NodeId, std::shared_ptr<const Poly>> expanded_;  ///< expansions, shared between outputs
     std::unordered_map<NodeId, bool> angles_;  ///< note_angles(): symbols with sin or cos computed
     std::vector<int> expansion_users_;         ///< note_angles(): how often each node's expansion is asked for
+    std::vector<int> atom_count_;              ///< build()'s scratch, by node id: all 0 between calls
     std::size_t expansion_budget_ = 0;           ///< monomials optimize() may still create for this term
 };
 

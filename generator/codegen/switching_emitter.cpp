@@ -11,16 +11,12 @@ namespace {
 /// Whether the header's expressions can hold abs, sign, heaviside, max or min: its T, V, forces, constraints and
 /// outputs (everything else is derived from them).
 bool uses_nonsmooth(const Model& model, const Equations& eq) {
-    if (contains_nonsmooth(eq.L) || contains_nonsmooth(eq.energy)) return true;
-    for (const GiNaC::ex& e : eq.f)
-        if (contains_nonsmooth(e)) return true;
-    for (const GiNaC::ex& e : eq.generalized_forces)
-        if (contains_nonsmooth(e)) return true;
-    for (const ConstraintEquations& c : eq.constraints)
-        if (contains_nonsmooth(c.position) || contains_nonsmooth(c.velocity)) return true;
-    for (const DeclaredOutput& o : model.outputs)
-        if (contains_nonsmooth(o.expr.expr)) return true;
-    return false;
+    std::vector<GiNaC::ex> exprs{eq.L, eq.energy};
+    exprs.insert(exprs.end(), eq.f.begin(), eq.f.end());
+    exprs.insert(exprs.end(), eq.generalized_forces.begin(), eq.generalized_forces.end());
+    for (const ConstraintEquations& c : eq.constraints) exprs.insert(exprs.end(), {c.position, c.velocity});
+    for (const DeclaredOutput& o : model.outputs) exprs.push_back(o.expr.expr);
+    return contains_nonsmooth(exprs);  // the f_i share most of their subexpressions: each looked at once
 }
 
 /// A switching surface's function as printed (sign(v - x'), max(a, b)), without the sign that an odd function's

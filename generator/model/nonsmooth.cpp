@@ -158,11 +158,13 @@ namespace {
 ex signs_of_quotients(const ex& product);
 }  // namespace
 
-bool contains_nonsmooth(const ex& e) {
+bool contains_nonsmooth(const ex& e) { return contains_nonsmooth(std::vector<ex>{e}); }
+
+bool contains_nonsmooth(const std::vector<ex>& exprs) {
     // Each distinct node once, through the stored children (a preorder walk by op() built a node per term and
     // met a shared subexpression once per occurrence: a tenth of emitting the 60-link pendulum).
     std::unordered_set<const GiNaC::basic*> seen;
-    std::vector<ex> stack{e};
+    std::vector<ex> stack(exprs.rbegin(), exprs.rend());
     while (!stack.empty()) {
         const ex x = std::move(stack.back());
         stack.pop_back();

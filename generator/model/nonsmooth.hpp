@@ -33,6 +33,8 @@ bool is_nonsmooth_function(const GiNaC::ex& e);
 
 /// Whether e holds one of them anywhere.
 bool contains_nonsmooth(const GiNaC::ex& e);
+/// Whether any of `exprs` does: a subexpression they share is looked at once.
+bool contains_nonsmooth(const std::vector<GiNaC::ex>& exprs);
 
 /// Roots of squares read for real numbers: sqrt(x^2) = |x|, (x^2)^(3/2) = |x|^3, sqrt(l^2 x^2) = |l| |x|, so that a
 /// quadratic drag written −k θ' sqrt(θ'^2) has the derivative 2k|θ'|, defined at rest.
