@@ -1,6 +1,7 @@
 /** @file rest_linearization.cpp  Coefficients of the equations linearized about rest (rest_linearization.hpp). */
 #include "mechanics/rest_linearization.hpp"
 
+#include "mechanics/differentiator.hpp"
 #include "mechanics/pole_free_subs.hpp"
 #include "model/nonsmooth.hpp"
 
@@ -134,16 +135,28 @@ RestLinearization linearize_about_rest(const GiNaC::ex& L, const std::vector<GiN
     r.M.assign(n, std::vector<GiNaC::ex>(n));
     r.K.assign(n, std::vector<GiNaC::ex>(n));
     r.D.assign(n, std::vector<GiNaC::ex>(n));
+    // One remembered Differentiator per variable over every expression, skipping the parts without it
+    // (mechanics/differentiator.hpp): GiNaC's diff() of L and its n derivatives, n² walks of whole trees, was
+    // the 60-link pendulum's 19–30 s here.
+    install_chain_rule();
+    std::vector<GiNaC::ex> variables(q.begin(), q.end());
+    variables.insert(variables.end(), qd.begin(), qd.end());
+    SymbolSupport support(variables);
+    std::vector<Differentiator> d_dq, d_dqd;
+    for (std::size_t j = 0; j < n; ++j) {
+        d_dq.emplace_back(q[j], &support);
+        d_dqd.emplace_back(qd[j], &support);
+    }
     for (std::size_t i = 0; i < n; ++i) {
-        const GiNaC::ex dL = L.diff(qd[i]);
+        const GiNaC::ex dL = d_dqd[i](L);
         r.beta[i] = at_rest(dL);
-        for (std::size_t j = 0; j < n; ++j) r.M[i][j] = at_rest(dL.diff(qd[j]));
-        r.gradient[i] = -L0.diff(q[i]) - at_rest(Q[i]);
+        for (std::size_t j = 0; j < n; ++j) r.M[i][j] = at_rest(d_dqd[j](dL));
+        r.gradient[i] = -d_dq[i](L0) - at_rest(Q[i]);
     }
     r.D_defined.assign(n, std::vector<bool>(n, true));
     for (std::size_t i = 0; i < n; ++i)
         for (std::size_t j = 0; j < n; ++j) {
-            r.K[i][j] = r.gradient[i].diff(q[j]);
+            r.K[i][j] = d_dq[j](r.gradient[i]);
             const std::optional<GiNaC::ex> dQ = derivative_at_rest(Q[i], qd[j], qd, rest);
             if (!dQ) {
                 r.D_defined[i][j] = false;
@@ -153,7 +166,7 @@ RestLinearization linearize_about_rest(const GiNaC::ex& L, const std::vector<GiN
                                       " at rest (its one-sided limits at " + vj +
                                       " = 0 differ: a sign, or a kink, there)");
             }
-            r.D[i][j] = r.beta[i].diff(q[j]) - r.beta[j].diff(q[i]) - (dQ ? *dQ : GiNaC::ex(0));
+            r.D[i][j] = d_dq[j](r.beta[i]) - d_dq[i](r.beta[j]) - (dQ ? *dQ : GiNaC::ex(0));
         }
     return r;
 }
