@@ -487,6 +487,7 @@ void ExprDag::note_angles(const std::vector<Term>& roots) {
             angles_.emplace(n.args[0], true);
         for (std::size_t i = 0; i < n.args.size(); ++i) {
             const NodeId a = n.args[i];
+            if (a < 0) continue;
             use(a, n.op == Op::Pow || (n.op == Op::Mul && !n.coeffs[i].is_equal(1)) ? 2 : 1);
             if (!seen[static_cast<std::size_t>(a)]) {
                 seen[static_cast<std::size_t>(a)] = 1;

@@ -35,15 +35,10 @@ class Finder {
         : model_(model), eq_(eq), n_(model.dof()), support_(symbols(model)) {
         // Which of t, q, q̇, q̈ a node holds, from one walk of each tree (SymbolSupport): e.has(x) for every
         // coordinate, on every term and lever, was most of finding the 60-link pendulum's tree.
-        std::vector<GiNaC::ex> state{model.t}, velocities, all_q;
-        for (const Coordinate& c : model.coordinates) {
-            state.insert(state.end(), {c.q, c.qd, c.qdd});
-            velocities.push_back(c.qd);
-            all_q.push_back(c.q);
-        }
-        moving_ = support_.mask(state);
-        time_or_velocity_ = support_.mask(velocities);
-        time_or_velocity_[0] |= support_.mask({model.t})[0];
+        std::vector<GiNaC::ex> time_or_velocity{model.t};
+        for (const Coordinate& c : model.coordinates) time_or_velocity.push_back(c.qd);
+        moving_ = support_.mask(symbols(model));
+        time_or_velocity_ = support_.mask(time_or_velocity);
         for (std::size_t k = 0; k < n_; ++k) {
             velocity_.push_back(support_.mask({model.coordinates[k].qd}));
             std::vector<GiNaC::ex> others;
