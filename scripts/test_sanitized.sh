@@ -13,7 +13,12 @@ source scripts/ccache_env.sh
 quick=0
 [[ "${1:-}" == "--quick" ]] && quick=1
 # Also for the build: it runs the sanitized eomgen (model headers) and the test programs (test discovery).
-export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1"
+# intercept_tls_get_addr=0: up to GCC 13 the runtime's __tls_get_addr interceptor takes a dynamic TLS block that
+# happens to start 16 bytes past a page boundary for a pre-2.25 glibc block and reads the two words before it as
+# that block's bounds; LeakSanitizer's tracer then dies at exit ("Tracer caught signal 11"), by chance of where
+# malloc put the block. Open MPI's dlopen'd components have dynamic TLS: a CI run lost
+# cli:mpi_ensemble_equals_single_process so, with no leak reported (the same run passes 12 of 12 here).
+export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1:intercept_tls_get_addr=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan.supp:print_suppressions=0"
 build="${EOMGEN_SANITIZE_BUILD_DIR:-build-sanitize}"
