@@ -35,6 +35,16 @@ MODELS = [
     {"name": "friction_door", "file": "examples/friction_door.toml", "column": "psi", "sigma": 0.0157,
      "run": ["--t-end", "4.4", "--samples", "299"],
      "free": [("theta", 0.0234, 1.2, "0.001:0.5"), ("tau_f", 1.5, 0.75, "0:10")]},
+    # The damped pendulum's data with 5 % of the samples thrown off by 0.2-0.5 rad (outliers), fitted by least
+    # squares and by Huber's loss at 3 times the noise (--loss).
+    {"name": "damped_pendulum_outliers", "file": "models/damped_pendulum.toml", "column": "phi", "sigma": 0.01,
+     "run": ["--t-end", "10", "--samples", "999"], "outliers": 0.05,
+     "label": "damped_pendulum, 5 % outliers, least squares",
+     "free": [("l", 1.0, 1.3, "0.1:10"), ("c", 0.2, 0.75, "0:2")]},
+    {"name": "damped_pendulum_huber", "file": "models/damped_pendulum.toml", "column": "phi", "sigma": 0.01,
+     "run": ["--t-end", "10", "--samples", "999"], "outliers": 0.05, "loss": "huber:0.03",
+     "label": "damped_pendulum, 5 % outliers, `--loss huber:0.03`",
+     "free": [("l", 1.0, 1.3, "0.1:10"), ("c", 0.2, 0.75, "0:2")]},
 ]
 
 
@@ -50,7 +60,7 @@ def truth(eomgen, model, work):
 
 def fit(eomgen, model, data_path, jacobian="sensitivities", extra=()):
     args = [eomgen, "fit", os.path.join(ROOT, model["file"]), data_path, "--format", "json", "--quiet",
-            "--jacobian", jacobian]
+            "--jacobian", jacobian, "--loss", model.get("loss", "squared")]
     for name, value, start, bounds in model["free"]:
         args += ["--free", f"{name}={value * start:.6g}:{bounds}"]
     for spec in extra:
@@ -78,7 +88,10 @@ def measure(cfg, work, smoke, log):
             with open(path, "w") as fh:
                 fh.write(f"t [s],{header}\n")
                 for t, q in series:
-                    fh.write(f"{t!r},{q + rng.gauss(0.0, model['sigma']):.9g}\n")
+                    y = q + rng.gauss(0.0, model["sigma"])
+                    if model.get("outliers") and rng.random() < model["outliers"]:
+                        y += rng.choice((-1.0, 1.0)) * rng.uniform(0.2, 0.5)
+                    fh.write(f"{t!r},{y:.9g}\n")
             r = fit(eomgen, model, path)
             converged += bool(r["converged"])
             iterations.append(r["iterations"])
@@ -142,7 +155,7 @@ def render(results, command, date, machine_line):
         ratio = ", ".join(f"{name} {spread[name]['reported'] / spread[name]['scatter']:.2f}" for name, *_ in model["free"]
                           if name in spread)
         offset = ", ".join(f"{name} {spread[name]['bias']:+.2f} σ" for name, *_ in model["free"] if name in spread)
-        lines.append(f"| {model['name']} | {m['samples']} of {model['column']} | {m['sigma']:g} rad | {free} | "
+        lines.append(f"| {model.get('label', model['name'])} | {m['samples']} of {model['column']} | {m['sigma']:g} rad | {free} | "
                      f"{within} | {100.0 * m['all_inside'] / r['trials']:.0f} % | {ratio} | {offset} | "
                      f"{m['converged']}/{r['trials']} | {m['mean_iterations']:.1f} |")
     per = lambda t: t["seconds"] / max(t["iterations"], 1)  # noqa: E731

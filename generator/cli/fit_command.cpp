@@ -17,6 +17,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -79,6 +80,48 @@ std::string direction(const std::vector<FreeValue>& free, const Eigen::VectorXd&
     return os.str();
 }
 
+/// --set or --init split by experiment: `shared` for every experiment, own[e] experiment e's (K:NAME=VALUE, K the
+/// data file's place from 1, the prefix removed).
+struct ByExperiment {
+    std::vector<std::string> shared;
+    std::vector<std::vector<std::string>> own;
+};
+
+ByExperiment by_experiment(const std::vector<std::string>& specs, std::size_t experiments, const char* option) {
+    ByExperiment out;
+    out.own.resize(experiments);
+    for (const std::string& spec : specs) {
+        std::size_t digits = 0;
+        while (digits < spec.size() && std::isdigit(static_cast<unsigned char>(spec[digits]))) ++digits;
+        if (digits == 0 || digits >= spec.size() || spec[digits] != ':') {
+            out.shared.push_back(spec);
+            continue;
+        }
+        const std::string number = spec.substr(0, digits);
+        const std::size_t k = number.size() > 6 ? 0 : std::size_t(std::stoul(number));
+        if (k < 1 || k > experiments)
+            throw sim::UsageError(std::string(option) + " " + spec + ": there is no experiment " + number + " (K: is " +
+                                  "the place of a data file, from 1; there " +
+                                  (experiments == 1 ? "is 1 data file" : "are " + std::to_string(experiments) + " data files") + ")");
+        out.own[k - 1].push_back(spec.substr(digits + 1));
+    }
+    return out;
+}
+
+/// ", its own m = 1.5 kg, phi = 0.5 rad": what one experiment sets for itself (empty when nothing).
+std::string own_settings(const std::vector<std::string>& set, const std::vector<std::string>& init) {
+    std::string text;
+    for (const auto* list : {&set, &init})
+        for (const std::string& a : *list) {
+            const auto [name, v] = sim::parse_assignment(a, "--set");
+            const int p = sim::index_of(TableModel::param_names, name);
+            const std::string unit = list == &set ? (p >= 0 ? param_unit<TableModel>(std::size_t(p)) : "")
+                                                  : state_unit<TableModel>(std::size_t(sim::index_of(TableModel::state_names, name)));
+            text += (text.empty() ? "; its own " : ", ") + name + " = " + value(v, unit);
+        }
+    return text;
+}
+
 /// "model:   damped_pendulum (…)" and the parameters held fixed, "fixed:   m = 1 kg, g = 9.81 m/s^2".
 void print_heading(const TableModel::Params& params, const std::vector<FreeValue>& free, std::ostream& os) {
     const std::string title = TableModel::title, source = TableModel::source;
@@ -98,14 +141,15 @@ void print_heading(const TableModel::Params& params, const std::vector<FreeValue
 }
 
 void print_text(const std::vector<FreeValue>& free, const std::vector<MeasuredSeries>& experiments,
-                const FitOutcome& r, const sim::Options& o, const std::string& jacobian, std::ostream& os) {
+                const std::vector<std::string>& own, const FitOutcome& r, const sim::Options& o,
+                const std::string& jacobian, const FitLoss& loss, std::ostream& os) {
     for (std::size_t e = 0; e < experiments.size(); ++e) {
         const MeasuredSeries& data = experiments[e];
         std::string columns;
         for (const auto& n : data.names) columns += (columns.empty() ? "" : ", ") + n;
         os << "data:    " << (experiments.size() > 1 ? "[" + std::to_string(e + 1) + "] " : "") << data.path << ": "
            << data.t.size() << " times x " << data.names.size() << " column" << (data.names.size() == 1 ? "" : "s")
-           << " (" << columns << ")\n";
+           << " (" << columns << ")" << own[e] << "\n";
     }
     os << "         " << r.residuals << " measurements, " << free.size() << " unknowns\n";
     os << "solver:  Levenberg-Marquardt (Ceres), " << r.iterations << " iterations (" << r.trajectories
@@ -114,18 +158,26 @@ void print_text(const std::vector<FreeValue>& free, const std::vector<MeasuredSe
     os << "         the Jacobian from " << (jacobian == "differences" ? "central differences of trajectories" : "the sensitivities")
        << ", " << o.method << " at rtol " << o.rtol << ", atol " << o.atol
        << "\n";
-    os << "estimates (+- standard error, from J at the solution and the residuals' variance):\n";
+    if (loss.name != "squared")
+        os << "loss:    " << loss.name << " with scale " << value(loss.scale, "", 4) << ": " << r.beyond_scale << " of "
+           << r.residuals << " residuals beyond it count less than in least squares\n";
+    os << "estimates (+- standard error, from J at the solution and the residuals' "
+       << (loss.name == "squared" ? "variance" : "spread under the loss (Huber's M-estimator covariance)") << "):\n";
     for (std::size_t i = 0; i < free.size(); ++i) {
         const std::string unit = unit_of(free[i]);
         os << "  " << free[i].name << " = " << value(r.estimate[i], unit);
-        if (std::isnan(r.standard_error[i]))
+        if (!r.caveat.empty())
+            os << " +- -";
+        else if (std::isnan(r.standard_error[i]))
             os << " +- (not determined by the data)";
         else
             os << " +- " << value(r.standard_error[i], unit, 3);
         os << "   (start " << value(free[i].start) << ")\n";
     }
     os << "residuals: RMS " << value(r.rms, "", 4) << ", s = " << value(r.residual_sigma, "", 4) << " with "
-       << r.residuals - free.size() << " degrees of freedom\n";
+       << r.residuals - free.size() << " degrees of freedom"
+       << (loss.name == "squared" ? "" : " (s: the scale of the robust estimate)") << "\n";
+    if (!r.caveat.empty()) os << "note:    " << r.caveat << "\n";
     if (free.size() > 1) {
         os << "correlation:\n" << std::setw(14) << "";
         for (const auto& f : free) os << std::setw(12) << f.name;
@@ -150,11 +202,29 @@ void print_text(const std::vector<FreeValue>& free, const std::vector<MeasuredSe
               "of them; fix one with --set, or add data that separate them\n";
 }
 
+/// {"m": 1.5, "phi": 0.5}: one experiment's own settings, as numbers in SI.
+std::string json_settings(const std::vector<std::string>& assignments) {
+    std::string text;
+    for (const std::string& a : assignments) {
+        const auto [name, v] = sim::parse_assignment(a, "--set");
+        text += (text.empty() ? "" : ", ") + json_string(name) + ": " + json_number(v);
+    }
+    return "{" + text + "}";
+}
+
 void print_json(const std::vector<FreeValue>& free, const std::vector<MeasuredSeries>& experiments,
-                const FitOutcome& r, std::ostream& os) {
-    std::string paths;
-    for (const MeasuredSeries& d : experiments) paths += (paths.empty() ? "" : ", ") + json_string(d.path);
+                const ByExperiment& set, const ByExperiment& init, const FitOutcome& r, const FitLoss& loss,
+                std::ostream& os) {
+    std::string paths, own;
+    for (std::size_t e = 0; e < experiments.size(); ++e) {
+        paths += (e ? ", " : "") + json_string(experiments[e].path);
+        own += std::string(e ? "," : "") + "\n    {\"data\": " + json_string(experiments[e].path) +
+               ", \"set\": " + json_settings(set.own[e]) + ", \"init\": " + json_settings(init.own[e]) + "}";
+    }
     os << "{\n  \"model\": " << json_string(TableModel::name) << ",\n  \"data\": [" << paths << "]"
+       << ",\n  \"experiments\": [" << own << "\n  ]"
+       << ",\n  \"loss\": {\"name\": " << json_string(loss.name) << ", \"scale\": " << json_number(loss.scale)
+       << ", \"beyond_scale\": " << r.beyond_scale << "}"
        << ",\n  \"measurements\": " << r.residuals << ",\n  \"converged\": " << (r.converged ? "true" : "false")
        << ",\n  \"iterations\": " << r.iterations << ",\n  \"integrations\": " << r.trajectories
        << ",\n  \"solve_seconds\": " << json_number(r.solve_seconds) << ",\n  \"termination\": " << json_string(r.termination)
@@ -171,6 +241,7 @@ void print_json(const std::vector<FreeValue>& free, const std::vector<MeasuredSe
         os << "]";
     }
     os << "],\n  \"rms\": " << json_number(r.rms) << ",\n  \"residual_sigma\": " << json_number(r.residual_sigma)
+       << ",\n  \"caveat\": " << (r.caveat.empty() ? "null" : json_string(r.caveat))
        << ",\n  \"undetermined\": [";
     for (std::size_t u = 0; u < r.undetermined.size(); ++u) {
         os << (u ? ", " : "") << "{";
@@ -239,8 +310,15 @@ FitCommand::FitCommand(CLI::App& app) {
     fit_->add_option("--plot", plot_, "Plot the data against the fit and the residuals to FILE.png or FILE.svg (gnuplot)");
     fit_->add_option("--max-iterations", max_iterations_, "Largest number of Levenberg-Marquardt iterations")
         ->capture_default_str();
-    fit_->add_option("--set", options_.set, "Parameter value, NAME=VALUE (the fixed values; repeatable)");
-    fit_->add_option("--init", options_.init, "Initial state, NAME=VALUE (repeatable)");
+    fit_->add_option("--set", options_.set,
+                     "Parameter value, NAME=VALUE (the fixed values; repeatable); K:NAME=VALUE for experiment K only "
+                     "(the K-th data file)");
+    fit_->add_option("--init", options_.init,
+                     "Initial state, NAME=VALUE (repeatable); K:NAME=VALUE for experiment K only (the K-th data file)");
+    fit_->add_option("--loss", loss_,
+                     "squared (least squares), or a robust loss against outliers with its scale in the residuals' "
+                     "units after --weight: huber:S, soft_l1:S, cauchy:S, arctan:S, tukey:S")
+        ->capture_default_str();
     fit_->add_option("--method", options_.method, "dopri5, dop853, adams or radau5")->capture_default_str();
     fit_->add_option("--rtol", options_.rtol, "Relative tolerance of the integrations")->capture_default_str();
     fit_->add_option("--atol", options_.atol, "Absolute tolerance of the integrations")->capture_default_str();
@@ -302,9 +380,19 @@ int FitCommand::fit_model() {
     }
     const std::string text = read_model_file(model_path_);
     const Model model = parse_model(text, model_path_);
+    const FitLoss loss = parse_loss(loss_);
     sim::Options o = options_;
     o.model = model.name;
+    // --set and --init for every experiment, and each experiment's own (K:NAME=VALUE).
+    ByExperiment set = by_experiment(o.set, data_paths_.size(), "--set");
+    ByExperiment init = by_experiment(o.init, data_paths_.size(), "--init");
+    o.set = set.shared;
+    o.init = init.shared;
     if (!options_in_si(declared_units(model), o.set, o.init, "eomgen fit")) return 2;
+    for (std::size_t e = 0; e < data_paths_.size(); ++e) {
+        const std::string program = "eomgen fit: experiment " + std::to_string(e + 1);
+        if (!options_in_si(declared_units(model), set.own[e], init.own[e], program.c_str())) return 2;
+    }
     auto header = [&] {
         progress("deriving " + model_path_);
         const Equations eq = derive_equations(model);
@@ -328,17 +416,45 @@ int FitCommand::fit_model() {
     }
     std::vector<MeasuredSeries> data;
     for (const std::string& path : data_paths_) data.push_back(read_measured(path, measurable));
-    const std::vector<FreeValue> free = parse_free(free_, params, x0, data.size());
+    std::vector<ExperimentStart> starts;
+    std::vector<std::string> own;
+    for (std::size_t e = 0; e < data.size(); ++e) {
+        ExperimentStart start{params, x0};
+        sim::Options mine;
+        mine.set = set.own[e];
+        mine.init = init.own[e];
+        try {
+            sim::apply_settings<TableModel>(mine, start.params, start.x0);
+        } catch (const sim::UsageError& err) {  // "--set mass=2: ..." said as the user wrote it, "--set 2:mass=2"
+            std::string what = err.what();
+            const std::size_t space = what.find(' ');
+            if (what.rfind("--", 0) == 0 && space != std::string::npos) what.insert(space + 1, std::to_string(e + 1) + ":");
+            throw sim::UsageError(what);
+        }
+        starts.push_back(start);
+        own.push_back(own_settings(set.own[e], init.own[e]));
+    }
+    const std::vector<FreeValue> free = parse_free(free_, starts);
+    // A parameter fitted is one value for every experiment: it cannot also be one experiment's own.
+    for (std::size_t e = 0; e < data.size(); ++e)
+        for (const std::string& a : set.own[e]) {
+            const std::string name = sim::parse_assignment(a, "--set").first;
+            for (const FreeValue& f : free)
+                if (f.name == name)
+                    throw sim::UsageError("--set " + std::to_string(e + 1) + ":" + a + ": " + name +
+                                          " is free, one value fitted for every experiment; give it per experiment or "
+                                          "free it, not both");
+        }
     progress("fitting");
-    const FitOutcome r = fit(o, params, x0, free, data, weights, max_iterations_,
+    const FitOutcome r = fit(o, starts, free, data, weights, max_iterations_, loss,
                              jacobian_ == "differences" ? FitJacobian::Differences : FitJacobian::Sensitivities);
 
     std::ostringstream report;
     if (format_ == "json") {
-        print_json(free, data, r, report);
+        print_json(free, data, set, init, r, loss, report);
     } else {
         print_heading(params, free, report);
-        print_text(free, data, r, o, jacobian_, report);
+        print_text(free, data, own, r, o, jacobian_, loss, report);
     }
     // The plot reads the fitted CSV: --csv's, or a private temporary one.
     std::optional<TempDir> plot_dir;

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <memory>
 #include <set>
+#include <sstream>
 #include <utility>
 
 namespace eomgen::cli {
@@ -30,6 +31,50 @@ double number(const std::string& text, const std::string& spec) {
         throw UsageError("--free " + spec + ": " + e.what());
     }
 }
+
+/// The loss of each residual, ½ρ(r²) (Ceres' functions), handed to Ceres as the residual sign(r) sqrt(ρ(r²)), whose
+/// half square is that cost, with the Jacobian row d/dθ = ρ'(r²) r / sqrt(ρ(r²)) dr/dθ: Ceres' own loss would apply
+/// to the norm of a whole residual block, here a whole experiment.
+class Robust {
+  public:
+    explicit Robust(const FitLoss& loss) {
+        const double a = loss.scale;
+        if (loss.name == "huber") f_ = std::make_unique<ceres::HuberLoss>(a);
+        else if (loss.name == "soft_l1") f_ = std::make_unique<ceres::SoftLOneLoss>(a);
+        else if (loss.name == "cauchy") f_ = std::make_unique<ceres::CauchyLoss>(a);
+        else if (loss.name == "arctan") f_ = std::make_unique<ceres::ArctanLoss>(a * a);  // its a is in r²'s units
+        else if (loss.name == "tukey") f_ = std::make_unique<ceres::TukeyLoss>(a);
+    }
+
+    /// ρ, ρ', ρ'' at s = r² (s, 1, 0 for least squares).
+    void rho(double s, double out[3]) const {
+        if (f_) {
+            f_->Evaluate(s, out);
+        } else {
+            out[0] = s;
+            out[1] = 1;
+            out[2] = 0;
+        }
+    }
+
+    /// The residual Ceres sees in place of r, and the factor of r's Jacobian row that gives its row.
+    double residual(double r, double& factor) const {
+        factor = 1;
+        if (!f_) return r;
+        double p[3];
+        f_->Evaluate(r * r, p);
+        if (r == 0 || p[0] <= 0) {
+            factor = std::sqrt(std::max(p[1], 0.0));
+            return 0;
+        }
+        const double root = std::sqrt(p[0]);
+        factor = p[1] * std::abs(r) / root;
+        return r > 0 ? root : -root;
+    }
+
+  private:
+    std::unique_ptr<ceres::LossFunction> f_;
+};
 
 /// The trajectory and its sensitivities at the data's times, by the run's method; false (with the message) when the
 /// integration fails at these values (Ceres then tries a shorter step).
@@ -54,13 +99,13 @@ struct Series {
     const std::vector<FreeValue>& free;
     const MeasuredSeries& data;
     Eigen::VectorXd w;
+    const Robust& loss;
     std::size_t* count;
     std::vector<std::size_t> mine;  ///< indices into `free`: the parameters and this experiment's initial values
 
-    Series(const sim::Options& o, const TableModel::Params& p, const TableModel::State& x0,
-           const std::vector<FreeValue>& free, const MeasuredSeries& data, Eigen::VectorXd w, std::size_t* count,
-           int experiment)
-        : o(o), p(p), x0(x0), free(free), data(data), w(std::move(w)), count(count) {
+    Series(const sim::Options& o, const ExperimentStart& start, const std::vector<FreeValue>& free,
+           const MeasuredSeries& data, Eigen::VectorXd w, const Robust& loss, std::size_t* count, int experiment)
+        : o(o), p(start.params), x0(start.x0), free(free), data(data), w(std::move(w)), loss(loss), count(count) {
         for (std::size_t i = 0; i < free.size(); ++i)
             if (free[i].experiment < 0 || free[i].experiment == experiment) mine.push_back(i);
     }
@@ -92,10 +137,11 @@ struct Series {
 };
 
 /// r = w (x(t_j) − y_j) over one experiment's samples and measured columns, J = w S in the columns of its unknowns
-/// (0 in the other experiments' initial values): Ceres' cost of one whole series.
+/// (0 in the other experiments' initial values): Ceres' cost of one whole series. With a robust loss Ceres gets
+/// each r and its row through Robust; `plain` leaves them as they are (the statistics at the solution).
 class SeriesCost : public ceres::CostFunction {
   public:
-    explicit SeriesCost(Series s) : s_(std::move(s)) {
+    explicit SeriesCost(Series s, bool plain = false) : s_(std::move(s)), plain_(plain) {
         for (std::size_t i : s_.mine) columns_.push_back(s_.free[i].column);
         set_num_residuals(int(s_.data.y.size()));
         mutable_parameter_block_sizes()->push_back(int(s_.free.size()));
@@ -116,12 +162,14 @@ class SeriesCost : public ceres::CostFunction {
                 const Eigen::Index nx = sample.x.size(), s = data.index[std::size_t(c)];
                 const bool state = s < nx;
                 const Eigen::Index row = j * m + c;
-                residuals[row] = s_.w(c) * ((state ? sample.x(s) : sample.y(s - nx)) - data.y(j, c));
+                double factor = 1;
+                const double r = s_.w(c) * ((state ? sample.x(s) : sample.y(s - nx)) - data.y(j, c));
+                residuals[row] = plain_ ? r : s_.loss.residual(r, factor);
                 if (jacobians && jacobians[0]) {
                     for (Eigen::Index i = 0; i < k; ++i) jacobians[0][row * k + i] = 0;
                     for (std::size_t i = 0; i < s_.mine.size(); ++i)
                         jacobians[0][row * k + Eigen::Index(s_.mine[i])] =
-                            s_.w(c) * (state ? sample.S(s, Eigen::Index(i)) : sample.Y(s - nx, Eigen::Index(i)));
+                            factor * s_.w(c) * (state ? sample.S(s, Eigen::Index(i)) : sample.Y(s - nx, Eigen::Index(i)));
                 }
             }
         return true;
@@ -131,6 +179,7 @@ class SeriesCost : public ceres::CostFunction {
 
   private:
     Series s_;
+    bool plain_;
     std::vector<SensitivityColumn> columns_;
     mutable std::string last_failure_;
 };
@@ -181,7 +230,8 @@ class SeriesResiduals {
                 TableModel::outputs(sample.t, sample.x.head(nx / 2), sample.x.tail(nx / 2), p, y);
             for (Eigen::Index c = 0; c < m; ++c) {
                 const Eigen::Index s = data.index[std::size_t(c)];
-                residuals[j * m + c] = s_.w(c) * ((s < nx ? sample.x(s) : y(s - nx)) - data.y(j, c));
+                double factor;
+                residuals[j * m + c] = s_.loss.residual(s_.w(c) * ((s < nx ? sample.x(s) : y(s - nx)) - data.y(j, c)), factor);
             }
         }
         return true;
@@ -193,11 +243,36 @@ class SeriesResiduals {
 
 }  // namespace
 
-std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const TableModel::Params& params,
-                                  const TableModel::State& x0, std::size_t experiments) {
+FitLoss parse_loss(const std::string& spec) {
+    FitLoss loss;
+    const std::size_t colon = spec.find(':');
+    loss.name = spec.substr(0, colon);
+    static const std::set<std::string> robust{"huber", "soft_l1", "cauchy", "arctan", "tukey"};
+    if (loss.name == "squared") {
+        if (colon != std::string::npos) throw UsageError("--loss " + spec + ": squared (least squares) has no scale");
+        return loss;
+    }
+    if (!robust.count(loss.name))
+        throw UsageError("--loss " + spec + ": expected squared, or huber, soft_l1, cauchy, arctan or tukey with a scale "
+                         "(huber:0.03: residuals larger than 0.03, in the data's units after --weight, count less)");
+    if (colon == std::string::npos)
+        throw UsageError("--loss " + spec + ": give the scale, " + loss.name +
+                         ":S, in the residuals' units after --weight (two or three times the noise)");
+    try {
+        loss.scale = sim::parse_value(spec.substr(colon + 1));
+    } catch (const UsageError& e) {
+        throw UsageError("--loss " + spec + ": " + e.what());
+    }
+    if (!(loss.scale > 0) || !std::isfinite(loss.scale))
+        throw UsageError("--loss " + spec + ": the scale must be a positive number");
+    return loss;
+}
+
+std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const std::vector<ExperimentStart>& starts) {
     std::vector<FreeValue> free;
     std::set<std::string> seen;
-    const auto values = TableModel::param_values(params);
+    const std::size_t experiments = starts.size();
+    const auto values = TableModel::param_values(starts.at(0).params);
     for (const std::string& spec : specs) {
         // NAME or x0:NAME, then =start, then :lo:hi.
         const bool initial = spec.rfind("x0:", 0) == 0;
@@ -215,7 +290,7 @@ std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const T
                                  sim::did_you_mean(bare, TableModel::state_names) + " (states: " +
                                  sim::list(TableModel::state_names) + ")");
             f.column = {SensitivityColumn::Kind::InitialValue, i};
-            f.start = x0(i);
+            f.start = starts[0].x0(i);
         } else {
             const int i = sim::index_of(TableModel::param_names, bare);
             if (i < 0)
@@ -226,6 +301,7 @@ std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const T
             f.start = values[std::size_t(i)];
         }
         std::string rest = end == std::string::npos ? "" : spec.substr(end);
+        f.experiment = rest.empty() || rest[0] != '=' ? -2 : -1;  // -2 until placed: its start from its experiment
         if (!rest.empty() && rest[0] == '=') {
             const std::size_t colon = rest.find(':');
             f.start = number(rest.substr(1, colon == std::string::npos ? std::string::npos : colon - 1), spec);
@@ -247,21 +323,35 @@ std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const T
     if (free.empty()) throw UsageError("give the unknowns with --free NAME (a parameter) or --free x0:STATE");
     // The parameters first, then each experiment's initial values.
     std::vector<FreeValue> unknowns;
-    for (const FreeValue& f : free)
-        if (f.column.kind == SensitivityColumn::Kind::Parameter) unknowns.push_back(f);
+    for (FreeValue f : free)
+        if (f.column.kind == SensitivityColumn::Kind::Parameter) {
+            f.experiment = -1;
+            unknowns.push_back(f);
+        }
     for (std::size_t e = 0; e < experiments; ++e)
         for (FreeValue f : free)
             if (f.column.kind == SensitivityColumn::Kind::InitialValue) {
-                f.experiment = int(e);
                 if (experiments > 1) f.name += "[" + std::to_string(e + 1) + "]";
+                if (f.experiment == -2) {  // no =start: where this experiment's --init puts it
+                    f.start = starts[e].x0(f.column.index);
+                    if (f.start < f.lower || f.start > f.upper) {
+                        std::ostringstream os;
+                        os << "--free " << f.name << ": experiment " << e + 1 << " starts at " << f.start
+                           << ", outside [" << f.lower << ", " << f.upper << "] (give its start, or --init " << e + 1
+                           << ":" << TableModel::state_names[std::size_t(f.column.index)] << "=...)";
+                        throw UsageError(os.str());
+                    }
+                }
+                f.experiment = int(e);
                 unknowns.push_back(f);
             }
     return unknowns;
 }
 
-FitOutcome fit(const sim::Options& options, const TableModel::Params& params, const TableModel::State& x0,
+FitOutcome fit(const sim::Options& options, const std::vector<ExperimentStart>& starts,
                const std::vector<FreeValue>& free, const std::vector<MeasuredSeries>& data,
-               const std::map<std::string, double>& weights, std::size_t max_iterations, FitJacobian jacobian) {
+               const std::map<std::string, double>& weights, std::size_t max_iterations, const FitLoss& loss,
+               FitJacobian jacobian) {
     const std::size_t k = free.size();
     std::size_t n = 0;
     for (const MeasuredSeries& d : data) n += std::size_t(d.y.size());
@@ -285,29 +375,34 @@ FitOutcome fit(const sim::Options& options, const TableModel::Params& params, co
         if (!found) throw UsageError("--weight " + name + ": no measured column '" + name + "' in the data");
     }
     // What integrate_sensitivities refuses is said before Ceres starts.
-    {
+    for (std::size_t e = 0; e < data.size(); ++e) {
         std::vector<SensitivityColumn> columns;
         for (const FreeValue& f : free)
-            if (f.experiment <= 0) columns.push_back(f.column);
+            if (f.experiment < 0 || f.experiment == int(e)) columns.push_back(f.column);
         try {
-            check_sensitivity_columns<TableModel>(0.0, x0, params, columns);
-        } catch (const std::invalid_argument& e) {
-            throw UsageError(std::string("--free: ") + e.what());
+            check_sensitivity_columns<TableModel>(0.0, starts[e].x0, starts[e].params, columns);
+        } catch (const std::invalid_argument& err) {
+            throw UsageError(std::string("--free: ") + err.what());
         }
     }
+    // A bounded loss (arctan, tukey) is flat where every residual is beyond its scale, as from a poor start: it
+    // starts where Huber's loss of the same scale ends.
+    const bool bounded = loss.name == "arctan" || loss.name == "tukey";
+    Robust robust(bounded ? FitLoss{"huber", loss.scale} : loss);
 
     std::vector<double> theta;
     for (const FreeValue& f : free) theta.push_back(f.start);
     // The exact costs also give J at the solution for the statistics, whichever Jacobian the solver used.
     std::size_t integrations = 0;
-    std::vector<std::unique_ptr<SeriesCost>> exact;
+    std::vector<std::unique_ptr<SeriesCost>> exact, plain;
     std::vector<std::unique_ptr<ceres::CostFunction>> differences;
     ceres::Problem::Options po;
     po.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
     ceres::Problem problem(po);
     for (std::size_t e = 0; e < data.size(); ++e) {
-        const Series series(options, params, x0, free, data[e], w[e], &integrations, int(e));
+        const Series series(options, starts[e], free, data[e], w[e], robust, &integrations, int(e));
         exact.push_back(std::make_unique<SeriesCost>(series));
+        plain.push_back(std::make_unique<SeriesCost>(series, true));
         ceres::CostFunction* cost = exact.back().get();
         if (jacobian == FitJacobian::Differences) {
             auto* numeric =
@@ -335,15 +430,23 @@ FitOutcome fit(const sim::Options& options, const TableModel::Params& params, co
     so.minimizer_progress_to_stdout = false;
     ceres::Solver::Summary summary;
     ceres::Solve(so, &problem, &summary);
+    std::size_t iterations = summary.iterations.size() > 0 ? summary.iterations.size() - 1 : 0;
+    double seconds = summary.total_time_in_seconds;
+    if (bounded) {
+        robust = Robust(loss);
+        ceres::Solve(so, &problem, &summary);
+        iterations += summary.iterations.size() > 0 ? summary.iterations.size() - 1 : 0;
+        seconds += summary.total_time_in_seconds;
+    }
 
     FitOutcome out;
     out.estimate = theta;
-    out.iterations = summary.iterations.size() > 0 ? summary.iterations.size() - 1 : 0;
+    out.iterations = iterations;
     out.converged = summary.termination_type == ceres::CONVERGENCE;
     out.termination = summary.message;
     out.residuals = n;
     out.trajectories = integrations;
-    out.solve_seconds = summary.total_time_in_seconds;
+    out.solve_seconds = seconds;
 
     // J and r at the solution, the experiments' rows one after another; the fitted trajectories (unweighted).
     Eigen::VectorXd r(static_cast<Eigen::Index>(n));
@@ -355,8 +458,8 @@ FitOutcome fit(const sim::Options& options, const TableModel::Params& params, co
         Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Je(rows, Eigen::Index(k));
         const double* blocks[] = {theta.data()};
         double* jac[] = {Je.data()};
-        if (!exact[e]->Evaluate(blocks, re.data(), jac))
-            throw SimulationError("the model cannot be integrated at the fit's estimates: " + exact[e]->last_failure(), 0);
+        if (!plain[e]->Evaluate(blocks, re.data(), jac))
+            throw SimulationError("the model cannot be integrated at the fit's estimates: " + plain[e]->last_failure(), 0);
         r.segment(row, rows) = re;
         J.middleRows(row, rows) = Je;
         row += rows;
@@ -369,6 +472,30 @@ FitOutcome fit(const sim::Options& options, const TableModel::Params& params, co
     const double rss = r.squaredNorm();
     out.rms = std::sqrt(rss / double(n));
     out.residual_sigma = std::sqrt(rss / double(n - k));
+    if (loss.name != "squared") {
+        // Huber's covariance of an M-estimator (Robust Statistics, 1981, 7.6): K² Σψ²/(n − k) / (mean ψ')² (JᵀJ)⁻¹,
+        // ψ(r) = ρ'(r²) r, ψ'(r) = ρ'(r²) + 2 r² ρ''(r²), K = 1 + (k/n) var ψ' / (mean ψ')²; least squares
+        // (ψ = r) gives s² (JᵀJ)⁻¹.
+        double psi2 = 0, dpsi = 0, dpsi2 = 0;
+        for (Eigen::Index i = 0; i < r.size(); ++i) {
+            double p[3];
+            robust.rho(r(i) * r(i), p);
+            const double psi = p[1] * r(i), d = p[1] + 2 * r(i) * r(i) * p[2];
+            psi2 += psi * psi;
+            dpsi += d;
+            dpsi2 += d * d;
+            if (std::abs(r(i)) > loss.scale) ++out.beyond_scale;
+        }
+        const double mean = dpsi / double(n), var = std::max(dpsi2 / double(n) - mean * mean, 0.0);
+        if (mean > 0) {
+            const double K = 1 + double(k) / double(n) * var / (mean * mean);
+            out.residual_sigma = K * std::sqrt(psi2 / double(n - k)) / mean;
+        } else {
+            out.residual_sigma = std::numeric_limits<double>::quiet_NaN();
+            out.caveat = "no standard errors: the residuals lie where the " + loss.name +
+                         " loss bends down (its mean curvature is not positive); a larger scale";
+        }
+    }
 
     // Relative sensitivities: J's columns times |θ| (1 where θ = 0), so that the rank test does not depend on units.
     Eigen::VectorXd scale(static_cast<Eigen::Index>(k));

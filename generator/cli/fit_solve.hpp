@@ -31,6 +31,25 @@ struct FreeValue {
     double lower = -std::numeric_limits<double>::infinity(), upper = std::numeric_limits<double>::infinity();
 };
 
+/// One experiment's fixed values: the parameters and initial state after --set and --init, its own
+/// (--set K:NAME=V, --init K:NAME=V) included. Each starts its integrations there but for the unknowns.
+struct ExperimentStart {
+    TableModel::Params params;
+    TableModel::State x0;
+};
+
+/// The loss each residual r (after --weight) enters the cost with: ½ Σ ρ(r²). Squared is least squares (ρ(s) = s);
+/// the robust ones are Ceres' (huber, soft_l1, cauchy, arctan, tukey) with their scale in the residuals' units:
+/// residuals below it count as in least squares, larger ones less (huber, soft_l1: linearly; cauchy, arctan:
+/// logarithmically or bounded; tukey: not at all beyond the scale).
+struct FitLoss {
+    std::string name = "squared";
+    double scale = 0;
+};
+
+/// --loss squared | NAME:SCALE (UsageError for an unknown name or a scale that is not a positive number).
+FitLoss parse_loss(const std::string& spec);
+
 /// What the fit found.
 struct FitOutcome {
     std::vector<double> estimate;
@@ -42,7 +61,12 @@ struct FitOutcome {
     Eigen::VectorXd singular_values;  ///< of J with its columns scaled by the estimates (relative sensitivities)
     double solve_seconds = 0;        ///< Ceres' time, the integrations included
     double rms = 0;                   ///< sqrt(Σ r² / n) of the weighted residuals at the solution
-    double residual_sigma = 0;        ///< sqrt(Σ r² / (n − k)): the residuals' standard deviation
+    /// The residuals' standard deviation: sqrt(Σ r² / (n − k)); with a robust loss the scale of Huber's M-estimator
+    /// covariance, K sqrt(Σ ψ² / (n − k)) / mean ψ' with ψ(r) = ρ'(r²) r (the standard errors are this times those
+    /// of least squares at the same J).
+    double residual_sigma = 0;
+    std::size_t beyond_scale = 0;     ///< residuals larger than the robust loss's scale (0 for squared)
+    std::string caveat;               ///< why the standard errors are not given, where they are not (else empty)
     std::size_t residuals = 0, iterations = 0;
     std::size_t trajectories = 0;  ///< the solver's integrations (with sensitivities, or without for differences)
     bool converged = false;
@@ -51,22 +75,22 @@ struct FitOutcome {
 };
 
 /// The unknowns given as --free NAME[=start][:lo:hi] (UsageError for an unknown name, a bad number, lo >= hi, a start
-/// outside the bounds); the start defaults to the model's value (after --set and --init). With several experiments
-/// an initial value x0:STATE is one unknown per experiment, named x0:STATE[e] (e from 1), after the parameters.
-std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const TableModel::Params& params,
-                                  const TableModel::State& x0, std::size_t experiments = 1);
+/// outside the bounds); the start defaults to the model's value (after --set and --init: a parameter's from the first
+/// experiment, an initial value's from its own). With several experiments an initial value x0:STATE is one unknown
+/// per experiment, named x0:STATE[e] (e from 1), after the parameters.
+std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const std::vector<ExperimentStart>& starts);
 
 /// Where the solver's Jacobian comes from: the sensitivities (exact), or central differences of whole trajectories
 /// (Ceres' numeric differentiation; for comparison, docs/benchmarks.md section 10).
 enum class FitJacobian { Sensitivities, Differences };
 
-/// Fits the bound TableModel to the experiments `data` (each from x0 but for its own free initial values) with the
-/// run's options (method, tolerances; params and x0 after --set and --init), each column weighted by weights[name]
-/// (default 1). Throws sim::UsageError for a problem with more unknowns than residuals or a method without error
-/// control, and what integrate_sensitivities refuses.
-FitOutcome fit(const sim::Options& options, const TableModel::Params& params, const TableModel::State& x0,
+/// Fits the bound TableModel to the experiments `data` (experiment e from starts[e] but for the unknowns) with the
+/// run's options (method, tolerances), each column weighted by weights[name] (default 1), each residual entering by
+/// `loss`. Throws sim::UsageError for a problem with more unknowns than residuals or a method without error control,
+/// and what integrate_sensitivities refuses.
+FitOutcome fit(const sim::Options& options, const std::vector<ExperimentStart>& starts,
                const std::vector<FreeValue>& free, const std::vector<MeasuredSeries>& data,
-               const std::map<std::string, double>& weights, std::size_t max_iterations,
+               const std::map<std::string, double>& weights, std::size_t max_iterations, const FitLoss& loss = {},
                FitJacobian jacobian = FitJacobian::Sensitivities);
 
 }  // namespace eomgen::cli

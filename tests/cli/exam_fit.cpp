@@ -33,6 +33,34 @@ double json_field(const std::string& json, const std::string& name, const std::s
     return text == "null" ? std::nan("") : std::stod(text);
 }
 
+/// phi of the damped pendulum run with `options` (t-end 6, 301 samples), plus seeded Gaussian noise of 0.01 rad
+/// and, with probability `outliers` per sample, a throw of 0.2-0.5 rad either way; written as `name` in kWork. The
+/// count of samples thrown in `thrown`.
+std::string noisy_phi(const std::vector<std::string>& options, const std::string& name, unsigned seed,
+                      double outliers = 0, int* thrown = nullptr) {
+    const fs::path truth = kWork / ("truth_" + name);
+    std::vector<std::string> args{"run", kModel, "--t-end", "6", "--samples", "300", "--rtol", "1e-12", "--atol",
+                                  "1e-14", "--csv", truth.string(), "--quiet"};
+    args.insert(args.end(), options.begin(), options.end());
+    const Result made = eomgen(args);
+    INFO(made.output);
+    REQUIRE(made.code == 0);
+    const auto rows = read_csv(truth);
+    std::mt19937 rng(seed);
+    std::normal_distribution<double> noise(0.0, 0.01);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::string text = "t [s],phi [rad]\n";
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        double y = std::stod(rows[i][std::size_t(column(rows[0], "phi"))]) + noise(rng);
+        if (outliers > 0 && u(rng) < outliers) {
+            y += (u(rng) < 0.5 ? -1 : 1) * (0.2 + 0.3 * u(rng));
+            if (thrown) ++*thrown;
+        }
+        text += rows[i][0] + "," + std::to_string(y) + "\n";
+    }
+    return write_whole(kWork, name, text).string();
+}
+
 }  // namespace
 
 TEST_CASE("eomgen fit recovers the damped pendulum's l and c within their standard errors", "[fit]") {
@@ -78,21 +106,9 @@ TEST_CASE("eomgen fit recovers the damped pendulum's l and c within their standa
 TEST_CASE("eomgen fit: two experiments share l and c, each with its own initial angle", "[fit]") {
     // The second experiment starts at phi = 0.5 (the first at the file's 1.0); its data are made here, with noise
     // of 0.01 rad from a seeded generator.
-    const fs::path truth = kWork / "truth_half.csv";
-    const Result made = eomgen({"run", kModel, "--init", "phi=0.5", "--t-end", "6", "--samples", "300", "--rtol",
-                                "1e-12", "--atol", "1e-14", "--csv", truth.string(), "--quiet"});
-    INFO(made.output);
-    REQUIRE(made.code == 0);
-    const auto rows = read_csv(truth);
-    std::mt19937 rng(7);
-    std::normal_distribution<double> noise(0.0, 0.01);
-    std::string text = "t [s],phi [rad]\n";
-    for (std::size_t i = 1; i < rows.size(); ++i)
-        text += rows[i][0] + "," + std::to_string(std::stod(rows[i][std::size_t(column(rows[0], "phi"))]) + noise(rng)) +
-                "\n";
-    const fs::path second = write_whole(kWork, "half.csv", text);
+    const std::string second = noisy_phi({"--init", "phi=0.5"}, "half.csv", 7);
     const fs::path csv = kWork / "two.csv";
-    const Result f = eomgen({"fit", kModel, kData, second.string(), "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2",
+    const Result f = eomgen({"fit", kModel, kData, second, "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2",
                              "--free", "x0:phi=0.8", "--format", "json", "--csv", csv.string(), "--quiet"});
     INFO(f.output);
     REQUIRE(f.code == 0);
@@ -106,7 +122,7 @@ TEST_CASE("eomgen fit: two experiments share l and c, each with its own initial 
     CHECK(sb < 0.01);
     // The plot of both experiments against the fit, and their residuals.
     const fs::path svg = kWork / "two.svg";
-    const Result p = eomgen({"fit", kModel, kData, second.string(), "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2",
+    const Result p = eomgen({"fit", kModel, kData, second, "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2",
                              "--free", "x0:phi=0.8", "--plot", svg.string(), "--quiet"});
     INFO(p.output);
     REQUIRE(p.code == 0);
@@ -250,4 +266,118 @@ TEST_CASE("eomgen fit of a model with switching surfaces: the friction door's ti
     REQUIRE(fitted.code == 0);
     CHECK(std::abs(estimate(fitted.output, "tau_f") - 1.5) < 1e-6);
     CHECK(std::abs(estimate(fitted.output, "theta") - 0.0234) < 1e-8);
+}
+
+TEST_CASE("eomgen fit: each experiment with its own settings (--set K:NAME=V, --init K:NAME=V)", "[fit]") {
+    // The second experiment swings a bob of 2 kg from phi = 0.5 (the first: the example's 1 kg from 1 rad). l and c
+    // are shared; the initial angles are fitted per experiment, each from its own --init.
+    const std::string second = noisy_phi({"--set", "m=2", "--init", "phi=0.5"}, "heavy.csv", 11);
+    const std::vector<std::string> common{"fit", kModel, kData, second, "--free", "l=1.3:0.1:10", "--free",
+                                          "c=0.1:0:2", "--free", "x0:phi", "--format", "json", "--quiet"};
+    auto with = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args = common;
+        args.insert(args.end(), extra.begin(), extra.end());
+        return eomgen(args);
+    };
+    const Result f = with({"--set", "2:m=2000 g", "--init", "2:phi=0.5"});
+    INFO(f.output);
+    REQUIRE(f.code == 0);
+    const double l = json_field(f.output, "l", "value"), sl = json_field(f.output, "l", "standard_error");
+    const double c = json_field(f.output, "c", "value"), sc = json_field(f.output, "c", "standard_error");
+    const double b = json_field(f.output, "x0:phi\\[2\\]", "value"), sb = json_field(f.output, "x0:phi\\[2\\]", "standard_error");
+    CHECK(std::abs(l - 1.0) < 4 * sl);
+    CHECK(std::abs(c - 0.2) < 4 * sc);
+    CHECK(std::abs(b - 0.5) < 4 * sb);
+    // Each experiment's start: the first's from the model file, the second's from its own --init.
+    CHECK(f.output.find("\"name\": \"x0:phi[1]\", \"value\"") != std::string::npos);
+    CHECK(std::regex_search(f.output, std::regex("\"x0:phi\\[2\\]\", [^}]*\"start\": 0.5\\}")));
+    CHECK(f.output.find("\"set\": {\"m\": 2}, \"init\": {\"phi\": 0.5}") != std::string::npos);
+    const std::regex rms_re("\"rms\": ([0-9.e-]+)");
+    std::smatch m;
+    REQUIRE(std::regex_search(f.output, m, rms_re));
+    const double rms = std::stod(m[1].str());
+    CHECK(rms == Approx(0.01).epsilon(0.1));
+    // Without the second experiment's own mass the model cannot follow its data as closely.
+    const Result wrong = with({"--init", "2:phi=0.5"});
+    INFO(wrong.output);
+    REQUIRE(wrong.code == 0);
+    REQUIRE(std::regex_search(wrong.output, m, rms_re));
+    CHECK(std::stod(m[1].str()) > 1.3 * rms);
+    // The text report says what each experiment sets for itself.
+    const Result t = eomgen({"fit", kModel, kData, second, "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2", "--set",
+                             "2:m=2", "--init", "2:phi=0.5", "--quiet"});
+    INFO(t.output);
+    CHECK(t.output.find("heavy.csv: 301 times x 1 column (phi); its own m = 2 kg, phi = 0.5 rad") != std::string::npos);
+
+    struct Case {
+        std::vector<std::string> options;
+        std::string message;
+    };
+    const std::vector<Case> cases{
+        {{"--set", "3:m=2"}, "--set 3:m=2: there is no experiment 3 (K: is the place of a data file, from 1; there are 2 data files)"},
+        {{"--set", "2:l=2"}, "--set 2:l=2: l is free, one value fitted for every experiment"},
+        {{"--set", "2:mass=2"}, "--set 2:mass=2: damped_pendulum has no parameter 'mass'"},
+        {{"--init", "2:ph=1"}, "--init 2:ph=1: no state 'ph'; did you mean 'phi'?"},
+        {{"--init", "2:phi=2 m"}, "experiment 2: --init phi=2 m: "},
+        {{"--free", "x0:phi_dot:-1:1", "--init", "2:phi_dot=3"}, "--free x0:phi_dot[2]: experiment 2 starts at 3"},
+    };
+    for (const Case& k : cases) {
+        std::vector<std::string> args{"fit", kModel, kData, second, "--free", "l", "--quiet"};
+        args.insert(args.end(), k.options.begin(), k.options.end());
+        const Result r = eomgen(args);
+        INFO(r.output);
+        CHECK(r.code == 2);
+        CHECK(r.output.find(k.message) != std::string::npos);
+    }
+}
+
+TEST_CASE("eomgen fit --loss: robust losses against outliers, with standard errors that stay honest", "[fit]") {
+    // 5 % of the samples thrown off by 0.2-0.5 rad. Least squares keeps the truth inside its errors only by
+    // making them large (its s is the outliers' spread); the robust losses give errors near the clean data's.
+    int thrown = 0;
+    const std::string data = noisy_phi({}, "outliers.csv", 23, 0.05, &thrown);
+    REQUIRE(thrown > 5);
+    const auto run = [&](const std::string& loss) {
+        const Result r = eomgen({"fit", kModel, data, "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2", "--loss", loss,
+                                 "--format", "json", "--quiet"});
+        INFO(loss << "\n" << r.output);
+        REQUIRE(r.code == 0);
+        return r.output;
+    };
+    const std::string squared = run("squared");
+    const double sc_squared = json_field(squared, "c", "standard_error");
+    for (const std::string loss : {"huber:0.03", "soft_l1:0.03", "cauchy:0.03", "arctan:0.03", "tukey:0.05"}) {
+        const std::string out = run(loss);
+        INFO(loss << "\n" << out);
+        const double l = json_field(out, "l", "value"), sl = json_field(out, "l", "standard_error");
+        const double c = json_field(out, "c", "value"), sc = json_field(out, "c", "standard_error");
+        CHECK(std::abs(l - 1.0) < 3 * sl);
+        CHECK(std::abs(c - 0.2) < 3 * sc);
+        CHECK(sc < sc_squared / 3);
+        // The residuals beyond the scale are the ones thrown (give or take a sample near it).
+        const std::regex beyond("\"beyond_scale\": ([0-9]+)");
+        std::smatch m;
+        REQUIRE(std::regex_search(out, m, beyond));
+        CHECK(std::abs(std::stoi(m[1].str()) - thrown) <= 3);
+    }
+    const Result text = eomgen({"fit", kModel, data, "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2", "--loss",
+                                "huber:0.03", "--quiet"});
+    INFO(text.output);
+    CHECK(std::regex_search(text.output, std::regex("loss:    huber with scale 0.03: [0-9]+ of 301 residuals beyond it "
+                                                    "count less than in least squares")));
+    CHECK(text.output.find("(s: the scale of the robust estimate)") != std::string::npos);
+
+    const std::vector<std::pair<std::string, std::string>> bad{
+        {"huber", "--loss huber: give the scale, huber:S"},
+        {"l1:2", "--loss l1:2: expected squared, or huber, soft_l1, cauchy, arctan or tukey"},
+        {"huber:-1", "--loss huber:-1: the scale must be a positive number"},
+        {"huber:x", "--loss huber:x: "},
+        {"squared:1", "--loss squared:1: squared (least squares) has no scale"},
+    };
+    for (const auto& [loss, message] : bad) {
+        const Result r = eomgen({"fit", kModel, kData, "--free", "l", "--loss", loss, "--quiet"});
+        INFO(r.output);
+        CHECK(r.code == 2);
+        CHECK(r.output.find(message) != std::string::npos);
+    }
 }
