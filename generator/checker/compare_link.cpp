@@ -1,6 +1,7 @@
 /** @file compare_link.cpp  One link a = b judged: its role, the comparisons (compare_values.cpp) and the
  * corrections checked before they are printed. */
 #include "checker/checker_internals.hpp"
+#include "checker/indefinite_integral.hpp"
 
 namespace eomgen::checker::detail {
 
@@ -148,6 +149,12 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
     if (rel == Relation::Approx) tol = std::max(tol, 1e-2);
     if (up_to_constant(a, b, tol, r)) return r;
+    if (has_antiderivative(a.value) || has_antiderivative(b.value)) {
+        std::vector<const FreeName*> unknown = a.unknown;
+        unknown.insert(unknown.end(), b.unknown.begin(), b.unknown.end());
+        check_antiderivative(a.value, b.value, unknown, *this, tol, r);
+        return r;
+    }
     // `\frac{3}{2} \ddot x (R-r)\dot\theta + g x \dot\theta = 0`: an equation of motion times a velocity (the time
     // derivative of an energy, before the text cancels the velocity) holds where that equation does.
     std::string divided;

@@ -45,8 +45,14 @@ GiNaC::ex Parser::integral(std::size_t at) {
             has_hi = true;
         }
     }
-    if (!has_lo && !has_hi) fail(at, "an indefinite integral is not evaluated");
-    if (!has_lo || !has_hi) fail(at, "an integral over a region is not evaluated");
+    if (has_lo != has_hi) fail(at, "an integral over a region is not evaluated");
+    if (!has_lo) return indefinite_integral(at);
+    return integral_body(at, lo, hi, true);
+}
+
+/// The integrand up to its differential d<variable> (pos_ after \int and its limits): ∫_lo^hi f dx evaluated where
+/// GiNaC can, or, not `definite`, antiderivative(f, x) held.
+GiNaC::ex Parser::integral_body(std::size_t at, GiNaC::ex lo, GiNaC::ex hi, bool definite) {
     frames_.push_back({});
     GiNaC::ex body = 1;
     while (!frames_.back().found) {
@@ -88,6 +94,7 @@ GiNaC::ex Parser::integral(std::size_t at) {
         }
     }
     remove_uses(f.var, offset_of(at));
+    if (!definite) return antiderivative(body, var).hold();
     const GiNaC::symbol bound(f.var, f.var);
     body = body.subs(var == bound);
     lo = lo.subs(var == bound);  // a limit in the variable itself is nonsense; keep it visible
@@ -97,6 +104,26 @@ GiNaC::ex Parser::integral(std::size_t at) {
         v = v.eval_integ();
     } catch (const std::exception&) {
     }
+    return v;
+}
+
+/// ∫ f dx without limits (pos_ after \int): antiderivative(f, x), held, when x is a coordinate of the model or the
+/// time and one differential closes it; the checker judges it up to a constant of integration
+/// (indefinite_integral.hpp). Anything else (∫ v² dm over a body, ∫ σ dx dz over a region) is not read, as before.
+GiNaC::ex Parser::indefinite_integral(std::size_t at) {
+    GiNaC::ex v;
+    try {
+        v = integral_body(at, 0, 0, false);
+    } catch (const ParseFailure&) {
+        fail(at, "an indefinite integral is not evaluated");
+    }
+    const bool variable = std::any_of(ctx_.coordinates.begin(), ctx_.coordinates.end(),
+                                      [&](const GiNaC::ex& q) { return q.is_equal(v.op(1)); }) ||
+                          v.op(1).is_equal(ctx_.time);
+    // A second differential (`d z'`) makes it an integral over a region.
+    const Token* next = peek();
+    if (!variable || (next && next->kind == Tok::Letter && next->text == "d" && starts_name(peek_at(1))))
+        fail(at, "an indefinite integral is not evaluated");
     return v;
 }
 

@@ -99,6 +99,10 @@ GiNaC::ex Parser::factor() {
         ++pos_;
         return -factor();
     }
+    if (is_char(t, "+")) {  // a + + b (a doubled sign): a unary plus
+        ++pos_;
+        return factor();
+    }
     GiNaC::ex base = primary();
     return postfix(base);
 }

@@ -294,6 +294,8 @@ class Parser {
     GiNaC::ex differential();
 
     GiNaC::ex integral(std::size_t at);
+    GiNaC::ex integral_body(std::size_t at, GiNaC::ex lo, GiNaC::ex hi, bool definite);
+    GiNaC::ex indefinite_integral(std::size_t at);
 
     void remove_uses(const std::string& name, std::size_t from);
 

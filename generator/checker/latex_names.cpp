@@ -115,13 +115,13 @@ bool Parser::read_name(NameParts& n) {
     return true;
 }
 
-/// At '^': when the superscript starts with \prime, counts the primes into n and leaves any rest of the
+/// At '^': when the superscript starts with \prime or ', counts the primes into n and leaves any rest of the
 /// superscript (`^{\prime 2}`) as pending_power_. Returns false (pos_ unchanged) when it is an exponent.
 bool Parser::prime_superscript(NameParts& n) {
     const std::size_t at = pos_;
     const Token* a = peek_at(1);
     if (!a) return false;
-    if (a->kind == Tok::Word && a->text == "\\prime") {
+    if ((a->kind == Tok::Word && a->text == "\\prime") || (a->kind == Tok::Char && a->text == "'")) {
         ++pos_;
         ++pos_;
         ++n.primes;
@@ -134,7 +134,8 @@ bool Parser::prime_superscript(NameParts& n) {
     const std::size_t close = match_brace(open);
     std::size_t q = open + 1;
     int primes = 0;
-    while (q < close && t_[q].kind == Tok::Word && t_[q].text == "\\prime") {
+    // \prime or ' (`r_{1}^{'}`, as a word processor writes r₁′).
+    while (q < close && ((t_[q].kind == Tok::Word && t_[q].text == "\\prime") || (t_[q].kind == Tok::Char && t_[q].text == "'"))) {
         ++primes;
         ++q;
     }

@@ -15,6 +15,7 @@ REGISTER_FUNCTION(ddt, dummy().latex_name("\\frac{d}{dt}"))
 REGISTER_FUNCTION(pdiff, dummy().latex_name("\\partial"))
 REGISTER_FUNCTION(pbracket, dummy().latex_name("\\{\\}"))
 REGISTER_FUNCTION(dby, dummy().latex_name("\\frac{d}{ds}"))
+REGISTER_FUNCTION(antiderivative, dummy().latex_name("\\int"))
 
 const FreeName* LatexContext::free_name_of(const GiNaC::ex& symbol) const {
     if (!GiNaC::is_a<GiNaC::symbol>(symbol)) return nullptr;

@@ -18,6 +18,9 @@ DECLARE_FUNCTION_1P(ddt)    ///< ddt(x): the total time derivative d/dt x (`\fra
 DECLARE_FUNCTION_2P(pdiff)  ///< pdiff(x, y): ∂x/∂y (`\frac{\partial L}{\partial \dot{\theta}}`)
 DECLARE_FUNCTION_2P(pbracket)  ///< pbracket(a, b): the Poisson bracket {a, b} (`\{\theta, p_\theta\}`)
 DECLARE_FUNCTION_2P(dby)  ///< dby(x, s): dx/ds by a name the text introduces (`\frac{d^2X}{d\tau^2}`, τ = t/T)
+/// antiderivative(f, x): the indefinite integral ∫ f dx (`\int F(x)\,dx`), known up to a constant of integration
+/// (indefinite_integral.hpp)
+DECLARE_FUNCTION_2P(antiderivative)
 
 /// What a name the parser did not find among the known names stands for.
 enum class NameKind {

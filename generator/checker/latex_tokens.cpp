@@ -433,10 +433,10 @@ std::vector<Token> tokenize_text(std::string_view s) {
             continue;
         }
         // A full stop ending the formula (`\frac{m_1 m_2}{m_1 + m_2 \,. }`): the sentence's, not a delimiter
-        // (`\left.`) or a decimal point.
+        // (`\left.`) or a decimal point (`2.`, a digit right before it: after a space, `m_2 \,.`, it is not).
         if (c == '.' && s.find_first_not_of(" \t\n}", i + 1) == std::string_view::npos &&
-            (out.empty() || (out.back().kind != Tok::Digit &&
-                             !(out.back().kind == Tok::Word && is_one_of(out.back().text, {"\\left", "\\right"}))))) {
+            (i == 0 || !std::isdigit(static_cast<unsigned char>(s[i - 1]))) &&
+            (out.empty() || !(out.back().kind == Tok::Word && is_one_of(out.back().text, {"\\left", "\\right"})))) {
             ++i;
             continue;
         }

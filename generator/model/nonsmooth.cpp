@@ -52,6 +52,11 @@ ex abs_evalf(const ex& x) {
     return GiNaC::function(GiNaC::function::current_serial, x).hold();
 }
 ex abs_deriv(const ex& x, unsigned) { return sign(x); }
+/// |x|^(2k) = x^(2k) for real x (a velocity's squared magnitude written |v|^2); other powers stay powers of |x|.
+ex abs_power(const ex& x, const ex& p) {
+    if (GiNaC::is_exactly_a<numeric>(p) && GiNaC::ex_to<numeric>(p).is_even()) return GiNaC::pow(x, p);
+    return GiNaC::power(real_abs(x), p).hold();
+}
 
 ex sign_eval(const ex& x) {
     if (real_number(x)) return numeric(GiNaC::ex_to<numeric>(x).csgn());
@@ -113,7 +118,8 @@ const unsigned abs_serial = GiNaC::function::register_new(GiNaC::function_option
                                                               .overloaded(2)
                                                               .eval_func(abs_eval)
                                                               .evalf_func(abs_evalf)
-                                                              .derivative_func(abs_deriv));
+                                                              .derivative_func(abs_deriv)
+                                                              .power_func(abs_power));
 const unsigned sign_serial = GiNaC::function::register_new(GiNaC::function_options("sign", 1)
                                                                .eval_func(sign_eval)
                                                                .evalf_func(sign_evalf)

@@ -172,6 +172,29 @@ TEST_CASE("latex as published: a slip in the last piece of a continued display i
     CHECK(c.equations[1].verdict == Verdict::Disagrees);
 }
 
+TEST_CASE("latex as published: an indefinite integral holds up to a constant of integration", "[checker][normalize]") {
+    // -\int F dx = V + c: the derivatives in the variable must agree; a name that drops out of them is the constant.
+    const auto c = check("models/pendulum.toml",
+                         "$$\\int m g l \\sin\\phi \\, d\\phi = -m g l \\cos\\phi + C$$\n\n"
+                         "$$\\int m g l \\sin\\phi \\, d\\phi = m g l \\cos\\phi + C$$\n\n"
+                         "$$- \\int (- m g l \\sin\\phi) \\, d\\phi = - m g l \\cos\\phi$$\n\n"
+                         "$$\\int F \\, d\\phi = m g l \\cos\\phi$$\n\n"
+                         "$$\\int m \\, d\\phi + \\int m \\, dt = m \\phi + m t$$\n");
+    REQUIRE(c.equations.size() == 5);
+    std::string all;
+    for (const auto& e : c.equations) all += e.equation + ": " + e.reason + "\n";
+    INFO(all);
+    CHECK(c.equations[0].verdict == Verdict::Agrees);
+    CHECK(c.equations[0].reason.find("constant of integration ($C$)") != std::string::npos);
+    CHECK(c.equations[1].verdict == Verdict::Disagrees);
+    CHECK(c.equations[1].reason.find("differ by") != std::string::npos);
+    CHECK(c.equations[2].verdict == Verdict::Agrees);
+    CHECK(c.equations[3].verdict == Verdict::NotComparable);
+    CHECK(c.equations[3].reason.find("$F$") != std::string::npos);
+    CHECK(c.equations[4].verdict == Verdict::NotComparable);
+    CHECK(c.equations[4].reason.find("different variables") != std::string::npos);
+}
+
 TEST_CASE("latex as published: a blank display continued by a sign (fuzz_latex: back() of an empty row)",
           "[checker][normalize]") {
     // `~` is a space, so the first display is blank; the second starts with a sign and continued it. The join
