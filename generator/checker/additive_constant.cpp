@@ -32,6 +32,12 @@ bool check_additive_constant(const GiNaC::ex& a, const GiNaC::ex& b, int constan
         if (cmp.same(rate, 0, tol) || (accelerations && cmp.equation_of_motion(rate, tol))) {
             r.verdict = Verdict::Agrees;
             r.reason = "a constant of the motion: its time derivative vanishes on the equations of motion";
+        } else if (cmp.vanishes_on_constrained_motion(rate, tol)) {
+            // `a z \dot\varphi = c_0` on the paraboloid ρ² = a z: conserved where the constraints hold.
+            r.verdict = Verdict::Agrees;
+            r.compared_with = "the equations of motion with the constraint forces";
+            r.reason = "a constant of the motion: its time derivative vanishes on the constrained motion (at states on "
+                       "the constraints)";
         } else {
             r.reason = "said to be constant, but its time derivative does not vanish on the equations of motion "
                        "(not a constant of this model's motion)";

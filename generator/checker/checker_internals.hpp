@@ -144,6 +144,11 @@ class Checker : public Comparisons {
         const int i = has_acceleration(r) ? closest_euler_lagrange(r, tol, &factor, &groups) : -1;
         return groups >= 1 ? i : -1;
     }
+    bool vanishes_on_constrained_motion(const GiNaC::ex& r, double tol) override {
+        if (model_.constraints.empty()) return false;
+        const std::optional<bool> h = holds_on_constrained_motion(r, model_, eq_, tol, {}, 1, numbers_.pinned());
+        return h && *h;
+    }
     std::string latex(const GiNaC::ex& e) override;
     std::vector<std::string> wrong_terms(const GiNaC::ex& text, const GiNaC::ex& truth, double tol) override {
         return compare_to(text, truth, tol).lines;

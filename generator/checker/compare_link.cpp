@@ -71,6 +71,19 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         return r;
     }
     if (rel == Relation::Inequality) {
+        // `\gamma < 0`, `0 \le \theta < \pi`, `g > 0`: one name against a number is the range or sign of a
+        // quantity the text considers (a convention, an assumption, the case at hand), not a result.
+        for (int side = 0; side < 2; ++side) {
+            const PSide& N = side == 0 ? L : R;
+            const PSide& O = side == 0 ? R : L;
+            if (N.side->ok && O.side->ok && GiNaC::is_a<GiNaC::symbol>(N.side->value) &&
+                GiNaC::is_a<GiNaC::numeric>(GiNaC::evalf(O.side->value))) {  // 0, 2, \pi, \pi/2
+                not_judged(r, Role::Condition,
+                           "a condition: the range or sign of $" + N.side->source +
+                               "$ the text considers (a convention or an assumption, not a result)");
+                return r;
+            }
+        }
         r.reason = "an inequality or a relation other than equality is not compared";
         return r;
     }

@@ -32,6 +32,9 @@ class Comparisons {
     /// The coordinate whose Euler–Lagrange equation r (with accelerations) is closest to, as a disagreement is
     /// compared (the most groups of terms equal after the best factor); −1 when no group matches.
     virtual int closest_euler_lagrange(const GiNaC::ex& r, double tol) = 0;
+    /// r (with accelerations) vanishes at every state on the model's constraints, q̈ from the constrained equations
+    /// (constrained_motion.hpp); false for a model without constraints.
+    virtual bool vanishes_on_constrained_motion(const GiNaC::ex& r, double tol) = 0;
     /// LaTeX by eomgen's canonical printer (symbols in the model's order).
     virtual std::string latex(const GiNaC::ex& e) = 0;
     /// The wrong, missing and extra terms of `text` against `truth`, one sentence each.

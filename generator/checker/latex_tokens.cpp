@@ -304,6 +304,29 @@ std::vector<Token> tokenize_text(std::string_view s) {
                         continue;
                     }
                 }
+                if (is_one_of(w, {"\\boxed", "\\fbox", "\\framebox"})) {
+                    // A boxed result (`\boxed{m\ddot x = F}`, `\fbox{$...$}`): read as if unboxed, so its relation
+                    // is between two sides and not inside a group.
+                    std::size_t k = j;
+                    while (k < s.size() && std::isspace(static_cast<unsigned char>(s[k]))) ++k;
+                    if (k < s.size() && s[k] == '{') {
+                        const std::size_t e = skip_braces(s, k);
+                        if (e > k + 1 && s[e - 1] == '}') {
+                            skipped.emplace_back(k, k + 1);
+                            skipped.emplace_back(e - 1, e);
+                            // \fbox's argument is text: the math in it between $ signs.
+                            const std::size_t first = s.find_first_not_of(" \t\n", k + 1);
+                            const std::size_t last = s.find_last_not_of(" \t\n", e - 2);
+                            if (first != std::string_view::npos && last != std::string_view::npos && first < last &&
+                                s[first] == '$' && s[last] == '$') {
+                                skipped.emplace_back(first, first + 1);
+                                skipped.emplace_back(last, last + 1);
+                            }
+                            i = k;
+                            continue;
+                        }
+                    }
+                }
                 if (is_ignored_word(w)) {
                     i = j;
                     continue;

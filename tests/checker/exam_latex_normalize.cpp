@@ -172,6 +172,23 @@ TEST_CASE("latex as published: a slip in the last piece of a continued display i
     CHECK(c.equations[1].verdict == Verdict::Disagrees);
 }
 
+TEST_CASE("latex as published: a boxed result is read as if unboxed", "[checker][normalize]") {
+    // \boxed{...} in math, \fbox{$...$} (its argument is text) in math and in prose; a slip in a box is found.
+    const auto c = check("models/pendulum.toml",
+                         "$$\\boxed{\\ddot\\phi = -\\frac{g}{l}\\sin\\phi}$$\n\n"
+                         "$$\\fbox{$ \\ddot\\phi = -\\frac{g}{l}\\sin\\phi $}$$\n\n"
+                         "so \\fbox{$\\ddot\\phi = -\\frac{g}{l}\\sin\\phi$} and\n\n"
+                         "$$\\boxed{\\ddot\\phi = -\\frac{g}{l}\\cos\\phi}$$\n");
+    std::string all;
+    for (const auto& e : c.equations) all += e.equation + ": " + e.reason + "\n";
+    INFO(all);
+    REQUIRE(c.equations.size() == 4);
+    CHECK(c.equations[0].verdict == Verdict::Agrees);
+    CHECK(c.equations[1].verdict == Verdict::Agrees);
+    CHECK(c.equations[2].verdict == Verdict::Agrees);
+    CHECK(c.equations[3].verdict == Verdict::Disagrees);
+}
+
 TEST_CASE("latex as published: an indefinite integral holds up to a constant of integration", "[checker][normalize]") {
     // -\int F dx = V + c: the derivatives in the variable must agree; a name that drops out of them is the constant.
     const auto c = check("models/pendulum.toml",

@@ -623,3 +623,25 @@ TEST_CASE("roles: T split into named parts, one never given a value, names them"
     INFO(eomgen::test::describe(both.equations[0]));
     CHECK(both.equations[0].verdict == Verdict::Agrees);
 }
+
+TEST_CASE("roles: one name against a number in an inequality is a condition, not a claim", "[checker][roles]") {
+    // The sign of a rate, the range of an angle, a convention for g: not judged. An inequality between expressions
+    // is still not compared (not comparable), as before.
+    const std::string text = "with $g > 0$, for $0 \\le \\theta < \\pi$ and $\\gamma < 0$ clockwise;\n"
+                             "\n"
+                             "stable while $\\frac{g}{l} > \\dot\\theta^2$.\n";
+    const CheckReport r = eomgen::test::check_text(kPendulum, text);
+    std::string all;
+    for (const EquationCheck& e : r.equations) all += eomgen::test::describe(e) + "\n";
+    INFO(all);
+    const auto first = on_line(r, 1);
+    REQUIRE(first.size() == 4);
+    for (const EquationCheck* e : first) {
+        CHECK(e->verdict == Verdict::NotJudged);
+        CHECK(e->role == Role::Condition);
+        CHECK(e->reason.find("a condition: the range or sign of") == 0);
+    }
+    const auto last = on_line(r, 3);
+    REQUIRE(last.size() == 1);
+    CHECK(last[0]->verdict == Verdict::NotComparable);
+}
