@@ -64,33 +64,65 @@ void solve_constrained(const MatM& M, const VecF& f, const MatA& A, const VecG& 
                                   value_of(t));
         return NonFiniteState(describe_state(what, t, x), value_of(t));
     };
+    // The products by loops, as MassFactor's factorization: Eigen's products for each fixed size cost compile time
+    // in every constrained model's shared object, not speed at these sizes.
+    const Eigen::Index n = M.rows(), m = A.rows();
     MassFactor<S, MatM::RowsAtCompileTime> m_factor;
     typename VecF::PlainObject rhs = f;
     if (!m_factor.compute(M)) {
         const S w = detail::augmentation_weight(M, A);
-        if (!m_factor.compute((M + w * A.transpose() * A).eval())) {
+        typename MatM::PlainObject augmented = M;  // M + w AᵀA
+        for (Eigen::Index i = 0; i < n; ++i)
+            for (Eigen::Index j = 0; j < n; ++j) {
+                S s(0);
+                for (Eigen::Index k = 0; k < m; ++k) s += A(k, i) * A(k, j);
+                augmented(i, j) += w * s;
+            }
+        if (!m_factor.compute(augmented)) {
             if (!M.allFinite() || !A.allFinite()) throw not_finite("");
             throw SingularMassMatrix(
                 describe_state("mass matrix is singular or not positive definite on the motions the constraints allow",
                                t, x),
                 value_of(t));
         }
-        rhs += w * (A.transpose() * gamma);
+        for (Eigen::Index i = 0; i < n; ++i) {  // f + w Aᵀγ
+            S s(0);
+            for (Eigen::Index k = 0; k < m; ++k) s += A(k, i) * gamma(k);
+            rhs(i) += w * s;
+        }
     }
-    Eigen::Matrix<S, MatA::ColsAtCompileTime, MatA::RowsAtCompileTime> Y = A.transpose();  // n×m, then M⁻¹Aᵀ
+    Eigen::Matrix<S, MatA::ColsAtCompileTime, MatA::RowsAtCompileTime> Y(n, m);  // Aᵀ (n×m), then M⁻¹Aᵀ
+    for (Eigen::Index i = 0; i < n; ++i)
+        for (Eigen::Index k = 0; k < m; ++k) Y(i, k) = A(k, i);
     m_factor.solve_in_place(Y);
     m_factor.solve_in_place(rhs);  // M⁻¹ f
-    const auto schur = (A * Y).eval();  // m×m
-    MassFactor<S, std::decay_t<decltype(schur)>::RowsAtCompileTime> s_factor;
+    Eigen::Matrix<S, MatA::RowsAtCompileTime, MatA::RowsAtCompileTime> schur(m, m);  // A M⁻¹ Aᵀ
+    for (Eigen::Index a = 0; a < m; ++a)
+        for (Eigen::Index b = 0; b < m; ++b) {
+            S s(0);
+            for (Eigen::Index i = 0; i < n; ++i) s += A(a, i) * Y(i, b);
+            schur(a, b) = s;
+        }
+    MassFactor<S, MatA::RowsAtCompileTime> s_factor;
     if (!s_factor.compute(schur, 1e3)) {
         if (!schur.allFinite()) throw not_finite("the constraints' Schur complement is not finite");
         throw SingularConstraints(
             describe_state("constraint Jacobian lost rank (redundant constraints or a singular configuration)", t, x),
             value_of(t));
     }
-    lambda = gamma - A * rhs;
+    lambda.resize(m);
+    for (Eigen::Index a = 0; a < m; ++a) {  // γ − A M⁻¹ f
+        S s = gamma(a);
+        for (Eigen::Index i = 0; i < n; ++i) s -= A(a, i) * rhs(i);
+        lambda(a) = s;
+    }
     s_factor.solve_in_place(lambda);
-    qdd = rhs + Y * lambda;
+    qdd.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i) {  // M⁻¹ f + M⁻¹Aᵀ λ
+        S s = rhs(i);
+        for (Eigen::Index a = 0; a < m; ++a) s += Y(i, a) * lambda(a);
+        qdd(i) = s;
+    }
     if (!qdd.allFinite() || !lambda.allFinite()) throw not_finite("accelerations or multipliers are not finite");
 }
 

@@ -107,10 +107,15 @@ constexpr Eigen::Index kLoopSolveMaxN = 20;
  * The factorization of a symmetric positive definite matrix that solve_mass_matrix and the constrained solve
  * (constraints.hpp) use: M = L D Lᵀ by factor_ldlt up to kLoopSolveMaxN rows, Eigen's LLT above (d_i = L_ii²);
  * only M's lower triangle is read. compute() says whether the pivots are regular (pivots_regular); nothing else
- * passes over M. N is M's compile-time size (or Eigen::Dynamic).
+ * passes over M. N is M's compile-time size (or Eigen::Dynamic). A fixed size up to kLoopSolveMaxN never builds the
+ * LLT path: instantiating Eigen's LLT and its solves for each fixed size was most of the compile time of a
+ * constrained model's shared object (two factors, M's and the Schur complement's; with Eigen's products,
+ * constraints.hpp, solve_constrained alone for rolling_disc's sizes took 8.4 s at -O2, 1.5 s without both).
  */
 template <class S, int N>
 class MassFactor {
+    static constexpr bool kLoopsOnly = N != Eigen::Dynamic && N <= kLoopSolveMaxN;
+
   public:
     template <class MatM>
     bool compute(const MatM& M, double margin = 1) {
@@ -119,10 +124,12 @@ class MassFactor {
                                                   // up to n = 30)
         loops_ = n_ <= kLoopSolveMaxN;
         if (n_ == 0) return true;  // no constraints: nothing to factor
-        if (!loops_) {
-            llt_.compute(M);
-            return llt_.info() == Eigen::Success &&
-                   pivots_regular(llt_.matrixLLT().diagonal().cwiseAbs2().eval(), margin);
+        if constexpr (!kLoopsOnly) {
+            if (!loops_) {
+                llt_.compute(M);
+                return llt_.info() == Eigen::Success &&
+                       pivots_regular(llt_.matrixLLT().diagonal().cwiseAbs2().eval(), margin);
+            }
         }
         L_.resize(n_, n_);
         d_.resize(n_);
@@ -134,10 +141,14 @@ class MassFactor {
     /// Overwrites every column b of B (n rows) with M⁻¹ b.
     template <class MatB>
     void solve_in_place(MatB& B) const {
-        if (loops_)
+        if constexpr (kLoopsOnly) {
             substitute_ldlt(L_, inv_d_, n_, B);
-        else
-            llt_.solveInPlace(B);
+        } else {
+            if (loops_)
+                substitute_ldlt(L_, inv_d_, n_, B);
+            else
+                llt_.solveInPlace(B);
+        }
     }
 
   private:
@@ -145,7 +156,7 @@ class MassFactor {
     bool loops_ = true;
     Eigen::Matrix<S, N, N, Eigen::RowMajor> L_;  // row i: L_ik for k < i
     Eigen::Matrix<S, N, 1> d_, inv_d_;
-    Eigen::LLT<Eigen::Matrix<S, N, N>> llt_;
+    std::conditional_t<kLoopsOnly, char, Eigen::LLT<Eigen::Matrix<S, N, N>>> llt_{};  // unused when kLoopsOnly
 };
 
 /**
