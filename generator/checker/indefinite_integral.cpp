@@ -40,6 +40,10 @@ void check_antiderivative(const GiNaC::ex& a, const GiNaC::ex& b, const std::vec
             return;
         }
     }
+    if (!GiNaC::is_a<GiNaC::symbol>(x)) {  // a definition put in for the variable: not an antiderivative any more
+        r.reason = "the variable of the indefinite integral is not a coordinate or the time here";
+        return;
+    }
     const GiNaC::symbol& var = GiNaC::ex_to<GiNaC::symbol>(x);
     // Each integral a symbol of its own; the difference must be linear in them with coefficients free of x.
     GiNaC::exmap as_symbols;
@@ -49,20 +53,32 @@ void check_antiderivative(const GiNaC::ex& a, const GiNaC::ex& b, const std::vec
         as_symbols[I] = A;
         named.emplace_back(A, I.op(0));
     }
-    const GiNaC::ex d = (a - b).subs(as_symbols).expand();
     GiNaC::ex D = 0;
-    GiNaC::exmap none;
-    for (const auto& [A, f] : named) {
-        none[A] = 0;
-        const GiNaC::ex c = d.coeff(A, 1);
-        if (d.degree(A) != 1 || d.ldegree(A) < 0 || c.has(var) ||
-            std::any_of(named.begin(), named.end(), [&](const auto& other) { return c.has(other.first); })) {
-            r.reason = "an indefinite integral times its own variable, or a power of one, is not compared";
-            return;
+    try {
+        const GiNaC::ex d = (a - b).subs(as_symbols).expand();
+        GiNaC::ex linear = 0;
+        for (const auto& [A, f] : named) {
+            const GiNaC::ex c = d.coeff(A, 1);
+            if (c.has(var) ||
+                std::any_of(named.begin(), named.end(), [&](const auto& other) { return c.has(other.first); })) {
+                r.reason = "an indefinite integral times its own variable, or a power of one, is not compared";
+                return;
+            }
+            linear += c * A;
+            D += c * f;
         }
-        D += c * f;
+        // Linear in the integrals: nothing of them left once their terms are taken away (not inside a function).
+        const GiNaC::ex rest = (d - linear).expand();
+        for (const auto& [A, f] : named)
+            if (rest.has(A)) {
+                r.reason = "an indefinite integral times its own variable, or a power of one, is not compared";
+                return;
+            }
+        D += GiNaC::diff(rest, var);
+    } catch (const std::exception& e) {
+        r.reason = std::string("cannot evaluate the derivative of an indefinite integral: ") + e.what();
+        return;
     }
-    D += GiNaC::diff(d.subs(none), var);
     std::string constants, still;
     GiNaC::exset seen;
     int stay = 0;

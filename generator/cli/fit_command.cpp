@@ -108,7 +108,7 @@ ByExperiment by_experiment(const std::vector<std::string>& specs, std::size_t ex
     return out;
 }
 
-/// ", its own m = 1.5 kg, phi = 0.5 rad": what one experiment sets for itself (empty when nothing).
+/// "; its own m = 1.5 kg, phi = 0.5 rad": what one experiment sets for itself (empty when nothing).
 std::string own_settings(const std::vector<std::string>& set, const std::vector<std::string>& init) {
     std::string text;
     for (const auto* list : {&set, &init})

@@ -196,8 +196,9 @@ TEST_CASE("latex as published: an indefinite integral holds up to a constant of 
                          "$$\\int m g l \\sin\\phi \\, d\\phi = m g l \\cos\\phi + C$$\n\n"
                          "$$- \\int (- m g l \\sin\\phi) \\, d\\phi = - m g l \\cos\\phi$$\n\n"
                          "$$\\int F \\, d\\phi = m g l \\cos\\phi$$\n\n"
-                         "$$\\int m \\, d\\phi + \\int m \\, dt = m \\phi + m t$$\n");
-    REQUIRE(c.equations.size() == 5);
+                         "$$\\int m \\, d\\phi + \\int m \\, dt = m \\phi + m t$$\n\n"
+                         "$$\\phi \\int m \\, d\\phi = \\frac{1}{2} m \\phi^2$$\n");
+    REQUIRE(c.equations.size() == 6);
     std::string all;
     for (const auto& e : c.equations) all += e.equation + ": " + e.reason + "\n";
     INFO(all);
@@ -210,6 +211,8 @@ TEST_CASE("latex as published: an indefinite integral holds up to a constant of 
     CHECK(c.equations[3].reason.find("$F$") != std::string::npos);
     CHECK(c.equations[4].verdict == Verdict::NotComparable);
     CHECK(c.equations[4].reason.find("different variables") != std::string::npos);
+    CHECK(c.equations[5].verdict == Verdict::NotComparable);
+    CHECK(c.equations[5].reason.find("times its own variable") != std::string::npos);
 }
 
 TEST_CASE("latex as published: a blank display continued by a sign (fuzz_latex: back() of an empty row)",
