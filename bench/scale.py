@@ -101,8 +101,9 @@ def measure(cfg, work, smoke, log, sympy_runs, sympy_cap):
     for n in sizes:
         row = {}
         for variant in ("default", "all"):
-            # Best of 2 (the machines are shared); the header with every optional function at n = 60 once (30 s).
-            reps = 1 if smoke or (n >= 60 and variant == "all") else 2
+            # Best of 5 below n = 30 (a run of 0.05-0.2 s is mostly a process start on a shared machine), of 2 above;
+            # the header with every optional function at n = 60 once (10 s).
+            reps = 1 if smoke or (n >= 60 and variant == "all") else 5 if n < 30 else 2
             row[variant] = generate(cfg["eomgen"], ["--family", f"pendulum:n={n}"], variant == "all", out_dir, reps)
             log(f"9. pendulum n={n} {variant}: {row[variant]['cpu_s']:.2f} s CPU, {row[variant]['peak_mb']:.0f} MB")
         results["pendulum"][str(n)] = row
@@ -139,7 +140,7 @@ def render(results, command, date, machine_line):
              "", "`eomgen generate --family pendulum:n=N` (the n-link pendulum of section 1), the default header and "
              "the header with `--with all` (analytic Jacobians, K, C and G about rest: docs/generated_code.md, "
              "\"Optional functions\"); CPU time (user + system) and peak resident memory of the one process "
-             "(os.wait4), best of 2 runs (1 with `--with all` at n = 60); the phases from `--timings`. SymPy: bench/sympy_pendulum.py "
+             "(os.wait4), best of 5 runs below n = 30 and of 2 above (1 with `--with all` at n = 60); the phases from `--timings`. SymPy: bench/sympy_pendulum.py "
              "(LagrangesMethod, cse, ccode of M and f), stopped at its cap.", "",
              "| n | default: CPU [s] | of which derive [s] | peak [MB] | `--with all`: CPU [s] | of which Jacobians [s] "
              "| stiffness [s] | peak [MB] | SymPy CPU [s] | SymPy / default |",
