@@ -35,16 +35,19 @@ double number(const std::string& text, const std::string& spec) {
 /// The loss of each residual, ½ρ(r²) (Ceres' functions), handed to Ceres as the residual sign(r) sqrt(ρ(r²)), whose
 /// half square is that cost, with the Jacobian row d/dθ = ρ'(r²) r / sqrt(ρ(r²)) dr/dθ: Ceres' own loss would apply
 /// to the norm of a whole residual block, here a whole experiment.
+/// Ceres' loss function of that name at scale a (in r's units), null for another name (squared among them).
+std::unique_ptr<ceres::LossFunction> ceres_loss(const std::string& name, double a) {
+    if (name == "huber") return std::make_unique<ceres::HuberLoss>(a);
+    if (name == "soft_l1") return std::make_unique<ceres::SoftLOneLoss>(a);
+    if (name == "cauchy") return std::make_unique<ceres::CauchyLoss>(a);
+    if (name == "arctan") return std::make_unique<ceres::ArctanLoss>(a * a);  // its a is in r²'s units
+    if (name == "tukey") return std::make_unique<ceres::TukeyLoss>(a);
+    return nullptr;
+}
+
 class Robust {
   public:
-    explicit Robust(const FitLoss& loss) {
-        const double a = loss.scale;
-        if (loss.name == "huber") f_ = std::make_unique<ceres::HuberLoss>(a);
-        else if (loss.name == "soft_l1") f_ = std::make_unique<ceres::SoftLOneLoss>(a);
-        else if (loss.name == "cauchy") f_ = std::make_unique<ceres::CauchyLoss>(a);
-        else if (loss.name == "arctan") f_ = std::make_unique<ceres::ArctanLoss>(a * a);  // its a is in r²'s units
-        else if (loss.name == "tukey") f_ = std::make_unique<ceres::TukeyLoss>(a);
-    }
+    explicit Robust(const FitLoss& loss) : f_(ceres_loss(loss.name, loss.scale)) {}
 
     /// ρ, ρ', ρ'' at s = r² (s, 1, 0 for least squares).
     void rho(double s, double out[3]) const {
@@ -138,10 +141,10 @@ struct Series {
 
 /// r = w (x(t_j) − y_j) over one experiment's samples and measured columns, J = w S in the columns of its unknowns
 /// (0 in the other experiments' initial values): Ceres' cost of one whole series. With a robust loss Ceres gets
-/// each r and its row through Robust; `plain` leaves them as they are (the statistics at the solution).
+/// each r and its row through Robust.
 class SeriesCost : public ceres::CostFunction {
   public:
-    explicit SeriesCost(Series s, bool plain = false) : s_(std::move(s)), plain_(plain) {
+    explicit SeriesCost(Series s) : s_(std::move(s)) {
         for (std::size_t i : s_.mine) columns_.push_back(s_.free[i].column);
         set_num_residuals(int(s_.data.y.size()));
         mutable_parameter_block_sizes()->push_back(int(s_.free.size()));
@@ -164,7 +167,7 @@ class SeriesCost : public ceres::CostFunction {
                 const Eigen::Index row = j * m + c;
                 double factor = 1;
                 const double r = s_.w(c) * ((state ? sample.x(s) : sample.y(s - nx)) - data.y(j, c));
-                residuals[row] = plain_ ? r : s_.loss.residual(r, factor);
+                residuals[row] = s_.loss.residual(r, factor);
                 if (jacobians && jacobians[0]) {
                     for (Eigen::Index i = 0; i < k; ++i) jacobians[0][row * k + i] = 0;
                     for (std::size_t i = 0; i < s_.mine.size(); ++i)
@@ -179,7 +182,6 @@ class SeriesCost : public ceres::CostFunction {
 
   private:
     Series s_;
-    bool plain_;
     std::vector<SensitivityColumn> columns_;
     mutable std::string last_failure_;
 };
@@ -247,12 +249,11 @@ FitLoss parse_loss(const std::string& spec) {
     FitLoss loss;
     const std::size_t colon = spec.find(':');
     loss.name = spec.substr(0, colon);
-    static const std::set<std::string> robust{"huber", "soft_l1", "cauchy", "arctan", "tukey"};
     if (loss.name == "squared") {
         if (colon != std::string::npos) throw UsageError("--loss " + spec + ": squared (least squares) has no scale");
         return loss;
     }
-    if (!robust.count(loss.name))
+    if (!ceres_loss(loss.name, 1))
         throw UsageError("--loss " + spec + ": expected squared, or huber, soft_l1, cauchy, arctan or tukey with a scale "
                          "(huber:0.03: residuals larger than 0.03, in the data's units after --weight, count less)");
     if (colon == std::string::npos)
@@ -394,7 +395,7 @@ FitOutcome fit(const sim::Options& options, const std::vector<ExperimentStart>& 
     for (const FreeValue& f : free) theta.push_back(f.start);
     // The exact costs also give J at the solution for the statistics, whichever Jacobian the solver used.
     std::size_t integrations = 0;
-    std::vector<std::unique_ptr<SeriesCost>> exact, plain;
+    std::vector<std::unique_ptr<SeriesCost>> exact;
     std::vector<std::unique_ptr<ceres::CostFunction>> differences;
     ceres::Problem::Options po;
     po.cost_function_ownership = ceres::DO_NOT_TAKE_OWNERSHIP;
@@ -402,7 +403,6 @@ FitOutcome fit(const sim::Options& options, const std::vector<ExperimentStart>& 
     for (std::size_t e = 0; e < data.size(); ++e) {
         const Series series(options, starts[e], free, data[e], w[e], robust, &integrations, int(e));
         exact.push_back(std::make_unique<SeriesCost>(series));
-        plain.push_back(std::make_unique<SeriesCost>(series, true));
         ceres::CostFunction* cost = exact.back().get();
         if (jacobian == FitJacobian::Differences) {
             auto* numeric =
@@ -448,7 +448,10 @@ FitOutcome fit(const sim::Options& options, const std::vector<ExperimentStart>& 
     out.trajectories = integrations;
     out.solve_seconds = seconds;
 
-    // J and r at the solution, the experiments' rows one after another; the fitted trajectories (unweighted).
+    // J and r at the solution, the experiments' rows one after another; the fitted trajectories (unweighted). The
+    // costs evaluate them as they are (least squares in place of the loss they were solved with).
+    robust = Robust(FitLoss{});
+    const Robust chosen(loss);
     Eigen::VectorXd r(static_cast<Eigen::Index>(n));
     Eigen::MatrixXd J(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(k));
     Eigen::Index row = 0;
@@ -458,8 +461,8 @@ FitOutcome fit(const sim::Options& options, const std::vector<ExperimentStart>& 
         Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> Je(rows, Eigen::Index(k));
         const double* blocks[] = {theta.data()};
         double* jac[] = {Je.data()};
-        if (!plain[e]->Evaluate(blocks, re.data(), jac))
-            throw SimulationError("the model cannot be integrated at the fit's estimates: " + plain[e]->last_failure(), 0);
+        if (!exact[e]->Evaluate(blocks, re.data(), jac))
+            throw SimulationError("the model cannot be integrated at the fit's estimates: " + exact[e]->last_failure(), 0);
         r.segment(row, rows) = re;
         J.middleRows(row, rows) = Je;
         row += rows;
@@ -479,7 +482,7 @@ FitOutcome fit(const sim::Options& options, const std::vector<ExperimentStart>& 
         double psi2 = 0, dpsi = 0, dpsi2 = 0;
         for (Eigen::Index i = 0; i < r.size(); ++i) {
             double p[3];
-            robust.rho(r(i) * r(i), p);
+            chosen.rho(r(i) * r(i), p);
             const double psi = p[1] * r(i), d = p[1] + 2 * r(i) * r(i) * p[2];
             psi2 += psi * psi;
             dpsi += d;

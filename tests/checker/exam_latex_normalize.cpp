@@ -43,6 +43,13 @@ eomgen::checker::CheckReport check(const std::string& model_path, const std::str
     return eomgen::test::check_text(model_path, text);
 }
 
+/// Each equation of a report with its reason, a line each (for INFO).
+std::string reasons(const eomgen::checker::CheckReport& r) {
+    std::string all;
+    for (const auto& e : r.equations) all += e.equation + ": " + e.reason + "\n";
+    return all;
+}
+
 }  // namespace
 
 TEST_CASE("latex as published: a superscript before the subscript", "[checker][parser][normalize]") {
@@ -179,9 +186,7 @@ TEST_CASE("latex as published: a boxed result is read as if unboxed", "[checker]
                          "$$\\fbox{$ \\ddot\\phi = -\\frac{g}{l}\\sin\\phi $}$$\n\n"
                          "so \\fbox{$\\ddot\\phi = -\\frac{g}{l}\\sin\\phi$} and\n\n"
                          "$$\\boxed{\\ddot\\phi = -\\frac{g}{l}\\cos\\phi}$$\n");
-    std::string all;
-    for (const auto& e : c.equations) all += e.equation + ": " + e.reason + "\n";
-    INFO(all);
+    INFO(reasons(c));
     REQUIRE(c.equations.size() == 4);
     CHECK(c.equations[0].verdict == Verdict::Agrees);
     CHECK(c.equations[1].verdict == Verdict::Agrees);
@@ -199,9 +204,7 @@ TEST_CASE("latex as published: an indefinite integral holds up to a constant of 
                          "$$\\int m \\, d\\phi + \\int m \\, dt = m \\phi + m t$$\n\n"
                          "$$\\phi \\int m \\, d\\phi = \\frac{1}{2} m \\phi^2$$\n");
     REQUIRE(c.equations.size() == 6);
-    std::string all;
-    for (const auto& e : c.equations) all += e.equation + ": " + e.reason + "\n";
-    INFO(all);
+    INFO(reasons(c));
     CHECK(c.equations[0].verdict == Verdict::Agrees);
     CHECK(c.equations[0].reason.find("constant of integration ($C$)") != std::string::npos);
     CHECK(c.equations[1].verdict == Verdict::Disagrees);

@@ -33,6 +33,13 @@ double json_field(const std::string& json, const std::string& name, const std::s
     return text == "null" ? std::nan("") : std::stod(text);
 }
 
+/// Whether the estimate NAME (a regex) in eomgen fit's JSON lies within `errors` of its standard errors of `truth`.
+bool within_errors(const std::string& json, const std::string& name, double truth, double errors) {
+    const double v = json_field(json, name, "value"), se = json_field(json, name, "standard_error");
+    INFO(name << " = " << v << " +- " << se << ", truth " << truth);
+    return std::abs(v - truth) < errors * se;
+}
+
 /// phi of the damped pendulum run with `options` (t-end 6, 301 samples), plus seeded Gaussian noise of 0.01 rad
 /// and, with probability `outliers` per sample, a throw of 0.2-0.5 rad either way; written as `name` in kWork. The
 /// count of samples thrown in `thrown`.
@@ -112,14 +119,11 @@ TEST_CASE("eomgen fit: two experiments share l and c, each with its own initial 
                              "--free", "x0:phi=0.8", "--format", "json", "--csv", csv.string(), "--quiet"});
     INFO(f.output);
     REQUIRE(f.code == 0);
-    const double l = json_field(f.output, "l", "value"), sl = json_field(f.output, "l", "standard_error");
-    const double a = json_field(f.output, "x0:phi\\[1\\]", "value"), sa = json_field(f.output, "x0:phi\\[1\\]", "standard_error");
-    const double b = json_field(f.output, "x0:phi\\[2\\]", "value"), sb = json_field(f.output, "x0:phi\\[2\\]", "standard_error");
-    CHECK(std::abs(l - 1.0) < 4 * sl);
-    CHECK(std::abs(a - 1.0) < 4 * sa);
-    CHECK(std::abs(b - 0.5) < 4 * sb);
-    CHECK(sa < 0.01);
-    CHECK(sb < 0.01);
+    CHECK(within_errors(f.output, "l", 1.0, 4));
+    CHECK(within_errors(f.output, "x0:phi\\[1\\]", 1.0, 4));
+    CHECK(within_errors(f.output, "x0:phi\\[2\\]", 0.5, 4));
+    CHECK(json_field(f.output, "x0:phi\\[1\\]", "standard_error") < 0.01);
+    CHECK(json_field(f.output, "x0:phi\\[2\\]", "standard_error") < 0.01);
     // The plot of both experiments against the fit, and their residuals.
     const fs::path svg = kWork / "two.svg";
     const Result p = eomgen({"fit", kModel, kData, second, "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2",
@@ -282,12 +286,9 @@ TEST_CASE("eomgen fit: each experiment with its own settings (--set K:NAME=V, --
     const Result f = with({"--set", "2:m=2000 g", "--init", "2:phi=0.5"});
     INFO(f.output);
     REQUIRE(f.code == 0);
-    const double l = json_field(f.output, "l", "value"), sl = json_field(f.output, "l", "standard_error");
-    const double c = json_field(f.output, "c", "value"), sc = json_field(f.output, "c", "standard_error");
-    const double b = json_field(f.output, "x0:phi\\[2\\]", "value"), sb = json_field(f.output, "x0:phi\\[2\\]", "standard_error");
-    CHECK(std::abs(l - 1.0) < 4 * sl);
-    CHECK(std::abs(c - 0.2) < 4 * sc);
-    CHECK(std::abs(b - 0.5) < 4 * sb);
+    CHECK(within_errors(f.output, "l", 1.0, 4));
+    CHECK(within_errors(f.output, "c", 0.2, 4));
+    CHECK(within_errors(f.output, "x0:phi\\[2\\]", 0.5, 4));
     // Each experiment's start: the first's from the model file, the second's from its own --init.
     CHECK(f.output.find("\"name\": \"x0:phi[1]\", \"value\"") != std::string::npos);
     CHECK(std::regex_search(f.output, std::regex("\"x0:phi\\[2\\]\", [^}]*\"start\": 0.5\\}")));
@@ -349,11 +350,9 @@ TEST_CASE("eomgen fit --loss: robust losses against outliers, with standard erro
     for (const std::string loss : {"huber:0.03", "soft_l1:0.03", "cauchy:0.03", "arctan:0.03", "tukey:0.05"}) {
         const std::string out = run(loss);
         INFO(loss << "\n" << out);
-        const double l = json_field(out, "l", "value"), sl = json_field(out, "l", "standard_error");
-        const double c = json_field(out, "c", "value"), sc = json_field(out, "c", "standard_error");
-        CHECK(std::abs(l - 1.0) < 3 * sl);
-        CHECK(std::abs(c - 0.2) < 3 * sc);
-        CHECK(sc < sc_squared / 3);
+        CHECK(within_errors(out, "l", 1.0, 3));
+        CHECK(within_errors(out, "c", 0.2, 3));
+        CHECK(json_field(out, "c", "standard_error") < sc_squared / 3);
         // The residuals beyond the scale are the ones thrown (give or take a sample near it).
         const std::regex beyond("\"beyond_scale\": ([0-9]+)");
         std::smatch m;
