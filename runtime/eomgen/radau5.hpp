@@ -11,10 +11,11 @@
 
 #include "eomgen/errors.hpp"
 #include "eomgen/integrate.hpp"
+#include "eomgen/lu_factor.hpp"
 #include "eomgen/step_bounds.hpp"
 
 #include <Eigen/Core>
-#include <Eigen/LU>
+#include <Eigen/LU>  // the 3×3 inverses of the method's constants
 
 #include <algorithm>
 #include <cmath>
@@ -64,7 +65,7 @@ struct Radau5Options {
  * by simplified Newton with J = ∂f/∂x at the step's start. With T⁻¹ A⁻¹ T = diag(γ, [[α, β], [−β, α]]) (γ the real
  * eigenvalue of A⁻¹, α ± iβ the complex pair; T from their eigenvectors) the 3n×3n Newton system falls apart into
  * (γ/h I − J) Δw₁ = r₁ (real) and ((α − iβ)/h I − J)(Δw₂ + iΔw₃) = r₂ + i r₃ (complex), W = (T⁻¹ ⊗ I) Z, each
- * factored once by LU (Eigen's PartialPivLU) and reused while h and J stay. Newton stops when
+ * factored once by LU (LuFactor, lu_factor.hpp) and reused while h and J stay. Newton stops when
  * η ‖ΔW‖ ≤ κ with η = θ/(1 − θ), θ the observed contraction rate, κ = max(10 u / rtol', min(0.03, √rtol'));
  * it gives up, and the step is retried with a smaller h, after max_newton iterations, when θ ≥ 0.99, or when the
  * predicted final error is too large (HNW II §IV.8, "Stopping criterion"). The starting values are the previous
@@ -324,20 +325,13 @@ class Radau5 {
     /// Factors γ/h I − J and (α − iβ)/h I − J; false when either is singular (a zero or non-finite pivot).
     bool decompose(const Scalar& h) {
         const Constants& k = constants();
-        const Eigen::Index n = x_.size();
         Matrix e1 = -J_;
         e1.diagonal().array() += k.gamma / h;
         ComplexMatrix e2 = (-J_).template cast<Complex>();
         e2.diagonal().array() += Complex(k.alpha / h, -k.beta / h);
-        lu_real_.compute(e1);
-        lu_complex_.compute(e2);
         ++n_lu_;
         h_lu_ = Scalar(0);
-        for (Eigen::Index i = 0; i < n; ++i) {
-            const Scalar p = lu_real_.matrixLU()(i, i);
-            const Complex q = lu_complex_.matrixLU()(i, i);
-            if (!(p != Scalar(0)) || !std::isfinite(p) || q == Complex(0) || !std::isfinite(std::abs(q))) return false;
-        }
+        if (!lu_real_.compute(e1) || !lu_complex_.compute(e2)) return false;
         h_lu_ = h;
         return true;
     }
@@ -402,8 +396,8 @@ class Radau5 {
             const State b = k.TI(2, 0) * f1_ + k.TI(2, 1) * f2_ + k.TI(2, 2) * f3_ + (k.beta / h) * w2_ -
                             (k.alpha / h) * w3_;
             r2 = a.template cast<Complex>() + Complex(0, 1) * b.template cast<Complex>();
-            tmp_ = lu_real_.solve(tmp_).eval();
-            r2 = lu_complex_.solve(r2).eval();
+            lu_real_.solve_in_place(tmp_);
+            lu_complex_.solve_in_place(r2);
             Scalar sum(0);
             for (Eigen::Index i = 0; i < n; ++i) {
                 const Scalar u = tmp_(i) / scal_(i), v = r2(i).real() / scal_(i), w = r2(i).imag() / scal_(i);
@@ -524,8 +518,8 @@ class Radau5 {
     Scalar faccon_ = Scalar(1), theta_ = Scalar(0), h_acc_ = Scalar(0), err_acc_ = Scalar(1e-2);
     State x_, x_prev_, f0_, z1_, z2_, z3_, w1_, w2_, w3_, f1_, f2_, f3_, scal_, tmp_, d1_, d2_, d3_;
     Matrix J_;
-    Eigen::PartialPivLU<Matrix> lu_real_;
-    Eigen::PartialPivLU<ComplexMatrix> lu_complex_;
+    LuFactor<Matrix> lu_real_;
+    LuFactor<ComplexMatrix> lu_complex_;
     bool first_ = true, rejected_last_ = false, need_jacobian_ = true, jacobian_fresh_ = false;
     Failure last_failure_ = Failure::None;
     int newton_iterations_ = 0, n_singular_ = 0;

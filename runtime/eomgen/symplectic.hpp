@@ -3,9 +3,9 @@
 
 #include "eomgen/errors.hpp"
 #include "eomgen/linear_solve.hpp"
+#include "eomgen/lu_factor.hpp"
 
 #include <Eigen/Core>
-#include <Eigen/LU>
 
 #include <algorithm>
 #include <cmath>
@@ -70,7 +70,7 @@ int solve_midpoint_velocity(const typename Model::Config::Scalar& t, const typen
     };
     Jacobian jac;
     if constexpr (Jacobian::RowsAtCompileTime == Eigen::Dynamic) jac.resize(n, n);
-    Eigen::PartialPivLU<Jacobian> lu;
+    LuFactor<Jacobian> lu;
     const Scalar sqrt_eps = sqrt(std::numeric_limits<Scalar>::epsilon());
     const auto refresh_jacobian = [&]() {
         const Scalar scale = v.template lpNorm<Eigen::Infinity>() + Scalar(1);
@@ -81,7 +81,11 @@ int solve_midpoint_velocity(const typename Model::Config::Scalar& t, const typen
             residual(v_plus, r_plus);
             jac.col(j) = (r_plus - r) / (v_plus(j) - v(j));
         }
-        lu.compute(jac);
+        if (!lu.compute(jac))
+            throw SimulationError(describe_state("variational step: the Newton iteration's Jacobian is singular or "
+                                                 "not finite, from [q; p]",
+                                                 t, phase_point(q, p)),
+                                  value_of(t));
     };
 
     residual(v, r);
