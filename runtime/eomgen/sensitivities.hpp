@@ -362,6 +362,12 @@ SensitivityResult integrate_sensitivities_rk4(const typename M::Params& p, doubl
 
 namespace detail {
 
+/// The augmented right-hand side and Radau5's Newton matrix behind function types that do not name the model: each
+/// method's integration of an Eigen::VectorXd is then compiled once per file, whatever the models whose
+/// sensitivities the file integrates (a call through std::function costs nothing beside J S).
+using AugmentedRhs = std::function<void(const double&, const Eigen::VectorXd&, Eigen::VectorXd&)>;
+using AugmentedJacobian = std::function<void(const double&, const Eigen::VectorXd&, Eigen::MatrixXd&)>;
+
 /// The augmented system's start, its events, and the result from the augmented run's.
 template <class M>
 struct SensitivityRun {
@@ -428,6 +434,11 @@ struct SensitivityRun {
                 augmented_events.push_back(std::move(e));
             }
         }
+    }
+
+    /// The system's right-hand side as an AugmentedRhs (the run must outlive it).
+    AugmentedRhs rhs() {
+        return [this](const double& t, const Eigen::VectorXd& z, Eigen::VectorXd& zdot) { system(t, z, zdot); };
     }
 
     Observer<Eigen::VectorXd> observer() {
@@ -499,7 +510,8 @@ SensitivityResult integrate_sensitivities(const typename M::Params& p, double t0
                                           const std::vector<SensitivityEvent>& events,
                                           const std::vector<double>& sample_times) {
     detail::SensitivityRun<M> run(p, t0, x0, columns, events);
-    const auto r = integrate_with<Method>(run.system, t0, run.z0, t_end, options, run.augmented_events, sample_times,
+    detail::AugmentedRhs f = run.rhs();
+    const auto r = integrate_with<Method>(f, t0, run.z0, t_end, options, run.augmented_events, sample_times,
                                           run.observer());
     return run.finish(r);
 }
@@ -515,7 +527,8 @@ SensitivityResult integrate_sensitivities_rk4(const typename M::Params& p, doubl
                                         " has switching surfaces, where the sensitivities jump: rk4's fixed steps do "
                                         "not end there; use dopri5, dop853 or adams");
     detail::SensitivityRun<M> run(p, t0, x0, columns, events);
-    const auto r = integrate_rk4(run.system, t0, run.z0, t_end, dt, run.augmented_events, sample_times, run.observer());
+    detail::AugmentedRhs f = run.rhs();
+    const auto r = integrate_rk4(f, t0, run.z0, t_end, dt, run.augmented_events, sample_times, run.observer());
     return run.finish(r);
 }
 
@@ -531,10 +544,11 @@ SensitivityResult integrate_sensitivities_radau5(const typename M::Params& p, do
                                         " has switching surfaces, where the sensitivities jump: radau5 does not end its "
                                         "steps there; use dopri5, dop853 or adams");
     detail::SensitivityRun<M> run(p, t0, x0, columns, events);
-    auto jac = [&run](const double& t, const Eigen::VectorXd& z, Eigen::MatrixXd& J) {
+    detail::AugmentedRhs f = run.rhs();
+    detail::AugmentedJacobian jac = [&run](const double& t, const Eigen::VectorXd& z, Eigen::MatrixXd& J) {
         run.system.newton_jacobian(t, z, J);
     };
-    const auto r = integrate_radau5(run.system, jac, t0, run.z0, t_end, options, run.augmented_events, sample_times,
+    const auto r = integrate_radau5(f, jac, t0, run.z0, t_end, options, run.augmented_events, sample_times,
                                     run.observer());
     return run.finish(r);
 }

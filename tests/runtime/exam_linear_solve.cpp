@@ -40,7 +40,8 @@ void check_against_llt(int n) {
         Eigen::Matrix<double, N, 1> f(n), qdd(n);
         for (int i = 0; i < n; ++i) f(i) = normal(rng);
         eomgen::solve_mass_matrix(M, f, qdd, 0.0, f);
-        const Eigen::Matrix<double, N, 1> expected = Eigen::LLT<Eigen::Matrix<double, N, N>>(M).solve(f);
+        // The reference in dynamic sizes: Eigen's LLT compiled once, not once for each N.
+        const Eigen::VectorXd expected = Eigen::LLT<Eigen::MatrixXd>(M).solve(Eigen::VectorXd(f));
         // cond 1e6: both solves carry errors of about cond·eps relative to |q̈|.
         REQUIRE_THAT(Eigen::MatrixXd(qdd), AllClose(expected, 1e-8, 1e-8 * expected.cwiseAbs().maxCoeff()));
         REQUIRE((M * qdd - f).cwiseAbs().maxCoeff() <= 1e-10 * (M.cwiseAbs().maxCoeff() * qdd.cwiseAbs().maxCoeff() + 1));
@@ -136,7 +137,7 @@ void check_jacobian_columns(int n) {
             r = B.colwise() + a;
             filled = r;
         });
-        const Eigen::Matrix<double, N, 1> ref = M.llt().solve(f);
+        const Eigen::VectorXd ref = Eigen::LLT<Eigen::MatrixXd>(M).solve(Eigen::VectorXd(f));
         CHECK_THAT(Eigen::MatrixXd(qdd), AllClose(ref, 1e-8, 1e-8));
         CHECK_THAT(Eigen::MatrixXd(M * R), AllClose(filled, 1e-8, 1e-8));
         CHECK_THAT(Eigen::MatrixXd(filled.col(0)), AllClose((B.col(0) + ref).eval(), 1e-8, 1e-8));
