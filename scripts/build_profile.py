@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Summarises scripts/build_profile.sh's command_times.tsv: CPU seconds of compiles and links, before and after
-run.sh's targets, by folder, and the slowest commands."""
+run.sh's targets, by target, and the slowest commands."""
 import collections
 import os
 import sys
