@@ -2,6 +2,7 @@
  * checker prints holds. It is checked here from the outside, as a line the text could have written: appended
  * to the text as a display of its own, with the same map, it must agree. No `0 (...)` or `- (0)` forms, and no
  * disagreement without its correction. */
+#include "test_paths.hpp"
 #include "checked_text.hpp"
 #include "checker/symbol_map.hpp"
 
@@ -21,7 +22,7 @@ using eomgen::checker::EquationCheck;
 using eomgen::checker::MapEntry;
 using eomgen::checker::Verdict;
 
-const std::string kSource = EOMGEN_SOURCE_DIR;
+const std::string kSource = eomgen_test::source_dir();
 
 struct Case {
     std::string model;    ///< relative to the source tree

@@ -1,5 +1,6 @@
 /** @file check_fuzz.cpp  Random and mangled LaTeX: the parser and the checker answer, they never throw or
  * crash. */
+#include "test_paths.hpp"
 #include "checker/checker.hpp"
 #include "checker/latex_parser.hpp"
 #include "model/model_file.hpp"
@@ -112,7 +113,7 @@ TEST_CASE("fuzz: random formulas never make the parser throw", "[checker][parser
 }
 
 TEST_CASE("fuzz: mangled derivations never make the checker throw", "[checker]") {
-    const eomgen::Model model = eomgen::load_model(std::string(EOMGEN_SOURCE_DIR) + "/models/door.toml");
+    const eomgen::Model model = eomgen::load_model(eomgen_test::source_dir() + "/models/door.toml");
     const eomgen::Equations eq = eomgen::derive_equations(model);
     std::mt19937 rng(7u);
     const std::string base =

@@ -2,6 +2,7 @@
  * (derived once per model): for the tests of the checker that write their derivations inline. */
 #pragma once
 
+#include "test_paths.hpp"
 #include "checker/checker.hpp"
 #include "model/model_file.hpp"
 
@@ -20,7 +21,7 @@ inline const std::pair<Model, Equations>& derived_model(const std::string& path)
     static std::map<std::string, std::pair<Model, Equations>> cache;
     auto it = cache.find(path);
     if (it == cache.end()) {
-        Model m = load_model(std::string(EOMGEN_SOURCE_DIR) + "/" + path);
+        Model m = load_model(eomgen_test::source_dir() + "/" + path);
         Equations e = derive_equations(m);
         it = cache.emplace(path, std::make_pair(std::move(m), std::move(e))).first;
     }
@@ -54,7 +55,7 @@ inline bool has_note(const checker::EquationCheck& e, const std::string& part) {
 
 /// The text of tests/checker/fixtures/`name`.
 inline std::string fixture(const std::string& name) {
-    std::ifstream in(std::string(EOMGEN_SOURCE_DIR) + "/tests/checker/fixtures/" + name, std::ios::binary);
+    std::ifstream in(eomgen_test::source_dir() + "/tests/checker/fixtures/" + name, std::ios::binary);
     std::stringstream ss;
     ss << in.rdbuf();
     return ss.str();

@@ -1,5 +1,6 @@
 /** @file exam_checker.cpp  Correct derivations raise no alarm; planted mistakes are found on their line; the
  * seed. */
+#include "test_paths.hpp"
 #include "checked_text.hpp"
 #include "checker/checker.hpp"
 #include "checker/latex_parser.hpp"
@@ -23,7 +24,7 @@ using eomgen::checker::EquationCheck;
 using eomgen::checker::Role;
 using eomgen::checker::Verdict;
 
-const std::string kSource = EOMGEN_SOURCE_DIR;
+const std::string kSource = eomgen_test::source_dir();
 
 struct Derived {
     eomgen::Model model;

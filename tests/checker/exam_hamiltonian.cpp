@@ -1,6 +1,7 @@
 /** @file exam_hamiltonian.cpp  Hamilton's equations as people publish them: the plane pendulum, the spherical
  * pendulum and the heavy symmetric top agree line by line; a slip planted in each disagrees, on its line, with
  * a correction that checks itself; without a symbolic M⁻¹ the canonical identities are used. */
+#include "test_paths.hpp"
 #include "checked_text.hpp"
 #include "model/families.hpp"
 
@@ -18,7 +19,7 @@ using eomgen::checker::CheckReport;
 using eomgen::checker::EquationCheck;
 using eomgen::checker::Verdict;
 
-const std::string kSource = EOMGEN_SOURCE_DIR;
+const std::string kSource = eomgen_test::source_dir();
 
 std::string read(const std::string& fixture) {
     std::ifstream in(kSource + "/tests/checker/fixtures/" + fixture, std::ios::binary);

@@ -1,6 +1,7 @@
 /** @file exam_kinks.cpp  Derivatives through |x|, sgn, max (issue 36): the checker says on which switching surface a
  * derivative the text takes does not exist (a jump, or slopes that differ on the two sides), and not where it exists
  * (a quadratic drag at rest). */
+#include "test_paths.hpp"
 #include "checked_text.hpp"
 #include "checker/checker.hpp"
 #include "checker/kinks.hpp"
@@ -16,7 +17,7 @@ using eomgen::checker::CheckReport;
 using eomgen::checker::EquationCheck;
 using eomgen::checker::Verdict;
 
-const std::string kSource = EOMGEN_SOURCE_DIR;
+const std::string kSource = eomgen_test::source_dir();
 
 std::string notes(const EquationCheck& e) {
     std::string all;

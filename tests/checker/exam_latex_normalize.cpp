@@ -1,5 +1,6 @@
 /** @file exam_latex_normalize.cpp  The LaTeX people publish: superscripts before subscripts, accents around
  * subscripted names, equation numbers, HTML entities and Unicode letters, continued displays. */
+#include "test_paths.hpp"
 #include "checker/checker.hpp"
 #include "checker/latex_normalize.hpp"
 #include "checker/latex_parser.hpp"
@@ -37,7 +38,7 @@ bool same(const GiNaC::ex& a, const GiNaC::ex& b) {
     return (a - b).expand().is_zero();
 }
 
-const std::string kSource = EOMGEN_SOURCE_DIR;
+const std::string kSource = eomgen_test::source_dir();
 
 eomgen::checker::CheckReport check(const std::string& model_path, const std::string& text) {
     return eomgen::test::check_text(model_path, text);

@@ -1,6 +1,7 @@
 /** @file exam_numbers.cpp  Numbers a derivation works out: units to SI, the model's parameter values (or
  * --set, or a value the text chooses), agreement to the printed digits; planted wrong numbers are found on
  * their line and nothing else raises an alarm. */
+#include "test_paths.hpp"
 #include "checked_text.hpp"
 #include "checker/checker.hpp"
 #include "checker/symbol_map.hpp"
@@ -21,7 +22,7 @@ using eomgen::checker::EquationCheck;
 using eomgen::checker::Role;
 using eomgen::checker::Verdict;
 
-const std::string kSource = EOMGEN_SOURCE_DIR;
+const std::string kSource = eomgen_test::source_dir();
 const std::string kCorrect = kSource + "/tests/checker/fixtures/numbers_door_correct.md";
 const std::string kPlanted = kSource + "/tests/checker/fixtures/numbers_door_planted.md";
 

@@ -1,5 +1,6 @@
 /** @file exam_results.cpp  [[results]]: located parse errors, verification against eomgen's quantities
  * (also on the constraints), and the checker's use of results and constraints. */
+#include "test_paths.hpp"
 #include "checker/checker.hpp"
 #include "checker/derivation.hpp"
 #include "checker/symbol_map.hpp"
@@ -19,7 +20,7 @@
 
 namespace {
 
-const std::string kSource = EOMGEN_SOURCE_DIR;
+const std::string kSource = eomgen_test::source_dir();
 
 const char* kHead = R"(name = "rod"
 [[coordinates]]

@@ -2,6 +2,7 @@
  * shell, with extra environment variables, its stdout and stderr together; and the CSV it writes. */
 #pragma once
 
+#include "test_paths.hpp"
 #include <catch2/catch.hpp>
 
 #include <fcntl.h>
@@ -51,7 +52,7 @@ inline fs::path write_whole(const fs::path& dir, const std::string& name, const 
 
 /// Starts eomgen with `args` and extra environment variables; returns the pid (output to `log`).
 inline pid_t start(const std::vector<std::string>& args, const std::map<std::string, std::string>& env, const fs::path& log) {
-    std::vector<std::string> argv = {EOMGEN_EXE};
+    std::vector<std::string> argv = {eomgen_test::eomgen_exe()};
     argv.insert(argv.end(), args.begin(), args.end());
     std::vector<std::string> envs;
     for (char** e = environ; *e; ++e) {

@@ -1,6 +1,7 @@
 // `eomgen fit` as a user runs it: the worked example of docs/sensitivities.md (the damped pendulum's l and c from
 // 1,000 noisy samples, examples/fit/), the estimates within their standard errors of the values the data were made
 // with, a combination the data cannot separate, and the data and options a user gets wrong.
+#include "test_paths.hpp"
 #include "cli/eomgen_process.hpp"
 
 #include <catch2/catch.hpp>
@@ -18,9 +19,9 @@ using namespace eomgen_test;
 
 namespace {
 
-const fs::path kWork = fs::path(EOMGEN_BINARY_DIR) / "tests" / "cli" / "work" / "fit";
-const std::string kModel = std::string(EOMGEN_SOURCE_DIR) + "/models/damped_pendulum.toml";
-const std::string kData = std::string(EOMGEN_SOURCE_DIR) + "/examples/fit/damped_pendulum_data.csv";
+const fs::path kWork = fs::path(eomgen_test::binary_dir()) / "tests" / "cli" / "work" / "fit";
+const std::string kModel = eomgen_test::source_dir() + "/models/damped_pendulum.toml";
+const std::string kData = eomgen_test::source_dir() + "/examples/fit/damped_pendulum_data.csv";
 
 Result eomgen(const std::vector<std::string>& args) { return run_eomgen(kWork, args); }
 
@@ -146,7 +147,7 @@ TEST_CASE("eomgen fit: two experiments share l and c, each with its own initial 
 
 TEST_CASE("eomgen fit to a declared output: the door's tilt from the speed of its edge", "[fit]") {
     // v_edge = w psi' ([outputs] of models/door.toml), measured with noise of 0.01 m/s until just before it shuts.
-    const std::string door = std::string(EOMGEN_SOURCE_DIR) + "/models/door.toml";
+    const std::string door = eomgen_test::source_dir() + "/models/door.toml";
     const fs::path truth = kWork / "door_truth.csv";
     const Result made = eomgen({"run", door, "--t-end", "2.9", "--samples", "290", "--rtol", "1e-12", "--atol",
                                 "1e-14", "--csv", truth.string(), "--quiet"});
@@ -240,7 +241,7 @@ double estimate(const std::string& report, const std::string& name) {
 TEST_CASE("eomgen fit of a constrained model: the rod's length and where the bob starts", "[fit]") {
     // l is in the constraint x^2 + y^2 = l^2 and x(0) leaves it: each evaluation projects the start onto the rod, as
     // the sensitivities' consistent start assumes (consistent_sensitivities.hpp).
-    const std::string model = std::string(EOMGEN_SOURCE_DIR) + "/models/pendulum_cartesian.toml";
+    const std::string model = eomgen_test::source_dir() + "/models/pendulum_cartesian.toml";
     const std::string csv = (kWork / "cartesian_truth.csv").string();
     const Result truth = eomgen({"run", model, "--t-end", "2", "--samples", "40", "--rtol", "1e-12", "--atol", "1e-14",
                                  "--csv", csv, "--quiet"});
@@ -257,7 +258,7 @@ TEST_CASE("eomgen fit of a constrained model: the rod's length and where the bob
 TEST_CASE("eomgen fit of a model with switching surfaces: the friction door's tilt and friction", "[fit]") {
     // The door's hinge friction is sign(psi'): the sensitivities jump where a motion reverses (saltation.hpp). Data
     // without noise from the model's own motion (released at rest, closing in 4.46 s) give back its values.
-    const std::string model = std::string(EOMGEN_SOURCE_DIR) + "/examples/friction_door.toml";
+    const std::string model = eomgen_test::source_dir() + "/examples/friction_door.toml";
     const std::string csv = (kWork / "friction_door_truth.csv").string();
     const Result truth = eomgen({"run", model, "--t-end", "4", "--samples", "80", "--rtol", "1e-12", "--atol",
                                  "1e-14", "--csv", csv, "--quiet"});

@@ -1,6 +1,7 @@
 // `eomgen report` and `eomgen show --latex --standalone` as a user runs them, on model files and derivations
 // this test writes itself: the report's equations are show --latex's, its simulation, plot, CSV and drift
 // table are there and true, a derivation's verdicts are in it, hostile text stays text, failures write nothing.
+#include "test_paths.hpp"
 #include "cli/eomgen_process.hpp"
 
 #include <catch2/catch.hpp>
@@ -18,7 +19,7 @@ using namespace eomgen_test;
 
 namespace {
 
-const fs::path kWork = fs::path(EOMGEN_BINARY_DIR) / "tests" / "cli" / "work" / "report";
+const fs::path kWork = fs::path(eomgen_test::binary_dir()) / "tests" / "cli" / "work" / "report";
 
 Result eomgen(const std::vector<std::string>& args, std::map<std::string, std::string> env = {}) {
     return run_eomgen(kWork, args, std::move(env));
@@ -118,7 +119,7 @@ TEST_CASE("eomgen report: the drift of the invariants of a model with units, who
     // "energy [J]": the table was left out when the headers had units (the shipped bead, the main job's report).
     const fs::path dir = kWork / "units report";
     fs::remove_all(dir);
-    const Result r = eomgen({"report", std::string(EOMGEN_SOURCE_DIR) + "/examples/bead_on_hoop.toml", "-o",
+    const Result r = eomgen({"report", eomgen_test::source_dir() + "/examples/bead_on_hoop.toml", "-o",
                              dir.string(), "--t-end", "2", "--quiet"});
     INFO(r.output);
     REQUIRE(r.code == 0);

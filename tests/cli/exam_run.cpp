@@ -1,6 +1,7 @@
 // `eomgen run` as a user runs it, on model files this test writes itself (none is in models/): exit codes,
 // CSV rows and columns, invariants along the trajectory, events, the cache (no compiler on a second run,
 // invalidated by an edit, safe under two concurrent runs, refused when unsafe), a broken compiler, plots.
+#include "test_paths.hpp"
 #include "cli/eomgen_process.hpp"
 
 #include <catch2/catch.hpp>
@@ -22,7 +23,7 @@ using namespace eomgen_test;
 
 namespace {
 
-const fs::path kWork = fs::path(EOMGEN_BINARY_DIR) / "tests" / "cli" / "work" / "run";
+const fs::path kWork = fs::path(eomgen_test::binary_dir()) / "tests" / "cli" / "work" / "run";
 
 Result eomgen(const std::vector<std::string>& args, std::map<std::string, std::string> env = {}) {
     return run_eomgen(kWork, args, std::move(env));
@@ -409,7 +410,7 @@ TEST_CASE("eomgen run --plot: the curve drawn is the CSV's data, point for point
 
 TEST_CASE("eomgen run --method radau5: the stiff example's event where dopri5 finds it, in far fewer right-hand sides",
           "[run][radau5]") {
-    const std::string model = std::string(EOMGEN_SOURCE_DIR) + "/examples/stiff_spring_pendulum.toml";
+    const std::string model = eomgen_test::source_dir() + "/examples/stiff_spring_pendulum.toml";
     const auto event_and_rhs = [&](const std::string& method) {
         const Result r = eomgen({"run", model, "--method", method, "--until", "theta=0", "--rtol", "1e-8", "--atol",
                                  "1e-10", "--t-end", "10", "--quiet"});

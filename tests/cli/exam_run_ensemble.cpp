@@ -1,6 +1,7 @@
 // `eomgen run --sweep/--sample` as a user runs it (the model compiled and loaded as a table): the door's closing
 // time over a θ grid against the closed form, byte-identical tables for any thread count, reproducible Monte
 // Carlo draws, failed members as rows, the grid's order, and bad command lines refused with exit 2.
+#include "test_paths.hpp"
 #include "cli/eomgen_process.hpp"
 
 #include <catch2/catch.hpp>
@@ -23,9 +24,9 @@ using namespace eomgen_test;
 
 namespace {
 
-const fs::path kWork = fs::path(EOMGEN_BINARY_DIR) / "tests" / "cli" / "work" / "ensemble";
-const std::string kDoor = std::string(EOMGEN_SOURCE_DIR) + "/models/door.toml";
-const std::string kPendulum = std::string(EOMGEN_SOURCE_DIR) + "/models/pendulum.toml";
+const fs::path kWork = fs::path(eomgen_test::binary_dir()) / "tests" / "cli" / "work" / "ensemble";
+const std::string kDoor = eomgen_test::source_dir() + "/models/door.toml";
+const std::string kPendulum = eomgen_test::source_dir() + "/models/pendulum.toml";
 const double kPi = std::acos(-1.0);
 
 /// eomgen run with `args`: its log in a directory of the running test case's own (ctest runs the cases in

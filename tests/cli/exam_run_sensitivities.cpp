@@ -2,6 +2,7 @@
 // S = dx/d(...) against central differences of whole `eomgen run`s, through the compiled table's Jacobians
 // (analytic for an unconstrained model, forward AD through the multipliers' solve for a constrained one); the
 // mistakes a user makes and what is refused.
+#include "test_paths.hpp"
 #include "cli/eomgen_process.hpp"
 
 #include <catch2/catch.hpp>
@@ -18,7 +19,7 @@ using namespace eomgen_test;
 
 namespace {
 
-const fs::path kWork = fs::path(EOMGEN_BINARY_DIR) / "tests" / "cli" / "work" / "run_sensitivities";
+const fs::path kWork = fs::path(eomgen_test::binary_dir()) / "tests" / "cli" / "work" / "run_sensitivities";
 
 Result eomgen(const std::vector<std::string>& args) { return run_eomgen(kWork, args); }
 

@@ -1,4 +1,5 @@
 /** @file check_generated_vs_symbolic.cpp  Generated C++ against the symbolic equations at random states. */
+#include "test_paths.hpp"
 #include "approx.hpp"
 
 #include "eomgen/models/door.hpp"
@@ -50,7 +51,7 @@ double value(const GiNaC::ex& e, const GiNaC::exmap& at) {
 
 template <class Model>
 void check_model(const std::string& file) {
-    const eomgen::Model model = eomgen::load_model(std::string(EOMGEN_SOURCE_DIR) + "/models/" + file);
+    const eomgen::Model model = eomgen::load_model(eomgen_test::source_dir() + "/models/" + file);
     const eomgen::Equations eq = eomgen::derive_equations(model);
     REQUIRE(Model::nq == int(model.dof()));
     std::mt19937 rng(20261121);

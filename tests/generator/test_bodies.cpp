@@ -1,5 +1,6 @@
 /** @file test_bodies.cpp  Body-based model files: the 5-20 pendulum and the door from bodies give the same
  * equations as written by hand. */
+#include "test_paths.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model_file.hpp"
 
@@ -12,7 +13,7 @@ namespace {
 using GiNaC::ex;
 
 eomgen::Model load(const std::string& name) {
-    return eomgen::load_model(EOMGEN_SOURCE_DIR "/models/" + name);
+    return eomgen::load_model(eomgen_test::source_dir() + "/models/" + name);
 }
 
 /// Each load makes its own symbols: map `from`'s q, q̇, q̈, parameters and t onto `to`'s, by name.

@@ -1,5 +1,6 @@
 /** @file test_body_dynamics.cpp  Euler's equations, angular momentum, applied loads and springs of body-based
  * models, cross-checked against the Euler–Lagrange equations and against hand-written T and V. */
+#include "test_paths.hpp"
 #include "mechanics/bodies.hpp"
 #include "mechanics/kinematics.hpp"
 #include "mechanics/lagrangian.hpp"
@@ -138,7 +139,7 @@ force = ["F", "0", "0"]
 }
 
 TEST_CASE("5-18 dumbbell as a body: Euler's torque and dL/dt in space agree with the seed", "[bodies][dumbbell]") {
-    const eomgen::Model md = eomgen::load_model(EOMGEN_SOURCE_DIR "/models/dumbbell_5_18_bodies.toml");
+    const eomgen::Model md = eomgen::load_model(eomgen_test::source_dir() + "/models/dumbbell_5_18_bodies.toml");
     const eomgen::BodyDynamics d = eomgen::body_dynamics(md, md.bodies[0]);
     const ex m = parameter(md, "m"), l = parameter(md, "l"), th = parameter(md, "theta"),
              w = parameter(md, "omega");

@@ -1,4 +1,5 @@
 /** @file test_constraints.cpp  Constraint Jacobians, gamma, integrability verdicts and the errors on bad constraints. */
+#include "test_paths.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model_file.hpp"
 
@@ -76,7 +77,7 @@ TEST_CASE("Frobenius for two constraints", "[constraints][integrability]") {
 }
 
 TEST_CASE("the rolling sphere's constraints are not integrable, as the seed proves", "[constraints][integrability]") {
-    const eomgen::Model md = eomgen::load_model(std::string(EOMGEN_SOURCE_DIR) + "/models/rolling_sphere.toml");
+    const eomgen::Model md = eomgen::load_model(eomgen_test::source_dir() + "/models/rolling_sphere.toml");
     const eomgen::Equations eq = eomgen::derive_equations(md);
     for (const auto& c : eq.constraints) {
         INFO(c.name << ": " << c.verdict);

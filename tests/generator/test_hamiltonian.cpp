@@ -1,5 +1,6 @@
 /** @file test_hamiltonian.cpp  The Legendre transform: H(q, p) against closed forms, and cross-checked through
  * p = p(q, q̇): H ∘ p = h, ∂H/∂p = q̇, −∂H/∂q + Q = ∂L/∂q + Q (= ṗ on the Euler–Lagrange equations). */
+#include "test_paths.hpp"
 #include "mechanics/hamiltonian.hpp"
 #include "model/families.hpp"
 #include "model/model_file.hpp"
@@ -10,7 +11,7 @@
 
 namespace {
 
-const std::string kSource = EOMGEN_SOURCE_DIR;
+const std::string kSource = eomgen_test::source_dir();
 
 struct Derived {
     eomgen::Model model;

@@ -1,5 +1,6 @@
 /** @file test_kinematics.cpp  Euler-angle kinematics: Goldstein (4.87), ω from Ȧ Aᵀ for every sequence, the
  * rolling sphere. */
+#include "test_paths.hpp"
 #include "mechanics/kinematics.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model_file.hpp"
@@ -81,7 +82,7 @@ TEST_CASE("every Euler sequence: composed ω equals the one from [ω']x = A Ȧ�
 
 TEST_CASE("rolling sphere (Ex. 25): T and the no-slip constraints rebuilt from the kinematics",
           "[kinematics]") {
-    const eomgen::Model md = eomgen::load_model(EOMGEN_SOURCE_DIR "/models/rolling_sphere.toml");
+    const eomgen::Model md = eomgen::load_model(eomgen_test::source_dir() + "/models/rolling_sphere.toml");
     auto q = [&](const std::string& name) -> const eomgen::Coordinate& {
         for (const auto& c : md.coordinates)
             if (c.name == name) return c;

@@ -1,4 +1,5 @@
 /** @file test_model_file.cpp  Model files: real models load; every problem is reported at file:line:col. */
+#include "test_paths.hpp"
 #include "model/model_file.hpp"
 #include "model/names.hpp"
 
@@ -52,7 +53,7 @@ const std::string kLagrangian = "[lagrangian]\nT = \"1/2*m*psi'^2\"\nV = \"m*psi
 }  // namespace
 
 TEST_CASE("models/door.toml loads with T and V as in Goldstein", "[model]") {
-    const eomgen::Model model = eomgen::load_model(EOMGEN_SOURCE_DIR "/models/door.toml");
+    const eomgen::Model model = eomgen::load_model(eomgen_test::source_dir() + "/models/door.toml");
     CHECK(model.name == "door");
     CHECK(model.title == "Closing tilted door");
     CHECK(model.source == "Goldstein ch. 5, Ex. 30");
@@ -70,7 +71,7 @@ TEST_CASE("models/door.toml loads with T and V as in Goldstein", "[model]") {
     CHECK(latex_of(psi.qdd) == "\\ddot{\\psi}");
     CHECK(psi.initial == 0.0);
     CHECK(psi.rate == 0.0);
-    CHECK(psi.where.str() == EOMGEN_SOURCE_DIR "/models/door.toml:10:9");
+    CHECK(psi.where.str() == eomgen_test::source_dir() + "/models/door.toml:10:9");
 
     const GiNaC::ex m = parameter(model, "m").symbol, w = parameter(model, "w").symbol,
                     h = parameter(model, "h").symbol, g = parameter(model, "g").symbol,
@@ -92,7 +93,7 @@ TEST_CASE("models/door.toml loads with T and V as in Goldstein", "[model]") {
 }
 
 TEST_CASE("models/pendulum_5_20.toml loads with its multi-line T", "[model]") {
-    const eomgen::Model model = eomgen::load_model(EOMGEN_SOURCE_DIR "/models/pendulum_5_20.toml");
+    const eomgen::Model model = eomgen::load_model(eomgen_test::source_dir() + "/models/pendulum_5_20.toml");
     CHECK(model.name == "pendulum_5_20");
     REQUIRE(model.dof() == 2);
     REQUIRE(model.parameters.size() == 5);
@@ -326,7 +327,7 @@ TEST_CASE("expression errors point at the character inside the string", "[model]
 }
 
 TEST_CASE("mutated model files load or fail with a ModelError, nothing else", "[model]") {
-    std::ifstream in(EOMGEN_SOURCE_DIR "/models/pendulum_5_20.toml", std::ios::binary);
+    std::ifstream in(eomgen_test::source_dir() + "/models/pendulum_5_20.toml", std::ios::binary);
     std::ostringstream buffer;
     buffer << in.rdbuf();
     const std::string original = buffer.str();

@@ -2,6 +2,7 @@
  * L, the forces and the constraints have the symmetry, with their closed forms, constant along the equations of
  * motion at random states; nothing reported where there is no symmetry. And Hamilton's equations of a constrained
  * model carrying the multipliers. */
+#include "test_paths.hpp"
 #include "mechanics/double_evaluator.hpp"
 #include "mechanics/hamiltonian.hpp"
 #include "mechanics/lagrangian.hpp"
@@ -17,7 +18,7 @@
 
 namespace {
 
-const std::string kSource = EOMGEN_SOURCE_DIR;
+const std::string kSource = eomgen_test::source_dir();
 
 std::string coordinates(const std::vector<std::string>& names) {
     std::string s;

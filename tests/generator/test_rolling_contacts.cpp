@@ -1,5 +1,6 @@
 /** @file test_rolling_contacts.cpp  Bodies oriented by chains of rotations (after another body's) and placed at a
  *  point of another body, and wheels rolling on a plane ([[contacts]]) against hand-written constraints. */
+#include "test_paths.hpp"
 #include "mechanics/double_evaluator.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model_file.hpp"
@@ -86,7 +87,7 @@ Eigen::VectorXd accelerations(const eomgen::Model& model, const eomgen::Equation
 }  // namespace
 
 TEST_CASE("rolling contact: a coin as a body and a contact moves as the hand-written rolling disc", "[rolling][bodies]") {
-    const eomgen::Model hand = eomgen::load_model(EOMGEN_SOURCE_DIR "/models/rolling_disc.toml");
+    const eomgen::Model hand = eomgen::load_model(eomgen_test::source_dir() + "/models/rolling_disc.toml");
     const eomgen::Model body = eomgen::parse_model(contact_disc(), "coin.toml");
     // The contact point is the coordinates' (x, y): touching holds identically and is left out.
     REQUIRE(body.constraints.size() == 2);

@@ -1,5 +1,6 @@
 /** @file test_tops.cpp  Rigid bodies of the seed from body descriptions: heavy top's steady precession, the
  * rolling cone's T (5-17). */
+#include "test_paths.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model_file.hpp"
 
@@ -27,7 +28,7 @@ const eomgen::Coordinate& coordinate(const eomgen::Model& m, const std::string& 
 
 TEST_CASE("heavy symmetric top: steady precession obeys I cos(theta) phi'^2 - I3 w3 phi' + M g l = 0",
           "[bodies][top]") {
-    const eomgen::Model md = eomgen::load_model(EOMGEN_SOURCE_DIR "/models/heavy_symmetric_top.toml");
+    const eomgen::Model md = eomgen::load_model(eomgen_test::source_dir() + "/models/heavy_symmetric_top.toml");
     const eomgen::Equations eq = eomgen::derive_equations(md);
     const auto &phi = coordinate(md, "phi"), &theta = coordinate(md, "theta"), &psi = coordinate(md, "psi");
     const ex M = symbol_of(md, "M"), l = symbol_of(md, "l"), g = symbol_of(md, "g"), I1 = symbol_of(md, "I1"),

@@ -2,6 +2,7 @@
  *  about upright straight running (eomgen modes --steady), against the benchmark of Meijaard, Papadopoulos, Ruina
  *  and Schwab (2007): its published matrices, eigenvalues and weave and capsize speeds, and its appendix's closed
  *  forms written out here independently, for the benchmark's parameters and for two sets of our own. */
+#include "test_paths.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "mechanics/steady_motion.hpp"
 #include "mechanics/steady_sweep.hpp"
@@ -87,7 +88,7 @@ double relative(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
 }
 
 struct Bicycle {
-    eomgen::Model model = eomgen::load_model(EOMGEN_SOURCE_DIR "/models/whipple_bicycle.toml");
+    eomgen::Model model = eomgen::load_model(eomgen_test::source_dir() + "/models/whipple_bicycle.toml");
     eomgen::Equations eq = eomgen::derive_equations(model);
 };
 

@@ -1,5 +1,6 @@
 /** @file exam_constraints.cpp  Constrained systems: rolling sphere (Ex. 25), Cartesian pendulum, rolling disc,
  *  the driven dumbbell (5-18) and a damped pendulum, against invariants, closed forms and other formulations. */
+#include "test_paths.hpp"
 #include "approx.hpp"
 
 #include "eomgen/constraints.hpp"
@@ -225,7 +226,7 @@ TEST_CASE("inconsistent initial conditions are refused with the constraint's nam
 }
 
 TEST_CASE("generated constraint code equals the symbolic Jacobians and gamma", "[generated][constraints]") {
-    const eomgen::Model md = eomgen::load_model(std::string(EOMGEN_SOURCE_DIR) + "/models/rolling_disc.toml");
+    const eomgen::Model md = eomgen::load_model(eomgen_test::source_dir() + "/models/rolling_disc.toml");
     const eomgen::Equations eq = eomgen::derive_equations(md);
     Disc::Params p;
     std::mt19937 rng(3);

@@ -1,4 +1,5 @@
 /** @file exam_pendulum_5_20.cpp  Goldstein ch. 5 Ex. 20, the rod with a free disk: equations and invariants. */
+#include "test_paths.hpp"
 #include "eomgen/integrate.hpp"
 #include "eomgen/models/pendulum_5_20.hpp"
 #include "eomgen/symplectic.hpp"
@@ -16,7 +17,7 @@ namespace {
 using Pendulum = eomgen::models::pendulum_5_20::Model<double>;
 
 const eomgen::Model& model() {
-    static const eomgen::Model m = eomgen::load_model(std::string(EOMGEN_SOURCE_DIR) + "/models/pendulum_5_20.toml");
+    static const eomgen::Model m = eomgen::load_model(eomgen_test::source_dir() + "/models/pendulum_5_20.toml");
     return m;
 }
 

@@ -2,6 +2,7 @@
  *  (eomgen modes --steady): the rolling disc's upright rolling against its closed-form wobble frequency and
  *  stability bound, the heavy top's steady precession against Goldstein's condition, and the sleeping top (in
  *  tilt angles, where Euler angles are singular) against its stability bound I3² ω² > 4 I M g l. */
+#include "test_paths.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "mechanics/small_oscillations.hpp"
 #include "mechanics/steady_motion.hpp"
@@ -24,7 +25,7 @@ std::size_t index_of(const eomgen::Model& m, const std::string& name) {
 
 TEST_CASE("steady motion: a coin rolling upright wobbles at the closed-form rate and falls below sqrt(g/3R)",
           "[physics][steady]") {
-    const eomgen::Model model = eomgen::load_model(EOMGEN_SOURCE_DIR "/models/rolling_disc.toml");
+    const eomgen::Model model = eomgen::load_model(eomgen_test::source_dir() + "/models/rolling_disc.toml");
     const eomgen::Equations eq = eomgen::derive_equations(model);
     eomgen::SteadyMotionSolver solver(model, eq);
     const double m = 1.0, R = 0.1, g = 9.81, Id = m * R * R / 4, Ia = m * R * R / 2;
@@ -46,7 +47,7 @@ TEST_CASE("steady motion: a coin rolling upright wobbles at the closed-form rate
 
 TEST_CASE("steady motion: the heavy top's precession angle satisfies Goldstein's steady-precession condition",
           "[physics][steady]") {
-    const eomgen::Model model = eomgen::load_model(EOMGEN_SOURCE_DIR "/models/heavy_symmetric_top.toml");
+    const eomgen::Model model = eomgen::load_model(eomgen_test::source_dir() + "/models/heavy_symmetric_top.toml");
     const eomgen::Equations eq = eomgen::derive_equations(model);
     eomgen::SteadyMotionOptions o;
     o.rates.push_back({index_of(model, "phi"), GiNaC::numeric(4), "phi_dot=4"});

@@ -2,6 +2,7 @@
  * equilibrium found at a given q. */
 #pragma once
 
+#include "test_paths.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "mechanics/small_oscillations.hpp"
 #include "model/model_file.hpp"
@@ -26,7 +27,7 @@ inline Derived derive(const std::string& text) {
 }
 
 inline Derived load(const std::string& relative) {
-    Derived d{eomgen::load_model(std::string(EOMGEN_SOURCE_DIR) + "/" + relative), {}};
+    Derived d{eomgen::load_model(eomgen_test::source_dir() + "/" + relative), {}};
     d.eq = eomgen::derive_equations(d.model);
     return d;
 }
