@@ -267,7 +267,7 @@ void Checker::check_chain(const FullChain& c, std::vector<EquationCheck>& out) {
         if (last != n && k > last + 1) {
             bool all_equal = true;
             for (std::size_t q = last; q < k; ++q)
-                all_equal = all_equal && c.relations[q] != Relation::Inequality;
+                all_equal = all_equal && c.relations[q] != Relation::Inequality && c.relations[q] != Relation::NotEqual;
             if (all_equal) out.push_back(check_link_noting_uses(c, last, k, true));
         }
         last = k;

@@ -278,6 +278,11 @@ class Checker : public Comparisons {
     bool conserved_on_motion(const GiNaC::ex& value);
     void check_chain(const FullChain& c, std::vector<EquationCheck>& out);
     EquationCheck check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge);
+    /// `a \neq b` between expressions (not_equal.cpp): agrees where they are not identically equal.
+    void check_not_equal(const PSide& L, const PSide& R, EquationCheck& r);
+    /// How many different quantities (T, V, L, a momentum p_q, …) the rows of the display holding offset `at` name
+    /// on their left (compare_link.cpp).
+    int display_heads(std::size_t at) const;
     /// check_link, with anything GiNaC throws on a strange input turned into a "not comparable" verdict.
     EquationCheck safe_check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
         try {

@@ -16,8 +16,10 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     Relation rel = Relation::Equal;
     for (std::size_t q = i; q < j; ++q)
         if (c.relations[q] != Relation::Equal) rel = c.relations[q];
-    const std::string sign =
-        rel == Relation::Approx ? " \\approx " : (rel == Relation::Inequality ? " \\;?\\; " : " = ");
+    const std::string sign = rel == Relation::Approx       ? " \\approx "
+                             : rel == Relation::Inequality ? " \\;?\\; "
+                             : rel == Relation::NotEqual   ? " \\neq "
+                                                           : " = ";
     r.equation = (L.side->source.empty() ? std::string("\\ldots") : L.side->source) + sign +
                  (R.side->source.empty() ? std::string("\\ldots") : R.side->source);
     if (bridge) r.notes.push_back("compared across the step(s) between them that cannot be compared");
@@ -70,7 +72,7 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
                        "$ is still eomgen's)");
         return r;
     }
-    if (rel == Relation::Inequality) {
+    if (rel == Relation::Inequality || rel == Relation::NotEqual) {
         // `\gamma < 0`, `0 \le \theta < \pi`, `g > 0`: one name against a number is the range or sign of a
         // quantity the text considers (a convention, an assumption, the case at hand), not a result.
         for (int side = 0; side < 2; ++side) {
@@ -83,6 +85,10 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
                                "$ the text considers (a convention or an assumption, not a result)");
                 return r;
             }
+        }
+        if (rel == Relation::NotEqual) {
+            check_not_equal(L, R, r);
+            return r;
         }
         r.reason = "an inequality or a relation other than equality is not compared";
         return r;
@@ -243,6 +249,42 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     return r;
 }
 
+namespace {
+
+/// The quantity a row names on its left: `L(\theta, \dot{\theta})` → L (the letter as a function), `p_\theta`.
+std::string head_letter(const std::string& source) {
+    std::string head = trimmed(source);
+    if (const std::size_t paren = head.find('('); paren != std::string::npos && !head.empty() && head.back() == ')')
+        head = trimmed(head.substr(0, paren));
+    return head;
+}
+
+/// A letter that names a quantity of the motion (T, V, L, H, E, a momentum p_q).
+bool is_quantity_letter(const std::string& head) {
+    static const char* const kLetters[] = {"T", "K", "V", "U", "L", "H", "E", "\\mathcal{L}", "\\mathscr{L}"};
+    if (head.rfind("p_", 0) == 0 && head.size() <= 12 && head.find_first_of("=+-*/ ") == std::string::npos) return true;
+    return std::find(std::begin(kLetters), std::end(kLetters), head) != std::end(kLetters);
+}
+
+}  // namespace
+
+int Checker::display_heads(std::size_t at) const {
+    int block = -1;
+    for (const MathRow& row : d_.rows)
+        if (row.display && row.offset <= at && at <= row.offset + row.text.size()) block = row.block;
+    if (block < 0) return 0;
+    std::set<std::string> heads;
+    for (const MathRow& row : d_.rows) {
+        if (!row.display || row.block != block) continue;
+        const std::size_t eq = row.text.find('=');
+        if (eq == std::string::npos) continue;
+        std::string head = head_letter(row.text.substr(0, eq));
+        if (!head.empty() && head.front() == '&') head = trimmed(head.substr(1));
+        if (is_quantity_letter(head)) heads.insert(head);
+    }
+    return int(heads.size());
+}
+
 void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r) {
     // A row in a letter the text has just given another meaning (`p_\theta = L`) is about that quantity, not
     // about what the sentence before the display names.
@@ -262,7 +304,7 @@ void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j
         {"T", "kinetic"},          {"K", "kinetic"},        {"V", "potential"},      {"U", "potential"},
         {"L", "lagrangian"},       {"H", "hamiltonian"},    {"E", "energy"},         {"\\mathcal{L}", "lagrangian"},
         {"\\mathscr{L}", "lagrangian"}};
-    const std::string head = trimmed(c.sides[0].side->source);
+    const std::string head = head_letter(c.sides[0].side->source);
     bool self_labelled = false;
     for (const auto& [letter, noun] : kSelfLabels)
         if (head == letter) {
@@ -272,6 +314,15 @@ void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j
     try {  // what GiNaC throws on a strange input leaves the verdict as it is
         const auto label = label_before(d_, c.relation_offsets[j - 1], coordinate, model_);
         if (!label) return;
+        // `L(\theta, \dot\theta) = \frac{1}{2}I_{p}\dot\theta^2 - V` under "the kinetic energy is purely rotational:":
+        // the Lagrangian built from the energy the sentence describes. And a display whose rows begin with letters
+        // of different quantities (`L = …`, `p_\theta = …`): one label before it cannot name them all, and each row
+        // names its own.
+        const bool lagrangian = head == "L" || head == "\\mathcal{L}" || head == "\\mathscr{L}";
+        if (lagrangian && (label->kind == LabelKind::Kinetic || label->kind == LabelKind::Potential))
+            self_labelled = true;
+        if (is_quantity_letter(head) && display_heads(c.sides[0].base + c.sides[0].side->begin) > 1)
+            self_labelled = true;
         Prepared a = prepare(c.sides[i]), b = prepare(c.sides[j]);
         if (!a.comparable() || !b.comparable()) return;
         GiNaC::exmap zero;  // `= \text{const}`: any constant

@@ -63,6 +63,8 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
                 operator_notes_.push_back(n);
         return time_derivative(inner, model_) / c;
     }
+    if (is_ex_the_function(e, evalat))  // the point of an evaluation bar, after the derivatives under it
+        return resolve_operators(e.op(0)).subs(GiNaC::ex_to<GiNaC::lst>(e.op(1)));
     if (is_ex_the_function(e, pbracket))
         return hamilton_.poisson(resolve_operators(definitions_.expand(e.op(0), current_offset_)),
                                  resolve_operators(definitions_.expand(e.op(1), current_offset_)));

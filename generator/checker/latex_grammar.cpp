@@ -5,6 +5,8 @@
 #include "model/nonsmooth.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <iterator>
 #include <cmath>
 
 namespace eomgen::checker::parsing {
@@ -354,6 +356,55 @@ GiNaC::ex Parser::absolute_value(std::size_t at) {
     return eomgen::real_abs(e);
 }
 
+GiNaC::ex Parser::evaluation_bar(std::size_t at, GiNaC::ex e) {
+    if (!is_char(peek(), "_")) fail(at, "an evaluation bar \\left. \\right| without the point it is taken at is not read");
+    ++pos_;
+    const std::pair<std::size_t, std::size_t> r = argument_range("the evaluation bar");
+    if (is_char(peek(), "^")) fail(at, "an evaluation bar with limits \\left. \\right|_{a}^{b} is not read");
+    std::vector<std::size_t> cuts{r.first};  // `x = a, y = b`: the assignments, split at top-level commas
+    std::vector<std::size_t> equals;
+    int depth = 0;
+    for (std::size_t k = r.first; k < r.second; ++k) {
+        const Token& tk = t_[k];
+        if (tk.kind != Tok::Char) continue;
+        if (tk.text == "{" || tk.text == "(" || tk.text == "[") ++depth;
+        if (tk.text == "}" || tk.text == ")" || tk.text == "]") --depth;
+        if (depth != 0) continue;
+        if (tk.text == ",") cuts.push_back(k + 1);
+        if (tk.text == "=") equals.push_back(k);
+    }
+    if (equals.empty()) {
+        // `\right|_{\text{inertial}}`: the frame the rate is taken in, a label on the expression, not a value.
+        static const char* const frames[] = {"inertial", "space", "spatial", "lab", "fixed", "space-fixed",
+                                             "body", "rot", "rotating", "rel", "relative"};
+        const Token* label = &t_[r.first];
+        std::string word = label->raw;
+        for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        word = trim(word);
+        if (r.second == r.first + 1 && label->kind == Tok::Word && takes_raw_argument(label->text) &&
+            std::find(std::begin(frames), std::end(frames), word) != std::end(frames))
+            return e;
+        fail(at, "an evaluation bar \\left. \\right|_{...} at a point it does not state as name = value is not read");
+    }
+    if (equals.size() != cuts.size()) fail(at, "an evaluation bar's point is read as name = value, one per comma");
+    cuts.push_back(r.second + 1);
+    GiNaC::lst at_point;
+    for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
+        const std::size_t eq = equals[i];
+        const GiNaC::ex name = expr_in({cuts[i], eq}, "the evaluation bar's name");
+        const GiNaC::ex value = expr_in({eq + 1, cuts[i + 1] - 1}, "the evaluation bar's value");
+        if (!GiNaC::is_a<GiNaC::symbol>(name))
+            fail(at, "an evaluation bar sets a name to a value; the left of its '=' is not one name");
+        at_point.append(name == value);
+    }
+    // Derivatives in e are taken by the checker, which knows the model (latex_parser.hpp): the point goes in after.
+    for (GiNaC::const_preorder_iterator x = e.preorder_begin(); x != e.preorder_end(); ++x)
+        if (is_ex_the_function(*x, ddt) || is_ex_the_function(*x, pdiff) || is_ex_the_function(*x, dby) ||
+            is_ex_the_function(*x, pbracket) || is_ex_the_function(*x, antiderivative))
+            return evalat(e, at_point);
+    return e.subs(at_point);
+}
+
 GiNaC::ex Parser::left_right(std::size_t at) {
     if (label_arguments()) return 1;
     ++pos_;  // \left
@@ -380,7 +431,7 @@ GiNaC::ex Parser::left_right(std::size_t at) {
     const std::string rdelim = rd->text;
     ++pos_;
     if ((delim == "|" || delim == "\\vert" || delim == "\\lvert")) return eomgen::real_abs(e);
-    if (delim == "." && rdelim == "|") fail(at, "an evaluation bar \\left. \\right| is not read");
+    if (delim == "." && (rdelim == "|" || rdelim == "\\vert" || rdelim == "\\rvert")) return evaluation_bar(at, e);
     if (delim == "\\langle") fail(at, "angle brackets are not read");
     return e;
 }

@@ -256,6 +256,10 @@ class Parser {
 
     GiNaC::ex left_right(std::size_t at);
 
+    /// After `\left. e \right|`: `_{\theta=\theta_0}` puts the value in e, `_{\text{inertial}}` (the frame of a rate)
+    /// leaves e as it is; any other point, or none, fails.
+    GiNaC::ex evaluation_bar(std::size_t at, GiNaC::ex e);
+
     // ----- names
 
     bool starts_name(const Token* t) const;

@@ -322,6 +322,12 @@ GiNaC::ex Parser::resolve(const NameParts& n, std::size_t at) {
         }
     }
     side_.uses.push_back({full, offset_of(at)});
+    if (const FreeName* same = ctx_.subscript_case_variant(full, n.kind)) {
+        const std::string note = "reads $" + full + "$ as $" + same->name +
+                                 "$, the same name but for the case of its subscript, as the text writes both";
+        if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end()) side_.notes.push_back(note);
+        return same->symbol;
+    }
     return ctx_.free_symbol(full, n.kind);
 }
 

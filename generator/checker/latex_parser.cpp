@@ -8,6 +8,7 @@
 #include "checker/units.hpp"
 
 #include <algorithm>
+#include <cctype>
 
 namespace eomgen::checker {
 
@@ -16,6 +17,7 @@ REGISTER_FUNCTION(pdiff, dummy().latex_name("\\partial"))
 REGISTER_FUNCTION(pbracket, dummy().latex_name("\\{\\}"))
 REGISTER_FUNCTION(dby, dummy().latex_name("\\frac{d}{ds}"))
 REGISTER_FUNCTION(antiderivative, dummy().latex_name("\\int"))
+REGISTER_FUNCTION(evalat, dummy().latex_name("\\Big|"))
 
 const FreeName* LatexContext::free_name_of(const GiNaC::ex& symbol) const {
     if (!GiNaC::is_a<GiNaC::symbol>(symbol)) return nullptr;
@@ -30,6 +32,21 @@ GiNaC::symbol LatexContext::free_symbol(const std::string& name, NameKind kind) 
     FreeName f{name, kind, GiNaC::symbol(name, name)};
     free_names.emplace(name, f);
     return f.symbol;
+}
+
+const FreeName* LatexContext::subscript_case_variant(const std::string& name, NameKind kind) const {
+    const std::size_t sub = name.find("_{");
+    if (sub == std::string::npos || free_names.count(name)) return nullptr;
+    const auto lower = [](std::string s) {
+        for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        return s;
+    };
+    const std::string folded = lower(name.substr(sub));
+    for (const auto& [other, free] : free_names)
+        if (free.kind == kind && other.size() == name.size() && other.compare(0, sub + 2, name, 0, sub + 2) == 0 &&
+            lower(other.substr(sub)) == folded)
+            return &free;
+    return nullptr;
 }
 
 namespace {
@@ -86,6 +103,7 @@ std::vector<RelationAt> relations_in(const std::vector<Token>& t, const std::vec
             if (k.text == "\\approx" || k.text == "\\simeq" || k.text == "\\doteq" || k.text == "\\cong")
                 r = Relation::Approx;
             if (k.text == "\\equiv") r = Relation::Equal;
+            if (k.text == "\\neq" || k.text == "\\ne") r = Relation::NotEqual;
             out.push_back({i, 1, r});
         }
     }

@@ -21,6 +21,9 @@ DECLARE_FUNCTION_2P(dby)  ///< dby(x, s): dx/ds by a name the text introduces (`
 /// antiderivative(f, x): the indefinite integral ∫ f dx (`\int F(x)\,dx`), known up to a constant of integration
 /// (indefinite_integral.hpp)
 DECLARE_FUNCTION_2P(antiderivative)
+/// evalat(x, {y == a, ...}): x at the point y = a, put in after the derivatives in x are taken (`\left.\frac{\partial
+/// V}{\partial \theta}\right|_{\theta = 0}`)
+DECLARE_FUNCTION_2P(evalat)
 
 /// What a name the parser did not find among the known names stands for.
 enum class NameKind {
@@ -59,6 +62,9 @@ struct LatexContext {
     const FreeName* free_name_of(const GiNaC::ex& symbol) const;
     /// The symbol for a free name, created when new.
     GiNaC::symbol free_symbol(const std::string& name, NameKind kind);
+    /// A free name other than `name` that differs from it only in the case of its subscript (`I_{P}` for `I_{p}`,
+    /// `I_{P}'` for `I_{p}'`), of the same kind; nullptr when there is none or `name` is itself a free name.
+    const FreeName* subscript_case_variant(const std::string& name, NameKind kind) const;
 };
 
 /// A free name where it is used, for messages ("unknown symbol I_{3} at 12:7").
@@ -88,7 +94,8 @@ struct Side {
 enum class Relation {
     Equal,       ///< `=`, `\equiv`, `:=`
     Approx,      ///< `\approx`, `\simeq`: compared within the rounding of the numbers, at least 1%
-    Inequality,  ///< `<`, `\le`, `\neq`, `\sim`, `\propto`, ...: not compared
+    Inequality,  ///< `<`, `\le`, `\sim`, `\propto`, ...: not compared
+    NotEqual,    ///< `\neq`: holds where the two sides are not identically equal
 };
 
 /// `a = b = c`: the sides and the relations between neighbours (relations.size() == sides.size() - 1).

@@ -1,0 +1,145 @@
+/** @file exam_readings.cpp  Readings the corpus of real derivations taught the checker (docs/checker.md): an
+ * evaluation bar, a subscript written in both cases, `\neq` as a claim, and a row's own letter before the label
+ * of the sentence leading into its display. Each against the plane pendulum (models/pendulum.toml: φ; m, l, g). */
+#include "checked_text.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+using eomgen::checker::CheckReport;
+using eomgen::checker::EquationCheck;
+using eomgen::checker::Verdict;
+
+const char* const kModel = "models/pendulum.toml";
+
+/// The verdicts on `line` of the text, described for INFO().
+std::vector<const EquationCheck*> on_line(const CheckReport& r, int line) {
+    std::vector<const EquationCheck*> out;
+    for (const EquationCheck& e : r.equations)
+        if (e.where.line == line) out.push_back(&e);
+    return out;
+}
+
+std::string described(const CheckReport& r) {
+    std::string s;
+    for (const EquationCheck& e : r.equations) s += eomgen::test::describe(e) + "\n";
+    return s;
+}
+
+}  // namespace
+
+TEST_CASE("readings: an evaluation bar puts its point in, or leaves a frame's rate as it is", "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+$$ V = -m g l \cos\phi $$
+
+At the bottom the force vanishes:
+
+$$ \left.\frac{\partial V}{\partial \phi}\right|_{\phi=0} = 0 $$
+
+and away from it, where a slip is made:
+
+$$ \left.\frac{\partial V}{\partial \phi}\right|_{\phi=\pi/2} = 0 $$
+
+$$ \left.\frac{d}{dt}\left(m l^2 \dot{\phi}\right)\right|_{\text{inertial}} = -m g l \sin\phi $$
+
+$$ \left.\frac{\partial V}{\partial \phi}\right|_{\text{eq}} = 0 $$
+)");
+    INFO(described(r));
+    const auto at_zero = on_line(r, 7), at_right_angle = on_line(r, 11), inertial = on_line(r, 13),
+               unread = on_line(r, 15);
+    REQUIRE(at_zero.size() == 1);
+    CHECK(at_zero[0]->verdict == Verdict::Agrees);
+    REQUIRE(at_right_angle.size() == 1);
+    CHECK(at_right_angle[0]->verdict == Verdict::Disagrees);  // m g l at φ = π/2, not 0
+    REQUIRE(inertial.size() == 1);
+    CHECK(inertial[0]->verdict == Verdict::Agrees);  // the φ equation, the frame a label
+    REQUIRE(unread.size() == 1);
+    CHECK(unread[0]->verdict == Verdict::NotComparable);
+    CHECK(unread[0]->reason.find("evaluation bar") != std::string::npos);
+}
+
+TEST_CASE("readings: a name written with its subscript in both cases is one name, with a note", "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+The moment of inertia about the pivot is $I_{P} = m l^2$, and
+
+$$ L = \frac{1}{2} I_{p} \dot{\phi}^2 + m g l \cos\phi $$
+
+$$ I_{p} \ddot{\phi} = -m g l \sin\phi $$
+
+$$ I_{p} \ddot{\phi} = -m g \sin\phi $$
+)");
+    INFO(described(r));
+    const auto lagrangian = on_line(r, 5), motion = on_line(r, 7), slip = on_line(r, 9);
+    REQUIRE(lagrangian.size() == 1);
+    CHECK(lagrangian[0]->verdict == Verdict::Agrees);
+    REQUIRE(motion.size() == 1);
+    CHECK(motion[0]->verdict == Verdict::Agrees);
+    REQUIRE(slip.size() == 1);
+    CHECK(slip[0]->verdict == Verdict::Disagrees);
+    // The note is on the row where the second spelling first appears.
+    CHECK(eomgen::test::has_note(*lagrangian[0], "the same name but for the case of its subscript"));
+}
+
+TEST_CASE("readings: a \\neq b claims that the sides differ, and a name against a number is a condition",
+          "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+$$ \frac{\partial L}{\partial \phi} \neq 0 $$
+
+$$ \frac{\partial L}{\partial \dot{\phi}} \neq m l^2 \dot{\phi} $$
+
+For $\phi \neq 0$ the bob is off the vertical.
+)");
+    INFO(described(r));
+    const auto differs = on_line(r, 3), same = on_line(r, 5), condition = on_line(r, 7);
+    REQUIRE(differs.size() == 1);
+    CHECK(differs[0]->verdict == Verdict::Agrees);
+    REQUIRE(same.size() == 1);
+    CHECK(same[0]->verdict == Verdict::Disagrees);
+    REQUIRE(condition.size() == 1);
+    CHECK(condition[0]->verdict == Verdict::NotJudged);
+}
+
+TEST_CASE("readings: a row that begins with its own letter is labelled by it, not by the sentence before",
+          "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+About the pivot the kinetic energy is purely rotational:
+
+$$
+  L(\phi, \dot{\phi}) = \frac{1}{2} m l^2 \dot{\phi}^2 + m g l \cos\phi, \\
+  p_\phi = \frac{\partial L}{\partial \dot{\phi}} = m l^2 \dot{\phi}
+$$
+)");
+    INFO(described(r));
+    for (const int line : {6, 7}) {
+        const auto rows = on_line(r, line);
+        REQUIRE(!rows.empty());
+        for (const EquationCheck* e : rows) CHECK(e->verdict == Verdict::Agrees);
+    }
+    // A Lagrangian alone under the energy it is built from; another quantity's letter under a label still answers
+    // to it.
+    const CheckReport one = eomgen::test::check_text(kModel, R"(# Pendulum
+
+The kinetic energy is purely rotational:
+
+$$ L = \frac{1}{2} m l^2 \dot{\phi}^2 + m g l \cos\phi $$
+
+The kinetic energy is
+
+$$ V = -m g l \cos\phi $$
+)");
+    INFO(described(one));
+    const auto lagrangian = on_line(one, 5), potential = on_line(one, 9);
+    REQUIRE(lagrangian.size() == 1);
+    CHECK(lagrangian[0]->verdict == Verdict::Agrees);
+    REQUIRE(potential.size() == 1);
+    CHECK(potential[0]->verdict == Verdict::Disagrees);
+    CHECK(potential[0]->compared_with.find("its label") != std::string::npos);
+}
