@@ -322,6 +322,14 @@ GiNaC::ex Parser::bracket_group() {
     }
     if (!is_char(t, close.c_str()) &&
         !(t && t->kind == Tok::Char && (t->text == ")" || t->text == "]"))) {
+        // `\frac{mg}{(m+(k^2 mR^2)/(R_0^2 )}`: a bracket left open inside a brace group closes with the group, as
+        // its author meant, said in a note.
+        if (!t && end_ < t_.size() && is_char(&t_[end_], "}")) {
+            const std::string note = "reads the '" + open + "' that is not closed as closed at the end of its group";
+            if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end())
+                side_.notes.push_back(note);
+            return e;
+        }
         if (t && !stops_expression(t)) fail(pos_, "unexpected " + describe(pos_));
         fail(at, "missing '" + close + "' for this '" + open + "'");
     }

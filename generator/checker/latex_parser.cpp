@@ -58,20 +58,33 @@ using namespace parsing;
 /// Depth of each token (braces, brackets, parentheses, \left...\right, \begin...\end) at its start.
 std::vector<int> depths(const std::vector<Token>& t) {
     std::vector<int> d(t.size(), 0);
-    int depth = 0;
+    // What is open, innermost last. A '}' closes its '{' and whatever the group left open inside it (TeX's groups
+    // are what counts: `\frac{mg}{(m+(k^2 m R^2)/(R_0^2 )}` leaves a '(' open, and the '=' after the fraction is
+    // still at the top level).
+    std::vector<std::string> open;
     for (std::size_t i = 0; i < t.size(); ++i) {
         const Token& k = t[i];
-        const bool closes = (k.kind == Tok::Char && (k.text == "}" || k.text == ")" || k.text == "]")) ||
-                            (k.kind == Tok::Word && (k.text == "\\right" || k.text == "\\end" || k.text == "\\}"));
-        if (closes && depth > 0) --depth;
-        d[i] = depth;
+        if (k.kind == Tok::Char && k.text == "}") {
+            if (std::find(open.begin(), open.end(), "{") != open.end())
+                while (!open.empty()) {
+                    const std::string last = open.back();
+                    open.pop_back();
+                    if (last == "{") break;
+                }
+            else if (!open.empty())
+                open.pop_back();
+        } else if ((k.kind == Tok::Char && (k.text == ")" || k.text == "]")) ||
+                   (k.kind == Tok::Word && (k.text == "\\right" || k.text == "\\end" || k.text == "\\}"))) {
+            if (!open.empty()) open.pop_back();
+        }
+        d[i] = int(open.size());
         const bool opens = (k.kind == Tok::Char && (k.text == "{" || k.text == "(" || k.text == "[")) ||
                            (k.kind == Tok::Word && (k.text == "\\left" || k.text == "\\begin" || k.text == "\\{"));
-        if (opens) ++depth;
+        if (opens) open.push_back(k.text);
         // \left( and \right): the delimiter token that follows is part of the command.
         if (k.kind == Tok::Word && (k.text == "\\left" || k.text == "\\right") && i + 1 < t.size()) {
             ++i;
-            d[i] = depth;
+            d[i] = int(open.size());
         }
     }
     return d;

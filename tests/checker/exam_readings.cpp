@@ -143,3 +143,20 @@ $$ V = -m g l \cos\phi $$
     CHECK(potential[0]->verdict == Verdict::Disagrees);
     CHECK(potential[0]->compared_with.find("its label") != std::string::npos);
 }
+
+TEST_CASE("readings: a bracket left open inside a brace group closes with the group, and the chain goes on after it",
+          "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+$$ \ddot{\phi} = \frac{-m g l \sin\phi}{(m l^2} = -\frac{g}{l}\sin\phi $$
+
+$$ \ddot{\phi} = \frac{-m g l \sin\phi}{(m l} $$
+)");
+    INFO(described(r));
+    const auto chain = on_line(r, 3), slip = on_line(r, 5);
+    REQUIRE(chain.size() == 2);  // split at both '=' (before, the open '(' hid the second)
+    for (const EquationCheck* e : chain) CHECK(e->verdict == Verdict::Agrees);
+    CHECK(eomgen::test::has_note(*chain[0], "that is not closed as closed at the end of its group"));
+    REQUIRE(slip.size() == 1);
+    CHECK(slip[0]->verdict == Verdict::Disagrees);
+}
