@@ -302,7 +302,7 @@ FitCommand::FitCommand(CLI::App& app) {
         ->required()
         ->check(CLI::ExistingFile);
     fit_->add_option("--free", free_, "An unknown: NAME[=start][:lo:hi] (a parameter) or x0:STATE[=start][:lo:hi], "
-                                      "in SI; repeatable")
+                                      "in SI; K:NAME for the K-th data file's own; repeatable")
         ->required();
     fit_->add_option("--weight", weights_, "COLUMN=W: the measured column's residuals times W (default 1); repeatable");
     fit_->add_option("--format", format_, "text or json")->check(CLI::IsMember({"text", "json"}))->capture_default_str();
@@ -432,9 +432,21 @@ int FitCommand::fit_model() {
             throw sim::UsageError(what);
         }
         starts.push_back(start);
-        own.push_back(own_settings(set.own[e], init.own[e]));
     }
     const std::vector<FreeValue> free = parse_free(free_, starts);
+    // What each experiment sets for itself, but for what it fits as its own (--set 2:c=0.25 --free 2:c: the start).
+    for (std::size_t e = 0; e < data.size(); ++e) {
+        std::vector<std::string> fixed;
+        for (const std::string& a : set.own[e]) {
+            const std::string name = sim::parse_assignment(a, "--set").first;
+            const bool fitted = std::any_of(free.begin(), free.end(), [&](const FreeValue& f) {
+                return f.experiment == int(e) && f.column.kind == SensitivityColumn::Kind::Parameter &&
+                       TableModel::param_names[std::size_t(f.column.index)] == name;
+            });
+            if (!fitted) fixed.push_back(a);
+        }
+        own.push_back(own_settings(fixed, init.own[e]));
+    }
     // A parameter fitted is one value for every experiment: it cannot also be one experiment's own.
     for (std::size_t e = 0; e < data.size(); ++e)
         for (const std::string& a : set.own[e]) {
@@ -442,8 +454,8 @@ int FitCommand::fit_model() {
             for (const FreeValue& f : free)
                 if (f.name == name)
                     throw sim::UsageError("--set " + std::to_string(e + 1) + ":" + a + ": " + name +
-                                          " is free, one value fitted for every experiment; give it per experiment or "
-                                          "free it, not both");
+                                          " is free, one value fitted for every experiment; give it per experiment, "
+                                          "free it per experiment (--free K:" + name + "), or free it, not both");
         }
     progress("fitting");
     const FitOutcome r = fit(o, starts, free, data, weights, max_iterations_, loss,

@@ -11,6 +11,7 @@
 #include <Eigen/SVD>
 #include <ceres/ceres.h>
 
+#include <cctype>
 #include <cmath>
 #include <memory>
 #include <set>
@@ -270,70 +271,107 @@ FitLoss parse_loss(const std::string& spec) {
 }
 
 std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const std::vector<ExperimentStart>& starts) {
-    std::vector<FreeValue> free;
+    struct Given {
+        FreeValue value;
+        int own = -1;            ///< K:… — the experiment (from 0) whose own unknown it is; -1: every experiment's
+        bool has_start = false;  ///< =start given
+    };
+    std::vector<Given> given;
     std::set<std::string> seen;
     const std::size_t experiments = starts.size();
-    const auto values = TableModel::param_values(starts.at(0).params);
-    for (const std::string& spec : specs) {
-        // NAME or x0:NAME, then =start, then :lo:hi.
+    for (const std::string& whole : specs) {
+        // [K:]NAME or [K:]x0:NAME, then =start, then :lo:hi.
+        Given g;
+        std::string spec = whole;
+        std::size_t digits = 0;
+        while (digits < spec.size() && std::isdigit(static_cast<unsigned char>(spec[digits]))) ++digits;
+        if (digits > 0 && digits < spec.size() && spec[digits] == ':') {
+            const std::string number = spec.substr(0, digits);
+            const std::size_t k = number.size() > 6 ? 0 : std::size_t(std::stoul(number));
+            if (k < 1 || k > experiments)
+                throw UsageError("--free " + whole + ": there is no experiment " + number + " (K: is the place of a " +
+                                 "data file, from 1; there " +
+                                 (experiments == 1 ? "is 1 data file" : "are " + std::to_string(experiments) + " data files") + ")");
+            g.own = int(k) - 1;
+            spec = spec.substr(digits + 1);
+        }
+        const ExperimentStart& at = starts.at(g.own < 0 ? 0 : std::size_t(g.own));
         const bool initial = spec.rfind("x0:", 0) == 0;
         const std::size_t from = initial ? 3 : 0;
         const std::size_t end = spec.find_first_of("=:", from);
-        FreeValue f;
+        FreeValue& f = g.value;
         f.name = spec.substr(0, end);
         const std::string bare = f.name.substr(from);
-        if (bare.empty()) throw UsageError("--free " + spec + ": expected NAME[=start][:lo:hi] or x0:STATE[=start][:lo:hi]");
-        if (!seen.insert(f.name).second) throw UsageError("--free " + f.name + ": given twice");
+        if (bare.empty())
+            throw UsageError("--free " + whole + ": expected [K:]NAME[=start][:lo:hi] or [K:]x0:STATE[=start][:lo:hi]");
+        // One unknown per value: `c` (every experiment's) and `2:c` would be two for experiment 2's c.
+        const std::string key = (g.own < 0 ? std::string() : std::to_string(g.own + 1) + ":") + f.name;
+        if (!seen.insert(key).second) throw UsageError("--free " + key + ": given twice");
+        if (g.own >= 0 && seen.count(f.name))
+            throw UsageError("--free " + whole + ": " + f.name + " is already free for every experiment (--free " +
+                             f.name + "); free it for each experiment (K:" + f.name + ") or for all, not both");
+        if (g.own < 0)
+            for (std::size_t e = 1; e <= experiments; ++e)
+                if (seen.count(std::to_string(e) + ":" + f.name))
+                    throw UsageError("--free " + whole + ": " + f.name + " is already free for experiment " +
+                                     std::to_string(e) + " (--free " + std::to_string(e) + ":" + f.name +
+                                     "); free it for each experiment (K:" + f.name + ") or for all, not both");
         if (initial) {
             const int i = sim::index_of(TableModel::state_names, bare);
             if (i < 0)
-                throw UsageError("--free " + spec + ": no state '" + bare + "'" +
+                throw UsageError("--free " + whole + ": no state '" + bare + "'" +
                                  sim::did_you_mean(bare, TableModel::state_names) + " (states: " +
                                  sim::list(TableModel::state_names) + ")");
             f.column = {SensitivityColumn::Kind::InitialValue, i};
-            f.start = starts[0].x0(i);
+            f.start = at.x0(i);
         } else {
             const int i = sim::index_of(TableModel::param_names, bare);
             if (i < 0)
-                throw UsageError("--free " + spec + ": " + std::string(TableModel::name) + " has no parameter '" + bare +
+                throw UsageError("--free " + whole + ": " + std::string(TableModel::name) + " has no parameter '" + bare +
                                  "'" + sim::did_you_mean(bare, TableModel::param_names) + " (it has " +
                                  sim::list(TableModel::param_names) + "; an initial value is x0:NAME)");
             f.column = {SensitivityColumn::Kind::Parameter, i};
-            f.start = values[std::size_t(i)];
+            f.start = TableModel::param_values(at.params)[std::size_t(i)];
         }
         std::string rest = end == std::string::npos ? "" : spec.substr(end);
-        f.experiment = rest.empty() || rest[0] != '=' ? -2 : -1;  // -2 until placed: its start from its experiment
         if (!rest.empty() && rest[0] == '=') {
             const std::size_t colon = rest.find(':');
-            f.start = number(rest.substr(1, colon == std::string::npos ? std::string::npos : colon - 1), spec);
+            f.start = number(rest.substr(1, colon == std::string::npos ? std::string::npos : colon - 1), whole);
             rest = colon == std::string::npos ? "" : rest.substr(colon);
+            g.has_start = true;
         }
         if (!rest.empty()) {
             const std::size_t second = rest.find(':', 1);
             if (rest[0] != ':' || second == std::string::npos)
-                throw UsageError("--free " + spec + ": bounds are :lo:hi, e.g. " + bare + "=1:0.5:2");
-            f.lower = number(rest.substr(1, second - 1), spec);
-            f.upper = number(rest.substr(second + 1), spec);
-            if (!(f.lower < f.upper)) throw UsageError("--free " + spec + ": the lower bound must be below the upper");
+                throw UsageError("--free " + whole + ": bounds are :lo:hi, e.g. " + bare + "=1:0.5:2");
+            f.lower = number(rest.substr(1, second - 1), whole);
+            f.upper = number(rest.substr(second + 1), whole);
+            if (!(f.lower < f.upper)) throw UsageError("--free " + whole + ": the lower bound must be below the upper");
             if (f.start < f.lower || f.start > f.upper)
-                throw UsageError("--free " + spec + ": the start " + std::to_string(f.start) + " is outside [" +
+                throw UsageError("--free " + whole + ": the start " + std::to_string(f.start) + " is outside [" +
                                  std::to_string(f.lower) + ", " + std::to_string(f.upper) + "]");
         }
-        free.push_back(f);
+        given.push_back(g);
     }
-    if (free.empty()) throw UsageError("give the unknowns with --free NAME (a parameter) or --free x0:STATE");
-    // The parameters first, then each experiment's initial values.
+    if (given.empty()) throw UsageError("give the unknowns with --free NAME (a parameter) or --free x0:STATE");
+    // The parameters every experiment shares first; then, experiment by experiment, its own parameters and its
+    // initial values (an x0:STATE without K: is one unknown in each experiment, named x0:STATE[e] among several).
     std::vector<FreeValue> unknowns;
-    for (FreeValue f : free)
-        if (f.column.kind == SensitivityColumn::Kind::Parameter) {
+    for (const Given& g : given)
+        if (g.value.column.kind == SensitivityColumn::Kind::Parameter && g.own < 0) {
+            FreeValue f = g.value;
             f.experiment = -1;
             unknowns.push_back(f);
         }
     for (std::size_t e = 0; e < experiments; ++e)
-        for (FreeValue f : free)
-            if (f.column.kind == SensitivityColumn::Kind::InitialValue) {
+        for (const SensitivityColumn::Kind kind : {SensitivityColumn::Kind::Parameter, SensitivityColumn::Kind::InitialValue})
+            for (const Given& g : given) {
+                if (g.value.column.kind != kind || (g.own >= 0 && g.own != int(e))) continue;
+                if (kind == SensitivityColumn::Kind::Parameter && g.own < 0) continue;  // shared: above
+                FreeValue f = g.value;
                 if (experiments > 1) f.name += "[" + std::to_string(e + 1) + "]";
-                if (f.experiment == -2) {  // no =start: where this experiment's --init puts it
+                if (kind == SensitivityColumn::Kind::InitialValue && g.own < 0 && !g.has_start) {
+                    // No =start: where this experiment's --init puts it.
                     f.start = starts[e].x0(f.column.index);
                     if (f.start < f.lower || f.start > f.upper) {
                         std::ostringstream os;

@@ -21,12 +21,12 @@
 
 namespace eomgen::cli {
 
-/// One unknown of the fit: a parameter (shared by every experiment) or an initial value (one experiment's), its
-/// start and its bounds.
+/// One unknown of the fit: a parameter shared by every experiment, or one experiment's own parameter or initial
+/// value, its start and its bounds.
 struct FreeValue {
-    std::string name;  ///< as given, "l", "x0:phi"; an initial value of one of several experiments "x0:phi[2]"
+    std::string name;  ///< as given, "l", "x0:phi"; one of several experiments' own "x0:phi[2]", "c[2]"
     SensitivityColumn column;
-    int experiment = -1;  ///< the experiment (index into the data) an initial value belongs to; -1: a parameter
+    int experiment = -1;  ///< the experiment (index into the data) it belongs to; -1: a parameter every one shares
     double start = 0;
     double lower = -std::numeric_limits<double>::infinity(), upper = std::numeric_limits<double>::infinity();
 };
@@ -74,10 +74,12 @@ struct FitOutcome {
     std::vector<Eigen::MatrixXd> model;  ///< per experiment, the fitted trajectory at its data's times and columns
 };
 
-/// The unknowns given as --free NAME[=start][:lo:hi] (UsageError for an unknown name, a bad number, lo >= hi, a start
-/// outside the bounds); the start defaults to the model's value (after --set and --init: a parameter's from the first
-/// experiment, an initial value's from its own). With several experiments an initial value x0:STATE is one unknown
-/// per experiment, named x0:STATE[e] (e from 1), after the parameters.
+/// The unknowns given as --free [K:]NAME[=start][:lo:hi] (UsageError for an unknown name or experiment, a bad number,
+/// lo >= hi, a start outside the bounds, a value freed both for every experiment and for one); the start defaults to
+/// the model's value (after --set and --init: a shared parameter's from the first experiment, the rest from their
+/// own). NAME is one value for every experiment; K:NAME experiment K's own (from 1). With several experiments an
+/// initial value x0:STATE is one unknown per experiment, named x0:STATE[e] (e from 1); K:x0:STATE experiment K's
+/// only. The shared parameters come first, then each experiment's own parameters and initial values.
 std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const std::vector<ExperimentStart>& starts);
 
 /// Where the solver's Jacobian comes from: the sensitivities (exact), or central differences of whole trajectories

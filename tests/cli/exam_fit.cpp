@@ -333,6 +333,67 @@ TEST_CASE("eomgen fit: each experiment with its own settings (--set K:NAME=V, --
     }
 }
 
+TEST_CASE("eomgen fit: a parameter each experiment has its own (--free K:NAME)", "[fit]") {
+    // The second series is the same pendulum with more damping (c = 0.35, from phi = 0.5): l is shared, c is each
+    // experiment's own unknown.
+    const std::string second = noisy_phi({"--set", "c=0.35", "--init", "phi=0.5"}, "damped_more.csv", 17);
+    const std::vector<std::string> common{"fit", kModel, kData, second, "--free", "l=1.3:0.1:10", "--init", "2:phi=0.5",
+                                          "--format", "json", "--quiet"};
+    auto with = [&](std::vector<std::string> extra) {
+        std::vector<std::string> args = common;
+        args.insert(args.end(), extra.begin(), extra.end());
+        return eomgen(args);
+    };
+    const Result own = with({"--free", "1:c=0.1:0:2", "--free", "2:c:0:2", "--set", "2:c=0.25"});
+    INFO(own.output);
+    REQUIRE(own.code == 0);
+    CHECK(within_errors(own.output, "l", 1.0, 4));
+    CHECK(within_errors(own.output, "c\\[1\\]", 0.2, 4));
+    CHECK(within_errors(own.output, "c\\[2\\]", 0.35, 4));
+    // Experiment 2's c starts where its own --set puts it; the shared l comes first, then each experiment's own.
+    CHECK(std::regex_search(own.output, std::regex("\"c\\[2\\]\", [^}]*\"start\": 0.25\\}")));
+    CHECK(own.output.find("\"name\": \"l\"") < own.output.find("\"name\": \"c[1]\""));
+    CHECK(own.output.find("\"name\": \"c[1]\"") < own.output.find("\"name\": \"c[2]\""));
+    const std::regex rms_re("\"rms\": ([0-9.e-]+)");
+    std::smatch m;
+    REQUIRE(std::regex_search(own.output, m, rms_re));
+    const double rms = std::stod(m[1].str());
+    CHECK(rms == Approx(0.01).epsilon(0.1));
+    // One c for both cannot follow both series.
+    const Result shared = with({"--free", "c=0.1:0:2"});
+    INFO(shared.output);
+    REQUIRE(shared.code == 0);
+    REQUIRE(std::regex_search(shared.output, m, rms_re));
+    CHECK(std::stod(m[1].str()) > 1.3 * rms);
+    // K:x0:STATE: one experiment's initial value only.
+    const Result start = with({"--free", "1:c=0.1:0:2", "--free", "2:c:0:2", "--free", "2:x0:phi=0.45"});
+    INFO(start.output);
+    REQUIRE(start.code == 0);
+    CHECK(within_errors(start.output, "x0:phi\\[2\\]", 0.5, 4));
+    CHECK(start.output.find("x0:phi[1]") == std::string::npos);
+
+    struct Case {
+        std::vector<std::string> options;
+        std::string message;
+    };
+    const std::vector<Case> cases{
+        {{"--free", "3:c"}, "--free 3:c: there is no experiment 3 (K: is the place of a data file, from 1; there are 2 data files)"},
+        {{"--free", "c", "--free", "2:c"}, "--free 2:c: c is already free for every experiment (--free c)"},
+        {{"--free", "1:c", "--free", "c"}, "--free c: c is already free for experiment 1 (--free 1:c)"},
+        {{"--free", "2:c", "--free", "2:c=0.3"}, "--free 2:c: given twice"},
+        {{"--free", "2:cc"}, "--free 2:cc: damped_pendulum has no parameter 'cc'; did you mean 'c'?"},
+        {{"--free", "0:c"}, "--free 0:c: there is no experiment 0"},
+    };
+    for (const Case& k : cases) {
+        std::vector<std::string> args{"fit", kModel, kData, second, "--free", "l", "--quiet"};
+        args.insert(args.end(), k.options.begin(), k.options.end());
+        const Result r = eomgen(args);
+        INFO(r.output);
+        CHECK(r.code == 2);
+        CHECK(r.output.find(k.message) != std::string::npos);
+    }
+}
+
 TEST_CASE("eomgen fit --loss: robust losses against outliers, with standard errors that stay honest", "[fit]") {
     // 5 % of the samples thrown off by 0.2-0.5 rad. Least squares keeps the truth inside its errors only by
     // making them large (its s is the outliers' spread); the robust losses give errors near the clean data's.
