@@ -1,6 +1,7 @@
 /** @file latex_words.cpp  The parser's control words and functions: \sin, \dot, \text, \cdot, ...
  * (latex_grammar.hpp). */
 #include "checker/latex_grammar.hpp"
+#include "checker/latex_normalize.hpp"
 
 #include "checker/units.hpp"
 #include "model/nonsmooth.hpp"
@@ -74,6 +75,14 @@ GiNaC::ex Parser::word(std::size_t at) {
             }
         }
         if (is_plain_word(content) || is_unit_command(w, t.raw)) return name_value();
+        // `\text{const.}`, `\mathrm{Const.}`: the text's constant, abbreviated with a full stop.
+        std::string stem = content;
+        while (!stem.empty() && (stem.back() == '.' || stem.back() == ' ')) stem.pop_back();
+        if (stem != content && is_constant_name(stem)) {
+            ++pos_;
+            side_.uses.push_back({stem, offset_of(at)});
+            return ctx_.free_symbol(stem, NameKind::Unknown);
+        }
         fail(at, "text '" + content + "' in a formula is not read");
     }
     if (starts_name(&t)) return name_value();

@@ -160,3 +160,14 @@ $$ \ddot{\phi} = \frac{-m g l \sin\phi}{(m l} $$
     REQUIRE(slip.size() == 1);
     CHECK(slip[0]->verdict == Verdict::Disagrees);
 }
+
+TEST_CASE("readings: \\text{const.} with its full stop is the text's constant", "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+$$ \frac{1}{2} m l^2 \dot{\phi}^2 - m g l \cos\phi = \text{const.} $$
+)");
+    INFO(described(r));
+    const auto energy = on_line(r, 3);
+    REQUIRE(energy.size() == 1);
+    CHECK(energy[0]->verdict == Verdict::Agrees);
+}
