@@ -330,6 +330,12 @@ GiNaC::ex Parser::bracket_group() {
                 side_.notes.push_back(note);
             return e;
         }
+        // `\left( -k(-M\omega^2 + k \right))`: the bracket's closer typed after the \right that follows it. Closed
+        // here; the \right's own group takes the closer after it (left_right).
+        if (is_word(t, "\\right") && open == "(") {
+            ++transposed_;
+            return e;
+        }
         if (t && !stops_expression(t)) fail(pos_, "unexpected " + describe(pos_));
         fail(at, "missing '" + close + "' for this '" + open + "'");
     }
@@ -423,6 +429,7 @@ GiNaC::ex Parser::left_right(std::size_t at) {
     if (delim == "\\|" || delim == "\\Vert" || delim == "\\lVert") fail(at, "a norm \\| \\| is not read");
     const int saved_abs = abs_depth_;
     abs_depth_ = 0;
+    const int transposed_before = transposed_;
     GiNaC::ex e = expr();
     abs_depth_ = saved_abs;
     const Token* t = peek();
@@ -438,6 +445,13 @@ GiNaC::ex Parser::left_right(std::size_t at) {
     if (!rd) fail(at, "\\right needs a delimiter");
     const std::string rdelim = rd->text;
     ++pos_;
+    // The closers of brackets closed at this \right (bracket_group), typed after it.
+    for (; transposed_ > transposed_before; --transposed_) {
+        if (!is_char(peek(), ")")) fail(at, "a '(' inside this \\left ... \\right is not closed");
+        ++pos_;
+        const std::string note = "reads a ')' typed after \\right as closing the '(' before it";
+        if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end()) side_.notes.push_back(note);
+    }
     if ((delim == "|" || delim == "\\vert" || delim == "\\lvert")) return eomgen::real_abs(e);
     if (delim == "." && (rdelim == "|" || rdelim == "\\vert" || rdelim == "\\rvert")) return evaluation_bar(at, e);
     if (delim == "\\langle") fail(at, "angle brackets are not read");

@@ -327,6 +327,7 @@ class Parser {
     Side& side_;
     int depth_ = 0;
     int abs_depth_ = 0;
+    int transposed_ = 0;  ///< brackets closed at a \right whose ')' comes after it (bracket_group, left_right)
     std::vector<IntegralFrame> frames_;
     GiNaC::ex pending_power_;
     bool has_pending_power_ = false;

@@ -171,3 +171,23 @@ $$ \frac{1}{2} m l^2 \dot{\phi}^2 - m g l \cos\phi = \text{const.} $$
     REQUIRE(energy.size() == 1);
     CHECK(energy[0]->verdict == Verdict::Agrees);
 }
+
+TEST_CASE("readings: a bracket's ')' typed after the \\right that follows it closes the bracket", "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+$$ m l^2 \ddot{\phi} = l\left( -m g (\sin\phi \right)) $$
+
+$$ m l^2 \ddot{\phi} = l\left( -m (\sin\phi \right)) $$
+
+$$ m l^2 \ddot{\phi} = l\left( -m g (\sin\phi \right) $$
+)");
+    INFO(described(r));
+    const auto right = on_line(r, 3), slip = on_line(r, 5), unclosed = on_line(r, 7);
+    REQUIRE(right.size() == 1);
+    CHECK(right[0]->verdict == Verdict::Agrees);
+    CHECK(eomgen::test::has_note(*right[0], "typed after \\right"));
+    REQUIRE(slip.size() == 1);
+    CHECK(slip[0]->verdict == Verdict::Disagrees);
+    REQUIRE(unclosed.size() == 1);  // no ')' after the \right: still not read
+    CHECK(unclosed[0]->verdict == Verdict::NotComparable);
+}
