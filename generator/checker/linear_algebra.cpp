@@ -210,9 +210,24 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
     }
     const bool vector = !v[0]->scalar || !v[1]->scalar;
     std::vector<std::pair<unsigned, unsigned>> wrong;
+    // An entry with accelerations (`\frac{d}{dt}(x, \dot x) = A (x, \dot x)`: ẍ = …) is an equation of motion: it
+    // holds where it is a combination of the model's Euler–Lagrange equations (on the constraints, with them).
+    const auto on_motion = [&](const ex& d) {
+        bool accelerations = false;
+        for (const Coordinate& q : model_.coordinates) accelerations = accelerations || d.has(q.qdd);
+        if (!accelerations) return false;
+        return model_.constraints.empty() ? cmp.equation_of_motion(d, tol) : cmp.vanishes_on_constrained_motion(d, tol);
+    };
+    bool motion = false;
     for (unsigned i = 0; i < a.rows(); ++i)
         for (unsigned j = 0; j < a.cols(); ++j)
-            if (!same(a(i, j), b(i, j), cmp, tol)) wrong.emplace_back(i, j);
+            if (!same(a(i, j), b(i, j), cmp, tol)) {
+                if (on_motion(a(i, j) - b(i, j))) {
+                    motion = true;
+                    continue;
+                }
+                wrong.emplace_back(i, j);
+            }
     std::vector<std::string> unknown = unknown_names(a);
     for (const std::string& u : unknown_names(b)) unknown.push_back(u);
     std::sort(unknown.begin(), unknown.end());
@@ -258,6 +273,11 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
                               ? (vector ? "the model's quantities, entry by entry" : "the model's quantity")
                               : "an identity";
         r.reason = vector ? "equal entry by entry" : "both sides are equal";
+        if (motion) {
+            r.compared_with = vector ? "the equations of motion, entry by entry" : "the equations of motion";
+            r.reason = vector ? "equal entry by entry, the entries with accelerations on the equations of motion"
+                              : "equal on the equations of motion";
+        }
         if (!unknown.empty()) r.reason += " (in the text's own symbols)";
         eigen_note();
         return true;

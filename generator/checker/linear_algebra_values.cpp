@@ -150,10 +150,11 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::read(std::string_view source,
 std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Term>& terms,
                                                             std::string_view source, std::size_t base,
                                                             Comparisons& cmp, std::string* why) {
-    auto scalar = [&](std::size_t b, std::size_t e) -> std::optional<ex> {
-        const Side s = parse_expression(source.substr(b, e - b), ctx_);
+    // A scalar written `text`, read as if it stood at source offset b (the definitions in force there).
+    auto scalar_text = [&](const std::string& text, std::size_t b) -> std::optional<ex> {
+        const Side s = parse_expression(text, ctx_);
         if (!s.ok) {
-            *why = "cannot read " + dollars(std::string(source.substr(b, e - b))) + ": " + s.error;
+            *why = "cannot read " + dollars(text) + ": " + s.error;
             return std::nullopt;
         }
         const ScalarReading v = evaluate_(s, base + b);
@@ -169,11 +170,33 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
             }
         return v.value.subs(component_values(v.value, cmp));
     };
+    auto scalar = [&](std::size_t b, std::size_t e) { return scalar_text(std::string(source.substr(b, e - b)), b); };
+    // `\frac{d}{dt}` before an array or a tuple: the time derivative of each entry (a state-space form, d/dt (x, ẋ)).
+    const auto time_derivative_order = [&](const Factor& f) {
+        if (f.kind != Factor::Scalar) return 0;
+        std::string op;
+        for (const char c : source.substr(f.begin, f.end - f.begin))
+            if (!std::isspace(static_cast<unsigned char>(c))) op += c;
+        for (const char* one : {"\\frac{d}{dt}", "\\frac{\\mathrm{d}}{\\mathrm{d}t}", "\\frac{\\mathrm{d}}{dt}", "d/dt"})
+            if (op == one) return 1;
+        for (const char* two : {"\\frac{d^2}{dt^2}", "\\frac{d^{2}}{dt^{2}}", "\\frac{\\mathrm{d}^2}{\\mathrm{d}t^2}",
+                                "\\frac{\\mathrm{d}^{2}}{\\mathrm{d}t^{2}}"})
+            if (op == two) return 2;
+        return 0;
+    };
     std::optional<Value> total;
     for (const Term& t : terms) {
         ex coefficient = t.negative ? -1 : 1;
         std::optional<GiNaC::matrix> m;
-        for (const Factor& f : t.factors) {
+        int differentiate = 0;  // the order of a d/dt just read, for the array after it
+        for (std::size_t q = 0; q < t.factors.size(); ++q) {
+            const Factor& f = t.factors[q];
+            if (const int order = time_derivative_order(f);
+                order > 0 && q + 1 < t.factors.size() &&
+                (t.factors[q + 1].kind == Factor::Array || t.factors[q + 1].kind == Factor::Tuple)) {
+                differentiate = order;
+                continue;
+            }
             Value v;
             if (f.kind == Factor::Scalar) {
                 const auto x = scalar(f.begin, f.end);
@@ -189,10 +212,19 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
                 GiNaC::matrix a(rows, cols);
                 for (unsigned i = 0; i < rows; ++i)
                     for (unsigned j = 0; j < cols; ++j) {
-                        const auto x = scalar(f.cells[i][j].first, f.cells[i][j].second);
+                        const auto [b, e] = f.cells[i][j];
+                        std::optional<ex> x;
+                        if (differentiate > 0) {  // each entry differentiated as `\frac{d}{dt}\left(…\right)` reads it
+                            std::string text(source.substr(b, e - b));
+                            for (int k = 0; k < differentiate; ++k) text = "\\frac{d}{dt}\\left(" + text + "\\right)";
+                            x = scalar_text(text, b);
+                        } else {
+                            x = scalar(b, e);
+                        }
                         if (!x) return std::nullopt;
                         a(i, j) = *x;
                     }
+                differentiate = 0;
                 v.m = a;
                 v.scalar = false;
                 if (f.kind == Factor::DetArray) {

@@ -191,3 +191,28 @@ $$ m l^2 \ddot{\phi} = l\left( -m g (\sin\phi \right) $$
     REQUIRE(unclosed.size() == 1);  // no ')' after the \right: still not read
     CHECK(unclosed[0]->verdict == Verdict::NotComparable);
 }
+
+TEST_CASE("readings: d/dt of a state vector, entry by entry, the entries with accelerations on the motion",
+          "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+$$ \frac{d}{dt}\begin{pmatrix}\phi\\ \dot{\phi}\end{pmatrix} = \begin{pmatrix}\dot{\phi}\\ -\frac{g}{l}\sin\phi\end{pmatrix} $$
+
+$$ \frac{d}{dt}\begin{pmatrix}\phi\\ \dot{\phi}\end{pmatrix} = \begin{pmatrix}\dot{\phi}\\ -\frac{g}{l}\cos\phi\end{pmatrix} $$
+
+$$ \frac{d}{dt}\begin{pmatrix}\phi\\ \dot{\phi}\end{pmatrix} = \begin{pmatrix}\phi\\ -\frac{g}{l}\sin\phi\end{pmatrix} $$
+)");
+    INFO(described(r));
+    const auto right = on_line(r, 3), slip = on_line(r, 5), first_row = on_line(r, 7);
+    REQUIRE(right.size() == 1);
+    CHECK(right[0]->verdict == Verdict::Agrees);
+    CHECK(right[0]->compared_with.find("equations of motion") != std::string::npos);
+    REQUIRE(slip.size() == 1);
+    CHECK(slip[0]->verdict == Verdict::Disagrees);
+    REQUIRE(!slip[0]->wrong_terms.empty());
+    CHECK(slip[0]->wrong_terms.front().find("row 2") != std::string::npos);
+    REQUIRE(first_row.size() == 1);  // the derivative of φ is φ̇, not φ
+    CHECK(first_row[0]->verdict == Verdict::Disagrees);
+    REQUIRE(!first_row[0]->wrong_terms.empty());
+    CHECK(first_row[0]->wrong_terms.front().find("row 1") != std::string::npos);
+}
