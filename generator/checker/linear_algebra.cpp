@@ -210,19 +210,11 @@ bool LinearAlgebra::judge_link(const Side& left, std::size_t left_base, const Si
     }
     const bool vector = !v[0]->scalar || !v[1]->scalar;
     std::vector<std::pair<unsigned, unsigned>> wrong;
-    // An entry with accelerations (`\frac{d}{dt}(x, \dot x) = A (x, \dot x)`: ẍ = …) is an equation of motion: it
-    // holds where it is a combination of the model's Euler–Lagrange equations (on the constraints, with them).
-    const auto on_motion = [&](const ex& d) {
-        bool accelerations = false;
-        for (const Coordinate& q : model_.coordinates) accelerations = accelerations || d.has(q.qdd);
-        if (!accelerations) return false;
-        return model_.constraints.empty() ? cmp.equation_of_motion(d, tol) : cmp.vanishes_on_constrained_motion(d, tol);
-    };
-    bool motion = false;
+    bool motion = false;  // an entry with accelerations that holds on the motion (holds_on_motion)
     for (unsigned i = 0; i < a.rows(); ++i)
         for (unsigned j = 0; j < a.cols(); ++j)
             if (!same(a(i, j), b(i, j), cmp, tol)) {
-                if (on_motion(a(i, j) - b(i, j))) {
+                if (holds_on_motion(a(i, j) - b(i, j), cmp, tol)) {
                     motion = true;
                     continue;
                 }

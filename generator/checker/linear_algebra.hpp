@@ -175,6 +175,9 @@ class LinearAlgebra {
     void flag_block(const Side& left, std::size_t left_base, const Side& right, std::size_t right_base,
                     Comparisons& cmp, EquationCheck& r);
     const MathRow* row_at(std::size_t offset) const;
+    /// An entry's difference with accelerations (`\frac{d}{dt}(x, \dot x) = A (x, \dot x)`: ẍ = …) that vanishes on
+    /// the motion: a combination of the model's Euler–Lagrange equations (on the constraints, for a model with them).
+    bool holds_on_motion(const GiNaC::ex& difference, Comparisons& cmp, double tol) const;
 
     const Model& model_;
     const Derivation& d_;

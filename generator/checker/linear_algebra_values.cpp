@@ -122,6 +122,14 @@ void LinearAlgebra::note_link(const Side& left, std::size_t left_base, const Sid
     eigen_[n.key] = e;
 }
 
+bool LinearAlgebra::holds_on_motion(const ex& difference, Comparisons& cmp, double tol) const {
+    bool accelerations = false;
+    for (const Coordinate& q : model_.coordinates) accelerations = accelerations || difference.has(q.qdd);
+    if (!accelerations) return false;
+    return model_.constraints.empty() ? cmp.equation_of_motion(difference, tol)
+                                      : cmp.vanishes_on_constrained_motion(difference, tol);
+}
+
 std::optional<LinearAlgebra::Value> LinearAlgebra::read(std::string_view source, std::size_t base,
                                                         Comparisons& cmp, std::string* why, bool* reference) {
     std::vector<Term> terms;
