@@ -527,6 +527,7 @@ CheckReport Checker::run() {
         labels.is_momentum = [this](const GiNaC::ex& x) { return hamilton_.is_momentum(x); };
         labels.same = [this](const GiNaC::ex& x, const GiNaC::ex& y) { return equal(x, y, 1e-9) == Tri::Yes; };
         discourse_.emplace(links, model_, ctx_, d_, labels);
+        discourse_->read_limits(d_, model_, ctx_, eq_.M);
     }
     for (const FullChain& c : chains) {  // T_0 = 2\pi\sqrt{l/g}: a period, not a part of T
         if (c.sides.size() < 2 || !c.sides[0].side->ok) continue;

@@ -135,6 +135,11 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         chosen[symbol] = stated.first;
         const bool parameter = std::any_of(model_.parameters.begin(), model_.parameters.end(),
                                            [&](const Parameter& p) { return symbol.is_equal(p.symbol); });
+        if (discourse_->limit_at(symbol, rel_at))
+            chosen_notes_.push_back("in the limit $" + latex(symbol) + " \\to " + latex(stated.first) +
+                                    "$ the text takes on line " + std::to_string(stated.second) +
+                                    ": the model's equations there, with that value put in");
+        else
         chosen_notes_.push_back(parameter ? "with $" + latex(symbol) + " = " + latex(stated.first) +
                                                 "$, as the text assumes on line " + std::to_string(stated.second)
                                           : "at $" + latex(symbol) + " = " + latex(stated.first) +

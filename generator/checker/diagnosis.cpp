@@ -445,6 +445,8 @@ void Checker::diagnose_euler_lagrange(const PSide& left, const PSide& right, con
         if (multiplier_sign_ != 0)
             out.notes.push_back("with the sign of λ the text takes on line " + std::to_string(multiplier_sign_line_));
     }
+    // A value the text chose or a limit it takes (`m_1 = 0`, "as $c \to 0$"): eomgen's equation there.
+    if (!numbers_.pinned().empty()) truth = subs_unless_pole(truth, numbers_.pinned()).value_or(truth).expand();
     const Diagnosis dg = compare_to(r, truth, tol);
     out.difference = dg.difference;
     out.wrong_terms = dg.lines;

@@ -55,7 +55,8 @@ class Discourse {
         GiNaC::ex symbol, value;
         std::size_t from, until;
         int line;
-        bool is_position;  ///< a coordinate's value (a point), not a velocity's or an acceleration's
+        bool is_position;    ///< a coordinate's value (a point), not a velocity's or an acceleration's
+        bool limit = false;  ///< a parameter's limit the text takes in its prose ("as $c \to 0$"; limits.cpp)
     };
     /// A letter the text gives another quantity (`p_\theta = L`), from the naming to its section's end.
     struct Naming {
@@ -78,6 +79,16 @@ class Discourse {
               const LabelView& labels);
 
     const std::vector<Condition>& conditions() const { return conditions_; }
+    /// "As $c \to 0$ it becomes": a parameter of the model sent to a number in an inline formula is that value for
+    /// the display the sentence leads into, where M stays regular at it (limits.cpp). Called once, after the links.
+    void read_limits(const Derivation& d, const Model& model, LatexContext& ctx, const GiNaC::matrix& mass);
+    /// Whether the condition on `symbol` in force at `at` is a limit the text takes (its line in `line`).
+    bool limit_at(const GiNaC::ex& symbol, std::size_t at) const {
+        bool limit = false;  // the latest in force, as conditions_at() takes it
+        for (const Condition& k : conditions_)
+            if (k.from < at && at < k.until && k.symbol.is_equal(symbol)) limit = k.limit;
+        return limit;
+    }
     /// Whether the link at `at` states an assumption on the parameters (`m_1 = m_2`), in force to its paragraph's end.
     bool states_assumption(std::size_t at) const { return assumptions_.count(at) != 0; }
     /// Whether the link at `at` states a condition (`\dot\theta = 0`, and `\ddot\theta = 0` after one on θ).

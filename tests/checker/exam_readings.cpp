@@ -216,3 +216,43 @@ $$ \frac{d}{dt}\begin{pmatrix}\phi\\ \dot{\phi}\end{pmatrix} = \begin{pmatrix}\p
     REQUIRE(!first_row[0]->wrong_terms.empty());
     CHECK(first_row[0]->wrong_terms.front().find("row 1") != std::string::npos);
 }
+
+TEST_CASE("readings: a limit the prose takes (as c -> 0) is the model's equation at that value, for the display after it",
+          "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text("models/damped_pendulum.toml", R"(# Damped pendulum
+
+$$ m l^2 \ddot\phi + c \dot\phi + m g l \sin\phi = 0 $$
+
+As $c \to 0$ it becomes the undamped pendulum,
+
+$$ m l^2 \ddot\phi + m g l \sin\phi = 0 $$
+
+and in the limit $c \rightarrow 0$ a slip:
+
+$$ m l^2 \ddot\phi + m g \sin\phi = 0 $$
+
+Without a limit the damping is missing:
+
+$$ m l^2 \ddot\phi + m g l \sin\phi = 0 $$
+
+As $m \to 0$ the mass matrix vanishes, which is no value to put in:
+
+$$ c \dot\phi = 0 $$
+)");
+    INFO(described(r));
+    const auto damped = on_line(r, 3), limit = on_line(r, 7), slip = on_line(r, 11), after = on_line(r, 15),
+               degenerate = on_line(r, 19);
+    REQUIRE(damped.size() == 1);
+    CHECK(damped[0]->verdict == Verdict::Agrees);
+    REQUIRE(limit.size() == 1);
+    CHECK(limit[0]->verdict == Verdict::Agrees);
+    CHECK(eomgen::test::has_note(*limit[0], "in the limit $c \\to 0$ the text takes on line 5"));
+    REQUIRE(slip.size() == 1);
+    CHECK(slip[0]->verdict == Verdict::Disagrees);
+    CHECK(slip[0]->corrected.find("c") == std::string::npos);  // corrected in the limit: no damping term
+    REQUIRE(after.size() == 1);  // the limit holds for the display its sentence leads into, not beyond
+    CHECK(after[0]->verdict == Verdict::Disagrees);
+    REQUIRE(degenerate.size() == 1);
+    CHECK(degenerate[0]->verdict != Verdict::Agrees);
+    CHECK(!eomgen::test::has_note(*degenerate[0], "in the limit"));
+}
