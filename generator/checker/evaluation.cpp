@@ -63,6 +63,16 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
                 operator_notes_.push_back(n);
         return time_derivative(inner, model_) / c;
     }
+    if (is_ex_the_function(e, limat)) {  // \lim_{x \to a} f: f at a, or its series' constant term there
+        const GiNaC::ex inner = resolve_operators(e.op(0));
+        const GiNaC::relational& at = GiNaC::ex_to<GiNaC::relational>(e.op(1).op(0));
+        if (const std::optional<GiNaC::ex> there = subs_unless_pole(inner, GiNaC::exmap{{at.lhs(), at.rhs()}}))
+            return *there;
+        const GiNaC::ex s = inner.series(at, 4);
+        if (!GiNaC::is_a<GiNaC::pseries>(s) || GiNaC::ex_to<GiNaC::pseries>(s).ldegree(at.lhs()) < 0)
+            throw std::runtime_error("the limit is not finite (a pole at the point)");
+        return GiNaC::ex_to<GiNaC::pseries>(s).coeff(at.lhs(), 0);
+    }
     if (is_ex_the_function(e, evalat))  // the point of an evaluation bar, after the derivatives under it
         return resolve_operators(e.op(0)).subs(GiNaC::ex_to<GiNaC::lst>(e.op(1)));
     if (is_ex_the_function(e, pbracket))

@@ -309,6 +309,9 @@ class Parser {
 
     GiNaC::ex function(const std::string& f, std::size_t at);
 
+    /// `\lim_{x \to a} f`: f's limit at a, of the term that follows (taken in evaluation.cpp).
+    GiNaC::ex limit(std::size_t at);
+
     GiNaC::ex square_root(std::size_t at);
 
     /// Is the range a derivative's numerator/denominator: starts with d, \mathrm{d} or \partial?

@@ -18,6 +18,7 @@ REGISTER_FUNCTION(pbracket, dummy().latex_name("\\{\\}"))
 REGISTER_FUNCTION(dby, dummy().latex_name("\\frac{d}{ds}"))
 REGISTER_FUNCTION(antiderivative, dummy().latex_name("\\int"))
 REGISTER_FUNCTION(evalat, dummy().latex_name("\\Big|"))
+REGISTER_FUNCTION(limat, dummy().latex_name("\\lim"))
 
 const FreeName* LatexContext::free_name_of(const GiNaC::ex& symbol) const {
     if (!GiNaC::is_a<GiNaC::symbol>(symbol)) return nullptr;

@@ -24,6 +24,9 @@ DECLARE_FUNCTION_2P(antiderivative)
 /// evalat(x, {y == a, ...}): x at the point y = a, put in after the derivatives in x are taken (`\left.\frac{\partial
 /// V}{\partial \theta}\right|_{\theta = 0}`)
 DECLARE_FUNCTION_2P(evalat)
+/// limat(x, {y == a}): the limit of x as y → a (`\lim_{\theta \to 0} \frac{\sin\theta}{\theta}`): x at a where it is
+/// regular there, else the constant term of its series about a; a pole there is no limit (evaluation.cpp)
+DECLARE_FUNCTION_2P(limat)
 
 /// What a name the parser did not find among the known names stands for.
 enum class NameKind {

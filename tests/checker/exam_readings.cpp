@@ -256,3 +256,32 @@ $$ c \dot\phi = 0 $$
     CHECK(degenerate[0]->verdict != Verdict::Agrees);
     CHECK(!eomgen::test::has_note(*degenerate[0], "in the limit"));
 }
+
+TEST_CASE("readings: \\lim_{x \\to a} f is f at a, or its series' constant term there", "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+$$ \lim_{\phi \to 0} \frac{m g l \sin\phi}{\phi} = m g l $$
+
+$$ \lim_{\phi \to 0} \frac{\partial V}{\partial \phi} = 0 $$
+
+$$ m l^2 \ddot\phi = - \lim_{\phi \to \pi/2} \frac{\partial V}{\partial \phi} $$
+
+$$ \lim_{\phi \to 0} \frac{1}{\phi} = 0 $$
+
+$$ \lim_{\phi \to \infty} \phi = 0 $$
+)");
+    INFO(described(r));
+    const auto quotient = on_line(r, 3), derivative = on_line(r, 5), at_point = on_line(r, 7), pole = on_line(r, 9),
+               infinity = on_line(r, 11);
+    REQUIRE(quotient.size() == 1);
+    CHECK(quotient[0]->verdict == Verdict::Agrees);  // 0/0: the series' constant term
+    REQUIRE(derivative.size() == 1);
+    CHECK(derivative[0]->verdict == Verdict::Agrees);  // the derivative taken first, then φ = 0
+    REQUIRE(at_point.size() == 1);  // -m g l: not the equation of motion, which has sin φ
+    CHECK(at_point[0]->verdict != Verdict::Agrees);
+    REQUIRE(pole.size() == 1);
+    CHECK(pole[0]->verdict == Verdict::NotComparable);
+    CHECK(pole[0]->reason.find("not finite") != std::string::npos);
+    REQUIRE(infinity.size() == 1);
+    CHECK(infinity[0]->verdict == Verdict::NotComparable);
+}
