@@ -382,8 +382,29 @@ void blank_leading_label(std::string& row) {
     if (inside.empty() || inside.find_first_of("=<>") != std::string::npos) return;
     std::size_t colon = close + 1;
     while (colon < row.size() && (row[colon] == ' ' || row[colon] == '\t')) ++colon;
-    if (colon >= row.size() || row[colon] != ':') return;
-    for (std::size_t k = open; k <= colon; ++k) row[k] = ' ';
+    if (colon < row.size() && row[colon] == ':') {
+        for (std::size_t k = open; k <= colon; ++k) row[k] = ' ';
+        return;
+    }
+    // `(i) \quad \frac{d}{dt} …`, `(2)\qquad …`: a numeral (roman, or digits with a letter) before a space command,
+    // a label as well, not a factor (a parenthesis of a formula is not a numeral: `(x) \quad` is kept).
+    static const char* const kSpaces[] = {"\\qquad", "\\quad", "\\;", "\\,", "~"};
+    const auto numeral = [](const std::string& x) {
+        static const char* const kRoman[] = {"i", "ii", "iii", "iv", "v", "vi", "vii", "viii", "ix", "x",
+                                             "I", "II", "III", "IV", "V", "VI", "VII", "VIII", "IX", "X"};
+        for (const char* r : kRoman)
+            if (x == r) return true;
+        std::size_t digits = 0;
+        while (digits < x.size() && (std::isdigit(static_cast<unsigned char>(x[digits])) || x[digits] == '.')) ++digits;
+        return digits > 0 && std::isdigit(static_cast<unsigned char>(x[0])) &&
+               (digits == x.size() || (digits + 1 == x.size() && std::isalpha(static_cast<unsigned char>(x.back()))));
+    };
+    if (!numeral(inside)) return;
+    for (const char* space : kSpaces)
+        if (row.compare(colon, std::string(space).size(), space) == 0) {
+            for (std::size_t k = open; k < colon + std::string(space).size(); ++k) row[k] = ' ';
+            return;
+        }
 }
 
 void normalize_rows(Derivation& d) {

@@ -285,3 +285,23 @@ $$ \lim_{\phi \to \infty} \phi = 0 $$
     REQUIRE(infinity.size() == 1);
     CHECK(infinity[0]->verdict == Verdict::NotComparable);
 }
+
+TEST_CASE("readings: (i) \\quad and (2)\\qquad before a row are its label, not a factor", "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+$$ (i) \quad m l^2 \ddot\phi + m g l \sin\phi = 0 $$
+
+$$ (2)\qquad m l^2 \ddot\phi = - m g l \sin\phi $$
+
+$$ (iii) \quad m l^2 \ddot\phi + m g \sin\phi = 0 $$
+)");
+    INFO(described(r));
+    const auto first = on_line(r, 3), second = on_line(r, 5), slip = on_line(r, 7);
+    REQUIRE(first.size() == 1);
+    CHECK(first[0]->verdict == Verdict::Agrees);
+    REQUIRE(second.size() == 1);
+    CHECK(second[0]->verdict == Verdict::Agrees);
+    REQUIRE(slip.size() == 1);
+    CHECK(slip[0]->verdict == Verdict::Disagrees);
+    CHECK(slip[0]->equation.find("iii") == std::string::npos);
+}
