@@ -40,12 +40,19 @@ void Discourse::read_limits(const Derivation& d, const Model& model, LatexContex
         for (const Parameter& p : model.parameters)
             if (n.value.is_equal(p.symbol)) parameter = &p;
         if (!parameter) continue;
-        // The formula the sentence leads into: the first display after the limit, in the same section.
+        // The formula the sentence leads into: the first display after the limit, in the same section, with no end
+        // of a sentence between them ("… as $c \to 0$. Next, …" is about what came before).
         std::size_t until = 0;
         for (std::size_t j = k + 1; j < d.rows.size(); ++j) {
             const MathRow& next = d.rows[j];
             if (next.section != row.section) break;
             if (!next.display) continue;
+            const std::size_t from = row.offset + row.text.size();
+            const std::string between = next.offset > from ? d.text.substr(from, next.offset - from) : "";
+            bool sentence_ends = false;
+            for (std::size_t q = 0; q + 1 < between.size(); ++q)
+                sentence_ends = sentence_ends || (between[q] == '.' && std::isspace(static_cast<unsigned char>(between[q + 1])));
+            if (sentence_ends) break;
             until = next.offset + next.text.size();
             for (std::size_t b = j + 1; b < d.rows.size() && d.rows[b].display && d.rows[b].block == next.block; ++b)
                 until = d.rows[b].offset + d.rows[b].text.size();

@@ -305,3 +305,19 @@ $$ (iii) \quad m l^2 \ddot\phi + m g \sin\phi = 0 $$
     CHECK(slip[0]->verdict == Verdict::Disagrees);
     CHECK(slip[0]->equation.find("iii") == std::string::npos);
 }
+
+TEST_CASE("readings: a limit after its formula, the sentence ended, is not put into the next one", "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text("models/damped_pendulum.toml", R"(# Damped pendulum
+
+$$ m l^2 \ddot\phi + c \dot\phi + m g l \sin\phi = 0 $$
+
+which is the undamped pendulum as $c \to 0$. The damping stays in what follows:
+
+$$ m l^2 \ddot\phi + m g l \sin\phi = 0 $$
+)");
+    INFO(described(r));
+    const auto next = on_line(r, 7);
+    REQUIRE(next.size() == 1);
+    CHECK(next[0]->verdict == Verdict::Disagrees);
+    CHECK(!eomgen::test::has_note(*next[0], "in the limit"));
+}
