@@ -278,6 +278,9 @@ class Checker : public Comparisons {
     bool conserved_on_motion(const GiNaC::ex& value);
     void check_chain(const FullChain& c, std::vector<EquationCheck>& out);
     EquationCheck check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge);
+    /// A link not comparable for the text's undefined x, y in a model of polar coordinates: x = r cos φ, y = r sin φ,
+    /// taken only where the link then agrees (cartesian_reading.cpp).
+    void check_cartesian_reading(const FullChain& c, std::size_t i, std::size_t j, bool bridge, EquationCheck& r);
     /// `a \neq b` between expressions (not_equal.cpp): agrees where they are not identically equal.
     void check_not_equal(const PSide& L, const PSide& R, EquationCheck& r);
     /// How many different quantities (T, V, L, a momentum p_q, …) the rows of the display holding offset `at` name

@@ -45,6 +45,8 @@ EquationCheck Checker::check_link_noting_uses(const FullChain& c, std::size_t i,
             multiplier_sign_section_ = sign_section;
         }
     }
+    if (r.verdict == Verdict::NotComparable && r.reason.rfind("unknown symbol", 0) == 0)
+        check_cartesian_reading(c, i, j, bridge, r);
     const std::vector<TextDefinitions::Use> uses = definitions_.take_uses();
     const std::size_t head = c.sides[i].base + c.sides[i].side->begin;
     if (r.verdict == Verdict::Agrees && r.compared_with.rfind("an identity", 0) == 0 && !bridge &&

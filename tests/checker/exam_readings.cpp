@@ -321,3 +321,22 @@ $$ m l^2 \ddot\phi + m g l \sin\phi = 0 $$
     CHECK(next[0]->verdict == Verdict::Disagrees);
     CHECK(!eomgen::test::has_note(*next[0], "in the limit"));
 }
+
+TEST_CASE("readings: the text's undefined x, y in a model of polar coordinates, only where the line then holds",
+          "[checker][readings]") {
+    // A particle on the paraboloid x^2 + y^2 = a z in cylindrical rho, phi, z (a corpus text's model).
+    const CheckReport r = eomgen::test::check_text("tests/checker/corpus/central_paraboloid_multiplier_mathse/model.toml",
+                                                   R"(# Paraboloid
+
+$$ x^2 + y^2 = a z $$
+
+$$ x^2 - y^2 = a z $$
+)");
+    INFO(described(r));
+    const auto constraint = on_line(r, 3), other = on_line(r, 5);
+    REQUIRE(constraint.size() == 1);
+    CHECK(constraint[0]->verdict == Verdict::Agrees);
+    CHECK(eomgen::test::has_note(*constraint[0], "the text's Cartesian $x = \\rho \\cos \\phi$"));
+    REQUIRE(other.size() == 1);  // the angle's convention is a guess: no disagreement on it
+    CHECK(other[0]->verdict == Verdict::NotComparable);
+}
