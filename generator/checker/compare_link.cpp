@@ -264,11 +264,15 @@ std::string head_letter(const std::string& source) {
     return head;
 }
 
+/// The letters that name a quantity of the motion, with a word a sentence naming that quantity holds.
+constexpr std::pair<const char*, const char*> kSelfLabels[] = {
+    {"T", "kinetic"},    {"K", "kinetic"},     {"V", "potential"},  {"U", "potential"},           {"L", "lagrangian"},
+    {"H", "hamiltonian"}, {"E", "energy"},     {"\\mathcal{L}", "lagrangian"}, {"\\mathscr{L}", "lagrangian"}};
+
 /// A letter that names a quantity of the motion (T, V, L, H, E, a momentum p_q).
 bool is_quantity_letter(const std::string& head) {
-    static const char* const kLetters[] = {"T", "K", "V", "U", "L", "H", "E", "\\mathcal{L}", "\\mathscr{L}"};
     if (head.rfind("p_", 0) == 0 && head.size() <= 12 && head.find_first_of("=+-*/ ") == std::string::npos) return true;
-    return std::find(std::begin(kLetters), std::end(kLetters), head) != std::end(kLetters);
+    return std::any_of(std::begin(kSelfLabels), std::end(kSelfLabels), [&](const auto& l) { return head == l.first; });
 }
 
 }  // namespace
@@ -305,10 +309,6 @@ void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j
     // A chain that names its quantity on the left (`T &= …` under "the kinetic energy T and the potential energy
     // U are") is labelled by its own letter when the sentence names that quantity too, not by the last quantity
     // the sentence names. (A sentence that names only another one still disagrees with it.)
-    static const std::pair<const char*, const char*> kSelfLabels[] = {
-        {"T", "kinetic"},          {"K", "kinetic"},        {"V", "potential"},      {"U", "potential"},
-        {"L", "lagrangian"},       {"H", "hamiltonian"},    {"E", "energy"},         {"\\mathcal{L}", "lagrangian"},
-        {"\\mathscr{L}", "lagrangian"}};
     const std::string head = head_letter(c.sides[0].side->source);
     bool self_labelled = false;
     for (const auto& [letter, noun] : kSelfLabels)

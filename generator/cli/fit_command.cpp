@@ -91,19 +91,9 @@ ByExperiment by_experiment(const std::vector<std::string>& specs, std::size_t ex
     ByExperiment out;
     out.own.resize(experiments);
     for (const std::string& spec : specs) {
-        std::size_t digits = 0;
-        while (digits < spec.size() && std::isdigit(static_cast<unsigned char>(spec[digits]))) ++digits;
-        if (digits == 0 || digits >= spec.size() || spec[digits] != ':') {
-            out.shared.push_back(spec);
-            continue;
-        }
-        const std::string number = spec.substr(0, digits);
-        const std::size_t k = number.size() > 6 ? 0 : std::size_t(std::stoul(number));
-        if (k < 1 || k > experiments)
-            throw sim::UsageError(std::string(option) + " " + spec + ": there is no experiment " + number + " (K: is " +
-                                  "the place of a data file, from 1; there " +
-                                  (experiments == 1 ? "is 1 data file" : "are " + std::to_string(experiments) + " data files") + ")");
-        out.own[k - 1].push_back(spec.substr(digits + 1));
+        int k = -1;
+        const std::string rest = experiment_prefix(spec, experiments, option, k);
+        (k < 0 ? out.shared : out.own[std::size_t(k)]).push_back(rest);
     }
     return out;
 }

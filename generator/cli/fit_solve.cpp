@@ -270,6 +270,22 @@ FitLoss parse_loss(const std::string& spec) {
     return loss;
 }
 
+std::string experiment_prefix(const std::string& spec, std::size_t experiments, const std::string& option,
+                              int& experiment) {
+    experiment = -1;
+    std::size_t digits = 0;
+    while (digits < spec.size() && std::isdigit(static_cast<unsigned char>(spec[digits]))) ++digits;
+    if (digits == 0 || digits >= spec.size() || spec[digits] != ':') return spec;
+    const std::string number = spec.substr(0, digits);
+    const std::size_t k = number.size() > 6 ? 0 : std::size_t(std::stoul(number));
+    if (k < 1 || k > experiments)
+        throw UsageError(option + " " + spec + ": there is no experiment " + number + " (K: is the place of a data " +
+                         "file, from 1; there " +
+                         (experiments == 1 ? "is 1 data file" : "are " + std::to_string(experiments) + " data files") + ")");
+    experiment = int(k) - 1;
+    return spec.substr(digits + 1);
+}
+
 std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const std::vector<ExperimentStart>& starts) {
     struct Given {
         FreeValue value;
@@ -282,19 +298,7 @@ std::vector<FreeValue> parse_free(const std::vector<std::string>& specs, const s
     for (const std::string& whole : specs) {
         // [K:]NAME or [K:]x0:NAME, then =start, then :lo:hi.
         Given g;
-        std::string spec = whole;
-        std::size_t digits = 0;
-        while (digits < spec.size() && std::isdigit(static_cast<unsigned char>(spec[digits]))) ++digits;
-        if (digits > 0 && digits < spec.size() && spec[digits] == ':') {
-            const std::string number = spec.substr(0, digits);
-            const std::size_t k = number.size() > 6 ? 0 : std::size_t(std::stoul(number));
-            if (k < 1 || k > experiments)
-                throw UsageError("--free " + whole + ": there is no experiment " + number + " (K: is the place of a " +
-                                 "data file, from 1; there " +
-                                 (experiments == 1 ? "is 1 data file" : "are " + std::to_string(experiments) + " data files") + ")");
-            g.own = int(k) - 1;
-            spec = spec.substr(digits + 1);
-        }
+        const std::string spec = experiment_prefix(whole, experiments, "--free", g.own);
         const ExperimentStart& at = starts.at(g.own < 0 ? 0 : std::size_t(g.own));
         const bool initial = spec.rfind("x0:", 0) == 0;
         const std::size_t from = initial ? 3 : 0;

@@ -74,6 +74,11 @@ struct FitOutcome {
     std::vector<Eigen::MatrixXd> model;  ///< per experiment, the fitted trajectory at its data's times and columns
 };
 
+/// `K:REST` (K the place of a data file, from 1): sets `experiment` to K − 1 and returns REST; without such a prefix
+/// returns `spec` and leaves `experiment` at −1. UsageError, saying `option spec`, for a K that is no data file's.
+std::string experiment_prefix(const std::string& spec, std::size_t experiments, const std::string& option,
+                              int& experiment);
+
 /// The unknowns given as --free [K:]NAME[=start][:lo:hi] (UsageError for an unknown name or experiment, a bad number,
 /// lo >= hi, a start outside the bounds, a value freed both for every experiment and for one); the start defaults to
 /// the model's value (after --set and --init: a shared parameter's from the first experiment, the rest from their
