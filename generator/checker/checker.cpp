@@ -563,6 +563,7 @@ CheckReport Checker::run() {
         break;
     }
     collect_parts(chains);
+    collect_positions(chains);
     all_chains_ = &chains;
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2) continue;  // an expression, not an equation

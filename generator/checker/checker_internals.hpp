@@ -28,6 +28,7 @@
 #include "checker/latex_parser.hpp"
 #include "checker/linear_algebra.hpp"
 #include "checker/normal_modes_check.hpp"
+#include "checker/point_positions.hpp"
 #include "checker/printed_numbers.hpp"
 #include "checker/sample_points.hpp"
 #include "codegen/cpp_emitter.hpp"
@@ -270,6 +271,14 @@ class Checker : public Comparisons {
 
     // ----- checking
     void collect_parts(const std::vector<FullChain>& chains);
+    /// The text's coordinates of its points (`x_2 = x + l\sin\theta`) matched with the model's (point_positions.cpp);
+    /// check_position gives a matched row (a coordinate, or with `vector` a position vector) its verdict, an unmatched
+    /// one its note.
+    void collect_positions(const std::vector<FullChain>& chains);
+    bool check_position(const FullChain& c, std::size_t j, bool vector, EquationCheck& r);
+    /// A vector in the axes' unit vectors (`(x + l\sin\theta)\hat{x} - l\cos\theta\,\hat{y}`): its (axis, component)s.
+    std::optional<std::vector<std::pair<int, GiNaC::ex>>> unit_components(const Prepared& v) const;
+    std::map<std::size_t, PositionMatch> positions_;  ///< by the relation's file offset
     /// Where a definition whose name stands at file offset `head` (its value at `at`) is in force from: `at`, or the
     /// start of the formula it explains ("…, where ω² = k/m": prose.hpp, explains_formula_before).
     std::size_t in_force_from(std::size_t head, std::size_t at) const;
@@ -287,72 +296,7 @@ class Checker : public Comparisons {
     /// on their left (compare_link.cpp).
     int display_heads(std::size_t at) const;
     /// check_link, with anything GiNaC throws on a strange input turned into a "not comparable" verdict.
-    EquationCheck safe_check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
-        try {
-            EquationCheck r = check_link(c, i, j, bridge);
-            if (i == 0 && r.verdict == Verdict::Disagrees && !verifying_) {
-                const std::size_t at = c.relation_offsets[j - 1];
-                for (const TextMeaning& m : meanings_)
-                    if (at >= m.begin && at < m.end) {
-                        EquationCheck n;
-                        n.where = r.where;
-                        n.section = r.section;
-                        n.equation = r.equation;
-                        not_judged(n, Role::Definition,
-                                   "a definition: the text's $" + m.name + "$ is the " + m.noun +
-                                       " here, not eomgen's $" + m.name + "$; read so from line " +
-                                       std::to_string(m.line + 1) + " to the end of its section");
-                        return n;
-                    }
-            }
-            // (A label of eomgen's — V, T, L, p_θ — set to an expression in the state is a claim about it, whatever
-            // the sentence's cue; set to a number, `T = 1` "the unit of time", it is the text's other meaning. The
-            // amplitudes of a trial solution are not values the text sets either: `A_1 = A_2` "with ω² = 3k/m" is the
-            // mode's shape, a claim.)
-            const auto label_claim = [&](std::size_t label, std::size_t other) {
-                return truth_.count(c.sides[label].side->value) && depends_on_state(prepare(c.sides[other]).value);
-            };
-            const auto amplitudes = [&] {
-                const TrialSolution* t = discourse_->trial_at(c.relation_offsets[j - 1]);
-                if (!t) return false;
-                for (const GiNaC::ex& a : t->amplitude)
-                    if (!a.is_zero() && (c.sides[i].side->value.has(a) || c.sides[j].side->value.has(a))) return true;
-                return false;
-            };
-            if (r.verdict == Verdict::Disagrees && !verifying_ && c.sides[i].side->ok && c.sides[j].side->ok &&
-                !label_claim(i, j) && !label_claim(j, i) && !amplitudes() &&
-                sets_a_value(c.sides[i].side->value, c.sides[j].side->value, model_) &&
-                !defined_quantity(c.sides[i]) && !defined_quantity(c.sides[j]) && !after_implication(c)) {
-                // "started with θ̇ = 0", "with m₁ = m₂ = m": values set for what follows, not an equation of motion.
-                const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
-                if (!cue.empty()) {
-                    EquationCheck n;
-                    n.where = r.where;
-                    n.section = r.section;
-                    n.equation = r.equation;
-                    not_judged(n, Role::Condition,
-                               "a condition or a given value (after “" + cue +
-                                   "”): it sets a value for what follows, not an equation of motion, and is not judged");
-                    return n;
-                }
-            }
-            if (r.verdict == Verdict::Disagrees && !verifying_) {
-                blame_definition(c, i, j, r);
-                note_disagreeing_uses(c, i, j, r);
-            }
-            if (!r.corrected.empty() && !verifying_ && !solved_corrections_.count({r.where.line, r.where.column}))
-                verify_correction(c, j, r);
-            if (!verifying_ && c.display) check_prose_label(c, i, j, r);
-            return r;
-        } catch (const std::exception& e) {
-            EquationCheck r;
-            r.where = d_.position(c.relation_offsets[j - 1]);
-            if (c.section >= 0) r.section = d_.sections[std::size_t(c.section)].title;
-            r.equation = c.sides[i].side->source + " = " + c.sides[j].side->source;
-            r.reason = std::string("cannot be evaluated: ") + e.what();
-            return r;
-        }
-    }
+    EquationCheck safe_check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge);
     /// A side that is one free name the text defined (`\ddot{\tilde\phi}` after `\phi = \phi_0 + \tilde\phi`): its
     /// quantity, not a name a condition gives a value.
     bool defined_quantity(const PSide& s) {
@@ -478,57 +422,10 @@ class Checker : public Comparisons {
     void check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other, double tol,
                     EquationCheck& r);
     /// T (or V) minus the text's other parts of it, when the text defines other parts.
-    std::optional<GiNaC::ex> expected_part(const GiNaC::ex& part) const {
-        std::string name;
-        GiNaC::ex whole;
-        if (!is_part(part, &name, &whole)) return std::nullopt;
-        GiNaC::ex others = 0;
-        bool any = false;
-        for (const auto& [sym, value] : part_value_) {
-            std::string n2;
-            if (sym.is_equal(part) || !is_part(sym, &n2) || n2[0] != name[0]) continue;
-            others += value;
-            any = true;
-        }
-        if (!any) return std::nullopt;
-        return whole - others;
-    }
+    std::optional<GiNaC::ex> expected_part(const GiNaC::ex& part) const;
     /// `V = -m g l \cos\theta + \text{const}`: agrees (true) when the sides differ by a constant; else
     /// the constants are dropped from a and b for the other comparisons (false).
-    bool up_to_constant(Prepared& a, Prepared& b, double tol, EquationCheck& r) {
-        // `V(x_1, x_2) = k x_1^2 + \dots + f`: a name the text never defines, added alone (±) to a potential, a
-        // Lagrangian or an energy (quantities defined up to a constant), is that constant.
-        for (auto [truth, other] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
-            if (!truth->has_truth_label || !truth->comparable() || other->unknown.empty() || !other->vectors.empty())
-                continue;
-            bool defined_up_to_constant = false;
-            for (const GiNaC::ex& q : {eq_.V, eq_.L, eq_.energy})
-                defined_up_to_constant = defined_up_to_constant || equal(truth->value, q, 1e-9) == Tri::Yes;
-            if (!defined_up_to_constant) continue;
-            std::vector<const FreeName*> still;
-            for (const FreeName* f : other->unknown) {
-                const GiNaC::ex slope = GiNaC::diff(other->value, f->symbol).expand();
-                if (names_a_constant(f->name) && (slope.is_equal(1) || slope.is_equal(-1))) {
-                    other->constants.push_back(f->symbol);
-                    r.notes.push_back("reads $" + f->name + "$, added alone, as the additive constant");
-                } else {
-                    still.push_back(f);
-                }
-            }
-            other->unknown = std::move(still);
-        }
-        if (a.constants.empty() && b.constants.empty()) return false;
-        GiNaC::exmap zero;
-        for (const Prepared* p : {&a, &b})
-            for (const GiNaC::ex& k : p->constants) zero[k] = 0;
-        a.value = a.value.subs(zero);
-        b.value = b.value.subs(zero);
-        if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
-        const int constant_side = a.value.is_zero() && !a.constants.empty()
-                                      ? 0
-                                      : (b.value.is_zero() && !b.constants.empty() ? 1 : -1);
-        return check_additive_constant(a.value, b.value, constant_side, model_, *this, tol, r);
-    }
+    bool up_to_constant(Prepared& a, Prepared& b, double tol, EquationCheck& r);
     void check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a, const Prepared& b,
                       double tol, EquationCheck& r);
     bool diagnose_solved_acceleration(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
@@ -623,19 +520,7 @@ class Checker : public Comparisons {
     int velocity_h_line_ = 0;       ///< the first line where the text writes H in velocities (0: none)
     std::size_t velocity_h_at_ = 0;  ///< its file offset
     /// The reference's value as a correction prints it: in the momenta when the text's side is written in them.
-    std::string printed_value(const Prepared& ref, const PSide& ref_side, const Prepared& text) {
-        const std::string in_velocities = latex(ref.value);
-        std::optional<GiNaC::ex> in_p;
-        if (text.has_momenta && ref.has_momenta) in_p = hamilton_.in_momenta(ref.value_p);
-        if (text.has_momenta && ref_side.side->ok && hamilton_.is_hamiltonian(ref_side.side->value))
-            in_p = hamilton_.hamiltonian();
-        // In the momenta unless that is much longer (an inverse mass matrix GiNaC cannot simplify).
-        if (in_p && expanded_terms(*in_p) <= kMaxExpandedTerms / 10) {
-            const std::string shown = latex(*in_p);
-            if (shown.size() <= 2 * in_velocities.size()) return shown;
-        }
-        return in_velocities;
-    }
+    std::string printed_value(const Prepared& ref, const PSide& ref_side, const Prepared& text);
 };
 
 

@@ -96,6 +96,8 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     if (rel == Relation::Equal && modes_.check(*L.side, *R.side, ctx_, *this, r)) return r;
     if (!both_signs_ && (two_equations_in_one(*L.side) || two_equations_in_one(*R.side)))
         return check_both_signs(c, i, j, bridge);
+    // `\vec{r}_m = (x + l\sin\theta)\hat{x} - l\cos\theta\,\hat{y}`: a point the model gives (point_positions.cpp).
+    if (rel == Relation::Equal && check_position(c, j, true, r)) return r;
     if (rel == Relation::Equal && algebra_.check(*L.side, L.base, *R.side, R.base, *this, r)) return r;
     // A part of T or V defined by this link: compare it with its share of eomgen's T or V.
     for (int side = 0; side < 2; ++side) {
@@ -457,6 +459,95 @@ void Checker::check_part(const GiNaC::ex& part, const std::string& part_source, 
     r.difference = dg.difference;
     r.wrong_terms = dg.lines;
     r.corrected = part_source + " = " + latex(expected);
+}
+
+EquationCheck Checker::safe_check_link(const FullChain& c, std::size_t i, std::size_t j, bool bridge) {
+    try {
+        EquationCheck r = check_link(c, i, j, bridge);
+        if (i == 0 && r.verdict == Verdict::Disagrees && !verifying_) {
+            const std::size_t at = c.relation_offsets[j - 1];
+            for (const TextMeaning& m : meanings_)
+                if (at >= m.begin && at < m.end) {
+                    EquationCheck n;
+                    n.where = r.where;
+                    n.section = r.section;
+                    n.equation = r.equation;
+                    not_judged(n, Role::Definition,
+                               "a definition: the text's $" + m.name + "$ is the " + m.noun +
+                                   " here, not eomgen's $" + m.name + "$; read so from line " +
+                                   std::to_string(m.line + 1) + " to the end of its section");
+                    return n;
+                }
+        }
+        // (A label of eomgen's — V, T, L, p_θ — set to an expression in the state is a claim about it, whatever
+        // the sentence's cue; set to a number, `T = 1` "the unit of time", it is the text's other meaning. The
+        // amplitudes of a trial solution are not values the text sets either: `A_1 = A_2` "with ω² = 3k/m" is the
+        // mode's shape, a claim.)
+        const auto label_claim = [&](std::size_t label, std::size_t other) {
+            return truth_.count(c.sides[label].side->value) && depends_on_state(prepare(c.sides[other]).value);
+        };
+        const auto amplitudes = [&] {
+            const TrialSolution* t = discourse_->trial_at(c.relation_offsets[j - 1]);
+            if (!t) return false;
+            for (const GiNaC::ex& a : t->amplitude)
+                if (!a.is_zero() && (c.sides[i].side->value.has(a) || c.sides[j].side->value.has(a))) return true;
+            return false;
+        };
+        if (r.verdict == Verdict::Disagrees && !verifying_ && c.sides[i].side->ok && c.sides[j].side->ok &&
+            !label_claim(i, j) && !label_claim(j, i) && !amplitudes() &&
+            sets_a_value(c.sides[i].side->value, c.sides[j].side->value, model_) &&
+            !defined_quantity(c.sides[i]) && !defined_quantity(c.sides[j]) && !after_implication(c)) {
+            // "started with θ̇ = 0", "with m₁ = m₂ = m": values set for what follows, not an equation of motion.
+            const std::string cue = condition_cue(d_, c.relation_offsets[j - 1]);
+            if (!cue.empty()) {
+                EquationCheck n;
+                n.where = r.where;
+                n.section = r.section;
+                n.equation = r.equation;
+                not_judged(n, Role::Condition,
+                           "a condition or a given value (after “" + cue +
+                               "”): it sets a value for what follows, not an equation of motion, and is not judged");
+                return n;
+            }
+        }
+        if (r.verdict == Verdict::Disagrees && !verifying_) {
+            blame_definition(c, i, j, r);
+            note_disagreeing_uses(c, i, j, r);
+        }
+        if (!r.corrected.empty() && !verifying_ && !solved_corrections_.count({r.where.line, r.where.column}))
+            verify_correction(c, j, r);
+        if (!verifying_ && c.display) check_prose_label(c, i, j, r);
+        return r;
+    } catch (const std::exception& e) {
+        EquationCheck r;
+        r.where = d_.position(c.relation_offsets[j - 1]);
+        if (c.section >= 0) r.section = d_.sections[std::size_t(c.section)].title;
+        r.equation = c.sides[i].side->source + " = " + c.sides[j].side->source;
+        r.reason = std::string("cannot be evaluated: ") + e.what();
+        return r;
+    }
+}
+
+// The text's sign of λ, kept for its section (compare_values.cpp asks).
+bool Checker::keeps_multiplier_sign(bool with_eomgens, bool with_opposite, EquationCheck& r) {
+    if (with_eomgens == with_opposite || verifying_) return true;  // both (λ cancels) or neither: nothing learnt
+    const int sign = with_eomgens ? 1 : -1;
+    // The convention holds in its section; another section may take the other one.
+    if (multiplier_sign_ == 0 || r.section != multiplier_sign_section_) {
+        multiplier_sign_ = sign;
+        multiplier_sign_line_ = r.where.line;
+        multiplier_sign_section_ = r.section;
+        return true;
+    }
+    if (sign == multiplier_sign_) return true;
+    const std::string line = std::to_string(multiplier_sign_line_);
+    r.verdict = Verdict::Disagrees;
+    r.reason = "it holds only with λ of the sign opposite to the one the text takes on line " + line + " (" +
+               (multiplier_sign_ > 0 ? "eomgen's, M q'' = f + A^T λ" : "the opposite of eomgen's M q'' = f + A^T λ") +
+               ")";
+    r.wrong_terms = {"the multiplier, or the constraint force it gives, has the wrong sign for the text's own "
+                     "convention of line " + line};
+    return false;
 }
 
 }  // namespace eomgen::checker::detail

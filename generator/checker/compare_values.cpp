@@ -5,27 +5,6 @@
 
 namespace eomgen::checker::detail {
 
-bool Checker::keeps_multiplier_sign(bool with_eomgens, bool with_opposite, EquationCheck& r) {
-    if (with_eomgens == with_opposite || verifying_) return true;  // both (λ cancels) or neither: nothing learnt
-    const int sign = with_eomgens ? 1 : -1;
-    // The convention holds in its section; another section may take the other one.
-    if (multiplier_sign_ == 0 || r.section != multiplier_sign_section_) {
-        multiplier_sign_ = sign;
-        multiplier_sign_line_ = r.where.line;
-        multiplier_sign_section_ = r.section;
-        return true;
-    }
-    if (sign == multiplier_sign_) return true;
-    const std::string line = std::to_string(multiplier_sign_line_);
-    r.verdict = Verdict::Disagrees;
-    r.reason = "it holds only with λ of the sign opposite to the one the text takes on line " + line + " (" +
-               (multiplier_sign_ > 0 ? "eomgen's, M q'' = f + A^T λ" : "the opposite of eomgen's M q'' = f + A^T λ") +
-               ")";
-    r.wrong_terms = {"the multiplier, or the constraint force it gives, has the wrong sign for the text's own "
-                     "convention of line " + line};
-    return false;
-}
-
 void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a_read,
                            const Prepared& b_read, double tol, EquationCheck& r) {
     Prepared a = a_read, b = b_read;
@@ -67,6 +46,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
     // `t = 0`, `x_0 = 1`: an instant, an initial value (given_rows.cpp).
     if (given_value(a, b, r)) return;
+    // `x_2 = x + l\sin\theta`: a coordinate of a point the model gives (point_positions.cpp).
+    if (check_position(c, j, false, r)) return;
     // `s(t) = s_0\cos(\omega t)`: a solution the text claims for a coordinate, put into its equation of motion.
     if (a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
         check_claimed_solution(a.value, b.value, model_, eq_, motion_, ctx_, *this, r,

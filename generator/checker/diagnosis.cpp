@@ -541,4 +541,18 @@ bool Checker::diagnose_solved_acceleration(const PSide& left, const PSide& right
     return true;
 }
 
+std::string Checker::printed_value(const Prepared& ref, const PSide& ref_side, const Prepared& text) {
+    const std::string in_velocities = latex(ref.value);
+    std::optional<GiNaC::ex> in_p;
+    if (text.has_momenta && ref.has_momenta) in_p = hamilton_.in_momenta(ref.value_p);
+    if (text.has_momenta && ref_side.side->ok && hamilton_.is_hamiltonian(ref_side.side->value))
+        in_p = hamilton_.hamiltonian();
+    // In the momenta unless that is much longer (an inverse mass matrix GiNaC cannot simplify).
+    if (in_p && expanded_terms(*in_p) <= kMaxExpandedTerms / 10) {
+        const std::string shown = latex(*in_p);
+        if (shown.size() <= 2 * in_velocities.size()) return shown;
+    }
+    return in_velocities;
+}
+
 }  // namespace eomgen::checker::detail

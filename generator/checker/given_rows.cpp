@@ -40,4 +40,20 @@ bool Checker::names_parts(const PSide& L, const PSide& R, EquationCheck& r) {
     return true;
 }
 
+std::optional<GiNaC::ex> Checker::expected_part(const GiNaC::ex& part) const {
+    std::string name;
+    GiNaC::ex whole;
+    if (!is_part(part, &name, &whole)) return std::nullopt;
+    GiNaC::ex others = 0;
+    bool any = false;
+    for (const auto& [sym, value] : part_value_) {
+        std::string n2;
+        if (sym.is_equal(part) || !is_part(sym, &n2) || n2[0] != name[0]) continue;
+        others += value;
+        any = true;
+    }
+    if (!any) return std::nullopt;
+    return whole - others;
+}
+
 }  // namespace eomgen::checker::detail

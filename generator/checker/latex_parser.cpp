@@ -43,10 +43,19 @@ const FreeName* LatexContext::subscript_case_variant(const std::string& name, Na
         return s;
     };
     const std::string folded = lower(name.substr(sub));
+    // The subscript's text: `\vec{r_{M}}` → "M".
+    const auto subscript = [&](const std::string& s) {
+        const std::size_t close = s.find('}', sub + 2);
+        return s.substr(sub + 2, close == std::string::npos ? std::string::npos : close - sub - 2);
+    };
     for (const auto& [other, free] : free_names)
         if (free.kind == kind && other.size() == name.size() && other.compare(0, sub + 2, name, 0, sub + 2) == 0 &&
-            lower(other.substr(sub)) == folded)
+            lower(other.substr(sub)) == folded) {
+            // `\vec{r_M}` and `\vec{r_m}` where M and m are both the model's (the cart's mass and the bob's): two
+            // points, named after two bodies.
+            if (names.count(subscript(name)) && names.count(subscript(other))) continue;
             return &free;
+        }
     return nullptr;
 }
 

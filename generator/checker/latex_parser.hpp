@@ -66,7 +66,8 @@ struct LatexContext {
     /// The symbol for a free name, created when new.
     GiNaC::symbol free_symbol(const std::string& name, NameKind kind);
     /// A free name other than `name` that differs from it only in the case of its subscript (`I_{P}` for `I_{p}`,
-    /// `I_{P}'` for `I_{p}'`), of the same kind; nullptr when there is none or `name` is itself a free name.
+    /// `I_{P}'` for `I_{p}'`), of the same kind; nullptr when there is none, when `name` is itself a free name, or when both
+    /// subscripts are names of the model (`r_{M}`, `r_{m}` for the masses M and m: two points).
     const FreeName* subscript_case_variant(const std::string& name, NameKind kind) const;
 };
 

@@ -66,4 +66,39 @@ bool Checker::check_named_constant(const PSide& quantity, const PSide& name, con
     return true;
 }
 
+bool Checker::up_to_constant(Prepared& a, Prepared& b, double tol, EquationCheck& r) {
+    // `V(x_1, x_2) = k x_1^2 + \dots + f`: a name the text never defines, added alone (±) to a potential, a
+    // Lagrangian or an energy (quantities defined up to a constant), is that constant.
+    for (auto [truth, other] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+        if (!truth->has_truth_label || !truth->comparable() || other->unknown.empty() || !other->vectors.empty())
+            continue;
+        bool defined_up_to_constant = false;
+        for (const GiNaC::ex& q : {eq_.V, eq_.L, eq_.energy})
+            defined_up_to_constant = defined_up_to_constant || equal(truth->value, q, 1e-9) == Tri::Yes;
+        if (!defined_up_to_constant) continue;
+        std::vector<const FreeName*> still;
+        for (const FreeName* f : other->unknown) {
+            const GiNaC::ex slope = GiNaC::diff(other->value, f->symbol).expand();
+            if (names_a_constant(f->name) && (slope.is_equal(1) || slope.is_equal(-1))) {
+                other->constants.push_back(f->symbol);
+                r.notes.push_back("reads $" + f->name + "$, added alone, as the additive constant");
+            } else {
+                still.push_back(f);
+            }
+        }
+        other->unknown = std::move(still);
+    }
+    if (a.constants.empty() && b.constants.empty()) return false;
+    GiNaC::exmap zero;
+    for (const Prepared* p : {&a, &b})
+        for (const GiNaC::ex& k : p->constants) zero[k] = 0;
+    a.value = a.value.subs(zero);
+    b.value = b.value.subs(zero);
+    if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
+    const int constant_side = a.value.is_zero() && !a.constants.empty()
+                                  ? 0
+                                  : (b.value.is_zero() && !b.constants.empty() ? 1 : -1);
+    return check_additive_constant(a.value, b.value, constant_side, model_, *this, tol, r);
+}
+
 }  // namespace eomgen::checker::detail

@@ -340,3 +340,59 @@ $$ x^2 - y^2 = a z $$
     REQUIRE(other.size() == 1);  // the angle's convention is a guess: no disagreement on it
     CHECK(other[0]->verdict == Verdict::NotComparable);
 }
+
+TEST_CASE("readings: the coordinates of a point agree with a point the model file gives, and never disagree",
+          "[checker][readings]") {
+    // models/pendulum.toml draws the bob at (l sin φ, −l cos φ).
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+The bob is at
+
+$$ x = l \sin\phi $$
+
+$$ y = -l \cos\phi $$
+
+## Measured downward
+
+$$ x_b = l \sin\phi $$
+
+$$ y_b = l \cos\phi $$
+
+## As vectors
+
+$$ \vec{r} = l\sin\phi\,\hat{x} - l\cos\phi\,\hat{y} $$
+
+$$ \mathbf{r}_{2} = l\sin\phi\,\mathbf{i} + l\cos\phi\,\mathbf{j} $$
+)");
+    INFO(described(r));
+    for (const int line : {5, 7, 17}) {
+        const auto v = on_line(r, line);
+        REQUIRE(v.size() == 1);
+        CHECK(v[0]->verdict == Verdict::Agrees);
+        CHECK(v[0]->compared_with.find("the position of the model's point") == 0);
+    }
+    // y down: the text's axes are not the file's, which is no slip; the first row says which points the file has.
+    for (const int line : {11, 13, 19}) {
+        const auto v = on_line(r, line);
+        REQUIRE(v.size() == 1);
+        CHECK(v[0]->verdict != Verdict::Disagrees);
+        CHECK(v[0]->verdict != Verdict::Agrees);
+    }
+    CHECK(eomgen::test::has_note(*on_line(r, 11)[0], "no point the model file gives"));
+}
+
+TEST_CASE("readings: r_M and r_m are two points where M and m are two masses of the model", "[checker][readings]") {
+    // A cart (M, coordinate x) with a pendulum (m, l, θ) below it, drawn at (x, 0) and (x + l sin θ, −l cos θ).
+    const CheckReport r = eomgen::test::check_text("tests/checker/corpus/cart_spring_report/model.toml", R"(# Cart
+
+$$ \vec{r_M} = x \hat{x} $$
+
+$$ \vec{r_m} = (x + l\sin\theta) \hat{x} - l\cos\theta\,\hat{y} $$
+)");
+    INFO(described(r));
+    for (const int line : {3, 5}) {
+        const auto v = on_line(r, line);
+        REQUIRE(v.size() == 1);
+        CHECK(v[0]->verdict == Verdict::Agrees);
+    }
+}

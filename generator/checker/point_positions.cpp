@@ -1,0 +1,203 @@
+/** @file point_positions.cpp  The kinematics of a derivation, `x_2 = x + l\sin\theta`, `y_2 = -l\cos\theta`, against
+ * the points the model file gives (issue 28): the coordinates the text writes for one point (one subscript, one
+ * section) agree where one point of the model has all of them. Where none has, the text may have placed its axes
+ * otherwise than the file (y down, another origin), so nothing is claimed: the rows stay what they were (the text's
+ * abbreviations), with a note listing the model's points. */
+#include "checker/point_positions.hpp"
+
+#include "checker/checker_internals.hpp"
+
+#include <map>
+#include <set>
+
+namespace eomgen::checker {
+
+std::vector<ModelPoint> model_points(const Model& model) {
+    std::vector<ModelPoint> out;
+    const auto add = [&](const std::array<GiNaC::ex, 3>& r, bool planar, const std::string& what) {
+        for (const ModelPoint& p : out)
+            if (p.r[0].is_equal(r[0]) && p.r[1].is_equal(r[1]) && p.r[2].is_equal(r[2])) return;
+        out.push_back(ModelPoint{r, planar, what});
+    };
+    for (const DrawItem& d : model.drawing)
+        for (std::size_t k = 0; k < d.points.size(); ++k)
+            if (k >= d.point_bodies.size() || d.point_bodies[k].empty())
+                add(d.points[k], d.planar_given, "[[draw]] at " + d.where.str());
+    for (const Body& b : model.bodies)
+        add(b.centre, false, "the centre of mass of body '" + b.name + "' at " + b.where.str());
+    return out;
+}
+
+std::optional<PositionName> position_name(const std::string& canonical) {
+    if (canonical.empty() || (canonical[0] != 'x' && canonical[0] != 'y' && canonical[0] != 'z')) return std::nullopt;
+    PositionName p;
+    p.axis = canonical[0] - 'x';
+    if (canonical.size() == 1) return p;
+    // `x_{2}`, `y_{bob}`: one group of braces after the underscore, nothing else.
+    if (canonical.size() < 5 || canonical.compare(1, 2, "_{") != 0 || canonical.back() != '}') return std::nullopt;
+    p.point = canonical.substr(3, canonical.size() - 4);
+    if (p.point.find_first_of("{}\\ ") != std::string::npos) return std::nullopt;
+    return p;
+}
+
+std::optional<int> unit_vector_axis(const std::string& canonical) {
+    // \hat{x}, \mathbf{i}, \vec{k}, \hat{\imath}; \hat{e}_{x}, \mathbf{e}_{y}, \vec{e}_{z} (and e_{1}, e_{2}, e_{3}).
+    static const char* const decorations[] = {"\\hat", "\\mathbf", "\\vec", "\\boldsymbol", "\\bm", "\\widehat"};
+    for (const char* d : decorations) {
+        const std::string open = std::string(d) + "{";
+        if (canonical.rfind(open, 0) != 0) continue;
+        const std::size_t close = canonical.find('}', open.size());
+        if (close == std::string::npos) return std::nullopt;
+        const std::string inner = canonical.substr(open.size(), close - open.size());
+        const std::string after = canonical.substr(close + 1);
+        if (after.empty()) {
+            for (int a = 0; a < 3; ++a)
+                if (inner == std::string(1, char('x' + a)) || inner == std::string(1, char('i' + a)))
+                    return a;
+            if (inner == "\\imath") return 0;
+            if (inner == "\\jmath") return 1;
+            return std::nullopt;
+        }
+        if (inner != "e") return std::nullopt;
+        for (int a = 0; a < 3; ++a)
+            if (after == "_{" + std::string(1, char('x' + a)) + "}" || after == "_{" + std::to_string(a + 1) + "}") return a;
+        return std::nullopt;
+    }
+    return std::nullopt;
+}
+
+namespace detail {
+
+void Checker::collect_positions(const std::vector<FullChain>& chains) {
+    const std::vector<ModelPoint> points = model_points(model_);
+    struct Row {
+        std::size_t at;  ///< the relation's offset
+        std::string name;
+        std::vector<std::pair<int, GiNaC::ex>> components;  ///< (axis, value): one for `x_2 = …`, all for a vector
+    };
+    const auto plain = [&](const Prepared& v) {
+        return v.ok && v.unknown.empty() && v.units.empty() && v.constants.empty() && !has_velocity(v.value) &&
+               !has_acceleration(v.value);
+    };
+    std::map<std::pair<int, std::string>, std::vector<Row>> groups;  // (section, point) → its rows, in text order
+    for (const FullChain& c : chains)
+        for (std::size_t k = 0; k + 1 < c.sides.size(); ++k) {
+            const Side& s = *c.sides[k].side;
+            if (c.relations[k] != Relation::Equal || !s.ok || !GiNaC::is_a<GiNaC::symbol>(s.value)) continue;
+            // A value at a point the text considers (`x = s = \frac{1}{2h}` there) is not the point's position.
+            if (at_a_point_.count(c.sides[k].base + s.begin)) continue;
+            const FreeName* f = ctx_.free_name_of(s.value);
+            if (!f) continue;
+            const std::optional<PositionName> p = f->kind == NameKind::Unknown ? position_name(f->name) : std::nullopt;
+            if (p) {
+                const Prepared v = prepare(c.sides[k + 1]);
+                if (!plain(v) || !v.vectors.empty()) continue;
+                groups[{c.section, p->point}].push_back(Row{c.relation_offsets[k], f->name, {{p->axis, v.value}}});
+            } else if (f->kind == NameKind::Vector) {
+                // `\vec{r}_m = (x + l\sin\theta)\hat{x} - l\cos\theta\,\hat{y}`: components along the axes' unit vectors.
+                const Prepared v = prepare(c.sides[k + 1]);
+                if (!plain(v) || v.vectors.empty()) continue;
+                const std::optional<std::vector<std::pair<int, GiNaC::ex>>> comps = unit_components(v);
+                if (comps) groups[{c.section, "\\vec " + f->name}].push_back(Row{c.relation_offsets[k], f->name, *comps});
+            }
+        }
+    const auto shown = [&](const ModelPoint& p) {
+        std::string s = "$(";
+        for (int a = 0; a < (p.planar ? 2 : 3); ++a) s += (a ? ", " : "") + latex(p.r[a]);
+        return s + ")$ (" + p.what + ")";
+    };
+    const auto matches = [&](const Row& row, const ModelPoint& p) {
+        for (const auto& [axis, value] : row.components)
+            if (equal(value, p.r[axis], 1e-9) != Tri::Yes) return false;
+        return true;
+    };
+    for (const auto& [key, rows] : groups) {
+        std::set<int> axes;
+        for (const Row& row : rows)
+            for (const auto& comp : row.components) axes.insert(comp.first);
+        // The point that the most rows match, among those matching a row of every axis the text gives (a text that
+        // writes y twice, the second time for z, still has its x and first y matched).
+        const ModelPoint* match = nullptr;
+        std::size_t best = 0;
+        for (const ModelPoint& p : points) {
+            std::set<int> matched_axes;
+            std::size_t n = 0;
+            for (const Row& row : rows)
+                if (matches(row, p)) {
+                    for (const auto& comp : row.components) matched_axes.insert(comp.first);
+                    ++n;
+                }
+            if (matched_axes == axes && n > best) {
+                match = &p;
+                best = n;
+            }
+        }
+        std::string names;  // the text's names for the point, each once
+        std::set<std::string> seen;
+        for (const Row& row : rows)
+            if (seen.insert(row.name).second) names += (names.empty() ? "" : ", ") + m(row.name);
+        for (std::size_t q = 0; q < rows.size(); ++q) {
+            PositionMatch& pm = positions_[rows[q].at];
+            pm.name = rows[q].name;
+            pm.axis = rows[q].components.size() == 1 ? rows[q].components[0].first : -1;
+            if (match) {
+                pm.matched = matches(rows[q], *match);
+                pm.text = pm.matched ? shown(*match)
+                                     : "the model's point the text's other coordinates of " + names + " match is " +
+                                           shown(*match);
+                continue;
+            }
+            // Said once, at the point's first row, and only for a point the text gives two coordinates of (a lone
+            // `x = l - l_0` is as likely an extension as an abscissa).
+            if (q != 0 || axes.size() < 2) continue;
+            if (points.empty()) {
+                pm.text = "the text places a point (" + names + "); the model file gives no points to compare it with "
+                          "([[draw]] entries or [[bodies]] would)";
+                continue;
+            }
+            pm.text = "no point the model file gives has the coordinates the text writes (" + names +
+                      ") in its axes; the file's points:";
+            for (const ModelPoint& p : points) pm.text += " " + shown(p) + ";";
+            pm.text.pop_back();
+        }
+    }
+}
+
+std::optional<std::vector<std::pair<int, GiNaC::ex>>> Checker::unit_components(const Prepared& v) const {
+    GiNaC::ex units[3];
+    for (const FreeName* f : v.vectors) {
+        const std::optional<int> axis = unit_vector_axis(f->name);
+        if (!axis || !units[*axis].is_zero()) return std::nullopt;
+        units[*axis] = f->symbol;
+    }
+    const GiNaC::ex e = GiNaC::expand(v.value);
+    GiNaC::ex rest = e;
+    std::vector<std::pair<int, GiNaC::ex>> out;
+    for (int a = 0; a < 3; ++a) {
+        const GiNaC::ex c = units[a].is_zero() ? GiNaC::ex(0) : e.coeff(units[a], 1);
+        for (const GiNaC::ex& u : units)
+            if (!u.is_zero() && c.has(u)) return std::nullopt;  // a product of unit vectors
+        if (!units[a].is_zero()) rest -= c * units[a];
+        out.emplace_back(a, c);
+    }
+    if (!GiNaC::expand(rest).is_zero()) return std::nullopt;  // a term along no axis (a scalar, a power)
+    return out;
+}
+
+bool Checker::check_position(const FullChain& c, std::size_t j, bool vector, EquationCheck& r) {
+    const auto it = positions_.find(c.relation_offsets[j - 1]);
+    if (it == positions_.end() || (it->second.axis < 0) != vector) return false;
+    if (!it->second.matched) {
+        if (!it->second.text.empty()) r.notes.push_back(it->second.text);
+        return false;
+    }
+    static const char* const axis[] = {"x", "y", "z"};
+    r.verdict = Verdict::Agrees;
+    r.compared_with = "the position of the model's point " + it->second.text;
+    r.reason = it->second.axis < 0 ? "equal to that point's position vector, component by component"
+                                   : "equal to that point's " + std::string(axis[it->second.axis]) + " coordinate";
+    return true;
+}
+
+}  // namespace detail
+}  // namespace eomgen::checker

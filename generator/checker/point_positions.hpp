@@ -1,0 +1,48 @@
+/** @file point_positions.hpp  The points whose positions a model file gives (its [[draw]] entries' points in space
+ * axes and its bodies' centres of mass), and the text's names for a point's coordinates (`x_2`, `y`, `z_{bob}`): what
+ * the checker compares the kinematics of a derivation with ("the bob at $x_2 = x + l\sin\theta$, $y_2 = -l\cos\theta$";
+ * point_positions.cpp). Plain data, read from the model once. */
+#pragma once
+
+#include "model/model.hpp"
+
+#include <ginac/ginac.h>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace eomgen::checker {
+
+/// A point of the model in space axes, in the coordinates, the parameters and t.
+struct ModelPoint {
+    std::array<GiNaC::ex, 3> r;
+    bool planar = false;  ///< given as (x, y): shown with two components
+    std::string what;     ///< where the file gives it: "[[draw]] at FILE:L:C", "the centre of mass of body 'rod'"
+};
+
+/// Every point of [[draw]] that is not a body's (point, trace, circle centre, link and spring ends) and every body's
+/// centre of mass, in file order, each once.
+std::vector<ModelPoint> model_points(const Model& model);
+
+/// A name the text gives one coordinate of a point: x, y or z alone or with a subscript (`x_{2}`, `y_{bob}`).
+struct PositionName {
+    int axis = 0;       ///< 0, 1, 2 for x, y, z
+    std::string point;  ///< the subscript, "" for none: `x_{2}` and `y_{2}` are one point's
+};
+
+/// The axis and the point of a canonical name (`x_{2}` → 0, "2"); nullopt for any other name.
+std::optional<PositionName> position_name(const std::string& canonical);
+
+/// What the checker found for one row of a point's coordinates (point_positions.cpp).
+struct PositionMatch {
+    bool matched = false;
+    int axis = -1;           ///< the coordinate the row gives; -1 for a position vector
+    std::string name, text;  ///< the text's name; the point matched, or the note
+};
+
+/// The axis (0, 1, 2) of a unit vector's canonical name: `\hat{x}`, `\mathbf{j}`, `\vec{k}`, `\hat{e}_{z}`, `\mathbf{e}_{1}`.
+std::optional<int> unit_vector_axis(const std::string& canonical);
+
+}  // namespace eomgen::checker
