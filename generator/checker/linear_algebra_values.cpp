@@ -256,6 +256,10 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
                 if (!x) return std::nullopt;
                 v = *x;
                 if (f.kind == Factor::Det) {
+                    if (f.bars && !v.scalar && (v.m.rows() == 1 || v.m.cols() == 1)) {
+                        *why = "the magnitude |v| of a vector is not read";
+                        return std::nullopt;
+                    }
                     if (v.scalar || v.m.rows() != v.m.cols()) {
                         *why = "the determinant of something that is not a square matrix";
                         return std::nullopt;

@@ -230,8 +230,11 @@ static bool bracketed(std::string_view s, std::pair<std::size_t, std::size_t> in
     } else if (tuple && comma_pieces(s, inner.first, inner.second).size() > 1) {
         f.kind = Factor::Tuple;
         for (const auto& p : comma_pieces(s, inner.first, inner.second)) f.cells.push_back({p});
-    } else if (!bars && mentions_array(s.substr(inner.first, inner.second - inner.first))) {
-        f.kind = Factor::Group;
+    } else if (mentions_array(s.substr(inner.first, inner.second - inner.first))) {
+        // `\left|\mathbf{V} - \omega^2\mathbf{T}\right|`: the determinant of the matrix expression between the bars
+        // (of a vector, |v|, it is not read: linear_algebra_values.cpp says so).
+        f.kind = bars ? Factor::Det : Factor::Group;
+        f.bars = bars;
         f.inner_begin = inner.first;
         f.inner_end = inner.second;
     } else {

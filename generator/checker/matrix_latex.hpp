@@ -21,6 +21,7 @@ struct Factor {
     enum Op { Juxtapose, Dot, Cross } op = Juxtapose;  ///< the product with the factor before it
     std::size_t begin = 0, end = 0;                    ///< the factor in the side's source
     std::size_t inner_begin = 0, inner_end = 0;        ///< Group, Det: what it holds
+    bool bars = false;                                  ///< Det: written between bars, `\left| … \right|`
     std::string key;  ///< Name: `n_{1}` (whatever its decoration), `I`, `1`, `\hat{k}`
     Cells cells;      ///< Array, Tuple, DetArray
     /// `^T`, `^{\top}`, `^{\mathsf{T}}`, `^\intercal` after it: transposed (a tuple, read as a column already,

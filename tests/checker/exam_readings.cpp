@@ -396,3 +396,21 @@ $$ \vec{r_m} = (x + l\sin\theta) \hat{x} - l\cos\theta\,\hat{y} $$
         CHECK(v[0]->verdict == Verdict::Agrees);
     }
 }
+
+TEST_CASE("readings: a matrix expression between bars is its determinant; a vector's magnitude is not cut at its +",
+          "[checker][readings]") {
+    // Three masses on a ring (Goldstein 6.10, a corpus text's model): V and T in bold are its stiffness and mass matrices.
+    const CheckReport r = eomgen::test::check_text("tests/checker/corpus/spring_ring/model.toml", R"(# Ring
+
+$$ \left|\mathbf{V}-\omega^{2}\mathbf{T}\right| = 0 $$
+
+$$ T = \frac{1}{2} m R^2 \left|\dot{\vec{\theta}} + \vec{\omega}\times\vec{\theta}\right|^2 $$
+)");
+    INFO(described(r));
+    const auto secular = on_line(r, 3), magnitude = on_line(r, 5);
+    REQUIRE(secular.size() == 1);
+    CHECK(secular[0]->verdict == Verdict::Agrees);
+    REQUIRE(magnitude.size() == 1);
+    CHECK(magnitude[0]->verdict == Verdict::NotComparable);
+    CHECK(magnitude[0]->reason.find("missing \\right") == std::string::npos);
+}
