@@ -397,7 +397,7 @@ $$ \vec{r_m} = (x + l\sin\theta) \hat{x} - l\cos\theta\,\hat{y} $$
     }
 }
 
-TEST_CASE("readings: a matrix expression between bars is its determinant; a vector's magnitude is not cut at its +",
+TEST_CASE("readings: a matrix expression between bars is its determinant, and a vector's magnitude is not cut at its +",
           "[checker][readings]") {
     // Three masses on a ring (Goldstein 6.10, a corpus text's model): V and T in bold are its stiffness and mass matrices.
     const CheckReport r = eomgen::test::check_text("tests/checker/corpus/spring_ring/model.toml", R"(# Ring
