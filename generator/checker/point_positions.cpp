@@ -138,7 +138,6 @@ void Checker::collect_positions(const std::vector<FullChain>& chains) {
             if (seen.insert(row.name).second) names += (names.empty() ? "" : ", ") + m(row.name);
         for (std::size_t q = 0; q < rows.size(); ++q) {
             PositionMatch& pm = positions_[rows[q].at];
-            pm.name = rows[q].name;
             pm.axis = rows[q].components.size() == 1 ? rows[q].components[0].first : -1;
             if (match) {
                 pm.matched = matches(rows[q], *match);

@@ -38,8 +38,8 @@ std::optional<PositionName> position_name(const std::string& canonical);
 /// What the checker found for one row of a point's coordinates (point_positions.cpp).
 struct PositionMatch {
     bool matched = false;
-    int axis = -1;           ///< the coordinate the row gives; -1 for a position vector
-    std::string name, text;  ///< the text's name; the point matched, or the note
+    int axis = -1;     ///< the coordinate the row gives; -1 for a position vector
+    std::string text;  ///< the point matched, or the note
 };
 
 /// The axis (0, 1, 2) of a unit vector's canonical name: `\hat{x}`, `\mathbf{j}`, `\vec{k}`, `\hat{e}_{z}`, `\mathbf{e}_{1}`.
