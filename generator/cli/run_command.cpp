@@ -12,6 +12,7 @@
 #include "eomgen/model_table.hpp"
 #include "eomgen/simulation.hpp"
 #include "codegen/cpp_emitter.hpp"
+#include "interpreter/interpreted_table.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model_file.hpp"
 #include "options.hpp"
@@ -92,6 +93,9 @@ RunCommand::RunCommand(CLI::App& app) {
                      "(the model's [[draw]] entries, bodies and springs; docs/animation.md)");
     run_->add_option("--fps", fps_, "With --animate: frames per second of simulated time (default 60)");
     run_->add_flag("--no-cache", no_cache_, "Compile afresh and keep nothing in the cache");
+    run_->add_flag("--interpret", interpret_,
+                   "Run the derived equations with eomgen's interpreter instead of compiling them: no C++ compiler, "
+                   "no wait, each step slower (docs/interpreter.md); not with radau5 or --sensitivities");
     run_->add_flag("--quiet", quiet_, "No progress messages on stderr");
     run_->add_flag("--progress", progress_, "Progress messages on stderr even when it is not a terminal");
     // Ensembles (ensemble_command.hpp): many members, one row each.
@@ -120,7 +124,8 @@ int RunCommand::run() {
         }
         return run_model();
     } catch (const CompileError& e) {
-        std::cerr << "eomgen run: " << e.what() << "\n  command: " << e.command << "\n  log: " << e.log << "\n";
+        std::cerr << "eomgen run: " << e.what() << "\n  command: " << e.command << "\n  log: " << e.log
+                  << "\n  (--interpret runs the model without a compiler)\n";
         return kExitCompiler;
     } catch (const CacheError& e) {
         std::cerr << "eomgen run: " << e.what() << "\n";
@@ -186,11 +191,27 @@ int RunCommand::run_model() {
         for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
         return header_to_compile(model, eq, fs::path(model_path_).filename().string(), jacobians);
     };
-    CompileRequest request{text, model.name, header, !no_cache_, progress};
-    request.jacobian = jacobians;
-    const CompiledModel compiled = compile_model(request);
-    progress(compiled.from_cache ? "loaded from the cache: " + compiled.path
-                                 : "compiled in " + std::to_string(compiled.compile_seconds).substr(0, 4) + " s");
+    if (interpret_ && jacobians) {
+        std::cerr << "eomgen run: --interpret has no Jacobians: " << (options_.method == "radau5" ? "--method radau5" : "--sensitivities")
+                  << " needs the compiled model (leave out --interpret)\n";
+        return 2;
+    }
+    CompiledModel compiled;
+    std::optional<interpreter::InterpretedTable> interpreted;
+    if (interpret_) {
+        progress("deriving " + model_path_);
+        const Equations eq = derive_equations(model);
+        for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
+        interpreted.emplace(interpreter::interpret(model, eq));
+        compiled.table = &interpreted->table();
+        progress("interpreting (no compiler)");
+    } else {
+        CompileRequest request{text, model.name, header, !no_cache_, progress};
+        request.jacobian = jacobians;
+        compiled = compile_model(request);
+        progress(compiled.from_cache ? "loaded from the cache: " + compiled.path
+                                     : "compiled in " + std::to_string(compiled.compile_seconds).substr(0, 4) + " s");
+    }
 
     if (ensemble) {
         if (!plot_phase_.empty()) {

@@ -26,14 +26,15 @@ PlotRequest default_plot(const Model& model, const std::string& csv, const std::
  * Registers `run` and `cache` on the `eomgen` command line:
  *
  *     eomgen run MODEL.toml [eomgen-sim's options] [--plot FILE.png|FILE.svg] [--plot-phase q]
- *                [--plot-xy X,Y ...] [--animate FILE.html [--fps N]] [--no-cache] [--quiet | --progress]
+ *                [--plot-xy X,Y ...] [--animate FILE.html [--fps N]] [--no-cache | --interpret] [--quiet | --progress]
  *     eomgen run MODEL.toml (--sweep NAME=START:STOP:COUNT ... | --sample N --dist NAME=uniform(a,b) ...
  *                [--seed S]) [--threads N] [--out FILE.csv] [--plot FILE.png [--plot-xy X,Y]] [options]
  *     eomgen cache clear
  *
  * run() derives the model, emits its header, compiles it with the simulation driver into a cached shared
  * object (compiled_model.hpp), loads it and integrates, once or, with --sweep or --sample, as an ensemble
- * (ensemble_command.hpp). Returns 0; 1 for a model error (thrown as
+ * (ensemble_command.hpp); with --interpret the derived equations run on eomgen's interpreter instead
+ * (interpreter/interpreted_table.hpp), nothing compiled. Returns 0; 1 for a model error (thrown as
  * ModelError, as for `show`); 2 for a bad option value or a failed simulation (the message says which, with
  * t and the state); 3 when a file or the cache cannot be used; 4 when the compiler is missing or fails.
  */
@@ -52,7 +53,7 @@ class RunCommand {
     double fps_ = 60;
     std::vector<std::string> plot_xy_;
     eomgen::sim::Options options_;
-    bool no_cache_ = false, quiet_ = false, progress_ = false;
+    bool no_cache_ = false, quiet_ = false, progress_ = false, interpret_ = false;
     EnsembleDesign::Request design_;
     unsigned threads_ = 0;
     std::string out_;

@@ -44,12 +44,9 @@ public:
     explicit BodyEmitter(ExprDag& dag) : dag_(dag), uses_(dag.size(), 0), name_(dag.size()) {}
 
     FunctionBody run(const std::vector<Output>& outputs) {
-        std::vector<Term> roots;
-        // Cheaper forms first (expansion, sin² + cos² = 1, Horner), then partial sums and products shared.
-        for (const Output& o : outputs) roots.push_back(dag_.add(o.value));
-        dag_.note_angles(roots);
-        for (Term& r : roots) r = dag_.optimize(r);
-        dag_.share_partial(roots);
+        std::vector<GiNaC::ex> values;
+        for (const Output& o : outputs) values.push_back(o.value);
+        std::vector<Term> roots = code_roots(dag_, values);
         uses_.assign(dag_.size(), 0);
         name_.assign(dag_.size(), std::string());
         std::vector<char> seen(dag_.size(), 0);

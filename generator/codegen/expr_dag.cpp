@@ -20,6 +20,15 @@ int compare_numeric(const GiNaC::numeric& a, const GiNaC::numeric& b) {
 
 }  // namespace
 
+std::vector<Term> code_roots(ExprDag& dag, const std::vector<GiNaC::ex>& values) {
+    std::vector<Term> roots;
+    for (const GiNaC::ex& v : values) roots.push_back(dag.add(v));
+    dag.note_angles(roots);
+    for (Term& r : roots) r = dag.optimize(r);
+    dag.share_partial(roots);
+    return roots;
+}
+
 std::string numeric_string(const GiNaC::numeric& v) {
     std::ostringstream os;
     os << v;

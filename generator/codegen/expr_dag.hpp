@@ -161,6 +161,11 @@ private:
     std::size_t expansion_budget_ = 0;           ///< monomials optimize() may still create for this term
 };
 
+/// The terms of `values` in the form generated code computes: cheaper forms first (expansion, sin² + cos² = 1,
+/// Horner: ExprDag::optimize), then partial sums and products shared (share_partial). What the C++ emitter prints
+/// and the interpreter's tapes record (interpreter/tape.hpp), so that both do the same arithmetic.
+std::vector<Term> code_roots(ExprDag& dag, const std::vector<GiNaC::ex>& values);
+
 /// Name of a numeric for keys and messages: exact rationals as "p/q".
 std::string numeric_string(const GiNaC::numeric& v);
 
