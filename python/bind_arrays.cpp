@@ -39,8 +39,8 @@ std::vector<std::max_align_t> parameter_block(const ModelTable& table, const std
 /// ẋ = rhs(t, x) at each row of `x` (shape (N, 2n) or (2n,)), t a scalar or one value per row.
 py::array_t<double> rhs(LoadedModel& m, py::array_t<double, py::array::c_style | py::array::forcecast> t,
                         py::array_t<double, py::array::c_style | py::array::forcecast> x,
-                        const std::vector<std::pair<std::string, double>>& set, bool use_cache) {
-    const ModelTable& table = m.table(false, use_cache);
+                        const std::vector<std::pair<std::string, double>>& set, bool use_cache, bool interpret) {
+    const ModelTable& table = m.table(false, use_cache, interpret);
     const py::ssize_t nx = 2 * py::ssize_t(table.nq);
     const py::ssize_t rows = state_rows(m, t, x, "rhs");
     const std::vector<std::max_align_t> params = parameter_block(table, set);

@@ -94,13 +94,13 @@ py::dict simulate(LoadedModel& m, double t_end, const std::string& method, doubl
                   int samples, std::size_t max_steps, const std::vector<std::string>& set,
                   const std::vector<std::string>& init, const std::string& until, bool project_initial,
                   bool switch_events, const std::vector<std::string>& sensitivities, bool state_error_only,
-                  bool use_cache) {
+                  bool use_cache, bool interpret) {
     sim::Options o = run_options(m, t_end, method, rtol, atol, dt, samples, max_steps, set, init, until,
                                  project_initial, switch_events);
     o.sensitivities = sensitivities;
     o.state_error_only = state_error_only;
     // Derives and compiles, holding the GIL; the Jacobians for radau5 and for the sensitivities.
-    const ModelTable& table = m.table(method == "radau5" || !sensitivities.empty(), use_cache);
+    const ModelTable& table = m.table(method == "radau5" || !sensitivities.empty(), use_cache, interpret);
     Samples out;
     double t_final = 0, h0 = 0, max_drift = 0, max_imbalance = 0;
     std::string stopped_by, time_unit;
@@ -221,7 +221,7 @@ py::dict sweep(LoadedModel& m, const std::vector<std::string>& names,
                py::array_t<double, py::array::c_style | py::array::forcecast> values, double t_end,
                const std::string& method, double rtol, double atol, double dt, std::size_t max_steps,
                const std::vector<std::string>& set, const std::vector<std::string>& init, const std::string& until,
-               bool project_initial, bool switch_events, unsigned threads, bool use_cache) {
+               bool project_initial, bool switch_events, unsigned threads, bool use_cache, bool interpret) {
     if (values.ndim() != 2 || values.shape(1) != py::ssize_t(names.size()))
         throw sim::UsageError("sweep: one column of values per name");
     sim::Options o = run_options(m, t_end, method, rtol, atol, dt, 1, max_steps, set, init, until, project_initial,
@@ -247,7 +247,7 @@ py::dict sweep(LoadedModel& m, const std::vector<std::string>& names,
         offset[j] = value_in_si(m, names[j], 0.0, state_index[j] >= 0);
         scale[j] = value_in_si(m, names[j], 1.0, state_index[j] >= 0) - offset[j];
     }
-    const ModelTable& table = m.table(method == "radau5", use_cache);
+    const ModelTable& table = m.table(method == "radau5", use_cache, interpret);
     const double* v = values.data();
     std::vector<unsigned char> ok(count);
     std::vector<double> t(count), energy(count), x, outputs;

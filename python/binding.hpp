@@ -14,6 +14,7 @@
 #pragma once
 
 #include "cli/compiled_model.hpp"
+#include "interpreter/interpreted_table.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "eomgen/model_table.hpp"
 #include "eomgen/simulation_options.hpp"
@@ -59,8 +60,17 @@ class LoadedModel {
         return *equations_;
     }
 
-    /// The compiled table (with the Jacobian where `jacobian`), compiled once per process and cached on disk.
-    const ModelTable& table(bool jacobian, bool use_cache) {
+    /// The compiled table (with the Jacobian where `jacobian`), compiled once per process and cached on disk; with
+    /// `interpret`, the interpreter's table instead (interpreter/interpreted_table.hpp: no compiler, no Jacobians).
+    const ModelTable& table(bool jacobian, bool use_cache, bool interpret = false) {
+        if (interpret) {
+            if (jacobian)
+                throw sim::UsageError("interpret=True has no Jacobians: method=\"radau5\" and sensitivities need the compiled "
+                                      "model (interpret=False)");
+            if (!interpreted_)
+                interpreted_ = std::make_unique<interpreter::InterpretedTable>(interpreter::interpret(model_, equations()));
+            return interpreted_->table();
+        }
         if (!jacobian && with_jacobian_) return **with_jacobian_;  // the same functions, and the Jacobian besides
         std::optional<const ModelTable*>& slot = jacobian ? with_jacobian_ : plain_;
         if (!slot) {
@@ -90,6 +100,7 @@ class LoadedModel {
     Model model_;
     std::optional<Equations> equations_;
     std::optional<const ModelTable*> plain_, with_jacobian_;
+    std::unique_ptr<interpreter::InterpretedTable> interpreted_;
     std::string shared_object_;
 };
 
@@ -139,7 +150,7 @@ py::dict simulate(LoadedModel& m, double t_end, const std::string& method, doubl
                   int samples, std::size_t max_steps, const std::vector<std::string>& set,
                   const std::vector<std::string>& init, const std::string& until, bool project_initial,
                   bool switch_events, const std::vector<std::string>& sensitivities, bool state_error_only,
-                  bool use_cache);
+                  bool use_cache, bool interpret);
 /**
  * An ensemble of members on `threads` threads (0: every core), member k with values(k, j) for names[j] (a parameter
  * or a state's initial value, in its declared unit) on top of the model's defaults and `set`, `init`; each member
@@ -150,13 +161,13 @@ py::dict sweep(LoadedModel& m, const std::vector<std::string>& names,
                py::array_t<double, py::array::c_style | py::array::forcecast> values, double t_end,
                const std::string& method, double rtol, double atol, double dt, std::size_t max_steps,
                const std::vector<std::string>& set, const std::vector<std::string>& init, const std::string& until,
-               bool project_initial, bool switch_events, unsigned threads, bool use_cache);
+               bool project_initial, bool switch_events, unsigned threads, bool use_cache, bool interpret);
 
 // bind_arrays.cpp
 /// ẋ = rhs(t, x) at each row of `x` (shape (N, 2n) or (2n,)), t a scalar or one value per row.
 py::array_t<double> rhs(LoadedModel& m, py::array_t<double, py::array::c_style | py::array::forcecast> t,
                         py::array_t<double, py::array::c_style | py::array::forcecast> x,
-                        const std::vector<std::pair<std::string, double>>& set, bool use_cache);
+                        const std::vector<std::pair<std::string, double>>& set, bool use_cache, bool interpret);
 /// J = ∂ẋ/∂x (N × 2n × 2n) and Jp = ∂ẋ/∂p (N × 2n × n_params) at each row of `x` (shape (N, 2n) or (2n,), then
 /// without the leading N), by the compiled table's Jacobian (the header's analytic one where the model has it,
 /// else forward differentiation in the shared object).

@@ -89,11 +89,11 @@ PYBIND11_MODULE(_eomgen, m) {
         .def("simulate", &simulate, py::arg("t_end"), py::arg("method"), py::arg("rtol"), py::arg("atol"),
              py::arg("dt"), py::arg("samples"), py::arg("max_steps"), py::arg("set"), py::arg("init"),
              py::arg("until"), py::arg("project_initial"), py::arg("switch_events"), py::arg("sensitivities"),
-             py::arg("state_error_only"), py::arg("use_cache"))
+             py::arg("state_error_only"), py::arg("use_cache"), py::arg("interpret"))
         .def("sweep", &sweep, py::arg("names"), py::arg("values"), py::arg("t_end"), py::arg("method"), py::arg("rtol"),
              py::arg("atol"), py::arg("dt"), py::arg("max_steps"), py::arg("set"), py::arg("init"), py::arg("until"),
-             py::arg("project_initial"), py::arg("switch_events"), py::arg("threads"), py::arg("use_cache"))
-        .def("rhs", &rhs, py::arg("t"), py::arg("x"), py::arg("set"), py::arg("use_cache"))
+             py::arg("project_initial"), py::arg("switch_events"), py::arg("threads"), py::arg("use_cache"), py::arg("interpret"))
+        .def("rhs", &rhs, py::arg("t"), py::arg("x"), py::arg("set"), py::arg("use_cache"), py::arg("interpret"))
         .def("modes", &modes, py::arg("set"), py::arg("at"), py::arg("momentum"), py::arg("inputs"))
         .def("jacobian", &jacobian, py::arg("t"), py::arg("x"), py::arg("set"), py::arg("use_cache"))
         .def("shared_object", &LoadedModel::shared_object, py::arg("use_cache"))

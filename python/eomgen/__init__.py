@@ -167,7 +167,7 @@ class Model:
 
     def simulate(self, t_end=10.0, method="dopri5", rtol=1e-10, atol=1e-12, dt=0.0, samples=200, until=None,
                  set=None, init=None, project_initial=False, max_steps=10_000_000, switch_events=True,
-                 sensitivities=None, state_error_only=False, cache=True):
+                 sensitivities=None, state_error_only=False, cache=True, interpret=False):
         """Integrates from t = 0 to t_end (or the `until` event, e.g. "psi=-pi/2") as `eomgen run` does, with the
         same defaults, and returns a Solution of samples + 1 rows. `set` and `init` are dicts of values: a number
         is in the unit the model file declares for it (SI where it declares none), a string carries its own unit
@@ -176,24 +176,28 @@ class Model:
         "x0:STATE" for initial values) integrates S = dx/d(those) beside the state under the same error control
         (dopri5, dop853, adams, radau5; rk4 with dt; docs/sensitivities.md): Solution.S and the rest;
         state_error_only=True leaves S out of the step-size control (as --state-error-only). cache=False compiles
-        afresh and keeps nothing."""
+        afresh and keeps nothing. interpret=True runs the derived equations on eomgen's interpreter instead of
+        compiling them (as `eomgen run --interpret`: no C++ compiler and no wait, each step slower; not with radau5 or
+        sensitivities; docs/interpreter.md)."""
         if isinstance(sensitivities, str):
             sensitivities = [sensitivities]
         r = self._m.simulate(float(t_end), str(method), float(rtol), float(atol), float(dt), int(samples),
                              int(max_steps), _assignments(set, "set"), _assignments(init, "init"),
                              "" if until is None else str(until), bool(project_initial), bool(switch_events),
-                             [str(c) for c in (sensitivities or [])], bool(state_error_only), bool(cache))
+                             [str(c) for c in (sensitivities or [])], bool(state_error_only), bool(cache),
+                             bool(interpret))
         return Solution(self, r)
 
     def sweep(self, values, grid=True, t_end=10.0, method="dopri5", rtol=1e-10, atol=1e-12, dt=0.0, until=None,
               set=None, init=None, project_initial=False, max_steps=10_000_000, switch_events=True, threads=0,
-              cache=True):
+              cache=True, interpret=False):
         """An ensemble, as `eomgen run --sweep` runs one: `values` maps names (parameters, or states' initial values
         q and q_dot) to 1-D arrays of numbers in their declared units; with grid=True every combination is a member
         (the first name varies slowest), with grid=False the arrays are zipped (equal lengths: member k takes the
         k-th of each, e.g. draws from NumPy for a Monte Carlo study). Every member starts from the model's defaults
         with `set` and `init`, and is integrated as simulate() integrates, on `threads` threads (0: every core,
-        without the GIL). Returns an Ensemble: where each member ended, its state, h and outputs there."""
+        without the GIL). Returns an Ensemble: where each member ended, its state, h and outputs there. interpret=True as
+        in simulate()."""
         if not hasattr(values, "items") or not values:
             raise TypeError("sweep: a dict of NAME: array of values")
         names = [str(k) for k in values]
@@ -212,7 +216,7 @@ class Model:
         r = self._m.sweep(names, table, float(t_end), str(method), float(rtol), float(atol), float(dt),
                           int(max_steps), _assignments(set, "set"), _assignments(init, "init"),
                           "" if until is None else str(until), bool(project_initial), bool(switch_events),
-                          int(threads), bool(cache))
+                          int(threads), bool(cache), bool(interpret))
         return Ensemble(self, names, table, r)
 
     def sample(self, n, dists, seed=0, **options):
@@ -231,12 +235,12 @@ class Model:
                                  "(rng, n)".format(name))
         return self.sweep(values, grid=False, **options)
 
-    def rhs(self, t, x, set=None, cache=True):
+    def rhs(self, t, x, set=None, cache=True, interpret=False):
         """x' = rhs(t, x) for each row of x (shape (N, 2n): q then q'; or one state of shape (2n,)), t a number or
         one per row; parameters are the model's, with `set` (SI numbers) changed. The loop runs in C++ without the
-        GIL on the compiled code that simulate() uses."""
+        GIL on the compiled code that simulate() uses (with interpret=True, on the interpreter's tapes)."""
         return self._m.rhs(np.asarray(t, dtype=float), np.asarray(x, dtype=float), _si_values(set, "set"),
-                           bool(cache))
+                           bool(cache), bool(interpret))
 
     def jacobian(self, t, x, set=None, cache=True):
         """(J, Jp): J = dx'/dx, shape (2n, 2n), and Jp = dx'/dp, shape (2n, len(parameters)) in the order of

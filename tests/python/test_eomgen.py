@@ -355,3 +355,31 @@ def test_models_from_text_and_the_cache_directory(tmp_path):
     m.simulate(0.1)
     after = {f for f in os.listdir(eomgen.cache_directory()) if f.endswith(".so")}
     assert after >= before
+
+
+def test_interpret_equals_eomgen_run_interpret_and_the_compiled_run(door, tmp_path):
+    sol = door.simulate(1.0, samples=50, set={"theta": 0.1}, interpret=True)
+    header, run = eomgen_run_csv(tmp_path, model_path("door"), "--t-end", "1", "--samples", "50", "--set",
+                                 "theta=0.1", "--interpret")
+    np.testing.assert_array_equal(sol.to_array(), run)  # the same tapes, driver and options
+    compiled = door.simulate(1.0, samples=50, set={"theta": 0.1})
+    # Rounding differs in the last bits (the header was compiled with its own order of operations); the integration
+    # tolerance (rtol 1e-10) bounds what that can grow to.
+    np.testing.assert_allclose(sol.to_array(), compiled.to_array(), rtol=1e-9, atol=1e-9)
+
+
+def test_interpret_needs_no_compiler_and_refuses_what_needs_jacobians(tmp_path, monkeypatch):
+    monkeypatch.setenv("CXX", "no-such-compiler-x")
+    m = eomgen.family("pendulum:n=5")  # not in any cache: a compile would fail
+    init = {"theta1": 0.2}
+    sol = m.simulate(2.0, init=init, interpret=True)
+    assert sol.max_drift < 1e-8
+    x = np.random.default_rng(3).uniform(-1, 1, (7, 10))
+    xdot = m.rhs(0.0, x, interpret=True)
+    np.testing.assert_array_equal(xdot[:, :5], x[:, 5:])
+    ens = m.sweep({"theta1": [0.1, 0.2]}, t_end=0.5, interpret=True)
+    assert len(ens.t) == 2 and ens.ok.all()
+    with pytest.raises(eomgen.UsageError, match="interpret=True has no Jacobians"):
+        m.simulate(1.0, method="radau5", interpret=True)
+    with pytest.raises(eomgen.CompileError, match="no-such-compiler-x"):
+        m.simulate(1.0, init=init)
