@@ -33,6 +33,7 @@ sys.dont_write_bytecode = True  # no __pycache__ in the source tree
 import op_count  # noqa: E402
 import animation  # noqa: E402
 import python_api  # noqa: E402
+import interpreter  # noqa: E402
 import bicycle  # noqa: E402
 import fit  # noqa: E402
 import peers  # noqa: E402
@@ -52,6 +53,8 @@ BEGIN_ANIMATION = "<!-- BEGIN MEASURED ANIMATION (bench/run.sh, or bench/run.sh 
 END_ANIMATION = "<!-- END MEASURED ANIMATION -->"
 BEGIN_PYTHON = "<!-- BEGIN MEASURED PYTHON (bench/run.sh, or bench/run.sh --python-only, rewrites this part) -->"
 END_PYTHON = "<!-- END MEASURED PYTHON -->"
+BEGIN_INTERPRETER = "<!-- BEGIN MEASURED INTERPRETER (bench/run.sh, or bench/run.sh --interpreter-only, rewrites this part) -->"
+END_INTERPRETER = "<!-- END MEASURED INTERPRETER -->"
 
 
 def log(msg):
@@ -715,6 +718,8 @@ def main():
                     help="measure only section 12 (eomgen run --animate, issue 33) and rewrite only its part")
     ap.add_argument("--python-only", action="store_true",
                     help="measure only section 13 (the Python module, issue 32) and rewrite only its part")
+    ap.add_argument("--interpreter-only", action="store_true",
+                    help="measure only section 14 (eomgen run --interpret against the compiled run) and rewrite only its part")
     ap.add_argument("--out-md")
     ap.add_argument("--out-png")
     ap.add_argument("--render-only", metavar="RESULTS_JSON",
@@ -750,6 +755,8 @@ def main():
             render_animation(results, out_md)
         elif "python" in results:
             render_python(results, out_md)
+        elif "interpreter" in results:
+            render_interpreter(results, out_md)
         else:
             render_peers(results, out_md)
         return
@@ -759,6 +766,7 @@ def main():
                         "bench_peers" if args.peers_only else "bench_scale" if args.scale_only else
                         "bench_fit" if args.fit_only else "bench_bicycle" if args.bicycle_only else
                         "bench_animation" if args.animation_only else "bench_python" if args.python_only else
+                        "bench_interpreter" if args.interpreter_only else
                         "bench_work")
     if os.path.isdir(work):
         shutil.rmtree(work)
@@ -769,7 +777,7 @@ def main():
 
     command = "bash bench/run.sh" + (" --smoke" if args.smoke else "") + (" --no-build" if args.no_build else "") + \
         (" --peers-only" if args.peers_only else "") + (" --scale-only" if args.scale_only else "") + \
-        (" --fit-only" if args.fit_only else "") + (" --bicycle-only" if args.bicycle_only else "") + (" --animation-only" if args.animation_only else "") + (" --python-only" if args.python_only else "") + (f" --sympy-cap {args.sympy_cap:g}" if args.sympy_cap != 900 else "")
+        (" --fit-only" if args.fit_only else "") + (" --bicycle-only" if args.bicycle_only else "") + (" --animation-only" if args.animation_only else "") + (" --python-only" if args.python_only else "") + (" --interpreter-only" if args.interpreter_only else "") + (f" --sympy-cap {args.sympy_cap:g}" if args.sympy_cap != 900 else "")
     if args.peers_only:
         results = {"command": command, "date": utc_now(), "peers": peers.measure(cfg, args.build_dir, args.smoke, log)}
         with open(os.path.join(work, "results_peers.json"), "w") as fh:
@@ -783,7 +791,9 @@ def main():
                          render_bicycle),
              "animation": (args.animation_only, lambda: animation.measure(cfg, work, args.smoke, log),
                            render_animation),
-             "python": (args.python_only, lambda: python_api.measure(cfg, work, args.smoke, log), render_python)}
+             "python": (args.python_only, lambda: python_api.measure(cfg, work, args.smoke, log), render_python),
+             "interpreter": (args.interpreter_only, lambda: interpreter.measure(cfg, work, args.smoke, log),
+                             render_interpreter)}
     for key, (selected, measure, render_section) in alone.items():
         if not selected:
             continue
@@ -866,6 +876,8 @@ def main():
     animation_results = animation.measure(cfg, work, args.smoke, log)
     log("13. Python module")
     python_results = python_api.measure(cfg, work, args.smoke, log)
+    log("14. interpreter")
+    interpreter_results = interpreter.measure(cfg, work, args.smoke, log)
     results = {"command": command, "machine": mach, "sympy_ok": sympy_ok, "agree": agree, "ref_check": ref_check,
                "generation": {str(k): v for k, v in gen.items()}, "rods": {str(k): v for k, v in rods.items()},
                "sympy": {str(k): v for k, v in sym.items()}, "ops": {str(k): v for k, v in ops.items()},
@@ -873,7 +885,8 @@ def main():
                "compile": {str(k): v for k, v in comp.items()},
                "integrators": {"/".join(k): v for k, v in by.items()}, "memory": mem, "run": runs,
                "date": mach["date"], "peers": peer_results, "scale": scale_results, "fit": fit_results,
-               "bicycle": bicycle_results, "animation": animation_results, "python": python_results}
+               "bicycle": bicycle_results, "animation": animation_results, "python": python_results,
+               "interpreter": interpreter_results}
     with open(os.path.join(work, "results.json"), "w") as fh:
         json.dump(results, fh, indent=1)
     render(results, work, out_md, out_png)
@@ -908,6 +921,8 @@ def render(results, work, out_md, out_png):
         render_animation(results, out_md)
     if "python" in results:
         render_python(results, out_md)
+    if "interpreter" in results:
+        render_interpreter(results, out_md)
 
 
 def render_scale(results, out_md):
@@ -958,6 +973,13 @@ def render_python(results, out_md):
     splice(out_md, BEGIN_PYTHON, END_PYTHON,
            python_api.render(results["python"], results["command"], results["date"], machine_line(results)))
     log(f"wrote section 13 of {out_md}")
+
+
+def render_interpreter(results, out_md):
+    """Writes section 14 (eomgen run --interpret) between its own markers."""
+    splice(out_md, BEGIN_INTERPRETER, END_INTERPRETER,
+           interpreter.render(results["interpreter"], results["command"], results["date"], machine_line(results)))
+    log(f"wrote section 14 of {out_md}")
 
 
 def render_peers(results, out_md):

@@ -5,7 +5,8 @@
 # and docs/benchmarks.png. About 30 minutes on 2 cores, most of it SymPy; --peers-only about 5.
 #
 # Usage: bash bench/run.sh [--smoke] [--no-build] [--peers-only | --scale-only | --fit-only | --bicycle-only |
-#                         --animation-only | --python-only] [--build-dir DIR]
+#                         --animation-only | --python-only |
+#                         --interpreter-only] [--build-dir DIR]
 #                          [--sympy-cap SECONDS]
 #   --smoke        tiny sizes, seconds; results in DIR/bench_smoke/ (docs/ untouched); what CI runs
 #   --peers-only   only section 8 (MuJoCo, SUNDIALS), rewriting only its part of docs/benchmarks.md
@@ -19,6 +20,9 @@
 #                  Chromium), rewriting only its part; about a minute
 #   --python-only  only section 13 (the Python module: import, load, a first simulate, Model.rhs against the
 #                  same loop in C++), rewriting only its part; about a minute
+#   --interpreter-only only section 14 (eomgen run --interpret against the compiled run, per model: first run,
+#                  cached, interpreted, the interpreter's cost per right-hand side), rewriting only its part; about
+#                  two minutes
 #   --no-build     skip scripts/setup.sh and use what DIR holds (configured with -DEOMGEN_BUILD_BENCH=ON); the
 #                  full run still rebuilds time_rhs, which compiles in the SymPy code of the run
 #   --build-dir    build directory (default build-bench/)
@@ -44,9 +48,10 @@ while (($#)); do
     --bicycle-only) extra+=(--bicycle-only) ;;
     --animation-only) extra+=(--animation-only) ;;
     --python-only) extra+=(--python-only) ;;
+    --interpreter-only) extra+=(--interpreter-only) ;;
     --build-dir) build="$2"; shift ;;
     --sympy-cap) extra+=(--sympy-cap "$2"); shift ;;
-    -h|--help) sed -n '2,31p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,35p' "$0"; exit 0 ;;
     *) echo "bench/run.sh: unknown option $1" >&2; exit 2 ;;
   esac
   shift

@@ -36,6 +36,7 @@ struct Workspace {
     std::vector<double> registers, values;
     Eigen::MatrixXd M, A;
     Eigen::VectorXd f, gamma, qdd, lambda;
+    MassFactor<double, Eigen::Dynamic> factor;  ///< kept, so that factoring M allocates nothing once sized
 };
 Workspace& workspace() {
     thread_local Workspace w;
@@ -119,9 +120,12 @@ struct Functions {
             Workspace& w = workspace();
             if (m.constraint_names.empty()) {
                 mass_and_forcing(run(m.dynamics, t, x, x + n, p), n, w);
-                w.qdd.resize(n);
+                // solve_mass_matrix's steps, on the workspace's factor.
                 const Eigen::Map<const Eigen::VectorXd> state(x, 2 * n);
-                solve_mass_matrix(w.M, w.f, w.qdd, t, state);
+                if (!w.factor.compute(w.M)) throw_solve_failure(w.M, w.f, true, t, state);
+                w.qdd = w.f;
+                w.factor.solve_in_place(w.qdd);
+                if (!w.qdd.allFinite()) throw_solve_failure(w.M, w.f, false, t, state);
             } else {
                 constrained_accelerations(t, x, p);
             }
