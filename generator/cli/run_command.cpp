@@ -198,13 +198,16 @@ int RunCommand::run_model() {
     }
     CompiledModel compiled;
     std::optional<interpreter::InterpretedTable> interpreted;
+    using interpreter::Tape;
     if (interpret_) {
         progress("deriving " + model_path_);
         const Equations eq = derive_equations(model);
         for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
         interpreted.emplace(interpreter::interpret(model, eq));
         compiled.table = &interpreted->table();
-        progress("interpreting (no compiler)");
+        const Tape& rhs_tape = eq.constraints.empty() ? interpreted->model().dynamics : interpreted->model().constrained;
+        progress("interpreting (no compiler): the right-hand side's tape has " + std::to_string(rhs_tape.code.size()) +
+                 " instructions");
     } else {
         CompileRequest request{text, model.name, header, !no_cache_, progress};
         request.jacobian = jacobians;

@@ -30,6 +30,12 @@ const std::unordered_map<std::string, TapeOp>& functions() {
 
 bool binary(TapeOp op) { return op == TapeOp::Max || op == TapeOp::Min || op == TapeOp::Atan2 || op == TapeOp::Pow; }
 
+/// Whether the instruction reads its operand b.
+bool uses_b(TapeOp op) {
+    return binary(op) || op == TapeOp::Add || op == TapeOp::Sub || op == TapeOp::Mul || op == TapeOp::Div ||
+           op == TapeOp::AddScaled;
+}
+
 /// Walks the DAG from the roots, one instruction per operation, each node's register remembered.
 class Recorder {
   public:
@@ -41,15 +47,56 @@ class Recorder {
         return t.coeff.is_equal(1) ? r : emit(TapeOp::Scale, r, 0, t.coeff.to_double());
     }
 
+    /// Gives each temporary a register (a linear scan: a register is free again after its value's last read; the
+    /// outputs' stay to the end) and places the temporaries after the constants.
     Tape finish() {
-        // Constants sit before the temporaries: the temporaries' registers were counted from 0 while recording.
-        const std::int32_t shift = tape_.first_temporary();
-        auto moved = [&](std::int32_t r) { return r >= kTemporary ? r - kTemporary + shift : r; };
-        for (Instruction& i : tape_.code) {
-            i.a = moved(i.a);
-            i.b = moved(i.b);
+        const std::int32_t first = tape_.first_temporary();
+        const std::size_t n = tape_.code.size();
+        auto temporary = [](std::int32_t r) { return r >= kTemporary; };
+        constexpr std::size_t kNever = static_cast<std::size_t>(-1);
+        std::vector<std::size_t> last(n, 0);  // by temporary: the instruction that reads it last (0: none)
+        std::vector<char> read(n, 0);
+        auto note = [&](std::int32_t r, std::size_t at) {
+            if (!temporary(r)) return;
+            const std::size_t k = static_cast<std::size_t>(r - kTemporary);
+            if (last[k] != kNever) last[k] = at;
+            read[k] = 1;
+        };
+        for (std::size_t i = 0; i < n; ++i) {
+            note(tape_.code[i].a, i);
+            if (uses_b(tape_.code[i].op)) note(tape_.code[i].b, i);
         }
-        for (std::int32_t& o : tape_.outputs) o = moved(o);
+        for (std::int32_t o : tape_.outputs)
+            if (temporary(o)) last[static_cast<std::size_t>(o - kTemporary)] = kNever, read[static_cast<std::size_t>(o - kTemporary)] = 1;
+        std::vector<std::int32_t> where(n, -1), free;
+        std::int32_t next = first;
+        auto placed = [&](std::int32_t r) { return temporary(r) ? where[static_cast<std::size_t>(r - kTemporary)] : r; };
+        auto release = [&](std::int32_t r, std::size_t at) {
+            if (temporary(r) && last[static_cast<std::size_t>(r - kTemporary)] == at) {
+                free.push_back(where[static_cast<std::size_t>(r - kTemporary)]);
+                last[static_cast<std::size_t>(r - kTemporary)] = kNever - 1;  // released once, also when a == b
+            }
+        };
+        for (std::size_t i = 0; i < n; ++i) {
+            Instruction& ins = tape_.code[i];
+            const std::int32_t a = ins.a, b = ins.b;
+            ins.a = placed(a);
+            if (uses_b(ins.op)) ins.b = placed(b);
+            release(a, i);
+            if (uses_b(ins.op)) release(b, i);
+            std::int32_t r;
+            if (free.empty()) {
+                r = next++;
+            } else {
+                r = free.back();
+                free.pop_back();
+            }
+            ins.dst = r;
+            where[i] = r;
+            if (!read[i]) free.push_back(r);  // written and never read (not an output): free again at once
+        }
+        for (std::int32_t& o : tape_.outputs) o = placed(o);
+        tape_.n_registers = next;
         return std::move(tape_);
     }
 
@@ -69,7 +116,7 @@ class Recorder {
     }
 
     std::int32_t emit(TapeOp op, std::int32_t a, std::int32_t b = 0, double c = 0) {
-        tape_.code.push_back({op, a, b, c});
+        tape_.code.push_back({op, 0, a, b, c});
         return kTemporary + static_cast<std::int32_t>(tape_.code.size()) - 1;
     }
 
@@ -156,7 +203,56 @@ Tape record_tape(const codegen::SymbolTable& table, const std::vector<GiNaC::ex>
 void Tape::run(double* r, double* out) const {
     double* c = r + n_inputs;
     for (std::size_t k = 0; k < constants.size(); ++k) c[k] = constants[k];
-    double* w = r + first_temporary();
+#if defined(__GNUC__)
+    // Threaded dispatch (GCC's labels as values): each operation jumps to the next one's code itself, so that the
+    // processor predicts each jump from the operation it follows; one shared switch mispredicted on most of a long
+    // tape (the Whipple bicycle's ran at about 10 ns an instruction).
+    static void* const kLabels[] = {
+        &&op_add, &&op_sub, &&op_mul, &&op_div, &&op_neg, &&op_add_scaled, &&op_scale, &&op_add_const,
+        &&op_sin, &&op_cos, &&op_tan, &&op_exp, &&op_log, &&op_sqrt, &&op_asin, &&op_acos, &&op_atan, &&op_sinh,
+        &&op_cosh, &&op_tanh, &&op_abs, &&op_sign, &&op_heaviside, &&op_max, &&op_min, &&op_atan2, &&op_pow};
+    static_assert(sizeof kLabels / sizeof kLabels[0] == static_cast<std::size_t>(TapeOp::Pow) + 1,
+                  "one label per TapeOp, in its order");
+    const Instruction* i = code.data();
+    const Instruction* const end = i + code.size();
+#define EOMGEN_NEXT(value)                                         \
+    do {                                                           \
+        r[i->dst] = (value);                                       \
+        if (++i == end) goto done;                                 \
+        goto* kLabels[static_cast<std::size_t>(i->op)];            \
+    } while (0)
+    if (i == end) goto done;
+    goto* kLabels[static_cast<std::size_t>(i->op)];
+op_add: EOMGEN_NEXT(r[i->a] + r[i->b]);
+op_sub: EOMGEN_NEXT(r[i->a] - r[i->b]);
+op_mul: EOMGEN_NEXT(r[i->a] * r[i->b]);
+op_div: EOMGEN_NEXT(r[i->a] / r[i->b]);
+op_neg: EOMGEN_NEXT(-r[i->a]);
+op_add_scaled: EOMGEN_NEXT(r[i->a] + i->c * r[i->b]);
+op_scale: EOMGEN_NEXT(i->c * r[i->a]);
+op_add_const: EOMGEN_NEXT(r[i->a] + i->c);
+op_sin: EOMGEN_NEXT(std::sin(r[i->a]));
+op_cos: EOMGEN_NEXT(std::cos(r[i->a]));
+op_tan: EOMGEN_NEXT(std::tan(r[i->a]));
+op_exp: EOMGEN_NEXT(std::exp(r[i->a]));
+op_log: EOMGEN_NEXT(std::log(r[i->a]));
+op_sqrt: EOMGEN_NEXT(std::sqrt(r[i->a]));
+op_asin: EOMGEN_NEXT(std::asin(r[i->a]));
+op_acos: EOMGEN_NEXT(std::acos(r[i->a]));
+op_atan: EOMGEN_NEXT(std::atan(r[i->a]));
+op_sinh: EOMGEN_NEXT(std::sinh(r[i->a]));
+op_cosh: EOMGEN_NEXT(std::cosh(r[i->a]));
+op_tanh: EOMGEN_NEXT(std::tanh(r[i->a]));
+op_abs: EOMGEN_NEXT(std::abs(r[i->a]));
+op_sign: EOMGEN_NEXT(r[i->a] > 0 ? 1.0 : r[i->a] < 0 ? -1.0 : 0.0);
+op_heaviside: EOMGEN_NEXT(r[i->a] > 0 ? 1.0 : r[i->a] < 0 ? 0.0 : 0.5);
+op_max: EOMGEN_NEXT(r[i->a] < r[i->b] ? r[i->b] : r[i->a]);
+op_min: EOMGEN_NEXT(r[i->b] < r[i->a] ? r[i->b] : r[i->a]);
+op_atan2: EOMGEN_NEXT(std::atan2(r[i->a], r[i->b]));
+op_pow: EOMGEN_NEXT(std::pow(r[i->a], r[i->b]));
+#undef EOMGEN_NEXT
+done:
+#else
     for (const Instruction& i : code) {
         const double a = r[i.a];
         double v;
@@ -190,8 +286,9 @@ void Tape::run(double* r, double* out) const {
             case TapeOp::Pow: v = std::pow(a, r[i.b]); break;
             default: v = 0; break;
         }
-        *w++ = v;
+        r[i.dst] = v;
     }
+#endif
     for (std::size_t k = 0; k < outputs.size(); ++k) out[k] = r[outputs[k]];
 }
 

@@ -8,8 +8,10 @@
  * instruction costs a dispatch more than compiled code (docs/interpreter.md measures how much).
  *
  * Registers: [0, n_inputs) are the inputs, in the order of the symbol table (codegen::symbol_table: each parameter,
- * then q, q̇, q̈ of each coordinate, then t and π); then the constants; then one register per instruction, each
- * written once (instruction k writes register first_temporary() + k).
+ * then q, q̇, q̈ of each coordinate, then t and π); then the constants; then the temporaries. A temporary's register
+ * is reused once its value has been read for the last time (a linear scan over the recorded code), so that the
+ * registers a run touches stay few and in the cache: the Whipple bicycle's tape of about 15,000 instructions needs
+ * a few hundred.
  */
 #pragma once
 
@@ -37,6 +39,7 @@ enum class TapeOp : std::uint8_t {
 
 struct Instruction {
     TapeOp op;
+    std::int32_t dst = 0;       ///< the register written
     std::int32_t a = 0, b = 0;  ///< operand registers (b unused by one-operand operations)
     double c = 0;               ///< the constant of AddScaled, Scale, AddConst
 };
@@ -46,9 +49,10 @@ struct Tape {
     std::vector<double> constants;
     std::vector<Instruction> code;
     std::vector<std::int32_t> outputs;  ///< the register holding each value, in the order recorded
+    int n_registers = 0;                ///< inputs, constants and temporaries
 
     int first_temporary() const { return n_inputs + static_cast<int>(constants.size()); }
-    int registers() const { return first_temporary() + static_cast<int>(code.size()); }
+    int registers() const { return n_registers; }
 
     /// Runs the tape: `registers` holds registers() doubles, the inputs in its first n_inputs (the rest is
     /// overwritten); the values go to out[0 .. outputs.size()).
