@@ -207,7 +207,7 @@ int RunCommand::run_model() {
         compiled.table = &interpreted->table();
         const Tape& rhs_tape = eq.constraints.empty() ? interpreted->model().dynamics : interpreted->model().constrained;
         progress("interpreting (no compiler): the right-hand side's tape has " + std::to_string(rhs_tape.code.size()) +
-                 " instructions");
+                 " instructions over " + std::to_string(rhs_tape.registers()) + " registers");
     } else {
         CompileRequest request{text, model.name, header, !no_cache_, progress};
         request.jacobian = jacobians;
