@@ -79,8 +79,8 @@ py::array_t<double> rhs(LoadedModel& m, py::array_t<double, py::array::c_style |
 /// else forward differentiation in the shared object).
 py::tuple jacobian(LoadedModel& m, py::array_t<double, py::array::c_style | py::array::forcecast> t,
                    py::array_t<double, py::array::c_style | py::array::forcecast> x,
-                   const std::vector<std::pair<std::string, double>>& set, bool use_cache) {
-    const ModelTable& table = m.table(true, use_cache);
+                   const std::vector<std::pair<std::string, double>>& set, bool use_cache, bool interpret) {
+    const ModelTable& table = m.table(true, use_cache, interpret);
     const py::ssize_t nx = 2 * py::ssize_t(table.nq), np_ = table.n_params;
     const py::ssize_t rows = state_rows(m, t, x, "jacobian");
     const std::vector<std::max_align_t> params = parameter_block(table, set);

@@ -61,12 +61,9 @@ class LoadedModel {
     }
 
     /// The compiled table (with the Jacobian where `jacobian`), compiled once per process and cached on disk; with
-    /// `interpret`, the interpreter's table instead (interpreter/interpreted_table.hpp: no compiler, no Jacobians).
+    /// `interpret`, the interpreter's table instead (interpreter/interpreted_table.hpp: no compiler).
     const ModelTable& table(bool jacobian, bool use_cache, bool interpret = false) {
-        if (interpret) {
-            if (jacobian)
-                throw sim::UsageError("interpret=True has no Jacobians: method=\"radau5\" and sensitivities need the compiled "
-                                      "model (interpret=False)");
+        if (interpret) {  // its Jacobians by forward differentiation of the tapes: `jacobian` asks for nothing more
             if (!interpreted_)
                 interpreted_ = std::make_unique<interpreter::InterpretedTable>(interpreter::interpret(model_, equations()));
             return interpreted_->table();
@@ -173,6 +170,6 @@ py::array_t<double> rhs(LoadedModel& m, py::array_t<double, py::array::c_style |
 /// else forward differentiation in the shared object).
 py::tuple jacobian(LoadedModel& m, py::array_t<double, py::array::c_style | py::array::forcecast> t,
                    py::array_t<double, py::array::c_style | py::array::forcecast> x,
-                   const std::vector<std::pair<std::string, double>>& set, bool use_cache);
+                   const std::vector<std::pair<std::string, double>>& set, bool use_cache, bool interpret);
 
 }  // namespace eomgen::python

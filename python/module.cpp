@@ -95,7 +95,7 @@ PYBIND11_MODULE(_eomgen, m) {
              py::arg("project_initial"), py::arg("switch_events"), py::arg("threads"), py::arg("use_cache"), py::arg("interpret"))
         .def("rhs", &rhs, py::arg("t"), py::arg("x"), py::arg("set"), py::arg("use_cache"), py::arg("interpret"))
         .def("modes", &modes, py::arg("set"), py::arg("at"), py::arg("momentum"), py::arg("inputs"))
-        .def("jacobian", &jacobian, py::arg("t"), py::arg("x"), py::arg("set"), py::arg("use_cache"))
+        .def("jacobian", &jacobian, py::arg("t"), py::arg("x"), py::arg("set"), py::arg("use_cache"), py::arg("interpret"))
         .def("shared_object", &LoadedModel::shared_object, py::arg("use_cache"))
         .def("check", &check, py::arg("text"), py::arg("path"), py::arg("sections"), py::arg("set"));
     m.def("read_file", [](const std::string& path) { return py::bytes(eomgen::read_model_file(path)); },

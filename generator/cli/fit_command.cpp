@@ -2,6 +2,7 @@
 #include "cli/fit_command.hpp"
 
 #include "cli/compiled_model.hpp"
+#include "cli/model_functions.hpp"
 #include "cli/fit_data.hpp"
 #include "cli/fit_plot.hpp"
 #include "cli/fit_solve.hpp"
@@ -319,6 +320,8 @@ FitCommand::FitCommand(CLI::App& app) {
         ->check(CLI::IsMember({"sensitivities", "differences"}))
         ->capture_default_str();
     fit_->add_flag("--no-cache", no_cache_, "Compile afresh and keep nothing in the cache");
+    fit_->add_flag("--interpret", interpret_,
+                   "Run the model on eomgen's interpreter instead of compiling it (as eomgen run --interpret)");
     fit_->add_flag("--quiet", quiet_, "No progress messages on stderr");
 }
 
@@ -383,16 +386,8 @@ int FitCommand::fit_model() {
         const std::string program = "eomgen fit: experiment " + std::to_string(e + 1);
         if (!options_in_si(declared_units(model), set.own[e], init.own[e], program.c_str())) return 2;
     }
-    auto header = [&] {
-        progress("deriving " + model_path_);
-        const Equations eq = derive_equations(model);
-        for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
-        return header_to_compile(model, eq, fs::path(model_path_).filename().string(), true);
-    };
-    CompileRequest request{text, model.name, header, !no_cache_, progress};
-    request.jacobian = true;
-    const CompiledModel compiled = compile_model(request);
-    TableModel::bind(*compiled.table);
+    const ModelFunctions functions = model_functions({&model, text, model_path_, true, interpret_, !no_cache_, progress});
+    TableModel::bind(functions.table());
 
     TableModel::Params params;
     TableModel::State x0 = TableModel::default_state();

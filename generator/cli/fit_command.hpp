@@ -17,7 +17,7 @@ namespace eomgen::cli {
  *
  *     eomgen fit MODEL.toml DATA.csv [DATA2.csv ...] --free NAME[=start][:lo:hi] ... [--weight COLUMN=W ...] [--format text|json]
  *                [--csv FILE] [--plot FILE.png|FILE.svg] [--max-iterations N] [--set ...] [--init ...] [--method M] [--rtol R] [--atol A]
- *                [--max-steps N] [--jacobian sensitivities|differences] [--loss squared|NAME:SCALE] [--no-cache] [--quiet]
+ *                [--max-steps N] [--jacobian sensitivities|differences] [--loss squared|NAME:SCALE] [--no-cache | --interpret] [--quiet]
  *
  * Each data file is one experiment: the same parameters and initial state but for what it sets itself
  * (--set K:NAME=V, --init K:NAME=V for the K-th file) and the initial values freed with --free x0:STATE, which are
@@ -42,7 +42,7 @@ class FitCommand {
     std::vector<std::string> data_paths_, free_, weights_;
     eomgen::sim::Options options_;
     std::size_t max_iterations_ = 100;
-    bool no_cache_ = false, quiet_ = false;
+    bool no_cache_ = false, quiet_ = false, interpret_ = false;
 };
 
 }  // namespace eomgen::cli

@@ -6,6 +6,7 @@
 #include "checker/derivation.hpp"
 #include "checker/report.hpp"
 #include "cli/compiled_model.hpp"
+#include "cli/model_functions.hpp"
 #include "cli/latex_equations.hpp"
 #include "cli/modes_command.hpp"
 #include "cli/animate.hpp"

@@ -6,13 +6,13 @@
 #include "cli/model_unit_values.hpp"
 
 #include "cli/compiled_model.hpp"
+#include "cli/model_functions.hpp"
 #include "cli/ensemble_command.hpp"
 #include "cli/plot.hpp"
 #include "cli/process.hpp"
 #include "eomgen/model_table.hpp"
 #include "eomgen/simulation.hpp"
 #include "codegen/cpp_emitter.hpp"
-#include "interpreter/interpreted_table.hpp"
 #include "mechanics/lagrangian.hpp"
 #include "model/model_file.hpp"
 #include "options.hpp"
@@ -72,12 +72,6 @@ PlotRequest default_plot(const Model& model, const std::string& csv, const std::
     return p;
 }
 
-std::string header_to_compile(const Model& model, const Equations& eq, const std::string& file_name, bool jacobian) {
-    Model with = model;
-    with.generate.jacobians = with.generate.jacobians || (jacobian && with.constraints.empty());
-    return codegen::emit_model_header(with, eq, file_name);
-}
-
 RunCommand::RunCommand(CLI::App& app) {
     run_ = app.add_subcommand("run", "Derive, compile (cached) and integrate any model file; CSV and plot");
     run_->add_option("model", model_path_, "Model file (.toml)")->required()->check(CLI::ExistingFile);
@@ -95,7 +89,7 @@ RunCommand::RunCommand(CLI::App& app) {
     run_->add_flag("--no-cache", no_cache_, "Compile afresh and keep nothing in the cache");
     run_->add_flag("--interpret", interpret_,
                    "Run the derived equations with eomgen's interpreter instead of compiling them: no C++ compiler, "
-                   "no wait, each step slower (docs/interpreter.md); not with radau5 or --sensitivities");
+                   "no wait, each step slower (docs/interpreter.md)");
     run_->add_flag("--quiet", quiet_, "No progress messages on stderr");
     run_->add_flag("--progress", progress_, "Progress messages on stderr even when it is not a terminal");
     // Ensembles (ensemble_command.hpp): many members, one row each.
@@ -185,43 +179,16 @@ int RunCommand::run_model() {
     }
     // The Jacobians ∂ẋ/∂x (radau5) and ∂ẋ/∂p (sensitivities), analytic in the header where the model allows.
     const bool jacobians = options_.method == "radau5" || !options_.sensitivities.empty();
-    auto header = [&] {
-        progress("deriving " + model_path_);
-        const Equations eq = derive_equations(model);
-        for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
-        return header_to_compile(model, eq, fs::path(model_path_).filename().string(), jacobians);
-    };
-    if (interpret_ && jacobians) {
-        std::cerr << "eomgen run: --interpret has no Jacobians: " << (options_.method == "radau5" ? "--method radau5" : "--sensitivities")
-                  << " needs the compiled model (leave out --interpret)\n";
-        return 2;
-    }
-    CompiledModel compiled;
-    std::optional<interpreter::InterpretedTable> interpreted;
-    using interpreter::Tape;
-    if (interpret_) {
-        progress("deriving " + model_path_);
-        const Equations eq = derive_equations(model);
-        for (const std::string& w : eq.warnings) std::cerr << model_path_ << ": warning: " << w << "\n";
-        interpreted.emplace(interpreter::interpret(model, eq));
-        compiled.table = &interpreted->table();
-        const Tape& rhs_tape = eq.constraints.empty() ? interpreted->model().dynamics : interpreted->model().constrained;
-        progress("interpreting (no compiler): the right-hand side's tape has " + std::to_string(rhs_tape.code.size()) +
-                 " instructions over " + std::to_string(rhs_tape.registers()) + " registers");
-    } else {
-        CompileRequest request{text, model.name, header, !no_cache_, progress};
-        request.jacobian = jacobians;
-        compiled = compile_model(request);
-        progress(compiled.from_cache ? "loaded from the cache: " + compiled.path
-                                     : "compiled in " + std::to_string(compiled.compile_seconds).substr(0, 4) + " s");
-    }
+    FunctionsRequest request{&model, text, model_path_, jacobians, interpret_, !no_cache_, progress};
+    const ModelFunctions functions = model_functions(request);
+    const ModelTable& table = functions.table();
 
     if (ensemble) {
         if (!plot_phase_.empty()) {
             std::cerr << "eomgen run: --plot-phase draws one run; an ensemble's --plot is a result against a varied value\n";
             return 2;
         }
-        eomgen::TableModel::bind(*compiled.table);
+        eomgen::TableModel::bind(table);
         if (scene) {  // the members overlaid in one page, each run alone; then the ensemble's table as without
             progress("animating the ensemble's members");
             eomgen::sim::Options o = options_;
@@ -273,7 +240,7 @@ int RunCommand::run_model() {
         o.report_csv = false;  // removed when the plot is made: not a file to point the user to
     }
     progress("integrating");
-    eomgen::TableModel::bind(*compiled.table);
+    eomgen::TableModel::bind(table);
     const int code = eomgen::sim::run_reporting<eomgen::TableModel>(o, "eomgen run");
     if (code == eomgen::sim::kExitOutput) return 3;  // the CSV could not be written, said on stderr
     if (code != eomgen::sim::kExitOk) return 2;      // a bad option value or a failed simulation, said on stderr

@@ -59,8 +59,4 @@ class RunCommand {
     std::string out_;
 };
 
-/// The header `eomgen run` and `eomgen report` compile: the model's, with its analytic Jacobians where the
-/// integration needs J (`jacobian`: --method radau5) and the model has no constraints (which have none).
-std::string header_to_compile(const Model& model, const Equations& eq, const std::string& file_name, bool jacobian);
-
 }  // namespace eomgen::cli

@@ -43,13 +43,8 @@ Workspace& workspace() {
     return w;
 }
 
-/// Runs `tape` at (t, q, q̇) with the block's parameters (q̇ null: zero); returns its values.
-const std::vector<double>& run(const Tape& tape, double t, const double* q, const double* qd, const void* p) {
-    const InterpretedModel& m = model_of(p);
-    Workspace& w = workspace();
-    if (w.registers.size() < static_cast<std::size_t>(tape.registers())) w.registers.resize(tape.registers());
-    w.values.resize(tape.outputs.size());
-    double* r = w.registers.data();
+/// The tapes' inputs (interpreted_model.hpp: the parameters, q, q̇, q̈ of each coordinate, t, π) at (t, q, q̇).
+void set_inputs(double* r, const InterpretedModel& m, double t, const double* q, const double* qd, const void* p) {
     const std::size_t np = m.param_names.size();
     std::copy(values_of(p), values_of(p) + np, r);
     for (int i = 0; i < m.nq; ++i) {
@@ -59,8 +54,52 @@ const std::vector<double>& run(const Tape& tape, double t, const double* q, cons
     }
     r[np + 3 * m.nq] = t;
     r[np + 3 * m.nq + 1] = 3.141592653589793238462643383279502884;
-    tape.run(r, w.values.data());
+}
+
+/// Runs `tape` at (t, q, q̇) with the block's parameters (q̇ null: zero); returns its values.
+const std::vector<double>& run(const Tape& tape, double t, const double* q, const double* qd, const void* p) {
+    Workspace& w = workspace();
+    if (w.registers.size() < static_cast<std::size_t>(tape.registers())) w.registers.resize(tape.registers());
+    w.values.resize(tape.outputs.size());
+    set_inputs(w.registers.data(), model_of(p), t, q, qd, p);
+    tape.run(w.registers.data(), w.values.data());
     return w.values;
+}
+
+/// A run with derivatives: values, and dvalues[i K + d] = ∂value_i/∂z_d for z = (q, q̇, p, t), K = 2n + n_p + 1.
+struct Derivatives {
+    std::vector<double> registers, tangents, values, dvalues;
+    int K = 0;
+    double d(std::size_t value, int direction) const { return dvalues[value * static_cast<std::size_t>(K) + static_cast<std::size_t>(direction)]; }
+};
+
+/// Runs `tape` at (t, x) with the derivatives by every state, parameter and t.
+void run_derivatives(const Tape& tape, double t, const double* x, const void* p, Derivatives& w) {
+    const InterpretedModel& m = model_of(p);
+    const int n = m.nq, np = static_cast<int>(m.param_names.size());
+    w.K = 2 * n + np + 1;
+    const std::size_t K = static_cast<std::size_t>(w.K);
+    w.registers.resize(static_cast<std::size_t>(tape.registers()));
+    w.tangents.assign(static_cast<std::size_t>(tape.registers()) * K, 0.0);
+    w.values.resize(tape.outputs.size());
+    w.dvalues.resize(tape.outputs.size() * K);
+    set_inputs(w.registers.data(), m, t, x, x + n, p);
+    auto seed = [&](int reg, int direction) { w.tangents[static_cast<std::size_t>(reg) * K + static_cast<std::size_t>(direction)] = 1; };
+    for (int i = 0; i < np; ++i) seed(i, 2 * n + i);
+    for (int i = 0; i < n; ++i) {
+        seed(np + 3 * i, i);
+        seed(np + 3 * i + 1, n + i);
+    }
+    seed(np + 3 * n, 2 * n + np);
+    tape.run_tangent(w.registers.data(), w.tangents.data(), w.K, w.values.data(), w.dvalues.data());
+}
+
+/// out (rows × cols, column-major) = ∂value_{first + r}/∂z_{from + c}.
+void derivative_block(const Derivatives& w, std::size_t first, int rows, int from, int cols, double* out) {
+    for (int c = 0; c < cols; ++c)
+        for (int r = 0; r < rows; ++r)
+            out[static_cast<std::size_t>(c) * static_cast<std::size_t>(rows) + static_cast<std::size_t>(r)] =
+                w.d(first + static_cast<std::size_t>(r), from + c);
 }
 
 /// The values into out[0 .. count), from `first`.
@@ -98,6 +137,75 @@ void constrained_accelerations(double t, const double* x, const void* p) {
     w.lambda.resize(nc);
     const Eigen::Map<const Eigen::VectorXd> state(x, 2 * n);
     solve_constrained(w.M, w.f, w.A, w.gamma, w.qdd, w.lambda, t, state);
+}
+
+Derivatives& derivatives() {
+    thread_local Derivatives d;
+    return d;
+}
+
+/// ∂q̈/∂z (n × K) and, with constraints, ∂λ/∂z (n_c × K), z = (q, q̇, p, t), by differentiating the solve of
+/// rhs(): M dq̈ = df − dM q̈ (+ dAᵀ λ + Aᵀ dλ), A dq̈ = dγ̃ − dA q̈ with γ̃ = γ − 2α c − β² g, each column by the same
+/// factorization (solve_constrained: one solve a column).
+void acceleration_derivatives(double t, const double* x, const void* p, Eigen::MatrixXd& dqdd, Eigen::MatrixXd& dlambda) {
+    const InterpretedModel& m = model_of(p);
+    const int n = m.nq, nc = static_cast<int>(m.constraint_names.size());
+    Derivatives& d = derivatives();
+    const Eigen::Map<const Eigen::VectorXd> state(x, 2 * n);
+    Workspace& w = workspace();
+    run_derivatives(nc == 0 ? m.dynamics : m.constrained, t, x, p, d);
+    const int K = d.K;
+    mass_and_forcing(d.values, n, w);
+    auto dM = [&](int i, int j, int z) { return d.d(static_cast<std::size_t>(i * n + j), z); };
+    auto df = [&](int i, int z) { return d.d(static_cast<std::size_t>(n * n + i), z); };
+    dqdd.resize(n, K);
+    if (nc == 0) {
+        if (!w.factor.compute(w.M)) throw_solve_failure(w.M, w.f, true, t, state);
+        w.qdd = w.f;
+        w.factor.solve_in_place(w.qdd);
+        if (!w.qdd.allFinite()) throw_solve_failure(w.M, w.f, false, t, state);
+        for (int z = 0; z < K; ++z)
+            for (int i = 0; i < n; ++i) {
+                double v = df(i, z);
+                for (int j = 0; j < n; ++j) v -= dM(i, j, z) * w.qdd(j);
+                dqdd(i, z) = v;
+            }
+        w.factor.solve_in_place(dqdd);
+        dlambda.resize(0, K);
+        return;
+    }
+    const std::size_t at = static_cast<std::size_t>(n * n + n);  // A, then γ, g, c
+    w.A.resize(nc, n);
+    for (int k = 0; k < nc; ++k)
+        for (int i = 0; i < n; ++i) w.A(k, i) = d.values[at + static_cast<std::size_t>(k * n + i)];
+    const double alpha = m.baumgarte_alpha, beta2 = m.baumgarte_beta * m.baumgarte_beta;
+    auto gamma_row = [&](int k) { return at + static_cast<std::size_t>(nc * n + k); };
+    auto g_row = [&](int k) { return at + static_cast<std::size_t>(nc * n + nc + k); };
+    auto c_row = [&](int k) { return at + static_cast<std::size_t>(nc * n + 2 * nc + k); };
+    w.gamma.resize(nc);
+    for (int k = 0; k < nc; ++k)
+        w.gamma(k) = d.values[gamma_row(k)] - (2 * alpha * d.values[c_row(k)] + beta2 * d.values[g_row(k)]);
+    w.qdd.resize(n);
+    w.lambda.resize(nc);
+    solve_constrained(w.M, w.f, w.A, w.gamma, w.qdd, w.lambda, t, state);
+    dlambda.resize(nc, K);
+    Eigen::VectorXd fz(n), gz(nc), qz(n), lz(nc);
+    for (int z = 0; z < K; ++z) {
+        for (int i = 0; i < n; ++i) {
+            double v = df(i, z);
+            for (int j = 0; j < n; ++j) v -= dM(i, j, z) * w.qdd(j);
+            for (int k = 0; k < nc; ++k) v += d.d(at + static_cast<std::size_t>(k * n + i), z) * w.lambda(k);
+            fz(i) = v;
+        }
+        for (int k = 0; k < nc; ++k) {
+            double v = d.d(gamma_row(k), z) - 2 * alpha * d.d(c_row(k), z) - beta2 * d.d(g_row(k), z);
+            for (int i = 0; i < n; ++i) v -= d.d(at + static_cast<std::size_t>(k * n + i), z) * w.qdd(i);
+            gz(k) = v;
+        }
+        solve_constrained(w.M, fz, w.A, gz, qz, lz, t, state);
+        dqdd.col(z) = qz;
+        dlambda.col(z) = lz;
+    }
 }
 
 struct Functions {
@@ -201,6 +309,73 @@ struct Functions {
     static int power(double t, const double* q, const double* qd, const void* p, double* out) {
         return guarded([&] { *out = run(model_of(p).power, t, q, qd, p)[0]; });
     }
+    // The Jacobians: forward differentiation through the tapes (Tape::run_tangent) and the solve.
+    static int jacobian(double t, const double* x, const void* p, double* J) {
+        return guarded([&] {
+            const int n = model_of(p).nq;
+            Eigen::MatrixXd dqdd, dlambda;
+            acceleration_derivatives(t, x, p, dqdd, dlambda);
+            Eigen::Map<Eigen::MatrixXd> out(J, 2 * n, 2 * n);
+            out.setZero();
+            out.topRightCorner(n, n).setIdentity();
+            out.bottomRows(n) = dqdd.leftCols(2 * n);
+        });
+    }
+    static int parameter_jacobian(double t, const double* x, const void* p, double* Jp) {
+        return guarded([&] {
+            const int n = model_of(p).nq, np = static_cast<int>(model_of(p).param_names.size());
+            Eigen::MatrixXd dqdd, dlambda;
+            acceleration_derivatives(t, x, p, dqdd, dlambda);
+            Eigen::Map<Eigen::MatrixXd> out(Jp, 2 * n, np);
+            out.setZero();
+            out.bottomRows(n) = dqdd.middleCols(2 * n, np);
+        });
+    }
+    static int multiplier_jacobian(double t, const double* x, const void* p, double* Lx, double* Lp) {
+        return guarded([&] {
+            const int n = model_of(p).nq, np = static_cast<int>(model_of(p).param_names.size());
+            Eigen::MatrixXd dqdd, dlambda;
+            acceleration_derivatives(t, x, p, dqdd, dlambda);
+            Eigen::Map<Eigen::MatrixXd>(Lx, dlambda.rows(), 2 * n) = dlambda.leftCols(2 * n);
+            Eigen::Map<Eigen::MatrixXd>(Lp, dlambda.rows(), np) = dlambda.middleCols(2 * n, np);
+        });
+    }
+    static int output_jacobian(double t, const double* x, const void* p, double* Yx, double* Yp) {
+        return guarded([&] {
+            const InterpretedModel& m = model_of(p);
+            const int n = m.nq, np = static_cast<int>(m.param_names.size()), no = static_cast<int>(m.output_names.size());
+            Derivatives& d = derivatives();
+            run_derivatives(m.outputs, t, x, p, d);
+            derivative_block(d, 0, no, 0, 2 * n, Yx);
+            derivative_block(d, 0, no, 2 * n, np, Yp);
+        });
+    }
+    static int constraint_residual_jacobian(double t, const double* x, const void* p, double* Rx, double* Rp) {
+        return guarded([&] {
+            const InterpretedModel& m = model_of(p);
+            const int n = m.nq, np = static_cast<int>(m.param_names.size()), nc = static_cast<int>(m.constraint_names.size());
+            Derivatives& d = derivatives();
+            run_derivatives(m.constrained, t, x, p, d);
+            // Position rows (g), then velocity rows (c): the values after M, f, A and γ, as they are recorded.
+            const std::size_t g = static_cast<std::size_t>(n * n + n + nc * n + nc);
+            Eigen::MatrixXd rx(2 * nc, 2 * n), rp(2 * nc, np);
+            derivative_block(d, g, 2 * nc, 0, 2 * n, rx.data());
+            derivative_block(d, g, 2 * nc, 2 * n, np, rp.data());
+            Eigen::Map<Eigen::MatrixXd>(Rx, 2 * nc, 2 * n) = rx;
+            Eigen::Map<Eigen::MatrixXd>(Rp, 2 * nc, np) = rp;
+        });
+    }
+    static int switching_jacobian(double t, const double* x, const void* p, double* Sx, double* Sp, double* St) {
+        return guarded([&] {
+            const InterpretedModel& m = model_of(p);
+            const int n = m.nq, np = static_cast<int>(m.param_names.size()), ns = static_cast<int>(m.switch_names.size());
+            Derivatives& d = derivatives();
+            run_derivatives(m.switching, t, x, p, d);
+            derivative_block(d, 0, ns, 0, 2 * n, Sx);
+            derivative_block(d, 0, ns, 2 * n, np, Sp);
+            derivative_block(d, 0, ns, 2 * n + np, 1, St);
+        });
+    }
     static const char* error_message(double* t) {
         if (t) *t = table_detail::last_error().t;
         return table_detail::last_error().message.c_str();
@@ -289,10 +464,18 @@ InterpretedTable::InterpretedTable(InterpretedModel model) : model_(std::make_un
         t.multipliers = &Functions::multipliers;
     }
     t.error_message = &Functions::error_message;
+    t.jacobian = &Functions::jacobian;
+    t.parameter_jacobian = &Functions::parameter_jacobian;
+    t.output_jacobian = &Functions::output_jacobian;
+    if (t.n_constraints > 0) {
+        t.multiplier_jacobian = &Functions::multiplier_jacobian;
+        t.constraint_residual_jacobian = &Functions::constraint_residual_jacobian;
+    }
     if (!m.switch_names.empty()) {
         t.n_switches = static_cast<int>(m.switch_names.size());
         t.switch_names = names(m.switch_names);
         t.switching = &Functions::switching;
+        t.switching_jacobian = &Functions::switching_jacobian;
     }
     if (m.has_power) t.power = &Functions::power;
     t.energy_unit = m.energy_unit.c_str();

@@ -3,6 +3,7 @@
 
 #include "codegen/expr_dag.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -290,6 +291,79 @@ done:
     }
 #endif
     for (std::size_t k = 0; k < outputs.size(); ++k) out[k] = r[outputs[k]];
+}
+
+void Tape::run_tangent(double* r, double* dr, int k, double* out, double* dout) const {
+    const std::size_t K = static_cast<std::size_t>(k);
+    for (std::size_t j = 0; j < constants.size(); ++j) {
+        r[static_cast<std::size_t>(n_inputs) + j] = constants[j];
+        std::fill_n(dr + (static_cast<std::size_t>(n_inputs) + j) * K, K, 0.0);
+    }
+    for (const Instruction& i : code) {
+        const double a = r[i.a], b = uses_b(i.op) ? r[i.b] : 0.0;
+        const double* da = dr + static_cast<std::size_t>(i.a) * K;
+        const double* db = dr + static_cast<std::size_t>(i.b) * K;
+        double* dv = dr + static_cast<std::size_t>(i.dst) * K;
+        // v = value; dv = ca·da + cb·db (cb ignored for one-operand operations)
+        double v = 0, ca = 0, cb = 0;
+        switch (i.op) {
+            case TapeOp::Add: v = a + b, ca = 1, cb = 1; break;
+            case TapeOp::Sub: v = a - b, ca = 1, cb = -1; break;
+            case TapeOp::Mul: v = a * b, ca = b, cb = a; break;
+            case TapeOp::Div: v = a / b, ca = 1 / b, cb = -v / b; break;
+            case TapeOp::Neg: v = -a, ca = -1; break;
+            case TapeOp::AddScaled: v = a + i.c * b, ca = 1, cb = i.c; break;
+            case TapeOp::Scale: v = i.c * a, ca = i.c; break;
+            case TapeOp::AddConst: v = a + i.c, ca = 1; break;
+            case TapeOp::Sin: v = std::sin(a), ca = std::cos(a); break;
+            case TapeOp::Cos: v = std::cos(a), ca = -std::sin(a); break;
+            case TapeOp::Tan: v = std::tan(a), ca = 1 + v * v; break;
+            case TapeOp::Exp: v = std::exp(a), ca = v; break;
+            case TapeOp::Log: v = std::log(a), ca = 1 / a; break;
+            case TapeOp::Sqrt: v = std::sqrt(a), ca = 0.5 / v; break;
+            case TapeOp::Asin: v = std::asin(a), ca = 1 / std::sqrt(1 - a * a); break;
+            case TapeOp::Acos: v = std::acos(a), ca = -1 / std::sqrt(1 - a * a); break;
+            case TapeOp::Atan: v = std::atan(a), ca = 1 / (1 + a * a); break;
+            case TapeOp::Sinh: v = std::sinh(a), ca = std::cosh(a); break;
+            case TapeOp::Cosh: v = std::cosh(a), ca = std::sinh(a); break;
+            case TapeOp::Tanh: v = std::tanh(a), ca = 1 - v * v; break;
+            case TapeOp::Abs: v = std::abs(a), ca = a > 0 ? 1.0 : a < 0 ? -1.0 : 0.0; break;
+            case TapeOp::Sign: v = a > 0 ? 1.0 : a < 0 ? -1.0 : 0.0; break;
+            case TapeOp::Heaviside: v = a > 0 ? 1.0 : a < 0 ? 0.0 : 0.5; break;
+            case TapeOp::Max:
+                if (a < b)
+                    v = b, cb = 1;
+                else
+                    v = a, ca = 1;
+                break;
+            case TapeOp::Min:
+                if (b < a)
+                    v = b, cb = 1;
+                else
+                    v = a, ca = 1;
+                break;
+            case TapeOp::Atan2: {
+                const double q = a * a + b * b;
+                v = std::atan2(a, b), ca = b / q, cb = -a / q;
+                break;
+            }
+            case TapeOp::Pow:
+                v = std::pow(a, b);
+                ca = b * std::pow(a, b - 1);
+                cb = a > 0 ? v * std::log(a) : 0.0;  // a ≤ 0: b is an exponent the value allows only as a constant
+                break;
+        }
+        r[i.dst] = v;
+        if (uses_b(i.op)) {
+            for (std::size_t d = 0; d < K; ++d) dv[d] = ca * da[d] + cb * db[d];
+        } else {
+            for (std::size_t d = 0; d < K; ++d) dv[d] = ca * da[d];
+        }
+    }
+    for (std::size_t o = 0; o < outputs.size(); ++o) {
+        out[o] = r[outputs[o]];
+        std::copy_n(dr + static_cast<std::size_t>(outputs[o]) * K, K, dout + o * K);
+    }
 }
 
 }  // namespace eomgen::interpreter

@@ -57,6 +57,12 @@ struct Tape {
     /// Runs the tape: `registers` holds registers() doubles, the inputs in its first n_inputs (the rest is
     /// overwritten); the values go to out[0 .. outputs.size()).
     void run(double* registers, double* out) const;
+
+    /// Runs the tape with k derivatives of each value (forward differentiation): `tangents` holds registers() × k
+    /// doubles, register j's at [j k, (j + 1) k), the inputs' set by the caller (the rest overwritten); the values go to
+    /// out as run() writes them, their derivatives to dout[i k + d]. Where a function has no derivative (sign,
+    /// heaviside; abs, max, min on their switching surface) it takes the side the value's branch takes.
+    void run_tangent(double* registers, double* tangents, int k, double* out, double* dout) const;
 };
 
 /// Records `values` (expressions in the symbols of `table`) as one tape, their common subexpressions computed once:

@@ -177,8 +177,7 @@ class Model:
         (dopri5, dop853, adams, radau5; rk4 with dt; docs/sensitivities.md): Solution.S and the rest;
         state_error_only=True leaves S out of the step-size control (as --state-error-only). cache=False compiles
         afresh and keeps nothing. interpret=True runs the derived equations on eomgen's interpreter instead of
-        compiling them (as `eomgen run --interpret`: no C++ compiler and no wait, each step slower; not with radau5 or
-        sensitivities; docs/interpreter.md)."""
+        compiling them (as `eomgen run --interpret`: no C++ compiler and no wait, each step slower; docs/interpreter.md)."""
         if isinstance(sensitivities, str):
             sensitivities = [sensitivities]
         r = self._m.simulate(float(t_end), str(method), float(rtol), float(atol), float(dt), int(samples),
@@ -242,13 +241,14 @@ class Model:
         return self._m.rhs(np.asarray(t, dtype=float), np.asarray(x, dtype=float), _si_values(set, "set"),
                            bool(cache), bool(interpret))
 
-    def jacobian(self, t, x, set=None, cache=True):
+    def jacobian(self, t, x, set=None, cache=True, interpret=False):
         """(J, Jp): J = dx'/dx, shape (2n, 2n), and Jp = dx'/dp, shape (2n, len(parameters)) in the order of
         `parameters`, at the state x (or (N, 2n, 2n) and (N, 2n, n_p) over the rows of an (N, 2n) array), with the
         model's parameters and `set` (SI). The compiled Jacobians radau5 and the sensitivities use: the header's
-        analytic ones where the model has them, else forward differentiation of the compiled rhs."""
+        analytic ones where the model has them, else forward differentiation of the compiled rhs; with
+        interpret=True, forward differentiation of the interpreter's tapes."""
         return self._m.jacobian(np.asarray(t, dtype=float), np.asarray(x, dtype=float), _si_values(set, "set"),
-                                bool(cache))
+                                bool(cache), bool(interpret))
 
     def modes(self, set=None, at=None, momentum=None, inputs=None):
         """What `eomgen modes` finds: the equilibria (exact where the equations can be solved, else from the guesses

@@ -145,14 +145,26 @@ TEST_CASE("eomgen run --interpret on a constrained model: residuals, multipliers
     for (const auto& row : read_csv(sweep_i)) CHECK(row[2] != "failed");
 }
 
-TEST_CASE("eomgen run --interpret refuses what needs the compiled Jacobians, and reports a singular M", "[run][interpret]") {
+TEST_CASE("eomgen run --interpret: radau5 and sensitivities on the tapes' Jacobians, and a singular M reported",
+          "[run][interpret]") {
     const fs::path model = write_whole(kWork, "driven.toml", kDriven);
-    const Result radau = eomgen({"run", model.string(), "--interpret", "--method", "radau5", "--quiet"});
-    CHECK(radau.code == 2);
-    CHECK(radau.output.find("--interpret has no Jacobians: --method radau5") != std::string::npos);
-    const Result sens = eomgen({"run", model.string(), "--interpret", "--sensitivities", "c", "--quiet"});
-    CHECK(sens.code == 2);
-    CHECK(sens.output.find("--interpret has no Jacobians: --sensitivities") != std::string::npos);
+    for (const std::vector<std::string>& extra : {std::vector<std::string>{"--method", "radau5"},
+                                                  {"--sensitivities", "c,l,x0:phi"}}) {
+        const fs::path compiled = kWork / "jac_compiled.csv", interpreted = kWork / "jac_interpreted.csv";
+        std::vector<std::string> a = {"run", model.string(), "--t-end", "3", "--rtol", "1e-10", "--samples", "30",
+                                      "--quiet"};
+        a.insert(a.end(), extra.begin(), extra.end());
+        std::vector<std::string> b = a;
+        a.insert(a.end(), {"--csv", compiled.string()});
+        b.insert(b.end(), {"--csv", interpreted.string(), "--interpret"});
+        const Result rc = eomgen(a);
+        const Result ri = eomgen(b);
+        INFO(rc.output << ri.output);
+        REQUIRE(rc.code == 0);
+        REQUIRE(ri.code == 0);
+        CHECK(largest_difference(compiled, interpreted) <= 1e-8);
+        if (extra[0] == "--sensitivities") CHECK(column(read_csv(interpreted)[0], "dphi/dc") >= 0);
+    }
 
     const fs::path singular = write_whole(kWork, "singular.toml", R"toml(name = "singular_interpreted"
 [[coordinates]]
@@ -167,4 +179,26 @@ V = "x"
     CHECK(s.code == 2);
     CHECK(s.output.find("mass matrix is singular") != std::string::npos);
     CHECK(s.output.find("nan") == std::string::npos);
+}
+
+TEST_CASE("eomgen fit --interpret: the compiled fit's estimates, errors and correlations", "[fit][interpret]") {
+    const fs::path root = eomgen_test::source_dir();
+    const std::vector<std::string> fit = {"fit", (root / "models" / "damped_pendulum.toml").string(),
+                                          (root / "examples" / "fit" / "damped_pendulum_data.csv").string(),
+                                          "--free", "l=1.3:0.1:10", "--free", "c=0.1:0:2", "--quiet"};
+    std::vector<std::string> interpreted = fit;
+    interpreted.push_back("--interpret");
+    const Result c = eomgen(fit);
+    const Result i = eomgen(interpreted, {{"CXX", "no-such-compiler-x"}});
+    INFO(c.output << i.output);
+    REQUIRE(c.code == 0);
+    REQUIRE(i.code == 0);
+    // Everything but the solver's line (its time) is the same text.
+    auto without_timing = [](const std::string& out) {
+        const std::size_t at = out.find("solver:");
+        REQUIRE(at != std::string::npos);
+        return out.substr(0, at) + out.substr(out.find('\n', at));
+    };
+    CHECK(without_timing(c.output) == without_timing(i.output));
+    CHECK(i.output.find("l = 0.99994") != std::string::npos);
 }

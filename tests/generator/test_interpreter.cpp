@@ -193,6 +193,93 @@ TEST_CASE("every model file's interpreted functions agree with its equations at 
     }
 }
 
+namespace {
+
+/// Central differences of f (R^m-valued, of the state x and the parameter block) by x_j and by parameter j.
+template <class F>
+Eigen::MatrixXd central(const ModelTable& table, std::vector<std::max_align_t> block, std::vector<double> x, int m, F f,
+                        bool by_parameters) {
+    const int n = by_parameters ? table.n_params : 2 * table.nq;
+    Eigen::MatrixXd D(m, n);
+    std::vector<double> values(static_cast<std::size_t>(table.n_params));
+    table.param_values(block.data(), values.data());
+    for (int j = 0; j < n; ++j) {
+        double& z = by_parameters ? values[static_cast<std::size_t>(j)] : x[static_cast<std::size_t>(j)];
+        const double z0 = z, h = 1e-6 * (1 + std::abs(z0));
+        Eigen::VectorXd plus(m), minus(m);
+        for (const auto& [sign, out] : {std::pair<double, Eigen::VectorXd*>{1, &plus}, {-1, &minus}}) {
+            z = z0 + sign * h;
+            if (by_parameters) table.set_param(block.data(), table.param_names[j], z);
+            REQUIRE(f(x.data(), block.data(), out->data()) == kTableOk);
+        }
+        z = z0;
+        if (by_parameters) table.set_param(block.data(), table.param_names[j], z0);
+        D.col(j) = (plus - minus) / (2 * h);
+    }
+    return D;
+}
+
+bool near(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) { return (a - b).norm() <= 1e-6 * (1 + b.norm()); }
+
+}  // namespace
+
+TEST_CASE("the interpreted Jacobians agree with central differences on every model file", "[interpreter][jacobian]") {
+    namespace fs = std::filesystem;
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> uniform(-1, 1);
+    for (const auto& e : fs::directory_iterator(fs::path(eomgen_test::source_dir()) / "models")) {
+        if (e.path().extension() != ".toml" || e.path().stem() == "whipple_bicycle") continue;  // the bicycle: its own case
+        INFO(e.path().filename().string());
+        const Model model = parse_model(read_model_file(e.path().string()), e.path().string());
+        const InterpretedTable interpreted(interpret(model, derive_equations(model)));
+        const ModelTable& table = interpreted.table();
+        const int n = table.nq, nx = 2 * n, np = table.n_params, nc = table.n_constraints, no = table.n_outputs,
+                  ns = table.n_switches;
+        REQUIRE(table.jacobian);
+        std::vector<std::max_align_t> block(table.params_size / sizeof(std::max_align_t) + 1);
+        table.init_params(block.data());
+        std::vector<double> x(static_cast<std::size_t>(nx));
+        table.default_state(x.data());
+        for (double& v : x) v += 0.3 * uniform(rng);  // near the model's own start: inside its domain
+        const double t = 0.7;
+        std::vector<double> xdot(static_cast<std::size_t>(nx));
+        if (table.rhs(t, x.data(), block.data(), xdot.data()) != kTableOk) continue;
+        auto rhs = [&](const double* xs, const void* p, double* out) { return table.rhs(t, xs, p, out); };
+        Eigen::MatrixXd J(nx, nx), Jp(nx, np);
+        REQUIRE(table.jacobian(t, x.data(), block.data(), J.data()) == kTableOk);
+        REQUIRE(table.parameter_jacobian(t, x.data(), block.data(), Jp.data()) == kTableOk);
+        CHECK(near(J, central(table, block, x, nx, rhs, false)));
+        CHECK(near(Jp, central(table, block, x, nx, rhs, true)));
+        if (no > 0) {
+            Eigen::MatrixXd Yx(no, nx), Yp(no, np);
+            REQUIRE(table.output_jacobian(t, x.data(), block.data(), Yx.data(), Yp.data()) == kTableOk);
+            auto outputs = [&](const double* xs, const void* p, double* out) { return table.outputs(t, xs, xs + n, p, out); };
+            CHECK(near(Yx, central(table, block, x, no, outputs, false)));
+            CHECK(near(Yp, central(table, block, x, no, outputs, true)));
+        }
+        if (nc > 0) {
+            Eigen::MatrixXd Lx(nc, nx), Lp(nc, np), Rx(2 * nc, nx), Rp(2 * nc, np);
+            REQUIRE(table.multiplier_jacobian(t, x.data(), block.data(), Lx.data(), Lp.data()) == kTableOk);
+            auto lambda = [&](const double* xs, const void* p, double* out) { return table.multipliers(t, xs, p, out); };
+            CHECK(near(Lx, central(table, block, x, nc, lambda, false)));
+            CHECK(near(Lp, central(table, block, x, nc, lambda, true)));
+            REQUIRE(table.constraint_residual_jacobian(t, x.data(), block.data(), Rx.data(), Rp.data()) == kTableOk);
+            auto residuals = [&](const double* xs, const void* p, double* out) {
+                return table.constraint_residuals(t, xs, xs + n, p, out, out + nc);
+            };
+            CHECK(near(Rx, central(table, block, x, 2 * nc, residuals, false)));
+            CHECK(near(Rp, central(table, block, x, 2 * nc, residuals, true)));
+        }
+        if (ns > 0) {
+            Eigen::MatrixXd Sx(ns, nx), Sp(ns, np), St(ns, 1);
+            REQUIRE(table.switching_jacobian(t, x.data(), block.data(), Sx.data(), Sp.data(), St.data()) == kTableOk);
+            auto switching = [&](const double* xs, const void* p, double* out) { return table.switching(t, xs, xs + n, p, out); };
+            CHECK(near(Sx, central(table, block, x, ns, switching, false)));
+            CHECK(near(Sp, central(table, block, x, ns, switching, true)));
+        }
+    }
+}
+
 TEST_CASE("an interpreted model reports a singular mass matrix with the state, never a NaN", "[interpreter][errors]") {
     const Model model = parse_model(R"toml(name = "degenerate"
 [[coordinates]]
@@ -240,4 +327,59 @@ TEST_CASE("interpreted tables of several models live at once, each with its own 
         REQUIRE(table.rhs(0, x, block.data(), xdot) == kTableOk);
         CHECK(xdot[1] == Approx(-9.81 / k * std::sin(0.5)));
     }
+}
+
+TEST_CASE("the interpreted switching surfaces' derivatives, in t as well, against central differences", "[interpreter][jacobian]") {
+    const Model model = parse_model(R"toml(name = "belt_block"
+[[coordinates]]
+name = "x"
+initial = 0.2
+rate = 0.1
+[[parameters]]
+name = "m"
+value = 1.5
+[[parameters]]
+name = "k"
+value = 4
+[[parameters]]
+name = "mu"
+value = 0.3
+[[parameters]]
+name = "v"
+value = 0.5
+[[parameters]]
+name = "w"
+value = 2
+[lagrangian]
+T = "m/2*x'^2"
+V = "k/2*x^2 + max(x - 1, 0)^2"
+[forces]
+x = "-mu*m*9.81*sign(x' - v*cos(w*t))"
+)toml",
+                                    "belt_block.toml");
+    const InterpretedTable interpreted(interpret(model, derive_equations(model)));
+    const ModelTable& table = interpreted.table();
+    REQUIRE(table.n_switches >= 2);
+    const int ns = table.n_switches, np = table.n_params;
+    std::vector<std::max_align_t> block(table.params_size / sizeof(std::max_align_t) + 1);
+    table.init_params(block.data());
+    std::vector<double> x = {0.4, -0.2};
+    const double t = 0.3;
+    Eigen::MatrixXd Sx(ns, 2), Sp(ns, np), St(ns, 1);
+    REQUIRE(table.switching_jacobian(t, x.data(), block.data(), Sx.data(), Sp.data(), St.data()) == kTableOk);
+    auto at = [&](double time) {
+        return [&table, time](const double* xs, const void* p, double* out) { return table.switching(time, xs, xs + 1, p, out); };
+    };
+    CHECK(near(Sx, central(table, block, x, ns, at(t), false)));
+    CHECK(near(Sp, central(table, block, x, ns, at(t), true)));
+    Eigen::VectorXd plus(ns), minus(ns);
+    REQUIRE(at(t + 1e-6)(x.data(), block.data(), plus.data()) == kTableOk);
+    REQUIRE(at(t - 1e-6)(x.data(), block.data(), minus.data()) == kTableOk);
+    CHECK(near(St, (plus - minus) / 2e-6));
+    CHECK(St.norm() > 0);  // the belt's speed changes with t
+    // Away from the surfaces, rhs's Jacobian by the state is the smooth side's.
+    Eigen::MatrixXd J(2, 2);
+    REQUIRE(table.jacobian(t, x.data(), block.data(), J.data()) == kTableOk);
+    auto rhs = [&](const double* xs, const void* p, double* out) { return table.rhs(t, xs, p, out); };
+    CHECK(near(J, central(table, block, x, 2, rhs, false)));
 }

@@ -368,7 +368,7 @@ def test_interpret_equals_eomgen_run_interpret_and_the_compiled_run(door, tmp_pa
     np.testing.assert_allclose(sol.to_array(), compiled.to_array(), rtol=1e-9, atol=1e-9)
 
 
-def test_interpret_needs_no_compiler_and_refuses_what_needs_jacobians(tmp_path, monkeypatch):
+def test_interpret_needs_no_compiler_even_for_radau5_and_sensitivities(tmp_path, monkeypatch):
     monkeypatch.setenv("CXX", "no-such-compiler-x")
     m = eomgen.family("pendulum:n=5")  # not in any cache: a compile would fail
     init = {"theta1": 0.2}
@@ -379,7 +379,25 @@ def test_interpret_needs_no_compiler_and_refuses_what_needs_jacobians(tmp_path, 
     np.testing.assert_array_equal(xdot[:, :5], x[:, 5:])
     ens = m.sweep({"theta1": [0.1, 0.2]}, t_end=0.5, interpret=True)
     assert len(ens.t) == 2 and ens.ok.all()
-    with pytest.raises(eomgen.UsageError, match="interpret=True has no Jacobians"):
-        m.simulate(1.0, method="radau5", interpret=True)
+    # The Jacobians by forward differentiation of the tapes: radau5 and the sensitivities run too.
+    stiff = m.simulate(2.0, init=init, method="radau5", interpret=True)
+    np.testing.assert_allclose(stiff.x[-1], sol.x[-1], atol=1e-6)
+    S = m.simulate(1.0, init=init, sensitivities=["g"], interpret=True)
+    h = 1e-5
+    up = m.simulate(1.0, init=init, set={"g": 9.81 + h}, interpret=True).x[-1]
+    down = m.simulate(1.0, init=init, set={"g": 9.81 - h}, interpret=True).x[-1]
+    np.testing.assert_allclose(S.S[-1, :, 0], (up - down) / (2 * h), rtol=1e-5, atol=1e-7)
     with pytest.raises(eomgen.CompileError, match="no-such-compiler-x"):
         m.simulate(1.0, init=init)
+
+
+def test_interpreted_jacobians_and_sensitivities_equal_the_compiled_ones(door):
+    x = np.array([[-0.3, -0.1], [-1.0, -0.4]])
+    J, Jp = door.jacobian(0.0, x)
+    Ji, Jpi = door.jacobian(0.0, x, interpret=True)
+    np.testing.assert_allclose(Ji, J, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(Jpi, Jp, rtol=1e-12, atol=1e-12)
+    a = door.simulate(100.0, until="psi=-pi/2", sensitivities=["theta", "w", "x0:psi"])
+    b = door.simulate(100.0, until="psi=-pi/2", sensitivities=["theta", "w", "x0:psi"], interpret=True)
+    assert b.event_dt["psi=-pi/2"] == pytest.approx(a.event_dt["psi=-pi/2"], rel=1e-9)
+    np.testing.assert_allclose(b.S[-1], a.S[-1], rtol=1e-8, atol=1e-10)
