@@ -14,7 +14,7 @@
 // Each model goes through what the commands do, in process: parse_model, derive_equations (generate, show,
 // modes, run and check all start there), emit_model_header (generate), derive_hamiltonian (show),
 // small_oscillations (modes), a steady motion about a random rate of the last coordinate (modes --steady), the
-// animation's scene at the initial state (run --animate) and a short run (RK4 on M q'' = f + A^T lambda, A q'' = gamma, from the model's
+// animation's scene at the initial state (run --animate), the interpreter's table there (run --interpret) and a short run (RK4 on M q'' = f + A^T lambda, A q'' = gamma, from the model's
 // initial state and parameter values, M and f evaluated with GiNaC). Properties, each a finding (an abort with
 // the model's text) when broken:
 //   - no crash, no hang (the driver's --slow limit), and no exception but a ModelError located at
@@ -32,6 +32,7 @@
 // tests/fuzz/findings_structure/); with EOMGEN_FUZZ_STRUCTURE_PRINT set, each generated model is printed.
 #include "animation/frames.hpp"
 #include "codegen/cpp_emitter.hpp"
+#include "interpreter/interpreted_table.hpp"
 #include "harness.hpp"
 #include "mechanics/pole_free_subs.hpp"
 #include "mechanics/hamiltonian.hpp"
@@ -811,6 +812,35 @@ bool short_run(const eomgen::Model& model, const eomgen::Equations& eq) {
                   << ", f = " << *f << ", Q = " << *Q;
                 finding("euler_lagrange is not M q'' - f + Q at the initial state", s.str());
             }
+        }
+    }
+
+    // The interpreter (eomgen run --interpret) at the initial state: its right-hand side and Jacobian are an error
+    // or finite numbers, and without constraints (whose Baumgarte terms the run below leaves out) q'' is what GiNaC's
+    // values of M and f give.
+    {
+        std::optional<eomgen::interpreter::InterpretedTable> interpreted;
+        try {
+            interpreted.emplace(eomgen::interpreter::interpret(model, eq));
+        } catch (const std::exception& e) {
+            finding("the interpreter cannot record a model whose header was emitted", e.what());
+        }
+        const eomgen::ModelTable& table = interpreted->table();
+        std::vector<std::max_align_t> block(table.params_size / sizeof(std::max_align_t) + 1);
+        table.init_params(block.data());
+        Eigen::VectorXd x(2 * n), xdot(2 * n);
+        x << q, qd;
+        if (table.rhs(0, x.data(), block.data(), xdot.data()) == eomgen::kTableOk) {
+            if (!xdot.allFinite()) finding("the interpreter's right-hand side is not finite and says nothing", "");
+            const auto qdd = eq.constraints.empty() ? num.acceleration(0, q, qd) : std::nullopt;
+            if (qdd && (xdot.tail(n) - *qdd).norm() > 1e-6 * (1 + qdd->norm())) {
+                std::ostringstream out;
+                out << "interpreted q'' = " << xdot.tail(n).transpose() << ", from GiNaC's M and f " << qdd->transpose();
+                finding("the interpreter's q'' is not GiNaC's at the initial state", out.str());
+            }
+            Eigen::MatrixXd J(2 * n, 2 * n);
+            if (table.jacobian(0, x.data(), block.data(), J.data()) == eomgen::kTableOk && !J.allFinite())
+                finding("the interpreter's Jacobian is not finite and says nothing", "");
         }
     }
 
