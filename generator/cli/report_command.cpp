@@ -349,6 +349,8 @@ ReportCommand::ReportCommand(CLI::App& app) {
     report_->remove_option(report_->get_option("--csv"));  // the report writes its own, beside itself
     report_->add_flag("--no-simulation", no_simulation_, "Leave the simulation out (no compiler needed)");
     report_->add_flag("--no-cache", no_cache_, "Compile afresh and keep nothing in the cache");
+    report_->add_flag("--interpret", interpret_,
+                      "Simulate on eomgen's interpreter instead of compiling the model (as eomgen run --interpret)");
     report_->add_flag("--quiet", quiet_, "No progress messages on stderr");
     report_->add_flag("--progress", progress_, "Progress messages on stderr even when it is not a terminal");
 }
@@ -407,23 +409,30 @@ int ReportCommand::run() {
     };
 
     Simulation sim;
+    std::unique_ptr<interpreter::InterpretedTable> interpreted;  // with --interpret: what TableModel is bound to
     if (!no_simulation_) {
-        try {
-            CompileRequest request{text, model.name,
-                                   [&] {
-                                       return header_to_compile(model, eq, fs::path(model_path_).filename().string(),
-                                                                options_.method == "radau5");
-                                   },
-                                   !no_cache_, progress};
-            request.jacobian = options_.method == "radau5";
-            const CompiledModel compiled = compile_model(request);
-            eomgen::TableModel::bind(*compiled.table);
-        } catch (const CompileError& e) {
-            std::cerr << "eomgen report: " << e.what() << "\n  command: " << e.command << "\n  log: " << e.log << "\n";
-            return kExitCompiler;
-        } catch (const std::runtime_error& e) {  // the cache or a temporary directory
-            std::cerr << "eomgen report: " << e.what() << "\n";
-            return 3;
+        if (interpret_) {
+            interpreted = std::make_unique<interpreter::InterpretedTable>(interpreter::interpret(model, eq));
+            eomgen::TableModel::bind(interpreted->table());
+        } else {
+            try {
+                CompileRequest request{text, model.name,
+                                       [&] {
+                                           return header_to_compile(model, eq, fs::path(model_path_).filename().string(),
+                                                                    options_.method == "radau5");
+                                       },
+                                       !no_cache_, progress};
+                request.jacobian = options_.method == "radau5";
+                const CompiledModel compiled = compile_model(request);
+                eomgen::TableModel::bind(*compiled.table);
+            } catch (const CompileError& e) {
+                std::cerr << "eomgen report: " << e.what() << "\n  command: " << e.command << "\n  log: " << e.log
+                          << "\n";
+                return kExitCompiler;
+            } catch (const std::runtime_error& e) {  // the cache or a temporary directory
+                std::cerr << "eomgen report: " << e.what() << "\n";
+                return 3;
+            }
         }
         if (!make_directory()) return 3;
         eomgen::sim::Options o = options_;

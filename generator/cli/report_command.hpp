@@ -16,7 +16,7 @@ namespace eomgen::cli {
  * Registers `report` on the `eomgen` command line:
  *
  *     eomgen report MODEL.toml [-o DIR] [--derivation TEXT.md ...] [--format markdown|latex]
- *                   [eomgen-sim's options but --csv] [--no-simulation] [--no-cache] [--quiet | --progress]
+ *                   [eomgen-sim's options but --csv] [--no-simulation] [--no-cache | --interpret] [--quiet | --progress]
  *
  * Writes DIR/<name>.md (or .tex: a complete document for pdflatex) with the model (coordinates, parameters
  * and units), T and V, the equations (latex_equations.hpp: the ones `show --latex` prints), conserved
@@ -38,7 +38,7 @@ class ReportCommand {
     std::string model_path_, out_dir_, format_ = "markdown";
     std::vector<std::string> derivations_;
     eomgen::sim::Options options_;
-    bool no_simulation_ = false, no_cache_ = false, quiet_ = false, progress_ = false;
+    bool no_simulation_ = false, no_cache_ = false, quiet_ = false, progress_ = false, interpret_ = false;
 };
 
 }  // namespace eomgen::cli
