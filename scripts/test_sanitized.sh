@@ -4,8 +4,9 @@
 # own allocations are suppressed: tests/fuzz/lsan.supp.
 #   scripts/test_sanitized.sh           the whole suite, in build-sanitize/ (figures: docs/reliability.md)
 #   scripts/test_sanitized.sh --quick   what reads text and does symbolic work: the generator's, the
-#                                       checker's and the escaping's tests, the CLI cases of eomgen, and the
-#                                       bounded fuzz runs, in the same build directory. CI runs this one.
+#                                       checker's, the interpreter's and the escaping's tests, the CLI cases
+#                                       of eomgen, and the bounded fuzz runs, in the same build directory. CI
+#                                       runs this one.
 # Both variants use one configuration, so the whole suite after --quick builds only what --quick did not.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,10 +27,10 @@ EOMGEN_BUILD_DIR="$build" bash scripts/setup.sh --no-build -DCMAKE_BUILD_TYPE=De
   -DEOMGEN_SANITIZE=address,undefined -DEOMGEN_BUILD_BENCH=OFF
 if ((quick)); then
   targets=(eomgen test_model test_escape test_atomic_file test_checker test_mechanics_codegen test_constraints
-           fuzz_text_fields fuzz_expression fuzz_model_file fuzz_latex fuzz_check fuzz_sim_values fuzz_structure)
+           test_interpreter fuzz_text_fields fuzz_expression fuzz_model_file fuzz_latex fuzz_check fuzz_sim_values fuzz_structure)
   cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
   ctest --test-dir "$build" --output-on-failure -j "$(nproc)" \
-    -R '^(test_model|test_escape|test_atomic_file|test_checker|test_mechanics_codegen|test_constraints):|^fuzz:.*_bounded$|^cli:(bad_|check_|modes_|mpi_|missing_file|unknown_command|version)'
+    -R '^(test_model|test_escape|test_atomic_file|test_checker|test_mechanics_codegen|test_constraints|test_interpreter):|^fuzz:.*_bounded$|^cli:(bad_|check_|modes_|mpi_|missing_file|unknown_command|version)'
 else
   cmake --build "$build" -j "$(nproc)"
   ctest --test-dir "$build" --output-on-failure -j "$(nproc)"
