@@ -250,6 +250,12 @@ class Model:
         return self._m.jacobian(np.asarray(t, dtype=float), np.asarray(x, dtype=float), _si_values(set, "set"),
                                 bool(cache), bool(interpret))
 
+    def linearize(self, t, x, set=None, cache=True, interpret=False):
+        """(A, B) of the linearization d(dx)/dt = A dx + B dp about the state x at t (x an (N, 2n) array: one pair per
+        row), as a generated header's linearization() gives them: A = dx'/dx, B = dx'/dp, what jacobian() returns.
+        About an equilibrium, with M, K, C, G and the normal modes: modes()."""
+        return self.jacobian(t, x, set=set, cache=cache, interpret=interpret)
+
     def modes(self, set=None, at=None, momentum=None, inputs=None):
         """What `eomgen modes` finds: the equilibria (exact where the equations can be solved, else from the guesses
         `at`, a dict or a list of dicts of coordinates, the initial state and a scan), the linearization about each
