@@ -1,6 +1,7 @@
 /** @file checker.cpp  Equation by equation: the names and labels set up, the text's roles read (discourse.hpp),
  * its definitions and parts collected, every chain's links judged (compare_link.cpp) and the report put together. */
 #include "checker/checker_internals.hpp"
+#include "checker/text_macros.hpp"
 
 namespace eomgen::checker {
 
@@ -589,6 +590,7 @@ CheckReport Checker::run() {
 
 CheckReport check_derivation(const Model& model, const Equations& eq, const Derivation& derivation,
                              const CheckOptions& options) {
+    const latex::TextMacroScope macros(derivation.macros);  // the text's \newcommand's, read as their bodies
     detail::Checker c(model, eq, derivation, options);
     return c.run();
 }

@@ -2,6 +2,7 @@
 #include "checker/derivation.hpp"
 
 #include "checker/latex_normalize.hpp"
+#include "checker/text_macros.hpp"
 #include "checker/latex_parser.hpp"
 
 #include <algorithm>
@@ -532,6 +533,7 @@ Derivation parse_derivation(std::string text, std::string path) {
             if (d.sections[k].begin <= r.offset && r.offset < d.sections[k].end) r.section = int(k);
     }
     normalize_rows(d);  // equation numbers, HTML's &amp;, displays continued over several rows
+    d.macros = read_text_macros(d.text);  // \newcommand and the like: the tokenizer reads their uses as their bodies
     return d;
 }
 

@@ -47,9 +47,22 @@ struct TextProblem {
     std::string message;     ///< e.g. "'$$' is not closed"
 };
 
+/// A macro the text defines for itself (`\newcommand{\pl}{\partial}`, `\def\vb#1{\mathbf{#1}}`,
+/// `\DeclareMathOperator{\sgn}{sgn}`, `\let\eps\varepsilon`): its uses are read as its body (text_macros.hpp).
+struct TextMacro {
+    std::string name;       ///< with its backslash: `\pl`
+    int arguments = 0;      ///< #1 … #9 in the body
+    bool optional_first = false;  ///< `[n][default]`: the first argument is optional, `[...]` where given
+    std::string first_default;    ///< ... and this where not
+    std::string body;
+    std::size_t offset = 0;  ///< of the definition in the file
+};
+
 struct Derivation {
     std::string path;
     std::string text;
+    /// The text's own macros, in the order defined (a later definition of a name replaces an earlier one).
+    std::vector<TextMacro> macros;
     std::vector<std::size_t> line_starts;  ///< byte offset of each line's first character
     std::vector<Section> sections;
     std::vector<MathRow> rows;

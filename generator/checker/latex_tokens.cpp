@@ -5,6 +5,7 @@
 #include "checker/latex_tokens.hpp"
 
 #include "checker/latex_normalize.hpp"
+#include "checker/text_macros.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -471,7 +472,9 @@ std::vector<Token> tokenize_text(std::string_view s) {
 
 }  // namespace
 
-std::vector<Token> tokenize(std::string_view s) { return expand_macros(tokenize_text(s)); }
+std::vector<Token> tokenize(std::string_view s) { return expand_macros(expand_text_macros(tokenize_text(s))); }
+
+std::vector<Token> tokens_as_written(std::string_view s) { return tokenize_text(s); }
 
 
 bool takes_raw_argument(const std::string& w) {

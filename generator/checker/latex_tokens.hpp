@@ -31,8 +31,12 @@ inline bool is_one_of(const std::string& s, std::initializer_list<const char*> l
     return false;
 }
 
-/// The tokens of `s`, with the derivative macros (`\pdv`, `\diff`, …) expanded to the fractions they typeset.
+/// The tokens of `s`, with the text's own macros (text_macros.hpp: while a TextMacroScope is active) and the derivative
+/// macros (`\pdv`, `\diff`, …) expanded to what they typeset.
 std::vector<Token> tokenize(std::string_view s);
+
+/// The tokens of `s` as written, no macro expanded.
+std::vector<Token> tokens_as_written(std::string_view s);
 
 /// Commands whose argument is text (`\text`, `\mathrm`, `\operatorname`, …), captured verbatim as a token's raw.
 bool takes_raw_argument(const std::string& w);

@@ -414,3 +414,35 @@ $$ T = \frac{1}{2} m R^2 \left|\dot{\vec{\theta}} + \vec{\omega}\times\vec{\thet
     CHECK(magnitude[0]->verdict == Verdict::NotComparable);
     CHECK(magnitude[0]->reason.find("missing \\right") == std::string::npos);
 }
+
+TEST_CASE("readings: the text's own macros are read as their bodies, with their arguments", "[checker][readings][macros]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(\newcommand{\pl}{\partial}
+\newcommand*{\dd}[1][t]{\frac{d}{d #1}}
+\def\half#1{\frac{#1}{2}}
+\let\ph=\phi
+\DeclareMathOperator{\Sin}{sin}
+\newcommand{\loop}{\loop x}
+
+# Pendulum
+
+$$ L = \half{m l^2 \dot\ph^2} + m g l \cos\ph $$
+
+$$ \dd\left(\frac{\pl L}{\pl \dot\ph}\right) - \frac{\pl L}{\pl \ph} = 0 \Rightarrow m l^2 \ddot\ph + m g l \Sin\ph = 0 $$
+
+A slip, written with the same macros:
+
+$$ \dd[t]\left(\frac{\pl L}{\pl \dot\ph}\right) = -m g \Sin\ph $$
+
+$$ \loop = 0 $$
+)");
+    INFO(described(r));
+    const auto lagrangian = on_line(r, 10), equation = on_line(r, 12), slip = on_line(r, 16), endless = on_line(r, 18);
+    REQUIRE(!lagrangian.empty());
+    CHECK(lagrangian[0]->verdict == Verdict::Agrees);
+    REQUIRE(!equation.empty());
+    for (const EquationCheck* e : equation) CHECK(e->verdict == Verdict::Agrees);
+    REQUIRE(!slip.empty());
+    CHECK(slip[0]->verdict == Verdict::Disagrees);  // -m g l sin φ: the l is missing
+    // A macro whose body uses itself stops expanding (bounded): the row is reported, not lost, and nothing hangs.
+    CHECK(!endless.empty());
+}
