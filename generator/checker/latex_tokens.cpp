@@ -64,17 +64,6 @@ std::size_t skip_braces(std::string_view s, std::size_t i) {
 
 std::vector<Token> tokenize_text(std::string_view s);
 
-// The end (one past the closing brace) of the brace group that opens at token k, or k when none opens there.
-std::size_t group_end(const std::vector<Token>& t, std::size_t k) {
-    if (k >= t.size() || t[k].kind != Tok::Char || t[k].text != "{") return k;
-    int depth = 0;
-    for (std::size_t q = k; q < t.size(); ++q) {
-        if (t[q].kind != Tok::Char) continue;
-        if (t[q].text == "{") ++depth;
-        if (t[q].text == "}" && --depth == 0) return q + 1;
-    }
-    return k;
-}
 
 /**
  * The derivative macros of the physics package and of course notes, as the fraction they typeset, in tokens at
@@ -475,6 +464,17 @@ std::vector<Token> tokenize_text(std::string_view s) {
 std::vector<Token> tokenize(std::string_view s) { return expand_macros(expand_text_macros(tokenize_text(s))); }
 
 std::vector<Token> tokens_as_written(std::string_view s) { return tokenize_text(s); }
+
+std::size_t group_end(const std::vector<Token>& t, std::size_t k) {
+    if (k >= t.size() || t[k].kind != Tok::Char || t[k].text != "{") return k;
+    int depth = 0;
+    for (std::size_t q = k; q < t.size(); ++q) {
+        if (t[q].kind != Tok::Char) continue;
+        if (t[q].text == "{") ++depth;
+        if (t[q].text == "}" && --depth == 0) return q + 1;
+    }
+    return k;
+}
 
 
 bool takes_raw_argument(const std::string& w) {

@@ -38,6 +38,10 @@ std::vector<Token> tokenize(std::string_view s);
 /// The tokens of `s` as written, no macro expanded.
 std::vector<Token> tokens_as_written(std::string_view s);
 
+/// The end (one past the closing brace) of the brace group that opens at token k, or k when none opens there (or it
+/// does not close).
+std::size_t group_end(const std::vector<Token>& t, std::size_t k);
+
 /// Commands whose argument is text (`\text`, `\mathrm`, `\operatorname`, …), captured verbatim as a token's raw.
 bool takes_raw_argument(const std::string& w);
 

@@ -162,15 +162,7 @@ const TextMacro* find(const std::string& name) {
 std::size_t argument_end(const std::vector<Token>& t, std::size_t k) {
     while (k < t.size() && t[k].space) ++k;
     if (k >= t.size()) return k;
-    if (t[k].kind == Tok::Char && t[k].text == "{") {
-        int depth = 0;
-        for (std::size_t q = k; q < t.size(); ++q) {
-            if (t[q].kind != Tok::Char) continue;
-            if (t[q].text == "{") ++depth;
-            if (t[q].text == "}" && --depth == 0) return q + 1;
-        }
-        return k;
-    }
+    if (t[k].kind == Tok::Char && t[k].text == "{") return group_end(t, k);
     if (t[k].kind == Tok::Char && (t[k].text == "}" || t[k].text == "#")) return k;
     return k + 1;
 }
