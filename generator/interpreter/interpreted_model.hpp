@@ -32,7 +32,7 @@ struct InterpretedModel {
         param_declared_units, coordinate_declared_units;
 
     /// Inputs of every tape: the symbol table's order (each parameter, then q, q̇, q̈ of each coordinate, t, π).
-    int n_inputs() const { return static_cast<int>(param_names.size()) + 3 * nq + 2; }
+    int n_inputs() const { return static_cast<int>(param_names.size()) + 3 * nq + 2; }  ///< checked by InterpretedTable
 
     Tape dynamics;             ///< M (nq × nq, row by row), then f
     Tape energy;               ///< h

@@ -418,6 +418,14 @@ InterpretedTable::InterpretedTable(InterpretedModel model) : model_(std::make_un
     if (slot_ < 0)
         throw std::runtime_error("more than " + std::to_string(kSlots) + " interpreted models at once in one process");
     const InterpretedModel& m = *model_;
+    // set_inputs() writes the symbol table's layout: a tape recorded over another would read the wrong registers.
+    for (const Tape* tape : {&m.dynamics, &m.energy, &m.conserved, &m.outputs, &m.momenta, &m.lagrangian_gradient,
+                             &m.power, &m.switching, &m.constrained})
+        if (tape->n_inputs != 0 && tape->n_inputs != m.n_inputs()) {  // 0: not recorded (no power, no constraints)
+            g_slots[static_cast<std::size_t>(slot_)].store(nullptr);
+            throw std::logic_error("an interpreted model's tape has " + std::to_string(tape->n_inputs) +
+                                   " inputs where its model has " + std::to_string(m.n_inputs()));
+        }
     auto names = [this](const std::vector<std::string>& v) {
         std::vector<const char*> c;
         for (const std::string& s : v) c.push_back(s.c_str());
