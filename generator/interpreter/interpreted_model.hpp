@@ -13,6 +13,7 @@
 #include "mechanics/lagrangian.hpp"
 #include "model/model.hpp"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,8 @@ struct InterpretedModel {
     Tape switching;            ///< the switching surfaces' functions
     /// With constraints: M (row by row), f, A (row by row), γ, the position residuals g, the velocity ones c.
     Tape constrained;
+    /// Set by InterpretedTable, distinct for every table made in the process (what a per-thread result is kept for).
+    std::uint64_t identity = 0;
 };
 
 /// Records the model's tapes from its derived equations. Throws std::runtime_error for an expression generated code

@@ -144,10 +144,38 @@ Derivatives& derivatives() {
     return d;
 }
 
+void differentiate_accelerations(double t, const double* x, const void* p, Eigen::MatrixXd& dqdd, Eigen::MatrixXd& dlambda);
+
 /// ∂q̈/∂z (n × K) and, with constraints, ∂λ/∂z (n_c × K), z = (q, q̇, p, t), by differentiating the solve of
 /// rhs(): M dq̈ = df − dM q̈ (+ dAᵀ λ + Aᵀ dλ), A dq̈ = dγ̃ − dA q̈ with γ̃ = γ − 2α c − β² g, each column by the same
-/// factorization (solve_constrained: one solve a column).
+/// factorization (solve_constrained: one solve a column). The last result is kept per thread: the sensitivities ask
+/// for ∂ẋ/∂x and ∂ẋ/∂p (and ∂λ) at the same point one after the other, and get them from one pass.
 void acceleration_derivatives(double t, const double* x, const void* p, Eigen::MatrixXd& dqdd, Eigen::MatrixXd& dlambda) {
+    struct Last {
+        std::uint64_t model = 0;  ///< InterpretedModel::identity (an address could be a later model's)
+        double t = 0;
+        std::vector<double> x, params;
+        Eigen::MatrixXd dqdd, dlambda;
+    };
+    thread_local Last last;
+    const InterpretedModel& m = model_of(p);
+    const std::size_t nx = static_cast<std::size_t>(2 * m.nq), np = m.param_names.size();
+    const bool same = last.model == m.identity && last.t == t && last.x.size() == nx &&
+                      std::equal(x, x + nx, last.x.begin()) && last.params.size() == np &&
+                      std::equal(values_of(p), values_of(p) + np, last.params.begin());
+    if (!same) {
+        last.model = 0;  // until the new result is complete (a throw leaves nothing kept)
+        differentiate_accelerations(t, x, p, last.dqdd, last.dlambda);
+        last.model = m.identity;
+        last.t = t;
+        last.x.assign(x, x + nx);
+        last.params.assign(values_of(p), values_of(p) + np);
+    }
+    dqdd = last.dqdd;
+    dlambda = last.dlambda;
+}
+
+void differentiate_accelerations(double t, const double* x, const void* p, Eigen::MatrixXd& dqdd, Eigen::MatrixXd& dlambda) {
     const InterpretedModel& m = model_of(p);
     const int n = m.nq, nc = static_cast<int>(m.constraint_names.size());
     Derivatives& d = derivatives();
@@ -407,6 +435,8 @@ constexpr auto kSlotFunctions = slot_functions(std::make_index_sequence<Interpre
 }  // namespace
 
 InterpretedTable::InterpretedTable(InterpretedModel model) : model_(std::make_unique<InterpretedModel>(std::move(model))) {
+    static std::atomic<std::uint64_t> tables{0};
+    model_->identity = ++tables;
     {
         std::lock_guard<std::mutex> lock(g_slots_lock);
         for (int k = 0; k < kSlots && slot_ < 0; ++k)
