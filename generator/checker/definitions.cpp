@@ -58,7 +58,8 @@ GiNaC::ex TextDefinitions::abbreviate(const GiNaC::ex& e, std::size_t at) const 
             subs[symbol] = !holding_ ? d->value : (d->conserved ? GiNaC::ex(d->held) : d->value_holding);
             uses_.push_back({d->head, d->value, d->line});
             const std::string note = "using $" + d->name + " = " + (d->source.empty() ? d->name : d->source) +
-                                     "$ (line " + std::to_string(d->line) + ")";
+                                     "$ (line " + std::to_string(d->line) +
+                                     (d->corrected ? ", corrected: the text's does not follow" : "") + ")";
             if (std::find(abbreviations_.begin(), abbreviations_.end(), note) == abbreviations_.end())
                 abbreviations_.push_back(note);
         }
@@ -77,6 +78,13 @@ const GiNaC::ex* TextDefinitions::value_at(const GiNaC::ex& symbol, std::size_t 
     return &d->value;
 }
 
+bool TextDefinitions::corrected_at(const GiNaC::ex& symbol, std::size_t at) const {
+    const auto it = defs_.find(symbol);
+    if (it == defs_.end()) return false;
+    const Definition* d = in_force(it->second, at, true);
+    return d && d->corrected;
+}
+
 std::string TextDefinitions::defined_at(std::size_t head) const {
     for (const auto& [offset, shown] : heads_)
         if (offset == head) return shown;
@@ -92,6 +100,16 @@ void TextDefinitions::override_with(const GiNaC::ex& symbol, const GiNaC::ex& va
     override_.until = std::string::npos;
     override_.conserved = false;
     override_active_ = true;
+}
+
+void TextDefinitions::correct(std::size_t head, const GiNaC::ex& value, const std::string& source) {
+    for (auto& [symbol, list] : defs_)
+        for (Definition& d : list)
+            if (d.head == head && !d.conserved) {
+                d.value = d.value_holding = value;
+                d.source = source;
+                d.corrected = true;
+            }
 }
 
 void TextDefinitions::note_use(const GiNaC::ex& symbol, std::size_t at) const {
@@ -126,7 +144,8 @@ GiNaC::ex TextDefinitions::expand_impl(const GiNaC::ex& operand, std::size_t at,
             if (!best) continue;
             uses_.push_back({best->head, best->value, best->line});
             const std::string note =
-                "uses $" + best->name + "$ as the text defines it at line " + std::to_string(best->line);
+                "uses $" + best->name + "$ as the text defines it at line " + std::to_string(best->line) +
+                (best->corrected ? ", corrected (the text's does not follow)" : "");
             if (held && best->conserved) {
                 subs[symbol] = best->held;
             } else {
@@ -225,7 +244,10 @@ GiNaC::ex dotted_definitions(const TextDefinitions& definitions, const GiNaC::ex
         subs[x] = value;
         definitions.note_use(named->second.symbol, at);
         notes.push_back("$" + f->name + "$ is the time derivative of $" + inner + "$ as the text defines it at line " +
-                        std::to_string(line));
+                        std::to_string(line) +
+                        (definitions.corrected_at(named->second.symbol, at)
+                             ? ", corrected (the text's does not follow)"
+                             : ""));
     }
     return subs.empty() ? e : e.subs(subs);
 }

@@ -94,6 +94,8 @@ class TextDefinitions {
     /// The definition of `symbol` in force at file offset `at` in its section, with its line; nullptr when there
     /// is none (for `\dot{x}` after `x = l \sin\theta`: the derivative of the definition).
     const GiNaC::ex* value_at(const GiNaC::ex& symbol, std::size_t at, int* line = nullptr) const;
+    /// Whether the definition value_at() gives is a correction of the text's (correct()).
+    bool corrected_at(const GiNaC::ex& symbol, std::size_t at) const;
 
     bool empty() const { return defs_.empty(); }
 
@@ -122,6 +124,11 @@ class TextDefinitions {
     void override_with(const GiNaC::ex& symbol, const GiNaC::ex& value);
     void reset_override() { override_active_ = false; }
 
+    /// The definition made at file offset `head` is wrong and `value` is what it must be (the text's own relation
+    /// solved for the name, say): from its place on `value` is put in, so that one slip does not make every line
+    /// after it disagree, and a later, independent slip is still found. The notes say "corrected".
+    void correct(std::size_t head, const GiNaC::ex& value, const std::string& source);
+
   private:
     struct Definition {
         std::string name;
@@ -135,6 +142,7 @@ class TextDefinitions {
         bool conserved = false;   ///< a constant of the motion: held fixed in a derivative by a coordinate
         GiNaC::ex value_holding;  ///< `value` with the constants of the motion in it held
         GiNaC::symbol held;       ///< stands for it while it is held
+        bool corrected = false;   ///< `value` is not the text's but its correction (correct())
     };
     /// The definition of `symbol` in force at `at` (within its section when `in_section`), or nullptr.
     const Definition* in_force(const std::vector<Definition>& list, std::size_t at, bool in_section) const;

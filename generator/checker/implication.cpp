@@ -99,6 +99,9 @@ bool Checker::check_implied_definition(const FullChain& c, std::size_t i, std::s
     r.difference = latex((value - solved).expand());
     r.corrected = c.sides[i].side->source + " = " + latex(solved);
     solved_corrections_.insert({r.where.line, r.where.column});
+    // The lines after it are read with the name as the relation makes it: a later slip of their own is found, and
+    // one that only carries this one forward is not counted twice.
+    definitions_.correct(c.sides[i].base + c.sides[i].side->begin, solved, latex(solved));
     return true;
 }
 

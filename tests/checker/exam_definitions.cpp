@@ -339,6 +339,37 @@ TEST_CASE("definitions: one derived with an implication sign is the relation bef
     CHECK(divided.verdict == Verdict::NotJudged);
 }
 
+TEST_CASE("definitions: after a definition that does not follow, the lines are read with its correction",
+          "[checker][definitions][implication]") {
+    // One slip does not make every later line that uses the name disagree, and a later line that is right about
+    // the system is not flagged for carrying the text's slip; one that carries it forward is.
+    const char* const model = "tests/checker/models/two_carts.toml";
+    const std::string head = "The midpoint: $x_1 + x_2 = 2 s$ $\\Rightarrow$ $s = \\frac{1}{2}(x_1 - x_2)$.\n\n";
+    const auto verdict_on_line = [&](const std::string& text, int line) -> const EquationCheck {
+        const auto r = eomgen::test::check_text(model, text);
+        for (const EquationCheck& e : r.equations) {
+            INFO(describe(e));
+            if (e.where.line == line) return e;
+        }
+        FAIL("no verdict on line " << line);
+        return {};
+    };
+    const EquationCheck right = verdict_on_line(head + "$$\\dot s = \\frac{1}{2}(\\dot x_1 + \\dot x_2)$$\n", 3);
+    INFO(describe(right));
+    CHECK(right.verdict == Verdict::Agrees);
+    CHECK(eomgen::test::has_note(right, "corrected (the text's does not follow)"));
+    const EquationCheck carried = verdict_on_line(head + "$$\\dot s = \\frac{1}{2}(\\dot x_1 - \\dot x_2)$$\n", 3);
+    INFO(describe(carried));
+    CHECK(carried.verdict != Verdict::Agrees);
+    // A definition that follows is used as the text gives it, with no such note.
+    const EquationCheck plain = verdict_on_line(
+        "The midpoint: $x_1 + x_2 = 2 s$ $\\Rightarrow$ $s = \\frac{1}{2}(x_1 + x_2)$.\n\n"
+        "$$\\dot s = \\frac{1}{2}(\\dot x_1 + \\dot x_2)$$\n",
+        3);
+    CHECK(plain.verdict == Verdict::Agrees);
+    CHECK(!eomgen::test::has_note(plain, "corrected"));
+}
+
 TEST_CASE("definitions: a wrong value given only after its uses is blamed at its line when the uses agree on another",
           "[checker][definitions]") {
     // The yo-yo of the corpus: I used in L and in the equation of motion, then "defined by I = m(kR)^2".
