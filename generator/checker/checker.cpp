@@ -254,11 +254,10 @@ void Checker::check_chain(const FullChain& c, std::vector<EquationCheck>& out) {
         Prepared p = prepare(c.sides[k]);
         comparable[k] = p.comparable() || is_part(c.sides[k].side->value);
     }
+    const std::size_t first = out.size();
     for (std::size_t k = 0; k + 1 < n; ++k) out.push_back(check_link_noting_uses(c, k, k + 1, false));
     // A name written only here where the model has a parameter of the same letter (misspelled_names.cpp).
-    for (std::size_t k = 0; k < n; ++k)
-        if (!comparable[k])
-            if (std::optional<EquationCheck> slip = misspelled_name(c, k, comparable)) out.push_back(std::move(*slip));
+    add_misspelled_names(c, comparable, first, out);
     // Across sides that cannot be compared (an integral over a region, an unknown function): compare the
     // comparable sides on either side of them, so that a claim is not lost behind a step the checker cannot
     // read.

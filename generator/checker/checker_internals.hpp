@@ -35,6 +35,8 @@
 #include "codegen/math_printer.hpp"
 #include "mechanics/pole_free_subs.hpp"
 #include "mechanics/results.hpp"
+
+#include <tuple>
 #include "mechanics/trig_rewrite.hpp"
 
 #include <Eigen/Dense>
@@ -275,6 +277,10 @@ class Checker : public Comparisons {
     /// check_position gives a matched row (a coordinate, or with `vector` a position vector) its verdict, an unmatched
     /// one its note.
     void collect_positions(const std::vector<FullChain>& chains);
+    void collect_positions_at_points(
+        const std::map<std::tuple<int, std::string, std::size_t>, std::vector<PositionRow>>& at_points,
+        const std::map<std::pair<int, std::string>, const ModelPoint*>& matched_points,
+        const std::vector<ModelPoint>& points);
     bool check_position(const FullChain& c, std::size_t j, bool vector, EquationCheck& r);
     /// A vector in the axes' unit vectors (`(x + l\sin\theta)\hat{x} - l\cos\theta\,\hat{y}`): its (axis, component)s.
     std::optional<std::vector<std::pair<int, GiNaC::ex>>> unit_components(const Prepared& v) const;
@@ -340,6 +346,9 @@ class Checker : public Comparisons {
     /// of its chain once exactly one like-named parameter the text uses elsewhere stands in its place (`m` for
     /// M_2): that link, disagreeing, with the parameter written in (misspelled_names.cpp).
     std::optional<EquationCheck> misspelled_name(const FullChain& c, std::size_t k, const std::vector<bool>& comparable);
+    /// The slips misspelled_name() finds in chain `c`, put into `out` (whose entries from `first` are c's links).
+    void add_misspelled_names(const FullChain& c, const std::vector<bool>& comparable, std::size_t first,
+                              std::vector<EquationCheck>& out);
     /// Every chain of the text while run() checks them.
     const std::vector<FullChain>* all_chains_ = nullptr;
 

@@ -493,8 +493,13 @@ EquationCheck Checker::safe_check_link(const FullChain& c, std::size_t i, std::s
                 if (!a.is_zero() && (c.sides[i].side->value.has(a) || c.sides[j].side->value.has(a))) return true;
             return false;
         };
+        // (A point's coordinate at a point the text considers, which the model's point contradicts, is a claim too.)
+        const auto position_there = [&] {
+            const auto p = positions_.find(c.relation_offsets[j - 1]);
+            return p != positions_.end() && p->second.disagrees;
+        };
         if (r.verdict == Verdict::Disagrees && !verifying_ && c.sides[i].side->ok && c.sides[j].side->ok &&
-            !label_claim(i, j) && !label_claim(j, i) && !amplitudes() &&
+            !label_claim(i, j) && !label_claim(j, i) && !amplitudes() && !position_there() &&
             sets_a_value(c.sides[i].side->value, c.sides[j].side->value, model_) &&
             !defined_quantity(c.sides[i]) && !defined_quantity(c.sides[j]) && !after_implication(c)) {
             // "started with θ̇ = 0", "with m₁ = m₂ = m": values set for what follows, not an equation of motion.

@@ -212,6 +212,129 @@ Chain make_chain(std::string_view text, const std::vector<Token>& t, const std::
     return c;
 }
 
+// ------------------------------------------------------------------------------------ tuples
+
+/// The entries of a list `a, b, c` or `(a, b, c)` (`\left( … \right)` too) in tokens [b, e): their token ranges,
+/// split at the commas of the list's own level; empty when [b, e) is not a list of two or more.
+std::vector<std::pair<std::size_t, std::size_t>> list_entries(const std::vector<Token>& t, const std::vector<int>& d,
+                                                              std::size_t b, std::size_t e) {
+    const auto is_char = [&](std::size_t i, const char* c) { return t[i].kind == Tok::Char && t[i].text == c; };
+    const auto is_word = [&](std::size_t i, const char* w) { return t[i].kind == Tok::Word && t[i].text == w; };
+    while (b < e && t[b].space) ++b;
+    while (e > b && (t[e - 1].space || is_char(e - 1, ".") || is_char(e - 1, ";") || is_char(e - 1, ","))) --e;
+    if (b >= e) return {};
+    int level = d[b];
+    // One group around the whole: `(x, y, z)`, `\left(x, y\right)`.
+    std::size_t ib = b, ie = e;
+    if (is_char(b, "(") && is_char(e - 1, ")") && e - b >= 2) {
+        ib = b + 1;
+        ie = e - 1;
+    } else if (e - b >= 4 && is_word(b, "\\left") && is_char(b + 1, "(") && is_word(e - 2, "\\right") &&
+               is_char(e - 1, ")")) {
+        ib = b + 2;
+        ie = e - 2;
+    }
+    if (ib != b) {
+        for (std::size_t i = ib; i < ie; ++i)
+            if (d[i] <= level) return {};  // `(a)(b)`: two groups, not one around the whole
+        ++level;
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> out;
+    std::size_t from = ib;
+    for (std::size_t i = ib; i < ie; ++i)
+        if (d[i] == level && is_char(i, ",")) {
+            out.push_back({from, i});
+            from = i + 1;
+        }
+    out.push_back({from, ie});
+    if (out.size() < 2 || out.size() > 4) return {};
+    for (const auto& [x, y] : out)
+        if (std::all_of(t.begin() + long(x), t.begin() + long(y), [](const Token& k) { return k.space; })) return {};
+    return out;
+}
+
+/**
+ * `x, y, z = 0, 0, 0` and `(x, y) = (a, b)`: one `=` between two lists of as many entries, each entry on the left a
+ * name: one chain a name, `x = 0`, `y = 0`, `z = 0`, each with its relation placed just after its name (their places
+ * differ, as the report and the comparisons need). `\mathbf{r} = (x, y, z)`: a vector set to a list of two or three
+ * entries is its components along the axes, `x\hat{x} + y\hat{y} + z\hat{z}`. Empty when the piece is neither.
+ */
+std::vector<Chain> tuple_chains(std::string_view text, const std::vector<Token>& t, const std::vector<int>& d,
+                                std::size_t b, std::size_t e, LatexContext& ctx) {
+    const std::vector<RelationAt> rel = relations_in(t, d, b, e);
+    if (rel.size() != 1 || rel[0].kind != Relation::Equal) return {};
+    const std::size_t sign = rel[0].index, after = rel[0].index + rel[0].count;
+    const auto left = list_entries(t, d, b, sign);
+    const auto right = list_entries(t, d, after, e);
+    if (right.empty()) return {};
+    // Lists in parentheses are also vectors, which linear_algebra.hpp reads (`(I_1, I_2, I_3) = (…)`, a stated
+    // `\mathbf{u} = (1, 0, 0)`): split only where they name a point's coordinates, x, y, z (`x_{2}`), or its
+    // position vector, r (`\vec{r}_{2}`); bare lists, which are no vectors, always.
+    const auto enclosed = [&](std::size_t from, std::size_t to) {
+        while (from < to && t[from].space) ++from;
+        return from < to && ((t[from].kind == Tok::Char && t[from].text == "(") ||
+                             (t[from].kind == Tok::Word && t[from].text == "\\left"));
+    };
+    const auto coordinate = [](const std::string& n) {
+        return !n.empty() && (n[0] == 'x' || n[0] == 'y' || n[0] == 'z') && (n.size() == 1 || n.compare(1, 2, "_{") == 0);
+    };
+    const auto position_vector = [](const std::string& n) {
+        for (const char* deco : {"\\mathbf{r", "\\vec{r", "\\boldsymbol{r", "\\bm{r", "\\textbf{r"})
+            if (n.rfind(deco, 0) == 0) {
+                const std::size_t k = std::string(deco).size();
+                return n.size() > k && (n[k] == '}' || n.compare(k, 2, "_{") == 0);
+            }
+        return false;
+    };
+    const bool parentheses = enclosed(b, sign) || enclosed(after, e);
+    const auto end_of = [&](std::size_t last) { return t[last - 1].offset + t[last - 1].length; };
+    std::vector<Chain> out;
+    if (left.empty()) {
+        Side whole = make_side(text, t, b, sign, ctx);
+        const FreeName* f = whole.ok ? ctx.free_name_of(whole.value) : nullptr;
+        if (!f || f->kind != NameKind::Vector || right.size() > 3 || !position_vector(f->name)) return {};
+        Side comps = make_side(text, t, after, e, ctx);  // for its place and source; its value is the sum below
+        comps.ok = true;
+        comps.error.clear();
+        comps.uses.clear();
+        comps.value = 0;
+        static const char* const units[] = {"\\hat{x}", "\\hat{y}", "\\hat{z}"};
+        for (std::size_t k = 0; k < right.size(); ++k) {
+            const Side entry = make_side(text, t, right[k].first, right[k].second, ctx);
+            if (!entry.ok) return {};
+            comps.value += entry.value * ctx.free_symbol(units[k], NameKind::Vector);
+            comps.uses.insert(comps.uses.end(), entry.uses.begin(), entry.uses.end());
+            comps.rounding += entry.rounding;
+        }
+        Chain c;
+        c.begin = t[b].offset;
+        c.end = comps.end;
+        c.sides = {std::move(whole), std::move(comps)};
+        c.relations = {Relation::Equal};
+        c.relation_offsets = {t[sign].offset};
+        out.push_back(std::move(c));
+        return out;
+    }
+    if (left.size() != right.size()) return {};
+    for (std::size_t k = 0; k < left.size(); ++k) {
+        Side name = make_side(text, t, left[k].first, left[k].second, ctx);
+        if (!name.ok || !GiNaC::is_a<GiNaC::symbol>(name.value)) return {};
+        if (parentheses) {
+            const FreeName* f = ctx.free_name_of(name.value);
+            if (!f || !coordinate(f->name)) return {};
+        }
+        Chain c;
+        c.begin = name.begin;
+        c.relations = {Relation::Equal};
+        c.relation_offsets = {name.end};
+        c.sides.push_back(std::move(name));
+        c.sides.push_back(make_side(text, t, right[k].first, right[k].second, ctx));
+        c.end = std::max(c.sides.back().end, end_of(right[k].second));
+        out.push_back(std::move(c));
+    }
+    return out;
+}
+
 bool soft_breaker(const Token& k) {
     if (k.kind == Tok::Char) return k.text == "," || k.text == ";";
     if (k.kind != Tok::Word) return false;
@@ -273,6 +396,10 @@ std::vector<Chain> parse_math(std::string_view text, LatexContext& context) {
             std::size_t b = p.first, e = p.second;
             while (b < e && t[b].space) ++b;
             if (b >= e) continue;
+            if (std::vector<Chain> parts = tuple_chains(text, t, d, b, e, context); !parts.empty()) {
+                for (Chain& c : parts) out.push_back(std::move(c));
+                continue;
+            }
             out.push_back(make_chain(text, t, d, b, e, context));
         }
     }

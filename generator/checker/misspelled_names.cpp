@@ -54,14 +54,39 @@ std::optional<EquationCheck> Checker::misspelled_name(const FullChain& c, std::s
     if (name.kind != NameKind::Unknown) return std::nullopt;
     const std::string letter = base_letter(name.name);
     if (letter.empty()) return std::nullopt;
-    // Written in this chain only: a name the text uses on other lines is its own notation (or defined there).
+    // Written in this chain only: a name the text uses on other lines is its own notation (or defined there) —
+    // except after a later line that introduces it as a parameter's name (`m_1 = m_2 = m`, the case the text turns
+    // to): the uses from there on are that notation, and say nothing of this line.
     const auto uses_name = [&](const Side& s) {
         return std::any_of(s.uses.begin(), s.uses.end(), [&](const NameUse& u) { return u.name == name.name; });
     };
+    const auto introduces_name = [&](const FullChain& other) {
+        if (std::any_of(other.relations.begin(), other.relations.end(), [](Relation r) { return r != Relation::Equal; }))
+            return false;
+        bool alone = false, parameter = false;
+        for (const PSide& s : other.sides) {
+            if (!s.side->ok) continue;
+            alone = alone || s.side->value.is_equal(name.symbol);
+            parameter = parameter || std::any_of(model_.parameters.begin(), model_.parameters.end(),
+                                                 [&](const Parameter& par) { return s.side->value.is_equal(par.symbol); });
+        }
+        return alone && parameter;
+    };
+    bool after = false, introduced = false;
+    int introduced_line = 0;
     for (const FullChain& other : *all_chains_) {
-        if (&other == &c) continue;
-        for (const PSide& s : other.sides)
-            if (uses_name(*s.side)) return std::nullopt;
+        if (&other == &c) {
+            after = true;
+            continue;
+        }
+        if (introduced || !std::any_of(other.sides.begin(), other.sides.end(),
+                                       [&](const PSide& s) { return uses_name(*s.side); }))
+            continue;
+        if (!after || !introduces_name(other)) return std::nullopt;
+        introduced = true;
+        introduced_line = d_.position(other.relation_offsets.empty() ? other.sides.front().base
+                                                                     : other.relation_offsets.front())
+                              .line;
     }
     // The comparable side it is compared with: the nearest before it (else after it), with only `=` between.
     std::size_t anchor = c.sides.size();
@@ -128,8 +153,10 @@ std::optional<EquationCheck> Checker::misspelled_name(const FullChain& c, std::s
             break;
         }
     const std::string cand = canonical_name(found->latex);
-    r.reason = "$" + name.name + "$" + at + " is not a symbol of the model, the text does not define it and writes it "
-               "only here; with $" + cand + "$, which the text writes elsewhere, in its place the line agrees (a slip "
+    r.reason = "$" + name.name + "$" + at + " is not a symbol of the model, the text does not define it and writes it " +
+               (introduced ? "here before it names a parameter so (line " + std::to_string(introduced_line) + ")"
+                           : std::string("only here")) +
+               "; with $" + cand + "$, which the text writes elsewhere, in its place the line agrees (a slip "
                "for $" + cand + "$?)";
     r.difference.clear();
     r.wrong_terms = {"$" + name.name + "$ where $" + cand + "$ belongs"};
@@ -158,6 +185,28 @@ std::optional<EquationCheck> Checker::misspelled_name(const FullChain& c, std::s
         verify_correction(c, hi, r);
     }
     return r;
+}
+
+void Checker::add_misspelled_names(const FullChain& c, const std::vector<bool>& comparable, std::size_t first,
+                                   std::vector<EquationCheck>& out) {
+    // A slip takes the place of its link's "not comparable" where the side it was compared with is a neighbour; a
+    // link read otherwise already (with a value the text gives the name later, say) keeps that reading.
+    for (std::size_t k = 0; k < c.sides.size(); ++k) {
+        if (comparable[k]) continue;
+        std::optional<EquationCheck> slip = misspelled_name(c, k, comparable);
+        if (!slip) continue;
+        const auto at_slip = [&](const EquationCheck& e) {
+            return e.where.line == slip->where.line && e.where.column == slip->where.column;
+        };
+        if (std::any_of(out.begin() + std::ptrdiff_t(first), out.end(),
+                        [&](const EquationCheck& e) { return at_slip(e) && e.verdict != Verdict::NotComparable; }))
+            continue;
+        const auto it = std::find_if(out.begin() + std::ptrdiff_t(first), out.end(), at_slip);
+        if (it != out.end())
+            *it = std::move(*slip);
+        else
+            out.push_back(std::move(*slip));
+    }
 }
 
 }  // namespace eomgen::checker::detail

@@ -70,30 +70,35 @@ namespace detail {
 
 void Checker::collect_positions(const std::vector<FullChain>& chains) {
     const std::vector<ModelPoint> points = model_points(model_);
-    struct Row {
-        std::size_t at;  ///< the relation's offset
-        std::string name;
-        std::vector<std::pair<int, GiNaC::ex>> components;  ///< (axis, value): one for `x_2 = …`, all for a vector
-    };
+    using Row = PositionRow;
     const auto plain = [&](const Prepared& v) {
         return v.ok && v.unknown.empty() && v.units.empty() && v.constants.empty() && !has_velocity(v.value) &&
                !has_acceleration(v.value);
     };
-    std::map<std::pair<int, std::string>, std::vector<Row>> groups;  // (section, point) → its rows, in text order
+    // (section, point) → its rows, in text order; the values at a point the text considers (`y = r\cos\pi` after
+    // "halfway along the first turn, $s = \frac{1}{2h}$") apart, by the end of that point's paragraph.
+    std::map<std::pair<int, std::string>, std::vector<Row>> groups;
+    std::map<std::tuple<int, std::string, std::size_t>, std::vector<Row>> at_points;
     for (const FullChain& c : chains)
         for (std::size_t k = 0; k + 1 < c.sides.size(); ++k) {
             const Side& s = *c.sides[k].side;
             if (c.relations[k] != Relation::Equal || !s.ok || !GiNaC::is_a<GiNaC::symbol>(s.value)) continue;
-            // A value at a point the text considers (`x = s = \frac{1}{2h}` there) is not the point's position.
-            if (at_a_point_.count(c.sides[k].base + s.begin)) continue;
+            const std::size_t point_paragraph =
+                at_a_point_.count(c.sides[k].base + s.begin)
+                    ? discourse_->condition_paragraph(c.sides[k + 1].base + c.sides[k + 1].side->begin)
+                    : 0;
             const FreeName* f = ctx_.free_name_of(s.value);
             if (!f) continue;
             const std::optional<PositionName> p = f->kind == NameKind::Unknown ? position_name(f->name) : std::nullopt;
             if (p) {
                 const Prepared v = prepare(c.sides[k + 1]);
                 if (!plain(v) || !v.vectors.empty()) continue;
-                groups[{c.section, p->point}].push_back(Row{c.relation_offsets[k], f->name, {{p->axis, v.value}}});
-            } else if (f->kind == NameKind::Vector) {
+                const Row row{c.relation_offsets[k], f->name, {{p->axis, v.value}}};
+                if (point_paragraph > 0)
+                    at_points[{c.section, p->point, point_paragraph}].push_back(row);
+                else
+                    groups[{c.section, p->point}].push_back(row);
+            } else if (f->kind == NameKind::Vector && point_paragraph == 0) {
                 // `\vec{r}_m = (x + l\sin\theta)\hat{x} - l\cos\theta\,\hat{y}`: components along the axes' unit vectors.
                 const Prepared v = prepare(c.sides[k + 1]);
                 if (!plain(v) || v.vectors.empty()) continue;
@@ -111,6 +116,7 @@ void Checker::collect_positions(const std::vector<FullChain>& chains) {
             if (equal(value, p.r[axis], 1e-9) != Tri::Yes) return false;
         return true;
     };
+    std::map<std::pair<int, std::string>, const ModelPoint*> matched_points;  // the point each group matched
     for (const auto& [key, rows] : groups) {
         std::set<int> axes;
         for (const Row& row : rows)
@@ -132,6 +138,7 @@ void Checker::collect_positions(const std::vector<FullChain>& chains) {
                 best = n;
             }
         }
+        if (match) matched_points[key] = match;
         std::string names;  // the text's names for the point, each once
         std::set<std::string> seen;
         for (const Row& row : rows)
@@ -160,6 +167,62 @@ void Checker::collect_positions(const std::vector<FullChain>& chains) {
             pm.text.pop_back();
         }
     }
+    collect_positions_at_points(at_points, matched_points, points);
+}
+
+void Checker::collect_positions_at_points(
+    const std::map<std::tuple<int, std::string, std::size_t>, std::vector<PositionRow>>& at_points,
+    const std::map<std::pair<int, std::string>, const ModelPoint*>& matched_points,
+    const std::vector<ModelPoint>& points) {
+    // The coordinates a paragraph gives at a point the text considers: compared with the model's point there (its
+    // coordinates with the text's conditions put in). The point is the one the text's own formulas for it match in
+    // the section (then a coordinate that differs is a slip: the text's axes are the model's, it says so
+    // elsewhere); without such formulas, one point that every coordinate given there matches, or nothing is said.
+    for (const auto& [key, rows] : at_points) {
+        const auto& [section, name, paragraph] = key;
+        const auto conditions = discourse_->conditions_at(rows.front().at);
+        GiNaC::exmap at;
+        std::string where;
+        for (const auto& [symbol, value_line] : conditions) {
+            at[symbol] = value_line.first;
+            where += std::string(where.empty() ? "" : ", ") + latex(symbol) + " = " + latex(value_line.first);
+        }
+        if (at.empty()) continue;
+        const int line = conditions.begin()->second.second;
+        const auto there = [&](const GiNaC::ex& e) { return e.subs(at); };
+        const auto matches = [&](const PositionRow& row, const ModelPoint& p) {
+            for (const auto& [axis, value] : row.components)
+                if (equal(there(value), there(p.r[axis]), 1e-9) != Tri::Yes) return false;
+            return true;
+        };
+        const ModelPoint* anchor = nullptr;
+        bool own_formulas = false;
+        if (const auto it = matched_points.find({section, name}); it != matched_points.end()) {
+            anchor = it->second;
+            own_formulas = true;
+        } else {
+            for (const ModelPoint& p : points)
+                if (std::all_of(rows.begin(), rows.end(), [&](const PositionRow& r) { return matches(r, p); })) {
+                    anchor = &p;
+                    break;
+                }
+        }
+        if (!anchor) continue;
+        std::string shown = "$(";
+        for (int a = 0; a < (anchor->planar ? 2 : 3); ++a)
+            shown += (a ? ", " : "") + latex(GiNaC::normal(there(anchor->r[a])));
+        shown += ")$ where $" + where + "$ (the condition on line " + std::to_string(line) + "; " + anchor->what + ")";
+        for (const PositionRow& row : rows) {
+            PositionMatch& pm = positions_[row.at];
+            pm.axis = row.components.size() == 1 ? row.components[0].first : -1;
+            pm.matched = matches(row, *anchor);
+            pm.text = shown;
+            if (!pm.matched && own_formulas && pm.axis >= 0) {
+                pm.disagrees = true;
+                pm.expected = GiNaC::normal(there(anchor->r[pm.axis]));
+            }
+        }
+    }
 }
 
 std::optional<std::vector<std::pair<int, GiNaC::ex>>> Checker::unit_components(const Prepared& v) const {
@@ -186,11 +249,24 @@ std::optional<std::vector<std::pair<int, GiNaC::ex>>> Checker::unit_components(c
 bool Checker::check_position(const FullChain& c, std::size_t j, bool vector, EquationCheck& r) {
     const auto it = positions_.find(c.relation_offsets[j - 1]);
     if (it == positions_.end() || (it->second.axis < 0) != vector) return false;
+    static const char* const axis[] = {"x", "y", "z"};
+    if (it->second.disagrees) {
+        const Prepared v = prepare(c.sides[j]);
+        const std::string name = trimmed(c.sides[j - 1].side->source);
+        r.verdict = Verdict::Disagrees;
+        r.compared_with = "the position of the model's point " + it->second.text;
+        r.reason = "the model's point, which the text's own formulas for it match, has " +
+                   m(std::string(axis[it->second.axis]) + " = " + latex(it->second.expected)) + " there";
+        if (v.ok) r.difference = latex((v.value - it->second.expected).expand());
+        r.corrected = name + " = " + latex(it->second.expected);
+        // (The correction holds at the point only: read alone, without the condition, it could not be checked.)
+        solved_corrections_.insert({r.where.line, r.where.column});
+        return true;
+    }
     if (!it->second.matched) {
         if (!it->second.text.empty()) r.notes.push_back(it->second.text);
         return false;
     }
-    static const char* const axis[] = {"x", "y", "z"};
     r.verdict = Verdict::Agrees;
     r.compared_with = "the position of the model's point " + it->second.text;
     r.reason = it->second.axis < 0 ? "equal to that point's position vector, component by component"

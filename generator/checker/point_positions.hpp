@@ -40,6 +40,17 @@ struct PositionMatch {
     bool matched = false;
     int axis = -1;     ///< the coordinate the row gives; -1 for a position vector
     std::string text;  ///< the point matched, or the note
+    /// A coordinate at a point the text considers (`x, y, z = 0, 0, 0` where s = 0) of a point the text's own
+    /// formulas match: what the model's point has there, when the row says otherwise (then `disagrees`).
+    bool disagrees = false;
+    GiNaC::ex expected;
+};
+
+/// A row of the text that gives a point's coordinate (`x_2 = x + l\sin\theta`) or its position vector.
+struct PositionRow {
+    std::size_t at;  ///< the relation's file offset
+    std::string name;
+    std::vector<std::pair<int, GiNaC::ex>> components;  ///< (axis, value): one for `x_2 = …`, all for a vector
 };
 
 /// The axis (0, 1, 2) of a unit vector's canonical name: `\hat{x}`, `\mathbf{j}`, `\vec{k}`, `\hat{e}_{z}`, `\mathbf{e}_{1}`.

@@ -234,6 +234,41 @@ TEST_CASE("latex: rows split into chains of relations", "[checker][parser]") {
     CHECK(c[0].relations[0] == Relation::Approx);
     c = eomgen::checker::parse_math("f(a, b) = 1", n.ctx);  // commas inside parentheses do not split
     CHECK(c.size() == 1);
+    // Two lists of as many entries, names on the left: one chain a name, each relation at its own place.
+    const std::string tuple = "x, y, z = 0, l, 2a.";
+    c = eomgen::checker::parse_math(tuple, n.ctx);
+    REQUIRE(c.size() == 3);
+    for (std::size_t k = 0; k < 3; ++k) {
+        REQUIRE(c[k].sides.size() == 2);
+        CHECK(c[k].sides[0].source == std::string(1, char('x' + k)));
+        CHECK(c[k].relation_offsets[0] == tuple.find(char('x' + k)) + 1);
+    }
+    CHECK(c[1].sides[1].source == "l");
+    CHECK(same(c[2].sides[1].value, 2 * n.a));
+    c = eomgen::checker::parse_math("\\left(x, y\\right) = (l\\sin\\theta, -l\\cos\\theta)", n.ctx);
+    REQUIRE(c.size() == 2);
+    CHECK(same(c[1].sides[1].value, -n.l * GiNaC::cos(n.th)));
+    // Not tuples: a left entry that is no name, lists of different lengths, a function's arguments.
+    CHECK(eomgen::checker::parse_math("(x - a, y) = (1, 2)", n.ctx).size() == 1);
+    CHECK(eomgen::checker::parse_math("x, y = 1, 2, 3", n.ctx).size() == 1);
+    CHECK(eomgen::checker::parse_math("(a)(b) = 1, 2", n.ctx).size() == 1);
+    // A vector set to a list: its components along the axes' unit vectors.
+    c = eomgen::checker::parse_math("\\mathbf{r} = (l\\sin\\theta, -l\\cos\\theta)", n.ctx);
+    REQUIRE(c.size() == 1);
+    REQUIRE(c[0].sides.size() == 2);
+    REQUIRE(c[0].sides[1].ok);
+    CHECK(c[0].sides[1].source == "(l\\sin\\theta, -l\\cos\\theta)");
+    CHECK(same(c[0].sides[1].value,
+               n.l * GiNaC::sin(n.th) * n.free("\\hat{x}") - n.l * GiNaC::cos(n.th) * n.free("\\hat{y}")));
+    c = eomgen::checker::parse_math("\\vec{r}_2 = (l, a)", n.ctx);
+    REQUIRE(c.size() == 1);
+    CHECK(c[0].sides[1].ok);
+    // Other vectors and lists of other names in parentheses are left to linear_algebra.hpp, which reads them whole.
+    c = eomgen::checker::parse_math("\\mathbf{u} = (1, 0, 0)", n.ctx);
+    REQUIRE(c.size() == 1);
+    CHECK_FALSE(c[0].sides[1].ok);
+    CHECK(eomgen::checker::parse_math("(I_1, I_2) = (a, l)", n.ctx).size() == 1);
+    CHECK(eomgen::checker::parse_math("I_1, I_2 = a, l", n.ctx).size() == 2);
     c = eomgen::checker::parse_math("=\\dot{\\phi}", n.ctx);
     REQUIRE(c.size() == 1);
     CHECK(c[0].sides[0].empty());

@@ -381,6 +381,46 @@ $$ \mathbf{r}_{2} = l\sin\phi\,\mathbf{i} + l\cos\phi\,\mathbf{j} $$
     CHECK(eomgen::test::has_note(*on_line(r, 11)[0], "no point the model file gives"));
 }
 
+TEST_CASE("readings: a point's coordinates as a list, and its coordinates at a point the text considers",
+          "[checker][readings]") {
+    // models/pendulum.toml draws the bob at (l sin φ, −l cos φ).
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+The bob is at $x, y = l \sin\phi, -l \cos\phi$, or $\mathbf{r} = (l \sin\phi, -l\cos\phi)$.
+
+Hanging straight down, $\phi = 0$, it is at $x, y = 0, -l$.
+
+Level with the pivot, $\phi = \frac{\pi}{2}$, it is at $x, y = l, l$.
+)");
+    INFO(described(r));
+    const auto general = on_line(r, 3);
+    REQUIRE(general.size() == 3);
+    for (const auto* v : general) {
+        CHECK(v->verdict == Verdict::Agrees);
+        CHECK(v->compared_with.find("the position of the model's point") == 0);
+    }
+    int agree = 0;
+    for (const auto* v : on_line(r, 5)) agree += v->verdict == Verdict::Agrees;
+    CHECK(agree == 2);  // x = 0, y = -l where φ = 0 (the condition itself is not judged)
+    const auto level = on_line(r, 7);
+    const EquationCheck* slip = nullptr;
+    for (const auto* v : level)
+        if (v->verdict == Verdict::Disagrees) slip = v;
+        else CHECK(v->verdict != Verdict::NotComparable);
+    REQUIRE(slip != nullptr);
+    CHECK(slip->equation == "y = l");
+    CHECK(slip->corrected == "y = 0");
+    CHECK(slip->compared_with.find("where $\\phi = \\frac{1}{2} \\pi$ (the condition on line 7") != std::string::npos);
+    // Without formulas of its own for the point, a coordinate at a point that no point of the model has is no slip:
+    // the text's axes may be another's.
+    const CheckReport alone = eomgen::test::check_text(kModel, R"(# Pendulum
+
+Level with the pivot, $\phi = \frac{\pi}{2}$, it is at $x, y = l, l$.
+)");
+    INFO(described(alone));
+    for (const EquationCheck& e : alone.equations) CHECK(e.verdict != Verdict::Disagrees);
+}
+
 TEST_CASE("readings: r_M and r_m are two points where M and m are two masses of the model", "[checker][readings]") {
     // A cart (M, coordinate x) with a pendulum (m, l, θ) below it, drawn at (x, 0) and (x + l sin θ, −l cos θ).
     const CheckReport r = eomgen::test::check_text("tests/checker/corpus/cart_spring_report/model.toml", R"(# Cart
