@@ -37,11 +37,11 @@ struct Event {
     /// For a Switch event: asked at each crossing (t, x), true ends the run there as a terminal event — where the
     /// field on both sides pushes into the surface and the motion slides along it (sliding.hpp), which a caller
     /// integrates with another right-hand side. Empty: never.
-    std::function<bool(const Scalar& t, const State& x)> stop_at_switch = {};
+    std::function<bool(const Scalar& t, const State& x)> stop_at_switch;
     /// For a Switch event: applied to the state where the steps restart at a crossing, by the steppers that end
     /// their steps there (restart()): the jump of the sensitivities by the saltation matrix (saltation.hpp). Empty:
     /// the state goes on as it is.
-    std::function<void(const Scalar& t, State& x)> jump = {};
+    std::function<void(const Scalar& t, State& x)> jump;
 };
 
 /// One located event: which one, when, and the (dense-output) state there.

@@ -134,29 +134,40 @@ std::vector<std::string> stop_where_sliding(std::vector<Event<State>>& events, F
 }
 
 /**
- * As integrate_with<Method>, where the Switch events of `events` may also be where the motion slides: at each
- * crossing of one, if both sides push into it (SlidingSurface::attracting), the run goes on with Filippov's field
- * until the motion leaves the surface, then with f again. The result holds the whole run; its events include, for
- * each sliding interval, "<switch>: slides" where it starts and "<switch>: leaves to s > 0" (or s < 0) where it
- * ends, and its counters add up the segments'. A Switch event with a stop_at_switch of its own is left as it is.
+ * What a run that follows sliding needs to know of its Switch events (integrate_sliding_with): which of them it
+ * follows, whether the motion slides along one at (t, x) (both sides push into it), the field while it slides, the
+ * events that end the sliding, and what arriving does to the state (nothing, for a plain run; the sensitivities'
+ * projection onto the surface's tangent, sliding_sensitivities.hpp).
+ */
+template <class State>
+struct SlidingRules {
+    using Scalar = typename State::Scalar;
+    using Field = std::function<void(const Scalar& t, const State& x, State& xdot)>;
+    std::vector<bool> follows;  ///< one per event: sliding along it is followed
+    std::function<bool(std::size_t event, const Scalar& t, const State& x)> holds;
+    std::function<Field(std::size_t event)> field;
+    std::function<std::vector<Event<State>>(std::size_t event)> exits;
+    std::function<void(std::size_t event, const Scalar& t, State& x)> arrive;  ///< empty: nothing
+};
+
+/**
+ * As integrate_with<Method>, where the Switch events that `rules` follows may also be where the motion slides: at
+ * each crossing of one, if the surface holds the motion, the run goes on with the rules' field until one of its exits,
+ * then with f again. The result holds the whole run; its events include, for each sliding interval, "<switch>:
+ * slides" where it starts and its exit ("<switch>: leaves to s > 0", …) where it ends, and its counters add up the
+ * segments'.
  */
 template <template <class> class Method, class System, class State>
-IntegrationResult<State> integrate_sliding(
+IntegrationResult<State> integrate_sliding_with(
     System&& f, const typename State::Scalar& t0, const State& x0, const typename State::Scalar& t_end,
     const typename detail::NonDeduced<typename Method<State>::Options>::type& options,
-    std::vector<Event<State>> events, const std::vector<typename State::Scalar>& sample_times = {},
+    std::vector<Event<State>> events, const SlidingRules<State>& rules,
+    const std::vector<typename State::Scalar>& sample_times = {},
     const typename detail::NonDeduced<Observer<State>>::type& observer = {}) {
     using Scalar = typename State::Scalar;
-    const typename SlidingSurface<State>::Field field = [&f](const Scalar& t, const State& x, State& xdot) {
-        f(t, x, xdot);
-    };
-    std::vector<std::shared_ptr<SlidingSurface<State>>> surfaces(events.size());
     for (std::size_t i = 0; i < events.size(); ++i)
-        if (events[i].action == EventAction::Switch && !events[i].stop_at_switch) {
-            surfaces[i] = std::make_shared<SlidingSurface<State>>(field, events[i].g);
-            const auto surface = surfaces[i];
-            events[i].stop_at_switch = [surface](const Scalar& t, const State& x) { return surface->attracting(t, x); };
-        }
+        if (rules.follows[i])
+            events[i].stop_at_switch = [&rules, i](const Scalar& t, const State& x) { return rules.holds(i, t, x); };
 
     IntegrationResult<State> total;
     total.t = t0;
@@ -169,9 +180,10 @@ IntegrationResult<State> integrate_sliding(
     // A start on a surface that holds the motion (a door released at rest against its hinges' friction): sliding
     // from t0.
     for (std::size_t i = 0; i < events.size() && sliding == none && t0 != t_end; ++i)
-        if (surfaces[i] && events[i].g(t0, x0) == Scalar(0) && surfaces[i]->attracting(t0, x0)) {
+        if (rules.follows[i] && events[i].g(t0, x0) == Scalar(0) && rules.holds(i, t0, x0)) {
             sliding = i;
-            total.events.push_back({events[i].name + ": slides", t0, x0});
+            if (rules.arrive) rules.arrive(i, t0, x);
+            total.events.push_back({events[i].name + ": slides", t0, x});
         }
     for (bool first = true;; first = false) {
         // Samples after this segment's start (at it, for the first); the observer sees each point once.
@@ -193,14 +205,11 @@ IntegrationResult<State> integrate_sliding(
         if (sliding == none) {
             r = integrate_with<Method>(f, t, x, t_end, options, events, times, watch);
         } else {
-            const auto surface = surfaces[sliding];
-            const auto slide = [surface](const Scalar& tt, const State& xx, State& xdot) {
-                surface->sliding_field(tt, xx, xdot);
-            };
+            const typename SlidingRules<State>::Field slide = rules.field(sliding);
             std::vector<Event<State>> during;
             for (const Event<State>& e : events)
                 if (e.action != EventAction::Switch) during.push_back(e);
-            for (Event<State>& e : surface->exits(events[sliding].name)) during.push_back(std::move(e));
+            for (Event<State>& e : rules.exits(sliding)) during.push_back(std::move(e));
             r = integrate_with<Method>(slide, t, x, t_end, options, during, times, watch);
         }
         total.accepted_steps += r.accepted_steps;
@@ -217,8 +226,10 @@ IntegrationResult<State> integrate_sliding(
         std::size_t which = none;
         for (std::size_t i = 0; i < events.size() && which == none; ++i)
             if (events[i].name == r.stopped_by) which = i;
-        if (sliding == none && which != none && surfaces[which]) {
+        if (sliding == none && which != none && rules.follows[which]) {
             sliding = which;  // both sides push in: on along the surface
+            if (rules.arrive) rules.arrive(which, t, x);
+            total.x = x;
             total.events.push_back({events[which].name + ": slides", t, x});
             continue;
         }
@@ -231,6 +242,41 @@ IntegrationResult<State> integrate_sliding(
         break;
     }
     return total;
+}
+
+/**
+ * As integrate_with<Method>, where the Switch events of `events` may also be where the motion slides: at each
+ * crossing of one, if both sides push into it (SlidingSurface::attracting), the run goes on with Filippov's field
+ * until the motion leaves the surface, then with f again (integrate_sliding_with). A Switch event with a
+ * stop_at_switch of its own is left as it is.
+ */
+template <template <class> class Method, class System, class State>
+IntegrationResult<State> integrate_sliding(
+    System&& f, const typename State::Scalar& t0, const State& x0, const typename State::Scalar& t_end,
+    const typename detail::NonDeduced<typename Method<State>::Options>::type& options,
+    std::vector<Event<State>> events, const std::vector<typename State::Scalar>& sample_times = {},
+    const typename detail::NonDeduced<Observer<State>>::type& observer = {}) {
+    using Scalar = typename State::Scalar;
+    const typename SlidingSurface<State>::Field field = [&f](const Scalar& t, const State& x, State& xdot) {
+        f(t, x, xdot);
+    };
+    std::vector<std::shared_ptr<SlidingSurface<State>>> surfaces(events.size());
+    SlidingRules<State> rules;
+    rules.follows.assign(events.size(), false);
+    for (std::size_t i = 0; i < events.size(); ++i)
+        if (events[i].action == EventAction::Switch && !events[i].stop_at_switch) {
+            surfaces[i] = std::make_shared<SlidingSurface<State>>(field, events[i].g);
+            rules.follows[i] = true;
+        }
+    rules.holds = [&surfaces](std::size_t i, const Scalar& t, const State& x) { return surfaces[i]->attracting(t, x); };
+    rules.field = [&surfaces](std::size_t i) -> typename SlidingRules<State>::Field {
+        const auto surface = surfaces[i];
+        return [surface](const Scalar& t, const State& x, State& xdot) { surface->sliding_field(t, x, xdot); };
+    };
+    std::vector<std::string> names;
+    for (const Event<State>& e : events) names.push_back(e.name);
+    rules.exits = [&surfaces, names](std::size_t i) { return surfaces[i]->exits(names[i]); };
+    return integrate_sliding_with<Method>(f, t0, x0, t_end, options, std::move(events), rules, sample_times, observer);
 }
 
 }  // namespace eomgen
