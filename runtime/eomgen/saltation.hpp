@@ -15,8 +15,10 @@
  * differentiation of M's template, linearize_switching); f⁻ and f⁺ are the one-sided fields just off the surface,
  * extrapolated to it (sliding.hpp).
  *
- * A motion that does not cross but slides along the surface (ṡ⁻ > 0 > ṡ⁺: a door held by static friction) or only
- * grazes it (ṡ = 0) has no such derivative from this formula: SimulationError at that time, with the surface's name.
+ * A motion that does not cross but slides along the surface (ṡ⁻ > 0 > ṡ⁺: a door held by static friction) jumps
+ * onto the sliding motion (sliding_sensitivities.hpp) where the run follows it; where it does not (a constrained
+ * model), and where the motion only grazes the surface (ṡ = 0), there is no derivative from this formula:
+ * SimulationError at that time, with the surface's name.
  */
 #pragma once
 
@@ -67,8 +69,10 @@ void switching_jacobians(double t, const typename M::State& x, const typename M:
 template <class M>
 class Saltation {
   public:
-    Saltation(const typename M::Params& p, int k, std::vector<int> parameter_of)
-        : p_(p), k_(k), parameter_of_(std::move(parameter_of)) {}
+    /// `sliding`: the run follows a motion that slides along the surface (sliding_sensitivities.hpp), so arriving
+    /// where it does is the jump onto the sliding motion, not an error.
+    Saltation(const typename M::Params& p, int k, std::vector<int> parameter_of, bool sliding = false)
+        : p_(p), k_(k), parameter_of_(std::move(parameter_of)), sliding_(sliding) {}
 
     void apply(double t, const Eigen::VectorXd& x, Eigen::MatrixXd& S) const {
         const typename M::Params& p = p_;
@@ -96,6 +100,15 @@ class Saltation {
         // From which side: both one-sided rates of s must agree in sign, else the motion slides or grazes.
         const double rate_minus = Sx.row(k).dot(sides.minus) + St(k), rate_plus = Sx.row(k).dot(sides.plus) + St(k);
         const bool upward = rate_minus > 0 && rate_plus > 0, downward = rate_minus < 0 && rate_plus < 0;
+        Eigen::RowVectorXd moved = Sx.row(k) * S;  // s_x S + s_p: how far each column moves s
+        for (Eigen::Index c = 0; c < S.cols(); ++c)
+            if (parameter_of_[std::size_t(c)] >= 0) moved(c) += Sp(k, parameter_of_[std::size_t(c)]);
+        if (rate_minus > 0 && rate_plus < 0 && sliding_) {
+            // Arriving where the motion slides along the surface: the jump onto Filippov's field, from either side
+            // S made tangent to the surface (sliding_sensitivities.hpp).
+            S -= jump * (moved / (rate_minus - rate_plus));
+            return;
+        }
         if (!upward && !downward) {
             std::ostringstream os;
             os.precision(15);
@@ -106,9 +119,6 @@ class Saltation {
             throw SimulationError(os.str(), t);
         }
         const double rate = upward ? rate_minus : rate_plus;
-        Eigen::RowVectorXd moved = Sx.row(k) * S;  // s_x S + s_p: how far each column moves s
-        for (Eigen::Index c = 0; c < S.cols(); ++c)
-            if (parameter_of_[std::size_t(c)] >= 0) moved(c) += Sp(k, parameter_of_[std::size_t(c)]);
         const Eigen::RowVectorXd dtau = -moved / rate;
         S += (upward ? jump : Eigen::VectorXd(-jump)) * dtau;
     }
@@ -117,6 +127,7 @@ class Saltation {
     typename M::Params p_;
     int k_;
     std::vector<int> parameter_of_;
+    bool sliding_ = false;
 };
 
 }  // namespace eomgen

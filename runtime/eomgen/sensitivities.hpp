@@ -27,8 +27,9 @@
  * constraint manifold (consistent_sensitivities.hpp: a changed initial value or a parameter the constraints contain
  * moves the start as --project-initial would move it), and the linearized constraints then hold along the motion.
  * Its x0 must be consistent (InconsistentInitialConditions otherwise). Where a motion crosses a switching surface
- * (abs, sign, … in the model file) S jumps by the saltation matrix (saltation.hpp); a motion that slides along
- * one is refused (SimulationError) at that time.
+ * (abs, sign, … in the model file) S jumps by the saltation matrix (saltation.hpp); a motion that slides along one
+ * (sticks) is followed with its own variational equations by the adaptive methods (sliding_sensitivities.hpp), and
+ * refused (SimulationError) at that time for a constrained model, as a plain run of one stops there.
  */
 #pragma once
 
@@ -41,6 +42,7 @@
 #include "eomgen/model_traits.hpp"
 #include "eomgen/radau5.hpp"
 #include "eomgen/saltation.hpp"
+#include "eomgen/sliding_sensitivities.hpp"
 
 #include <Eigen/Core>
 
@@ -376,6 +378,9 @@ struct SensitivityRun {
     Eigen::VectorXd z0;
     std::vector<Event<Eigen::VectorXd>> augmented_events;
     std::vector<SensitivitySample> samples;
+    /// For an unconstrained model with switching surfaces: the sliding along each (sliding_sensitivities.hpp), whose
+    /// Switch events are the last of augmented_events.
+    std::vector<std::shared_ptr<const SlidingVariations>> sliding;
 
     SensitivityRun(const typename M::Params& p, double t0, const typename M::State& x0,
                    const std::vector<SensitivityColumn>& columns, const std::vector<SensitivityEvent>& given)
@@ -404,6 +409,31 @@ struct SensitivityRun {
                                         e.event.direction, e.event.action});
         // Each switching surface ends the steps where the motion crosses it, and S jumps there (saltation.hpp).
         if constexpr (has_switching<M>::value) {
+            bool follows = true;  // as a plain run, only without constraints
+            if constexpr (is_constrained<M>::value) follows = M::n_constraints == 0;
+            const auto given_values = M::param_values(p);
+            Eigen::VectorXd values(Eigen::Index(M::param_names.size()));
+            for (std::size_t l = 0; l < M::param_names.size(); ++l) values(Eigen::Index(l)) = given_values[l];
+            for (int s = 0; s < M::n_switches && follows; ++s)
+                sliding.push_back(std::make_shared<const SlidingVariations>(
+                    [p](double t, const Eigen::VectorXd& x, Eigen::VectorXd& f, Eigen::MatrixXd* J,
+                        Eigen::MatrixXd* Jp) {
+                        const typename M::State xs = detail::model_state<M>(x);
+                        typename M::State xdot = xs;
+                        M::rhs(t, xs, p, xdot);
+                        f = xdot;
+                        if (J) sensitivity_jacobians<M>(t, xs, p, *J, *Jp);
+                    },
+                    [p, s](double t, const Eigen::VectorXd& x, const Eigen::VectorXd& pv) {
+                        typename M::Params q = p;
+                        for (std::size_t l = 0; l < M::param_names.size(); ++l)
+                            M::set_param(q, M::param_names[l], pv(Eigen::Index(l)));
+                        Eigen::MatrixXd Sx, Sp;
+                        Eigen::VectorXd St;
+                        switching_jacobians<M>(t, detail::model_state<M>(x), q, Sx, Sp, St);
+                        return SurfaceDerivatives{Sx.row(s), Sp.row(s), St(s)};
+                    },
+                    values, parameter_of, nx));
             for (int s = 0; s < M::n_switches; ++s) {
                 Event<Eigen::VectorXd> e{M::switch_names[std::size_t(s)],
                                          [p, s, nx](const double& t, const Eigen::VectorXd& z) {
@@ -425,7 +455,8 @@ struct SensitivityRun {
                 e.stop_at_switch = [surface, nx](const double& t, const Eigen::VectorXd& z) {
                     return surface->attracting(t, Eigen::VectorXd(z.head(nx)));
                 };
-                e.jump = [saltation = Saltation<M>(p, s, parameter_of), nx](const double& t, Eigen::VectorXd& z) {
+                e.jump = [saltation = Saltation<M>(p, s, parameter_of, follows), nx](const double& t,
+                                                                                     Eigen::VectorXd& z) {
                     Eigen::Map<Eigen::MatrixXd> S(z.data() + nx, nx, (z.size() - nx) / nx);
                     Eigen::MatrixXd jumped = S;
                     saltation.apply(t, Eigen::VectorXd(z.head(nx)), jumped);
@@ -465,9 +496,10 @@ struct SensitivityRun {
         system.outputs(out.end);
         system.multipliers(out.end);
         for (const auto& hit : r.switches) out.switches.emplace_back(hit.name, hit.t);
-        if (r.stop_reason == StopReason::TerminalEvent &&
-            std::none_of(events.begin(), events.end(),
-                         [&](const SensitivityEvent& e) { return e.event.name == r.stopped_by; })) {
+        const auto given = [&](const std::string& name) {
+            return std::any_of(events.begin(), events.end(), [&](const SensitivityEvent& e) { return e.event.name == name; });
+        };
+        if (r.stop_reason == StopReason::TerminalEvent && !given(r.stopped_by)) {
             std::ostringstream os;
             os.precision(15);
             os << "the motion sticks on the switching surface " << r.stopped_by << " = 0 at t = " << r.t
@@ -482,6 +514,10 @@ struct SensitivityRun {
         out.rhs_evaluations = r.rhs_evaluations;
         out.jacobian_evaluations = system.jacobian_evaluations();
         for (const auto& hit : r.events) {
+            if (!given(hit.name)) {  // where sliding began or ended ("…: slides", "…: leaves to s > 0")
+                out.switches.emplace_back(hit.name, hit.t);
+                continue;
+            }
             const SensitivitySample s = split(hit.t, hit.x);
             const auto it = std::find_if(events.begin(), events.end(),
                                          [&](const SensitivityEvent& e) { return e.event.name == hit.name; });
@@ -511,9 +547,16 @@ SensitivityResult integrate_sensitivities(const typename M::Params& p, double t0
                                           const std::vector<double>& sample_times) {
     detail::SensitivityRun<M> run(p, t0, x0, columns, events);
     detail::AugmentedRhs f = run.rhs();
-    const auto r = integrate_with<Method>(f, t0, run.z0, t_end, options, run.augmented_events, sample_times,
-                                          run.observer());
-    return run.finish(r);
+    if (run.sliding.empty())
+        return run.finish(integrate_with<Method>(f, t0, run.z0, t_end, options, run.augmented_events, sample_times,
+                                                 run.observer()));
+    std::vector<std::string> names;
+    for (const Event<Eigen::VectorXd>& e : run.augmented_events) names.push_back(e.name);
+    const SlidingRules<Eigen::VectorXd> rules =
+        sliding_sensitivity_rules(run.sliding, run.augmented_events.size() - run.sliding.size(),
+                                  run.augmented_events.size(), names, x0.size());
+    return run.finish(integrate_sliding_with<Method>(f, t0, run.z0, t_end, options, run.augmented_events, rules,
+                                                     sample_times, run.observer()));
 }
 
 template <class M>

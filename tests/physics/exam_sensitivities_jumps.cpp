@@ -6,11 +6,14 @@
  *    with project_onto_constraints, the definition);
  *  - a switching surface (saltation.hpp): the hinge friction of a swinging door, sign(ψ̇), turns at each reversal,
  *    and S jumps there (the differences integrate each perturbed motion with its steps ended at the reversals);
- *  - a motion that sticks (static friction holds the door) is refused at that time, with the surface named.
+ *  - a motion that sticks (static friction holds the door; a block rides a belt, then slips off it: stick-slip) is
+ *    followed along the surface (sliding_sensitivities.hpp; the differences follow each perturbed motion's sliding
+ *    as eomgen run does, integrate_sliding).
  */
 #include "eomgen/constraints.hpp"
 #include "eomgen/errors.hpp"
 #include "eomgen/integrate.hpp"
+#include "eomgen/models/block_on_belt.hpp"
 #include "eomgen/models/friction_door.hpp"
 #include "eomgen/models/hoop_driven.hpp"
 #include "eomgen/models/pendulum_cartesian.hpp"
@@ -31,7 +34,7 @@ using eomgen::SensitivityColumn;
 constexpr double kRtol = 1e-12, kAtol = 1e-14;
 
 /// x(t_end) of M from x0 (projected onto the constraints first, where M has them), its steps ended at every
-/// crossing of a switching surface: the reference motion.
+/// crossing of a switching surface, and along the surface where it holds the motion: the reference motion.
 template <class M>
 Eigen::VectorXd end_state(const typename M::Params& p, typename M::State x0, double t_end) {
     using State = typename M::State;
@@ -51,7 +54,10 @@ Eigen::VectorXd end_state(const typename M::Params& p, typename M::State x0, dou
     o.rtol = kRtol;
     o.atol = kAtol;
     o.max_steps = 2000000;
-    return eomgen::integrate_with<eomgen::Dop853>(f, 0.0, x0, t_end, o, events).x;
+    if constexpr (eomgen::is_constrained<M>::value)
+        return eomgen::integrate_with<eomgen::Dop853>(f, 0.0, x0, t_end, o, events).x;
+    else
+        return eomgen::integrate_sliding<eomgen::Dop853>(f, 0.0, x0, t_end, o, events).x;
 }
 
 /// ∂x(t_end)/∂(column) by fourth-order central differences of whole reference motions.
@@ -154,21 +160,68 @@ TEST_CASE("the sensitivities jump by the saltation matrix where the hinge fricti
 
 }
 
-TEST_CASE("a motion that sticks on a switching surface is refused where it sticks", "[sensitivities]") {
+TEST_CASE("a motion that sticks on a switching surface is followed along it, and where it slips off again",
+          "[sensitivities]") {
+    // The door held by its hinges' static friction from about t = 8.03 s: ψ stays, ψ̇ = 0, and so do their
+    // derivatives (ψ̇'s are 0: every perturbed door is held too).
     using F = eomgen::models::friction_door::Model<double>;
     F::Params p;
     p.tau_f = 2.5;  // more than gravity's torque near the turning point: static friction holds the door there
     F::State x0;
     x0 << -1.2, 0.8;
-    try {
-        (void)eomgen::integrate_sensitivities<F, eomgen::Dop853>(p, 0.0, x0, 20.0,
-                                                                 {eomgen::parameter_column(F::param_names, "theta")});
-        FAIL("no error");
-    } catch (const eomgen::SimulationError& e) {
-        CHECK_THAT(e.what(), Catch::Contains("switching surface sign(psi') = 0") &&
-                                 Catch::Contains("not done"));
-        CHECK(e.t() > 0);
-    }
+    std::vector<SensitivityColumn> door;
+    for (const char* name : {"theta", "tau_f", "w"}) door.push_back(eomgen::parameter_column(F::param_names, name));
+    for (const char* name : F::state_names) door.push_back(eomgen::initial_column(F::state_names, name));
+    const auto held = check_columns<F>(p, x0, 12.0, door);
+    REQUIRE(held.switches.size() >= 1);
+    CHECK(held.switches.back().first == "sign(psi'): slides");
+    CHECK(held.switches.back().second == Approx(8.026).margin(1e-3));
+    CHECK(held.S.row(1).cwiseAbs().maxCoeff() < 1e-12);
+    // The block on a belt: dragged up to the belt's speed, carried with it (stuck from t = 0.179 s), and slipping
+    // back when the spring outpulls the friction (t = 0.676 s). Every parameter and both initial values, to t = 2 s
+    // (after it, the undamped block only grazes the belt's speed once a period, where no derivative exists).
+    using B = eomgen::models::block_on_belt::Model<double>;
+    std::vector<SensitivityColumn> block;
+    for (const char* name : B::param_names) block.push_back(eomgen::parameter_column(B::param_names, name));
+    for (const char* name : B::state_names) block.push_back(eomgen::initial_column(B::state_names, name));
+    const auto belt = check_columns<B>(B::Params{}, B::default_state(), 2.0, block);
+    const auto when = [](const eomgen::SensitivityResult& r, const std::string& name) {
+        std::vector<double> t;
+        for (const auto& [n, at] : r.switches)
+            if (n == name) t.push_back(at);
+        return t;
+    };
+    const std::vector<double> slides = when(belt, "sign(v - x'): slides"),
+                              leaves = when(belt, "sign(v - x'): leaves to s > 0");
+    REQUIRE(slides.size() == 1);
+    REQUIRE(leaves.size() == 1);
+    CHECK(slides[0] == Approx(0.179357449149907).epsilon(1e-9));  // eomgen run's times for the same motion
+    CHECK(leaves[0] == Approx(0.675794716081633).epsilon(1e-9));
+    // Released at the belt's speed: stuck from the start, S made tangent to the surface there. While it is carried,
+    // x = x(0) + v t whatever the rest: ∂x/∂v = t, ∂x/∂x(0) = 1, ∂ẋ/∂v = 1, every other entry 0 (a changed ẋ(0)
+    // is caught again at once, moving x only to second order; differences, which see that, are no reference here).
+    B::State on = B::default_state();
+    on(1) = B::Params{}.v;
+    eomgen::Dop853Options<double> o;
+    o.rtol = kRtol;
+    o.atol = kAtol;
+    const auto start = eomgen::integrate_sensitivities<B, eomgen::Dop853>(B::Params{}, 0.0, on, 0.3, block, o);
+    const std::vector<double> from = when(start, "sign(v - x'): slides");
+    REQUIRE(from.size() == 1);
+    CHECK(from[0] == 0.0);
+    Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(2, 7);
+    expected(0, 4) = 0.3;  // v
+    expected(1, 4) = 1;
+    expected(0, 5) = 1;  // x(0)
+    INFO("S =\n" << start.S);
+    CHECK((start.S - expected).cwiseAbs().maxCoeff() < 1e-12);
+}
+
+TEST_CASE("what the sensitivities refuse at switching surfaces", "[sensitivities]") {
+    using F = eomgen::models::friction_door::Model<double>;
+    F::Params p;
+    F::State x0;
+    x0 << -1.2, 0.8;
     // radau5 does not end its steps at the surfaces.
     CHECK_THROWS_WITH(eomgen::integrate_sensitivities_radau5<F>(p, 0.0, x0, 1.0,
                                                                 {eomgen::parameter_column(F::param_names, "theta")}),
