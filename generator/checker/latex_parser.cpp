@@ -275,9 +275,6 @@ std::vector<Chain> tuple_chains(std::string_view text, const std::vector<Token>&
         return from < to && ((t[from].kind == Tok::Char && t[from].text == "(") ||
                              (t[from].kind == Tok::Word && t[from].text == "\\left"));
     };
-    const auto coordinate = [](const std::string& n) {
-        return !n.empty() && (n[0] == 'x' || n[0] == 'y' || n[0] == 'z') && (n.size() == 1 || n.compare(1, 2, "_{") == 0);
-    };
     const auto position_vector = [](const std::string& n) {
         for (const char* deco : {"\\mathbf{r", "\\vec{r", "\\boldsymbol{r", "\\bm{r", "\\textbf{r"})
             if (n.rfind(deco, 0) == 0) {
@@ -321,7 +318,7 @@ std::vector<Chain> tuple_chains(std::string_view text, const std::vector<Token>&
         if (!name.ok || !GiNaC::is_a<GiNaC::symbol>(name.value)) return {};
         if (parentheses) {
             const FreeName* f = ctx.free_name_of(name.value);
-            if (!f || !coordinate(f->name)) return {};
+            if (!f || !position_name(f->name)) return {};
         }
         Chain c;
         c.begin = name.begin;
@@ -447,6 +444,18 @@ std::string canonical_name(std::string_view latex) {
     } catch (...) {
         return "";
     }
+}
+
+std::optional<PositionName> position_name(const std::string& canonical) {
+    if (canonical.empty() || (canonical[0] != 'x' && canonical[0] != 'y' && canonical[0] != 'z')) return std::nullopt;
+    PositionName p;
+    p.axis = canonical[0] - 'x';
+    if (canonical.size() == 1) return p;
+    // `x_{2}`, `y_{bob}`: one group of braces after the underscore, nothing else.
+    if (canonical.size() < 5 || canonical.compare(1, 2, "_{") != 0 || canonical.back() != '}') return std::nullopt;
+    p.point = canonical.substr(3, canonical.size() - 4);
+    if (p.point.find_first_of("{}\\ ") != std::string::npos) return std::nullopt;
+    return p;
 }
 
 bool has_relation(std::string_view text) {

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <map>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -146,6 +147,15 @@ Side parse_expression(std::string_view text, LatexContext& context);
  * → `Trod`. Returns "" when `latex` is not a single name.
  */
 std::string canonical_name(std::string_view latex);
+
+/// A name the text gives one coordinate of a point: x, y or z alone or with a subscript (`x_{2}`, `y_{bob}`).
+struct PositionName {
+    int axis = 0;       ///< 0, 1, 2 for x, y, z
+    std::string point;  ///< the subscript, "" for none: `x_{2}` and `y_{2}` are one point's
+};
+
+/// The axis and the point of a canonical name (`x_{2}` → 0, "2"); nullopt for any other name.
+std::optional<PositionName> position_name(const std::string& canonical);
 
 /// True for the relations of `text` that are not inside braces or groups: whether it contains an equation.
 bool has_relation(std::string_view text);

@@ -28,17 +28,6 @@ std::vector<ModelPoint> model_points(const Model& model) {
     return out;
 }
 
-std::optional<PositionName> position_name(const std::string& canonical) {
-    if (canonical.empty() || (canonical[0] != 'x' && canonical[0] != 'y' && canonical[0] != 'z')) return std::nullopt;
-    PositionName p;
-    p.axis = canonical[0] - 'x';
-    if (canonical.size() == 1) return p;
-    // `x_{2}`, `y_{bob}`: one group of braces after the underscore, nothing else.
-    if (canonical.size() < 5 || canonical.compare(1, 2, "_{") != 0 || canonical.back() != '}') return std::nullopt;
-    p.point = canonical.substr(3, canonical.size() - 4);
-    if (p.point.find_first_of("{}\\ ") != std::string::npos) return std::nullopt;
-    return p;
-}
 
 std::optional<int> unit_vector_axis(const std::string& canonical) {
     // \hat{x}, \mathbf{i}, \vec{k}, \hat{\imath}; \hat{e}_{x}, \mathbf{e}_{y}, \vec{e}_{z} (and e_{1}, e_{2}, e_{3}).

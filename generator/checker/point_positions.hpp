@@ -4,6 +4,7 @@
  * point_positions.cpp). Plain data, read from the model once. */
 #pragma once
 
+#include "checker/latex_parser.hpp"
 #include "model/model.hpp"
 
 #include <ginac/ginac.h>
@@ -26,14 +27,7 @@ struct ModelPoint {
 /// centre of mass, in file order, each once.
 std::vector<ModelPoint> model_points(const Model& model);
 
-/// A name the text gives one coordinate of a point: x, y or z alone or with a subscript (`x_{2}`, `y_{bob}`).
-struct PositionName {
-    int axis = 0;       ///< 0, 1, 2 for x, y, z
-    std::string point;  ///< the subscript, "" for none: `x_{2}` and `y_{2}` are one point's
-};
-
-/// The axis and the point of a canonical name (`x_{2}` → 0, "2"); nullopt for any other name.
-std::optional<PositionName> position_name(const std::string& canonical);
+// PositionName and position_name(), the text's names for a point's coordinates, are latex_parser.hpp's (names).
 
 /// What the checker found for one row of a point's coordinates (point_positions.cpp).
 struct PositionMatch {
