@@ -73,7 +73,7 @@ def fit(eomgen, model, data_path, jacobian="sensitivities", extra=()):
 
 def measure(cfg, work, smoke, log):
     eomgen = cfg["eomgen"]
-    trials = 5 if smoke else 100
+    trials = 3 if smoke else 100
     out = {"trials": trials, "models": {}, "timing": {}}
     for model in MODELS:
         log(f"10. fit coverage: {model['name']}, {trials} trials")
@@ -123,7 +123,7 @@ def measure(cfg, work, smoke, log):
     for unknowns, extra in ((2, ()), (4, ("x0:phi=0.9", "x0:phi_dot=0.1"))):
         for jacobian in ("sensitivities", "differences"):
             best = None
-            for _ in range(2 if smoke else 5):
+            for _ in range(1 if smoke else 5):
                 r = fit(eomgen, model, data, jacobian, extra)
                 if best is None or r["solve_seconds"] < best["solve_seconds"]:
                     best = r
