@@ -515,7 +515,7 @@ CheckReport Checker::run() {
                 const std::size_t blank = d_.text.find("\n\n", at);
                 links.push_back({c.sides[k].side, c.sides[k + 1].side, c.relations[k], at,
                                  c.section >= 0 ? d_.sections[std::size_t(c.section)].end : d_.text.size(),
-                                 blank == std::string::npos ? d_.text.size() : blank,
+                                 blank == std::string::npos ? d_.text.size() : blank, paragraph_end(d_, at),
                                  c.sides[k].base + c.sides[k].side->begin, sides});
             }
         }

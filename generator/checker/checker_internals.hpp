@@ -277,8 +277,10 @@ class Checker : public Comparisons {
     /// check_position gives a matched row (a coordinate, or with `vector` a position vector) its verdict, an unmatched
     /// one its note.
     void collect_positions(const std::vector<FullChain>& chains);
+    /// (section, point, paragraph end, the conditions in force) → the rows that give its coordinates there.
+    using PointRows = std::map<std::tuple<int, std::string, std::size_t, std::string>, std::vector<PositionRow>>;
     void collect_positions_at_points(
-        const std::map<std::tuple<int, std::string, std::size_t>, std::vector<PositionRow>>& at_points,
+        const PointRows& at_points,
         const std::map<std::pair<int, std::string>, const ModelPoint*>& matched_points,
         const std::vector<ModelPoint>& points);
     bool check_position(const FullChain& c, std::size_t j, bool vector, EquationCheck& r);
@@ -405,6 +407,12 @@ class Checker : public Comparisons {
     /// Parses r.corrected back with the names of its line and checks it (correction_check.hpp); a correction
     /// that does not agree is withheld, with a note.
     void verify_correction(const FullChain& c, std::size_t j, EquationCheck& r);
+    /// Link a–b of `ch` (a correction parsed back) checked as if it stood at file offset `at` of `like`'s section.
+    EquationCheck check_parsed_link(const FullChain& like, std::size_t at, const Chain& ch, std::size_t a,
+                                    std::size_t b);
+    /// A link that disagrees and agrees once one term the text wrote has its sign flipped or is left out: that edit
+    /// of the text becomes r.corrected, in the author's form (authors_form.cpp). False when no single edit does.
+    bool correct_in_authors_form(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r);
     /// a ≈ b compared with the Taylor expansion about q = 0 of the coordinates the text calls small (or, when
     /// `implied`, every coordinate it holds), to the order it keeps (approximation.hpp). False when it does
     /// not apply (no side is a polynomial in them).
@@ -486,6 +494,14 @@ class Checker : public Comparisons {
     /// `\rho^2\dot\varphi = c_0`: the name c_0, introduced by a chain's last side, defined as the quantity before
     /// it (named_constants.cpp); its file offset → its name.
     void collect_named_constants(const std::vector<FullChain>& chains);
+    /// The name a chain's side introduces: the name alone (`c_0`), or times a factor the checker can evaluate
+    /// (`I_3\omega_3`, factor I₃), the side's only unknown name.
+    struct IntroducedName {
+        GiNaC::ex symbol;
+        const FreeName* name;
+        GiNaC::ex factor;
+    };
+    std::optional<IntroducedName> introduced_name(const PSide& side);
     std::map<std::size_t, std::string> named_constants_;
     /// A link with `\pm` (or `\mp`) judged with each sign (both_signs.cpp).
     EquationCheck check_both_signs(const FullChain& c, std::size_t i, std::size_t j, bool bridge);

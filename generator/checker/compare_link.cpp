@@ -363,6 +363,18 @@ bool Checker::approximation(std::size_t at, const std::string& left, const std::
                                expansion_points(at));
 }
 
+EquationCheck Checker::check_parsed_link(const FullChain& like, std::size_t at, const Chain& ch, std::size_t a,
+                                         std::size_t b) {
+    FullChain f;
+    f.section = like.section;
+    f.display = like.display;
+    for (const Side& s : ch.sides) f.sides.push_back({&s, at});
+    f.relations = ch.relations;
+    // Where the slip is: what holds there (definitions, conditions, a trial solution) holds for the correction.
+    f.relation_offsets.assign(ch.relation_offsets.size(), at);
+    return safe_check_link(f, a, b, false);
+}
+
 void Checker::verify_correction(const FullChain& c, std::size_t j, EquationCheck& r) {
     const std::size_t at = c.relation_offsets[j - 1];
     const auto saved_names = ctx_.names;
@@ -372,14 +384,7 @@ void Checker::verify_correction(const FullChain& c, std::size_t j, EquationCheck
     std::string why;
     try {
         why = correction_problem(r.corrected, ctx_, [&](const Chain& ch, std::size_t a, std::size_t b) {
-            FullChain f;
-            f.section = c.section;
-            f.display = c.display;
-            for (const Side& s : ch.sides) f.sides.push_back({&s, at});
-            f.relations = ch.relations;
-            // Where the slip is: what holds there (definitions, conditions, a trial solution) holds for the correction.
-            f.relation_offsets.assign(ch.relation_offsets.size(), at);
-            return safe_check_link(f, a, b, false);
+            return check_parsed_link(c, at, ch, a, b);
         });
     } catch (const std::exception& e) {
         why = std::string("it could not be checked: ") + e.what();
@@ -519,8 +524,12 @@ EquationCheck Checker::safe_check_link(const FullChain& c, std::size_t i, std::s
             blame_definition(c, i, j, r);
             note_disagreeing_uses(c, i, j, r);
         }
-        if (!r.corrected.empty() && !verifying_ && !solved_corrections_.count({r.where.line, r.where.column}))
+        if (r.verdict == Verdict::Disagrees && !verifying_ && !solved_corrections_.count({r.where.line, r.where.column}) &&
+            correct_in_authors_form(c, i, j, r)) {
+            // checked as it was found
+        } else if (!r.corrected.empty() && !verifying_ && !solved_corrections_.count({r.where.line, r.where.column})) {
             verify_correction(c, j, r);
+        }
         if (!verifying_ && c.display) check_prose_label(c, i, j, r);
         return r;
     } catch (const std::exception& e) {

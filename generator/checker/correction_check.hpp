@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace eomgen::checker {
 
@@ -28,5 +29,20 @@ std::string scaled_step(const std::string& left, const std::string& k, const std
 
 /// `\frac{d}{dt}\left(P\right) - \left(Q\right) = 0`, without the `- (Q)` when Q is "0".
 std::string lagrange_form(const std::string& p, const std::string& q);
+
+/// One edit of a side as the text writes it: one top-level term's sign flipped, or the term left out.
+struct TermEdit {
+    std::string side;         ///< the side's LaTeX after the edit
+    std::string term;         ///< the term edited, as written (without its sign)
+    bool dropped = false;     ///< left out, else its sign flipped
+};
+
+/**
+ * The edits of `side` (LaTeX) that change one top-level term of its sum: each term's sign flipped (the first
+ * term's too), then each term left out (when there are two or more). Terms are split at `+` and `-` outside
+ * braces, brackets and parentheses, and not where the sign is unary (after `(`, `^`, `=` …). Empty for a side
+ * with `\pm`, `\mp`, `&` or a line break, or with more than `max_terms` terms.
+ */
+std::vector<TermEdit> one_term_edits(const std::string& side, std::size_t max_terms = 12);
 
 }  // namespace eomgen::checker

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <set>
 #include <utility>
 
 namespace eomgen::checker {
@@ -173,6 +174,17 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
         }
         trials_.push_back(*t);
     }
+    // The conditions of a steady motion or an equilibrium (an acceleration set, with the state conditions of its
+    // paragraph) hold for the displays the paragraph runs on into; an initial state or an assumption holds in its
+    // paragraph only ("In the initial position, $\psi = 0$. Since the energy is conserved," then E(ψ, ψ̇) = E(0)).
+    std::map<std::size_t, std::size_t> runs_on;
+    for (const DiscourseLink& link : links) runs_on[link.at] = std::max(link.runs_on, link.paragraph);
+    std::set<std::size_t> steady;
+    for (const Condition& k : conditions_)
+        for (const Coordinate& c : model.coordinates)
+            if (k.symbol.is_equal(c.qdd)) steady.insert(k.until);
+    for (Condition& k : conditions_)
+        if (steady.count(k.until) && !k.limit && state_symbol(k.symbol, model)) k.until = runs_on[k.from];
 }
 
 std::map<GiNaC::ex, std::pair<GiNaC::ex, int>, GiNaC::ex_is_less> Discourse::conditions_at(std::size_t at) const {

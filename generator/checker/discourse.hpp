@@ -29,6 +29,10 @@ struct DiscourseLink {
     std::size_t at = 0;          ///< file offset of its relation sign
     std::size_t until = 0;       ///< the end of its section (file offset)
     std::size_t paragraph = 0;   ///< the end of its paragraph (the next blank line)
+    /// the end of the displays its paragraph runs on into (prose.hpp's paragraph_end): where the conditions of a
+    /// steady motion or an equilibrium it states still hold ("for steady precession, $\ddot\theta = 0$, and dividing
+    /// by $\sin\theta$," then the display alone)
+    std::size_t runs_on = 0;
     std::size_t left_at = 0;     ///< file offset where its left side starts
     std::vector<const Side*> chain;  ///< every side of its chain, in order (`\dot r = \dot\theta = 0`)
 };

@@ -6,6 +6,9 @@
 #include "checker/additive_constant.hpp"
 #include "checker/checker_internals.hpp"
 
+#include <map>
+#include <optional>
+
 namespace eomgen::checker::detail {
 
 namespace {
@@ -23,26 +26,67 @@ bool quantity_of_motion(const GiNaC::ex& e, const Model& model) {
 
 }  // namespace
 
+std::optional<Checker::IntroducedName> Checker::introduced_name(const PSide& side) {
+    if (!side.side->ok) return std::nullopt;
+    // `= c_0`: the name alone.
+    if (GiNaC::is_a<GiNaC::symbol>(side.side->value)) {
+        const FreeName* f = ctx_.free_name_of(side.side->value);
+        if (!f || f->kind != NameKind::Unknown || is_part(side.side->value) || is_constant_name(f->name))
+            return std::nullopt;
+        return IntroducedName{side.side->value, f, 1};
+    }
+    // `= I_3\omega_3`: the name times a factor the checker can evaluate, the only name in the side it does not know.
+    const Prepared p = prepare(side);
+    if (!p.ok || p.unknown.size() != 1 || !p.vectors.empty() || !p.units.empty() || p.has_part) return std::nullopt;
+    const FreeName* f = p.unknown.front();
+    if (is_part(f->symbol) || is_constant_name(f->name)) return std::nullopt;
+    const GiNaC::ex name = f->symbol;
+    const GiNaC::ex factor = p.value.diff(GiNaC::ex_to<GiNaC::symbol>(name));
+    if (factor.has(name) || !(p.value - factor * name).expand().is_zero() || factor.is_zero()) return std::nullopt;
+    return IntroducedName{name, f, factor};
+}
+
 void Checker::collect_named_constants(const std::vector<FullChain>& chains) {
+    // Where the text first writes each name (math alone too: "a circular orbit of radius $r_0$").
+    std::map<std::string, std::size_t> first_use;
+    for (const FullChain& c : chains)
+        for (const PSide& s : c.sides)
+            for (const NameUse& u : s.side->uses) {
+                const auto it = first_use.find(u.name);
+                if (it == first_use.end() || s.base + u.offset < it->second) first_use[u.name] = s.base + u.offset;
+            }
     for (const FullChain& c : chains) {
-        if (c.sides.size() < 2 || c.relations.back() != Relation::Equal) continue;
-        const PSide& last = c.sides.back();
-        if (!last.side->ok || !GiNaC::is_a<GiNaC::symbol>(last.side->value)) continue;
-        const GiNaC::ex name = last.side->value;
-        const FreeName* f = ctx_.free_name_of(name);
-        if (!f || f->kind != NameKind::Unknown || is_part(name) || is_constant_name(f->name)) continue;
+        if (c.sides.size() < 2) continue;
+        // The last side (`\rho^2\dot\varphi = c_0`), or the one before a last that says it is constant
+        // (`p_\psi = I_3(\dot\psi + \dot\phi\cos\theta) = I_3\omega_3 = \text{const}`).
+        std::size_t k = c.sides.size() - 1;
+        if (k >= 2 && c.sides[k].side->ok && GiNaC::is_a<GiNaC::symbol>(c.sides[k].side->value))
+            if (const FreeName* g = ctx_.free_name_of(c.sides[k].side->value); g && is_constant_name(g->name)) --k;
+        if (c.relations[k - 1] != Relation::Equal) continue;
+        const PSide& last = c.sides[k];
+        const std::optional<IntroducedName> named = introduced_name(last);
+        if (!named) continue;
+        const GiNaC::ex name = named->symbol;
+        const FreeName* f = named->name;
         const std::size_t at = last.base + last.side->begin;
+        // A name times a factor is introduced only where the text first writes it (`m k r_0` after "of radius
+        // $r_0$" is a claim about that radius, not its name for ℓ²/(mk)).
+        if (!named->factor.is_equal(1))
+            if (const auto it = first_use.find(f->name); it != first_use.end() && it->second < at) continue;
         // A use of a name the text defined otherwise; but `= C` again, after an earlier `= C`, is the text's
         // constant once more (another quantity said to be conserved, or the same one approximated).
         bool again = false;
         for (const auto& [offset, known] : named_constants_) again = again || known == f->name;
         if (definitions_.value_at(name, at) && !again) continue;
-        const PSide& quantity = c.sides[c.sides.size() - 2];
+        const PSide& quantity = c.sides[k - 1];
         const Prepared p = prepare(quantity);
         if (!p.comparable() || !p.units.empty() || p.value.has(name) || !quantity_of_motion(p.value, model_)) continue;
         const std::size_t until = c.section >= 0 ? d_.sections[std::size_t(c.section)].end : std::string::npos;
-        definitions_.add(name, f->name, p.value, at, d_.position(at).line, until, quantity.side->source, at,
-                         conserved_on_motion(p.value));
+        const bool alone = named->factor.is_equal(1);
+        const GiNaC::ex value = alone ? p.value : GiNaC::ex(p.value / named->factor);
+        const std::string source = alone ? quantity.side->source : latex(value);
+        definitions_.add(name, f->name, value, at, d_.position(at).line, until, source, at,
+                         conserved_on_motion(value));
         named_constants_[at] = f->name;
     }
 }

@@ -67,7 +67,16 @@ void Checker::collect_positions(const std::vector<FullChain>& chains) {
     // (section, point) → its rows, in text order; the values at a point the text considers (`y = r\cos\pi` after
     // "halfway along the first turn, $s = \frac{1}{2h}$") apart, by the end of that point's paragraph.
     std::map<std::pair<int, std::string>, std::vector<Row>> groups;
-    std::map<std::tuple<int, std::string, std::size_t>, std::vector<Row>> at_points;
+    PointRows at_points;
+    // The conditions in force at `at`, as a key: a paragraph may take more than one point in turn ("when $s = 0$,
+    // … Halfway along the first turn, $s = \frac{1}{2h}$, …").
+    const auto conditions_key = [&](std::size_t at) {
+        std::string key;
+        for (const auto& [symbol, value_line] : discourse_->conditions_at(at))
+            for (const Coordinate& q : model_.coordinates)  // the point's coordinates (not `x = l` read as l's value)
+                if (symbol.is_equal(q.q)) key += latex(symbol) + "=" + latex(value_line.first) + ";";
+        return key;
+    };
     for (const FullChain& c : chains)
         for (std::size_t k = 0; k + 1 < c.sides.size(); ++k) {
             const Side& s = *c.sides[k].side;
@@ -84,7 +93,7 @@ void Checker::collect_positions(const std::vector<FullChain>& chains) {
                 if (!plain(v) || !v.vectors.empty()) continue;
                 const Row row{c.relation_offsets[k], f->name, {{p->axis, v.value}}};
                 if (point_paragraph > 0)
-                    at_points[{c.section, p->point, point_paragraph}].push_back(row);
+                    at_points[{c.section, p->point, point_paragraph, conditions_key(row.at)}].push_back(row);
                 else
                     groups[{c.section, p->point}].push_back(row);
             } else if (f->kind == NameKind::Vector && point_paragraph == 0) {
@@ -160,7 +169,7 @@ void Checker::collect_positions(const std::vector<FullChain>& chains) {
 }
 
 void Checker::collect_positions_at_points(
-    const std::map<std::tuple<int, std::string, std::size_t>, std::vector<PositionRow>>& at_points,
+    const PointRows& at_points,
     const std::map<std::pair<int, std::string>, const ModelPoint*>& matched_points,
     const std::vector<ModelPoint>& points) {
     // The coordinates a paragraph gives at a point the text considers: compared with the model's point there (its
@@ -168,7 +177,7 @@ void Checker::collect_positions_at_points(
     // the section (then a coordinate that differs is a slip: the text's axes are the model's, it says so
     // elsewhere); without such formulas, one point that every coordinate given there matches, or nothing is said.
     for (const auto& [key, rows] : at_points) {
-        const auto& [section, name, paragraph] = key;
+        const auto& [section, name, paragraph, in_force] = key;
         const auto conditions = discourse_->conditions_at(rows.front().at);
         GiNaC::exmap at;
         std::string where;

@@ -111,4 +111,62 @@ bool explains_formula_before(const Derivation& d, std::size_t offset) {
     return false;
 }
 
+namespace {
+
+bool starts_with_at(const std::string& s, std::size_t at, const char* prefix) {
+    return s.compare(at, std::char_traits<char>::length(prefix), prefix) == 0;
+}
+
+/// True when s[begin, end) is one display alone: `$$…$$`, `\[…\]` or `\begin{…}…\end{…}`, nothing around it.
+bool display_alone(const std::string& s, std::size_t begin, std::size_t end) {
+    const std::size_t last = s.find_last_not_of(" \t\r\n", end - 1);
+    if (last == std::string::npos || last < begin) return false;
+    const std::string tail = s.substr(begin, last + 1 - begin);
+    const auto ends_with = [&](const char* x) {
+        const std::size_t n = std::char_traits<char>::length(x);
+        return tail.size() >= n && tail.compare(tail.size() - n, n, x) == 0;
+    };
+    if (starts_with_at(s, begin, "$$")) return tail.size() >= 4 && ends_with("$$") && tail.find("$$", 2) == tail.size() - 2;
+    if (starts_with_at(s, begin, "\\[")) return ends_with("\\]");
+    if (starts_with_at(s, begin, "\\begin{")) return tail.rfind("\\end{") != std::string::npos && ends_with("}");
+    return false;
+}
+
+/// True when the paragraph that ends at `end` (a blank line) ends a sentence: its last character, inside a
+/// display's closing delimiter too, is a full stop, a question or an exclamation mark.
+bool ends_sentence(const std::string& s, std::size_t end) {
+    std::size_t k = s.find_last_not_of(" \t\r\n", end);
+    if (k == std::string::npos) return true;
+    std::string tail = s.substr(0, k + 1);
+    for (const char* close : {"$$", "\\]"})
+        if (tail.size() >= 2 && tail.compare(tail.size() - 2, 2, close) == 0) {
+            tail.resize(tail.size() - 2);
+            break;
+        }
+    if (!tail.empty() && tail.back() == '}') {
+        const std::size_t env = tail.rfind("\\end{");
+        if (env != std::string::npos && tail.find('}', env) == tail.size() - 1) tail.resize(env);
+    }
+    const std::size_t c = tail.find_last_not_of(" \t\r\n");
+    if (c == std::string::npos) return true;
+    const char last = tail[c];
+    return last == '.' || last == '!' || last == '?';
+}
+
+}  // namespace
+
+std::size_t paragraph_end(const Derivation& d, std::size_t at) {
+    const std::string& s = d.text;
+    std::size_t end = s.find("\n\n", at);
+    while (end != std::string::npos && !ends_sentence(s, end)) {
+        const std::size_t next = s.find_first_not_of(" \t\r\n", end);
+        if (next == std::string::npos) break;
+        std::size_t next_end = s.find("\n\n", next);
+        if (next_end == std::string::npos) next_end = s.size();
+        if (!display_alone(s, next, next_end)) break;
+        end = next_end == s.size() ? std::string::npos : next_end;
+    }
+    return end == std::string::npos ? s.size() : end;
+}
+
 }  // namespace eomgen::checker

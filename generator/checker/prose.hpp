@@ -31,4 +31,12 @@ std::string lead_in_ends_with(const Derivation& d, std::size_t offset, std::init
 /// with "where" ("where $Q$ is the force of the damper: $$Q = -c\dot y$$").
 bool explains_formula_before(const Derivation& d, std::size_t offset);
 
+/**
+ * The end of the paragraph that holds `at`, as a reader takes it: the next blank line, or past it when the prose
+ * before the blank line runs on into a display set off by blank lines (it ends without a full stop: "and dividing
+ * by $\sin\theta$," then `$$…$$` alone in its paragraph), and so on while each display runs on into the next.
+ * The conditions of a steady motion stated in a paragraph hold for the displays it runs on into (discourse.cpp).
+ */
+std::size_t paragraph_end(const Derivation& d, std::size_t at);
+
 }  // namespace eomgen::checker

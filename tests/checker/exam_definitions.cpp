@@ -450,3 +450,32 @@ TEST_CASE("definitions: solving by dividing by a quantity that vanishes on the m
         if (e.where.line == 5) CHECK(e.reason.find("which is 0 on the motion") == std::string::npos);
     }
 }
+
+TEST_CASE("definitions: a name times a factor at the end of a chain names the quantity before it",
+          "[checker][definitions]") {
+    // `p_\psi = I_3(\dot\psi + \dot\phi\cos\theta) = I_3\omega_3`: ω₃ is the spin, in the rows after it too.
+    const std::string text = eomgen::test::fixture("heavy_top_steady_notes.md");
+    const eomgen::checker::CheckReport r = eomgen::test::check_text("models/heavy_symmetric_top.toml", text);
+    bool named = false;
+    int used = 0;
+    for (const EquationCheck& e : r.equations) {
+        INFO(describe(e));
+        if (e.where.line == 14 && e.reason.find("the text names its value $\\omega_{3}$") != std::string::npos) {
+            CHECK(e.verdict == Verdict::Agrees);  // the spin is conserved
+            named = true;
+        }
+        if (has_note(e, "using $\\omega_{3} = \\dot{\\psi} + \\dot{\\phi} \\cos \\theta$ (line 14)")) ++used;
+        CHECK(e.reason.find("unknown symbol") == std::string::npos);
+    }
+    CHECK(named);
+    CHECK(used >= 4);  // p_φ, the θ equation, steady precession, the energy
+    // A name the text wrote before is not introduced there: "a circular orbit of radius $r_0$ … $\ell^2 = m k r_0$"
+    // (with ℓ = m r² θ̇ conserved) is a claim about that radius, not the text's name for ℓ²/(mk).
+    const eomgen::checker::CheckReport orbit = eomgen::test::check_text(
+        "tests/checker/models/central_force.toml",
+        "With $m r^2\\dot\\theta = \\ell$, a circular orbit of radius $r_0$ satisfies $\\ell^2 = m k r_0$.\n");
+    for (const EquationCheck& e : orbit.equations) {
+        INFO(describe(e));
+        if (e.equation.find("r_0") != std::string::npos) CHECK(e.verdict == Verdict::NotComparable);
+    }
+}

@@ -645,3 +645,33 @@ TEST_CASE("roles: one name against a number in an inequality is a condition, not
     REQUIRE(last.size() == 1);
     CHECK(last[0]->verdict == Verdict::NotComparable);
 }
+
+TEST_CASE("roles: the conditions of a steady motion hold for the display the paragraph runs on into, past a blank "
+          "line, and an initial state does not",
+          "[checker][roles]") {
+    // A top written as a student writes it (tests/checker/fixtures/heavy_top_steady_notes.md): ω₃ named inside a
+    // chain, "For steady precession, θ̇ = θ̈ = 0, and dividing by sin θ," then the display alone.
+    const std::string text = eomgen::test::fixture("heavy_top_steady_notes.md");
+    const CheckReport r = eomgen::test::check_text("models/heavy_symmetric_top.toml", text);
+    CHECK(eomgen::test::planted_found(r, eomgen::test::planted_mistakes(text)) == 2);
+    const std::vector<const EquationCheck*> steady = on_line(r, 24);
+    REQUIRE(steady.size() == 1);
+    INFO(eomgen::test::describe(*steady[0]));
+    CHECK(steady[0]->verdict == Verdict::Agrees);
+    CHECK(steady[0]->compared_with.find("on the motion the text considers") != std::string::npos);
+    CHECK(eomgen::test::has_note(*steady[0], "the condition the text states on line 22"));
+    // "Initially θ̇ = 0, and since the energy is conserved," then E in general: compared as written, not at θ̇ = 0
+    // (and its slip found).
+    for (const EquationCheck* e : on_line(r, 28)) {
+        INFO(eomgen::test::describe(*e));
+        CHECK_FALSE(eomgen::test::has_note(*e, "line 26"));
+    }
+    // A fast top's rate is an approximation in a limit the checker does not read: not a wrong energy.
+    const std::vector<const EquationCheck*> fast = on_line(r, 30);
+    REQUIRE(fast.size() == 1);
+    INFO(eomgen::test::describe(*fast[0]));
+    CHECK(fast[0]->verdict == Verdict::NotComparable);
+    CHECK(fast[0]->reason.find("an approximation that is not an expansion") != std::string::npos);
+    CHECK(r.count(Verdict::Disagrees) == 2);
+    CHECK(r.count(Verdict::NotComparable) == 1);
+}
