@@ -297,6 +297,13 @@ bool check_approximation(const Derivation& d, const Model& model, const std::vec
             for (std::size_t k = 0; k < model.dof(); ++k) small.push_back(k);
             said = " (the text says on line " + std::to_string(d.position(*cue).line) + " that the motion is small)";
         }
+    // `\ddot\eta = -\omega^2\sin^2\alpha_0\,\eta` after "writing α = α₀ + η": written in the deviation from a point,
+    // an expansion about it.
+    if (small.empty())
+        for (std::size_t k = 0; k < model.dof() && k < points.deviation.size(); ++k)
+            if (!points.deviation[k].empty() && (sources.first.find(points.deviation[k]) != std::string::npos ||
+                                                 sources.second.find(points.deviation[k]) != std::string::npos))
+                small.push_back(k);
     if (small.empty() && implied)  // implied: every coordinate the equation holds
         for (std::size_t k = 0; k < model.dof(); ++k)
             if ((a - b).has(model.coordinates[k].q) || (a - b).has(model.coordinates[k].qd)) small.push_back(k);

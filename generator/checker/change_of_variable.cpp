@@ -50,14 +50,25 @@ std::optional<GiNaC::ex> Checker::earlier_value(const std::vector<FullChain>& ch
     std::optional<GiNaC::ex> found;
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2 || c.relation_offsets.front() >= before) continue;
-        if (!c.sides[0].side->ok || !c.sides[0].side->value.is_equal(name)) continue;
+        if (!c.sides[0].side->ok) continue;
+        // The name, or its cosine, sine or tangent (`\cos\alpha_0 = \frac{g}{R\omega^2}`, an equilibrium's angle):
+        // the last value the text gives before `before`.
+        const GiNaC::ex head = c.sides[0].side->value;
+        const bool trig = head.nops() == 1 && head.op(0).is_equal(name) &&
+                          (GiNaC::is_the_function<GiNaC::cos_SERIAL>(head) ||
+                           GiNaC::is_the_function<GiNaC::sin_SERIAL>(head) ||
+                           GiNaC::is_the_function<GiNaC::tan_SERIAL>(head));
+        if (!head.is_equal(name) && !trig) continue;
         for (std::size_t k = c.sides.size(); k-- > 1;) {
             if (c.relations[k - 1] != Relation::Equal) break;
             const Prepared p = prepare(c.sides[k]);
             if (!p.comparable() || !p.units.empty() || p.value.has(name) || depends_on_state(p.value) ||
                 has_acceleration(p.value) || p.value.has(model_.t))
                 continue;
-            found = p.value;
+            found = !trig                                               ? p.value
+                    : GiNaC::is_the_function<GiNaC::cos_SERIAL>(head) ? GiNaC::acos(p.value)
+                    : GiNaC::is_the_function<GiNaC::sin_SERIAL>(head) ? GiNaC::asin(p.value)
+                                                                        : GiNaC::atan(p.value);
             if (line) *line = d_.position(c.relation_offsets.front()).line;
             break;
         }

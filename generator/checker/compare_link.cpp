@@ -93,7 +93,11 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         r.reason = "an inequality or a relation other than equality is not compared";
         return r;
     }
-    if (rel == Relation::Equal && modes_.check(*L.side, *R.side, ctx_, *this, r)) return r;
+    // "Let $\omega_c^2 = g/R$": a frequency the text introduces by name is its definition, not a claim about the
+    // normal modes.
+    const bool introduced = rel == Relation::Equal && !definitions_.defined_at(L.base + L.side->begin).empty() &&
+                            introduces_name(d_, L.base + L.side->begin);
+    if (rel == Relation::Equal && !introduced && modes_.check(*L.side, *R.side, ctx_, *this, r)) return r;
     if (!both_signs_ && (two_equations_in_one(*L.side) || two_equations_in_one(*R.side)))
         return check_both_signs(c, i, j, bridge);
     // `\vec{r}_m = (x + l\sin\theta)\hat{x} - l\cos\theta\,\hat{y}`: a point the model gives (point_positions.cpp).

@@ -83,7 +83,10 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
             }
             // θ̈ = 0 after θ̇ = 0 (or θ = θ₀) in its paragraph, or in a sentence about an equilibrium or a steady
             // motion ("at equilibrium $\ddot x = 0$"): the acceleration of the motion the text considers.
-            const std::string sentence = lead_in(d, link.at, 1);
+            // ("Equilibria: $\ddot\alpha = 0$ gives …": a heading with a colon is the sentence's subject.)
+            std::string sentence = lead_in(d, link.at, 1);
+            if (std::none_of(sentence.begin(), sentence.end(), [](char ch) { return std::isalpha(static_cast<unsigned char>(ch)); }))
+                sentence = lead_in(d, link.at, 2);
             // "Setting θ̈ = 0 and θ̇ = 0": an acceleration the words right before set is a condition too (not
             // "putting (1) into (2) and simplifying: …").
             const bool steady = std::any_of(std::begin(kSteady), std::end(kSteady), [&](const char* w) {

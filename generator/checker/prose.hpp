@@ -31,6 +31,10 @@ std::string lead_in_ends_with(const Derivation& d, std::size_t offset, std::init
 /// with "where" ("where $Q$ is the force of the damper: $$Q = -c\dot y$$").
 bool explains_formula_before(const Derivation& d, std::size_t offset);
 
+/// True when the sentence leading into the math at `offset` introduces a name: "let", "define", "introduce",
+/// "denote", "call" as words ("Let $\omega_c^2 = g/R$", "introduce the critical rate through $…$").
+bool introduces_name(const Derivation& d, std::size_t offset);
+
 /**
  * The end of the paragraph that holds `at`, as a reader takes it: the next blank line, or past it when the prose
  * before the blank line runs on into a display set off by blank lines (it ends without a full stop: "and dividing

@@ -675,3 +675,32 @@ TEST_CASE("roles: the conditions of a steady motion hold for the display the par
     CHECK(r.count(Verdict::Disagrees) == 2);
     CHECK(r.count(Verdict::NotComparable) == 1);
 }
+
+TEST_CASE("roles: equilibria under a heading, a rate introduced with let, and the oscillations about an angle "
+          "given by its cosine",
+          "[checker][roles]") {
+    // tests/checker/fixtures/bead_hoop_equilibria_notes.md against the example's bead on a spinning hoop.
+    const std::string text = eomgen::test::fixture("bead_hoop_equilibria_notes.md");
+    const CheckReport r = eomgen::test::check_text("examples/bead_on_hoop.toml", text);
+    CHECK(eomgen::test::planted_found(r, eomgen::test::planted_mistakes(text)) == 1);
+    const auto only = [&](int line, std::size_t k = 0) {
+        const std::vector<const EquationCheck*> v = on_line(r, line);
+        REQUIRE(v.size() > k);
+        INFO(eomgen::test::describe(*v[k]));
+        return *v[k];
+    };
+    // "Equilibria: $\ddot\alpha = 0$ gives …": a condition, not free fall; the two angles hold there.
+    CHECK(only(20, 0).role == Role::Condition);
+    CHECK(only(20, 1).verdict == Verdict::Agrees);
+    CHECK(only(20, 2).verdict == Verdict::Agrees);
+    // "Let $\omega_c^2 = g/R$": the text's name for the critical rate, not a normal frequency of the model.
+    CHECK(only(22, 0).role == Role::Definition);
+    // α₀ is the angle whose cosine the text gave (line 20): the oscillations in η = α − α₀ agree to first order, and
+    // so does Ω = ω sin α₀ = ω √(1 − ω_c⁴/ω⁴).
+    const EquationCheck eta = only(24);
+    INFO(eomgen::test::describe(eta));
+    CHECK(eta.verdict == Verdict::Agrees);
+    CHECK(eta.reason == "agrees to first order in $\\eta$");
+    CHECK(only(26, 1).verdict == Verdict::Agrees);
+    CHECK(r.count(Verdict::Disagrees) == 1);
+}
