@@ -62,10 +62,11 @@ EquationCheck Checker::check_both_signs(const FullChain& c, std::size_t i, std::
         if (result[reading].verdict == Verdict::Disagrees) {
             EquationCheck r = std::move(result[reading]);
             r.reason = "with " + std::string(which[reading]) + ": " + r.reason;
-            r.notes.push_back(result[1 - reading].verdict == Verdict::Agrees
-                                  ? std::string("with ") + which[1 - reading] + " it agrees"
-                                  : std::string("with ") + which[1 - reading] + " it is " +
-                                        verdict_name(result[1 - reading].verdict));
+            const Verdict other = result[1 - reading].verdict;
+            r.notes.push_back(std::string("with ") + which[1 - reading] +
+                              (other == Verdict::Agrees      ? " it agrees"
+                               : other == Verdict::Disagrees ? " it disagrees too"
+                                                             : std::string(" it is ") + verdict_name(other)));
             return r;
         }
     EquationCheck r = std::move(result[0].verdict == Verdict::Agrees ? result[1] : result[0]);

@@ -163,6 +163,10 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
         const FreeName* f = ctx_.free_name_of(head);
         if (!f || f->kind != NameKind::Unknown || is_part(head) || is_constant_name(f->name)) continue;
         for (std::size_t k = c.sides.size(); k-- > 1;) {
+            // `\gamma < \omega_0`: only a side the name equals (every relation before it `=`) is its value.
+            if (std::any_of(c.relations.begin(), c.relations.begin() + std::ptrdiff_t(k),
+                            [](Relation rel) { return rel != Relation::Equal; }))
+                continue;
             // `\ell := m r^2 \dot\theta \equiv \mathrm{const}`: the constant says that it is conserved, it is
             // not the definition.
             if (c.sides[k].side->ok && GiNaC::is_a<GiNaC::symbol>(c.sides[k].side->value))

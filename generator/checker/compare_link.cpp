@@ -24,9 +24,13 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
                  (R.side->source.empty() ? std::string("\\ldots") : R.side->source);
     if (bridge) r.notes.push_back("compared across the step(s) between them that cannot be compared");
     if (discourse_->sets_trial(rel_at) && j == i + 1) {
+        const ExponentialTrial* e = discourse_->exponential_at(rel_at + 1);
         not_judged(r, Role::Trial,
-                   "a trial solution: not judged; the equations for its amplitudes that follow are compared with the "
-                   "rows of $(K - \\omega^2 M) A = 0$ about rest");
+                   e && e->from == rel_at
+                       ? "a trial solution: not judged; the equation for its exponent that follows is compared with the "
+                         "characteristic equation $\\det(\\lambda^2 M_0 + \\lambda C_0 + K_0) = 0$ about rest"
+                       : "a trial solution: not judged; the equations for its amplitudes that follow are compared with "
+                         "the rows of $(K - \\omega^2 M) A = 0$ about rest");
         return r;
     }
     // `r = r_{eq} + \rho`: the text's new name for the deviation from a point (change_of_variable.cpp).

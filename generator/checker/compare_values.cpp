@@ -32,6 +32,16 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
                                              }()
                                        : "";
 
+    // The exponent of `\varphi = e^{\lambda t}`: the characteristic equation about rest, and its roots.
+    if (const ExponentialTrial* trial = discourse_->exponential_at(c.relation_offsets[j - 1]);
+        trial && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
+        !depends_on_state(a.value) && !depends_on_state(b.value) && !has_acceleration(a.value) &&
+        !has_acceleration(b.value) && (a.value - b.value).has(trial->exponent) &&
+        std::all_of(a.unknown.begin(), a.unknown.end(), [&](const FreeName* f) { return trial->exponent.is_equal(f->symbol); }) &&
+        std::all_of(b.unknown.begin(), b.unknown.end(), [&](const FreeName* f) { return trial->exponent.is_equal(f->symbol); }))
+        if (const std::optional<GiNaC::ex> p = characteristic_polynomial(motion_, model_, trial->exponent);
+            p && check_characteristic(a.value, b.value, *trial, *p, *this, r))
+            return;
     // The amplitudes of a trial solution (`x_j = A_j e^{i\omega t}`): rows of (K − ω² M) A = 0.
     if (const TrialSolution* trial = discourse_->trial_at(c.relation_offsets[j - 1]);
         trial && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
@@ -111,8 +121,10 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         // A definition names its left side; what its value uses that the model does not know is said after it.
         // (A frequency the normal-mode check read as a claim and could not compare stays a claim.)
         // (One that explains the formula before it, "where $\omega^2 = k/m$", is the formula's abbreviation.)
+        // (One its sentence introduces, "writing $\omega_0^2 = g/l$", is the text's name for what follows.)
         const auto frequency_note = [](const std::string& n) { return n.rfind("read as a normal frequency", 0) == 0; };
         const bool frequency_claim = !explains_formula_before(d_, L.base + L.side->begin) &&
+                                     !introduces_name(d_, L.base + L.side->begin) &&
                                      std::any_of(r.notes.begin(), r.notes.end(), frequency_note);
         if (!def.empty() && !frequency_claim) {
             r.notes.erase(std::remove_if(r.notes.begin(), r.notes.end(), frequency_note), r.notes.end());

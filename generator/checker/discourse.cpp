@@ -160,6 +160,15 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
             if (holds_state(w->value, model) || w->value.has(model.t) || has_free_name(w->value, ctx)) continue;
             stated_.push_back({link.at, link.until, squared ? w->value : w->value * w->value, base});
         }
+        // `\varphi = e^{\lambda t}`: the exponent's equation follows (characteristic_equation.hpp).
+        if (std::optional<ExponentialTrial> e = exponential_trial(x.value, y.value, model, ctx)) {
+            e->from = link.at;
+            e->until = link.until;
+            e->line = line;
+            exponentials_.push_back(*e);
+            trial_links_.insert(link.at);
+            continue;
+        }
         // A trial solution; those of one coordinate each with one frequency are one. With a frequency the text has
         // stated (`\omega^2 = g/l`, then `\theta(t) = \theta_0\cos(\omega t)`) it is a solution it claims instead.
         std::optional<TrialSolution> t = trial_solution(x.value, y.value, model, ctx);
@@ -236,6 +245,13 @@ GiNaC::ex Discourse::renamed(const GiNaC::ex& e, std::size_t at, std::vector<std
 const TrialSolution* Discourse::trial_at(std::size_t at) const {
     const TrialSolution* found = nullptr;
     for (const TrialSolution& t : trials_)
+        if (t.from < at && at < t.until) found = &t;
+    return found;
+}
+
+const ExponentialTrial* Discourse::exponential_at(std::size_t at) const {
+    const ExponentialTrial* found = nullptr;
+    for (const ExponentialTrial& t : exponentials_)
         if (t.from < at && at < t.until) found = &t;
     return found;
 }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "checker/amplitude_equations.hpp"
+#include "checker/characteristic_equation.hpp"
 #include "checker/derivation.hpp"
 #include "checker/latex_parser.hpp"
 #include "model/model.hpp"
@@ -114,6 +115,8 @@ class Discourse {
     bool sets_trial(std::size_t at) const { return trial_links_.count(at) != 0; }
     /// The trial solution in force at `at`, or nullptr.
     const TrialSolution* trial_at(std::size_t at) const;
+    /// The exponential trial solution (`\varphi = e^{\lambda t}`) in force at `at`, or nullptr.
+    const ExponentialTrial* exponential_at(std::size_t at) const;
     /// The squared frequency the text stated last before `at` in its section, if any.
     std::optional<GiNaC::ex> stated_frequency(std::size_t at) const;
     /// The frequencies stated before `at` in their section, by name: ω → its value (`\omega^2 = g/l` gives √(g/l)).
@@ -124,6 +127,7 @@ class Discourse {
     std::set<std::size_t> assumptions_;
     std::vector<Naming> namings_;
     std::vector<TrialSolution> trials_;
+    std::vector<ExponentialTrial> exponentials_;
     std::set<std::size_t> trial_links_;
     struct Stated {
         std::size_t at, until;

@@ -32,7 +32,7 @@ std::string lead_in_ends_with(const Derivation& d, std::size_t offset, std::init
 bool explains_formula_before(const Derivation& d, std::size_t offset);
 
 /// True when the sentence leading into the math at `offset` introduces a name: "let", "define", "introduce",
-/// "denote", "call" as words ("Let $\omega_c^2 = g/R$", "introduce the critical rate through $…$").
+/// "denote", "call", "write" as words ("Let $\omega_c^2 = g/R$", "introduce the critical rate through $…$").
 bool introduces_name(const Derivation& d, std::size_t offset);
 
 /**

@@ -1,8 +1,12 @@
 /** @file exam_amplitudes.cpp  A trial solution and the equations for its amplitudes (amplitude_equations.hpp),
  * on the triatomic molecule (linear, springs with rest lengths) and the double pendulum (about rest). */
 #include "checked_text.hpp"
+#include "checker/characteristic_equation.hpp"
 
 #include <catch2/catch.hpp>
+
+#include <optional>
+#include <vector>
 
 using eomgen::checker::CheckReport;
 using eomgen::checker::EquationCheck;
@@ -149,4 +153,54 @@ TEST_CASE("amplitudes: the matrix form, the characteristic equation and a mode's
     CHECK(w.equations[1].wrong_terms[0].rfind("row 2", 0) == 0);
     CHECK(w.equations[3].verdict == Verdict::Disagrees);
     CHECK(w.equations[3].corrected == "e_2 = \\begin{bmatrix} 1 \\\\ 0 \\\\ -1 \\end{bmatrix}");
+}
+
+TEST_CASE("amplitudes: an exponential trial's characteristic equation and roots, damping included",
+          "[checker][amplitudes]") {
+    // `\varphi = e^{\lambda t}` on the damped pendulum (models/damped_pendulum.toml, Rayleigh's R = ½ c φ̇²): the
+    // equation in λ is det(λ² M₀ + λ C₀ + K₀) = 0 about rest, m l² λ² + c λ + m g l = 0, and each sign of the roots
+    // solves it; the planted missing 2 and the root with + ω₀² disagree.
+    const std::string text = eomgen::test::fixture("damped_pendulum_exponential_notes.md");
+    const CheckReport r = eomgen::test::check_text("models/damped_pendulum.toml", text);
+    CHECK(eomgen::test::planted_found(r, eomgen::test::planted_mistakes(text)) == 2);
+    int characteristic = 0, roots = 0;
+    for (const EquationCheck& e : r.equations) {
+        INFO(eomgen::test::describe(e));
+        if (e.where.line == 17 && e.equation.find("e^{") != std::string::npos)
+            CHECK(e.role == eomgen::checker::Role::Trial);
+        if (e.where.line == 19) {
+            CHECK(e.verdict == Verdict::Agrees);
+            CHECK(e.compared_with.find("the characteristic equation") != std::string::npos);
+            ++characteristic;
+        }
+        if (e.where.line == 21) {
+            CHECK(e.verdict == Verdict::Agrees);
+            CHECK(e.reason == "with either sign of ±: a root of it");
+            ++roots;
+        }
+        if (e.where.line == 25) CHECK(e.corrected.find("\\lambda^{2}") != std::string::npos);
+        if (e.where.line == 13) CHECK(e.role == eomgen::checker::Role::Definition);  // γ, and ω₀² after "writing"
+        // "weak damping, $\gamma < \omega_0$": an inequality defines nothing (it once read γ = ω₀ for line 29).
+        CHECK_FALSE(eomgen::test::has_note(e, "using $\\gamma = \\omega_0$"));
+    }
+    CHECK(characteristic == 1);
+    CHECK(roots == 1);
+    CHECK(r.count(Verdict::Disagrees) == 2);
+    // The polynomial itself: about rest, with the damping's λ term.
+    const auto& [model, eq] = eomgen::test::derived_model("models/damped_pendulum.toml");
+    std::vector<GiNaC::ex> motion;
+    for (std::size_t i = 0; i < model.dof(); ++i)
+        motion.push_back(eq.euler_lagrange[i] -
+                         (i < eq.generalized_forces.size() ? eq.generalized_forces[i] : GiNaC::ex(0)));
+    const GiNaC::symbol lambda("lambda");
+    const std::optional<GiNaC::ex> p = eomgen::checker::characteristic_polynomial(motion, model, lambda);
+    REQUIRE(p);
+    const auto parameter = [&](const char* name) {
+        for (const eomgen::Parameter& q : model.parameters)
+            if (q.name == name) return GiNaC::ex(q.symbol);
+        FAIL("no parameter " << name);
+        return GiNaC::ex(0);
+    };
+    const GiNaC::ex m = parameter("m"), l = parameter("l"), g = parameter("g"), c = parameter("c");
+    CHECK(GiNaC::expand(*p - (m * l * l * lambda * lambda + c * lambda + m * g * l)).is_zero());
 }
