@@ -553,6 +553,7 @@ CheckReport Checker::run() {
     collect_definitions(chains);
     collect_changes_of_variable(chains);
     collect_named_constants(chains);
+    collect_common_values(chains);
     for (const FullChain& c : chains)  // stated vectors and eigen-equations, used before and after their line
         for (std::size_t k = 0; k + 1 < c.sides.size(); ++k)
             if (c.relations[k] == Relation::Equal)

@@ -435,6 +435,16 @@ class Checker : public Comparisons {
                            EquationCheck& r);
     /// The link ending at side j of c is `m_2 = m` in the assumption `m_1 = m_2 = m`: it names the common value.
     bool names_common_value(const FullChain& c, std::size_t j) const;
+    /// The common value an assumption of the setting names (`m` in "take $m_1 = m_2 = m$") stands for the parameter it
+    /// equals to the end of the section (stated_names.cpp): then every comparison reads it, not only the pinned numbers.
+    void collect_common_values(const std::vector<FullChain>& chains);
+    struct CommonValue {
+        GiNaC::ex name, parameter;
+        std::size_t from, until;
+    };
+    std::vector<CommonValue> common_values_;
+    /// `side` with the common values in force at file offset `at` put in (`l` → l₂ after "take $l_1 = l_2 = l$").
+    Side with_common_values(const Side& side, std::size_t at) const;
     bool verifying_ = false;
     void check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other, double tol,
                     EquationCheck& r);

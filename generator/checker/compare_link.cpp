@@ -97,40 +97,8 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         r.reason = "an inequality or a relation other than equality is not compared";
         return r;
     }
-    // "Let $\omega_c^2 = g/R$": a frequency the text introduces by name is its definition, not a claim about the
-    // normal modes.
-    const bool introduced = rel == Relation::Equal && !definitions_.defined_at(L.base + L.side->begin).empty() &&
-                            introduces_name(d_, L.base + L.side->begin);
-    if (rel == Relation::Equal && !introduced && modes_.check(*L.side, *R.side, ctx_, *this, r)) return r;
-    if (!both_signs_ && (two_equations_in_one(*L.side) || two_equations_in_one(*R.side)))
-        return check_both_signs(c, i, j, bridge);
-    // `\vec{r}_m = (x + l\sin\theta)\hat{x} - l\cos\theta\,\hat{y}`: a point the model gives (point_positions.cpp).
-    if (rel == Relation::Equal && check_position(c, j, true, r)) return r;
-    if (rel == Relation::Equal && algebra_.check(*L.side, L.base, *R.side, R.base, *this, r)) return r;
-    // A part of T or V defined by this link: compare it with its share of eomgen's T or V.
-    for (int side = 0; side < 2; ++side) {
-        const PSide& P = side == 0 ? L : R;
-        const PSide& O = side == 0 ? R : L;
-        if (!P.side->ok || !is_part(P.side->value)) continue;
-        const GiNaC::ex part = P.side->value;
-        Prepared o = prepare(O, &part);
-        if (!o.ok) {
-            r.reason = o.problem;
-            return r;
-        }
-        if (o.value.has(part)) break;  // T_{a} = T_{a}: an identity, handled below
-        if (!o.comparable() || !o.units.empty()) break;
-        const double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
-        r.notes.insert(r.notes.end(), o.notes.begin(), o.notes.end());
-        check_part(part, P.side->source, o, tol, r);
-        return r;
-    }
-    Prepared a = prepare(L), b = prepare(R);
-    if (!a.ok || !b.ok) {
-        r.reason = !a.ok ? a.problem : b.problem;
-        return r;
-    }
-    // A parameter the text set for this paragraph (`m_1 = 0`): both the text and eomgen's equations take it.
+    // A parameter the text set for this paragraph (`m_1 = 0`), an assumption (`m_1 = m_2`), a condition: both the text
+    // and eomgen's quantities take it, in every comparison below (the matrices' and the modes' too).
     GiNaC::exmap chosen;
     chosen_notes_.clear();
     for (std::size_t k = 0; k < model_.parameters.size(); ++k)
@@ -160,6 +128,42 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         ~Unpin() { n.pin({}); }
     } const unpin{numbers_};
     numbers_.pin(chosen);
+    // "Let $\omega_c^2 = g/R$": a frequency the text introduces by name is its definition, not a claim about the
+    // normal modes.
+    const bool introduced = rel == Relation::Equal && !definitions_.defined_at(L.base + L.side->begin).empty() &&
+                            introduces_name(d_, L.base + L.side->begin);
+    if (rel == Relation::Equal && !introduced &&
+        modes_.check(with_common_values(*L.side, L.base + L.side->begin),
+                     with_common_values(*R.side, R.base + R.side->begin), ctx_, *this, r))
+        return r;
+    if (!both_signs_ && (two_equations_in_one(*L.side) || two_equations_in_one(*R.side)))
+        return check_both_signs(c, i, j, bridge);
+    // `\vec{r}_m = (x + l\sin\theta)\hat{x} - l\cos\theta\,\hat{y}`: a point the model gives (point_positions.cpp).
+    if (rel == Relation::Equal && check_position(c, j, true, r)) return r;
+    if (rel == Relation::Equal && algebra_.check(*L.side, L.base, *R.side, R.base, *this, r)) return r;
+    // A part of T or V defined by this link: compare it with its share of eomgen's T or V.
+    for (int side = 0; side < 2; ++side) {
+        const PSide& P = side == 0 ? L : R;
+        const PSide& O = side == 0 ? R : L;
+        if (!P.side->ok || !is_part(P.side->value)) continue;
+        const GiNaC::ex part = P.side->value;
+        Prepared o = prepare(O, &part);
+        if (!o.ok) {
+            r.reason = o.problem;
+            return r;
+        }
+        if (o.value.has(part)) break;  // T_{a} = T_{a}: an identity, handled below
+        if (!o.comparable() || !o.units.empty()) break;
+        const double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
+        r.notes.insert(r.notes.end(), o.notes.begin(), o.notes.end());
+        check_part(part, P.side->source, o, tol, r);
+        return r;
+    }
+    Prepared a = prepare(L), b = prepare(R);
+    if (!a.ok || !b.ok) {
+        r.reason = !a.ok ? a.problem : b.problem;
+        return r;
+    }
     // A name an assumption gives the parameters' common value (`m_1 = m_2 = m`) is known in its paragraph.
     for (Prepared* p : {&a, &b})
         p->unknown.erase(std::remove_if(p->unknown.begin(), p->unknown.end(),
@@ -367,8 +371,25 @@ bool Checker::approximation(std::size_t at, const std::string& left, const std::
                             const Prepared& b, bool implied, EquationCheck& r) {
     if (!a.comparable() || !b.comparable() || !a.units.empty() || !b.units.empty()) return false;
     const int ref_side = a.has_truth_label && !a.has_part ? 0 : (b.has_truth_label && !b.has_part ? 1 : -1);
-    return check_approximation(d_, model_, motion_, at, {left, right}, a.value, b.value, ref_side, implied, *this, r,
-                               expansion_points(at));
+    const ExpansionPoints points = expansion_points(at);
+    // `V \approx \frac12 m g l(2\theta_1^2 + \theta_2^2) + \text{const}`: up to an additive constant, each side
+    // less its value at the point of the expansion.
+    if (a.constants.empty() && b.constants.empty())
+        return check_approximation(d_, model_, motion_, at, {left, right}, a.value, b.value, ref_side, implied, *this,
+                                   r, points);
+    GiNaC::exmap zero, there;
+    for (const Prepared* p : {&a, &b})
+        for (const GiNaC::ex& k : p->constants) zero[k] = 0;
+    for (std::size_t k = 0; k < model_.dof(); ++k) {
+        there[model_.coordinates[k].q] = points.point(k);
+        there[model_.coordinates[k].qd] = 0;
+        there[model_.coordinates[k].qdd] = 0;
+    }
+    const GiNaC::ex x = a.value.subs(zero), y = b.value.subs(zero);
+    const bool done = check_approximation(d_, model_, motion_, at, {left, right}, x - x.subs(there),
+                                          y - y.subs(there), ref_side, implied, *this, r, points);
+    if (done) r.notes.push_back("compared up to the text's additive constant");
+    return done;
 }
 
 EquationCheck Checker::check_parsed_link(const FullChain& like, std::size_t at, const Chain& ch, std::size_t a,

@@ -1,5 +1,6 @@
 /** @file discourse.cpp  The conditions, namings, trial solutions and stated frequencies of a text. */
 #include "checker/discourse.hpp"
+#include "checker/conditions.hpp"
 #include "checker/state_symbols.hpp"
 
 #include "checker/prose.hpp"
@@ -132,7 +133,13 @@ Discourse::Discourse(const std::vector<DiscourseLink>& links, const Model& model
             if (!parameter || w->value.has(p->value) || GiNaC::is_a<GiNaC::numeric>(w->value) ||
                 holds_state(w->value, model) || w->value.has(model.t) || has_label_or_operator(w->value, labels))
                 continue;
-            conditions_.push_back({p->value, w->value, link.at, link.paragraph, line, false});
+            // "Take $m_1 = m_2 = m$", "assume", "let", "suppose": the problem's setting, for the rest of the section;
+            // "with $m_1 = m_2$ …" (a case it looks at) for its paragraph.
+            const std::string cue = condition_cue(d, link.at);
+            const bool setting = cue == "take" || cue == "taking" || cue == "let" || cue == "assume" ||
+                                 cue == "assuming" || cue == "suppose" || cue == "set" || cue == "setting";
+            conditions_.push_back({p->value, w->value, link.at, setting ? link.until : link.paragraph, line, false});
+            conditions_.back().setting = setting;
             assumptions_.insert(link.at);
             break;
         }

@@ -62,6 +62,7 @@ class Discourse {
         int line;
         bool is_position;    ///< a coordinate's value (a point), not a velocity's or an acceleration's
         bool limit = false;  ///< a parameter's limit the text takes in its prose ("as $c \to 0$"; limits.cpp)
+        bool setting = false;  ///< an assumption of the problem's setting ("take", "let", "assume"): to its section's end
     };
     /// A letter the text gives another quantity (`p_\theta = L`), from the naming to its section's end.
     struct Naming {

@@ -18,6 +18,38 @@ bool Checker::names_common_value(const FullChain& c, std::size_t j) const {
            discourse_->states_assumption(c.relation_offsets[j - 1]);
 }
 
+void Checker::collect_common_values(const std::vector<FullChain>& chains) {
+    // A name the text wrote before the assumption is its own notation there (or a slip: misspelled_names.cpp).
+    const auto used_before = [&](const std::string& name, std::size_t at) {
+        for (const FullChain& c : chains)
+            for (const PSide& s : c.sides)
+                for (const NameUse& u : s.side->uses)
+                    if (u.name == name && s.base + u.offset < at) return true;
+        return false;
+    };
+    for (const Discourse::Condition& k : discourse_->conditions()) {
+        // (A case the text looks at, "with $m_1 = m_2 = m$", keeps its common value a name of its paragraph, which
+        // a line may still solve for: implication.cpp.)
+        if (!k.setting || !discourse_->states_assumption(k.from) || !GiNaC::is_a<GiNaC::symbol>(k.value)) continue;
+        const FreeName* f = ctx_.free_name_of(k.value);
+        if (!f || f->kind != NameKind::Unknown || definitions_.value_at(k.value, k.from + 1)) continue;
+        if (used_before(f->name, k.from)) continue;
+        const auto p = std::find_if(model_.parameters.begin(), model_.parameters.end(),
+                                    [&](const Parameter& q) { return k.symbol.is_equal(q.symbol); });
+        if (p == model_.parameters.end()) continue;
+        definitions_.add(k.value, f->name, p->symbol, k.from, k.line, k.until, p->latex.empty() ? p->name : p->latex);
+        common_values_.push_back({k.value, p->symbol, k.from, k.until});
+    }
+}
+
+Side Checker::with_common_values(const Side& side, std::size_t at) const {
+    Side out = side;
+    if (!out.ok) return out;
+    for (const CommonValue& v : common_values_)
+        if (v.from < at && at < v.until) out.value = out.value.subs(v.name == v.parameter);
+    return out;
+}
+
 const MapEntry* Checker::map_entry_for(const PSide& s) const {
     const std::string name = canonical_name(trimmed(s.side->source));
     if (name.empty()) return nullptr;

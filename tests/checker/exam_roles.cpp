@@ -704,3 +704,22 @@ TEST_CASE("roles: equilibria under a heading, a rate introduced with let, and th
     CHECK(only(26, 1).verdict == Verdict::Agrees);
     CHECK(r.count(Verdict::Disagrees) == 1);
 }
+
+TEST_CASE("roles: an assumption of the problem's setting holds to the end of its section, in every comparison",
+          "[checker][roles]") {
+    // "Take $m_1 = m_2 = m$ and $l_1 = l_2 = l$" (tests/checker/fixtures/double_pendulum_equal_notes.md): m and l
+    // stand for the model's m₂ and l₂ to the end of the section, and m₁ = m₂, l₁ = l₂ hold there in the energies, the
+    // expansions (with `+ \text{const}`), the matrices and the secular equation alike.
+    const std::string text = eomgen::test::fixture("double_pendulum_equal_notes.md");
+    const CheckReport r = eomgen::test::check_text("examples/double_pendulum.toml", text);
+    CHECK(eomgen::test::planted_found(r, eomgen::test::planted_mistakes(text)) == 1);
+    for (int line : {11, 15, 19, 23, 27, 31})
+        for (const EquationCheck* e : on_line(r, line)) {
+            INFO(eomgen::test::describe(*e));
+            CHECK(e->verdict == Verdict::Agrees);
+        }
+    CHECK(on_line(r, 23).size() == 2);  // M and K
+    CHECK(on_line(r, 31).front()->reason.find("with either sign of ±: a normal frequency") == 0);
+    CHECK(r.count(Verdict::Disagrees) == 1);
+    // "with $m_1 = m_2 = m$" is a case the text looks at: its paragraph only (the corpus's double Atwood machine).
+}
