@@ -550,10 +550,10 @@ CheckReport Checker::run() {
             if (constant) not_parts_.insert(name);
         }
     }
+    collect_common_values(chains);  // first: the definitions' values may be written in them (`x_1 = l\sin\theta_1`)
     collect_definitions(chains);
     collect_changes_of_variable(chains);
     collect_named_constants(chains);
-    collect_common_values(chains);
     for (const FullChain& c : chains)  // stated vectors and eigen-equations, used before and after their line
         for (std::size_t k = 0; k + 1 < c.sides.size(); ++k)
             if (c.relations[k] == Relation::Equal)

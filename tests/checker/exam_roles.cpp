@@ -713,11 +713,12 @@ TEST_CASE("roles: an assumption of the problem's setting holds to the end of its
     const std::string text = eomgen::test::fixture("double_pendulum_equal_notes.md");
     const CheckReport r = eomgen::test::check_text("examples/double_pendulum.toml", text);
     CHECK(eomgen::test::planted_found(r, eomgen::test::planted_mistakes(text)) == 1);
-    for (int line : {11, 15, 19, 23, 27, 31})
+    for (int line : {7, 11, 15, 19, 23, 27, 31})  // the positions too: `x_2 = x_1 + l\sin\theta_2` matches the file's point
         for (const EquationCheck* e : on_line(r, line)) {
             INFO(eomgen::test::describe(*e));
             CHECK(e->verdict == Verdict::Agrees);
         }
+    CHECK(on_line(r, 7).size() == 4);   // x₁, y₁, x₂, y₂
     CHECK(on_line(r, 23).size() == 2);  // M and K
     CHECK(on_line(r, 31).front()->reason.find("with either sign of ±: a normal frequency") == 0);
     CHECK(r.count(Verdict::Disagrees) == 1);
