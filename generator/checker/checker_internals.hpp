@@ -455,6 +455,9 @@ class Checker : public Comparisons {
     bool up_to_constant(Prepared& a, Prepared& b, double tol, EquationCheck& r);
     void check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a, const Prepared& b,
                       double tol, EquationCheck& r);
+    /// A link a = b (r_ex = a − b) that writes the multipliers: true when decided (compare_multipliers.cpp).
+    bool check_multipliers(const PSide& L, const PSide& R, const GiNaC::ex& a, const GiNaC::ex& b,
+                           const GiNaC::ex& r_ex, double tol, const std::string& within, EquationCheck& r);
     bool diagnose_solved_acceleration(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,
                                       EquationCheck& out);
     void diagnose_euler_lagrange(const PSide& left, const PSide& right, const GiNaC::ex& r, double tol,

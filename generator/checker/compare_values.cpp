@@ -236,64 +236,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         r.reason = "could not be evaluated at enough points to decide";
         return;
     }
-    // 2a. With the multipliers, written on the constraints (φ = ωt put in: cos ωt for cos φ, ω for φ̇, φ̈ = 0): it
-    // holds at states on them, λ from the constrained equations.
-    if (std::any_of(multipliers_.begin(), multipliers_.end(), [&](const GiNaC::symbol& l) { return r_ex.has(l); })) {
-        bool holds[2] = {false, false};
-        for (int k = 0; k < 2; ++k) {
-            const std::optional<bool> h =
-                holds_on_constrained_motion(r_ex, model_, eq_, tol, multipliers_, k == 0 ? 1 : -1, numbers_.pinned());
-            holds[k] = h && *h;
-        }
-        if (holds[0] || holds[1]) {
-            const int sign = holds[0] ? 1 : -1;
-            r.compared_with = "the equations of motion with the constraint forces";
-            if (!keeps_multiplier_sign(holds[0], holds[1], r)) {
-                // `\lambda = …` alone: corrected to the multiplier with the text's sign.
-                for (std::size_t k = 0; k < multipliers_.size() && !has_acceleration(r_ex); ++k) {
-                    const PSide* alone =
-                        a.value.is_equal(multipliers_[k]) ? &L : (b.value.is_equal(multipliers_[k]) ? &R : nullptr);
-                    const std::optional<GiNaC::ex> value = alone ? solved_multiplier(model_, eq_, k) : std::nullopt;
-                    if (!value || expanded_terms(*value) > kMaxExpandedTerms) continue;
-                    const GiNaC::ex shown = GiNaC::normal(*value * multiplier_sign_);
-                    r.corrected = alone == &L ? L.side->source + " = " + latex(shown) : latex(shown) + " = " + R.side->source;
-                }
-                return;
-            }
-            r.verdict = Verdict::Agrees;
-            r.reason = std::string("it holds on every motion, with the constraints put in (checked at sample states)") +
-                       (sign < 0 ? ", the multiplier taken with the opposite sign to eomgen's (M q'' = f + A^T λ)" : "") +
-                       within;
-            return;
-        }
-    }
-    // `\lambda = …` (no accelerations) that holds with neither sign: wrong, corrected to the multiplier solved from the
-    // constrained equations where it stands alone on a side.
-    if (!has_acceleration(r_ex) && !eq_.constraints.empty())
-        for (std::size_t k = 0; k < multipliers_.size(); ++k) {
-            if (!r_ex.has(multipliers_[k])) continue;
-            bool wrong = true;
-            for (int sign : {1, -1}) {
-                const std::optional<bool> holds =
-                    holds_on_constrained_motion(r_ex, model_, eq_, tol, multipliers_, sign, numbers_.pinned());
-                wrong = wrong && holds && !*holds;
-            }
-            if (!wrong) break;
-            r.verdict = Verdict::Disagrees;
-            r.compared_with = "the equations of motion with the constraint forces";
-            r.reason = "it holds on no motion, with either sign of the multiplier (checked at sample states)";
-            const PSide* alone = a.value.is_equal(multipliers_[k]) ? &L : (b.value.is_equal(multipliers_[k]) ? &R : nullptr);
-            if (const std::optional<GiNaC::ex> value = solved_multiplier(model_, eq_, k); alone && value &&
-                                                            expanded_terms(*value) <= kMaxExpandedTerms) {
-                GiNaC::ex shown = *value;
-                for (int round = 0; round < 3 && !numbers_.pinned().empty(); ++round)
-                    shown = subs_unless_pole(shown, numbers_.pinned()).value_or(shown);
-                shown = GiNaC::normal(shown);
-                r.corrected = alone == &L ? L.side->source + " = " + latex(shown) : latex(shown) + " = " + R.side->source;
-                r.wrong_terms = {"the multiplier is $" + latex(shown) + "$ (with eomgen's sign, M q'' = f + A^T λ)"};
-            }
-            return;
-        }
+    // 2a. With the multipliers written (compare_multipliers.cpp).
+    if (check_multipliers(L, R, a.value, b.value, r_ex, tol, within, r)) return;
     // 2. An equation of motion: a combination of the Euler–Lagrange equations.
     if (has_acceleration(r_ex)) {
         int only = -1;
