@@ -404,6 +404,20 @@ struct Functions {
             derivative_block(d, 0, ns, 2 * n + np, 1, St);
         });
     }
+    static int lagrangian_jacobian(double t, const double* x, const void* p, double* Px, double* Pp, double* Gx,
+                                   double* Gp) {
+        return guarded([&] {
+            const InterpretedModel& m = model_of(p);
+            const int n = m.nq, np = static_cast<int>(m.param_names.size());
+            Derivatives& d = derivatives();
+            run_derivatives(m.momenta, t, x, p, d);
+            derivative_block(d, 0, n, 0, 2 * n, Px);
+            derivative_block(d, 0, n, 2 * n, np, Pp);
+            run_derivatives(m.lagrangian_gradient, t, x, p, d);
+            derivative_block(d, 0, n, 0, 2 * n, Gx);
+            derivative_block(d, 0, n, 2 * n, np, Gp);
+        });
+    }
     static const char* error_message(double* t) {
         if (t) *t = table_detail::last_error().t;
         return table_detail::last_error().message.c_str();
@@ -505,6 +519,7 @@ InterpretedTable::InterpretedTable(InterpretedModel model) : model_(std::make_un
     t.jacobian = &Functions::jacobian;
     t.parameter_jacobian = &Functions::parameter_jacobian;
     t.output_jacobian = &Functions::output_jacobian;
+    t.lagrangian_jacobian = &Functions::lagrangian_jacobian;
     if (t.n_constraints > 0) {
         t.multiplier_jacobian = &Functions::multiplier_jacobian;
         t.constraint_residual_jacobian = &Functions::constraint_residual_jacobian;

@@ -138,6 +138,23 @@ void linearize_constraint_residuals(double t, const typename ModelT<double>::Sta
     detail::split_derivatives<nx, np>(both, Rx, Rp);
 }
 
+/// Px = ∂P/∂x, Pp = ∂P/∂p of the momenta P = ∂L/∂q̇ and Gx = ∂G/∂x, Gp = ∂G/∂p of G = ∂L/∂q (nq rows each; x = (q,
+/// q̇)) of a generated model at (t, x; p), by the same forward differentiation: the derivative of a step of the
+/// variational integrator (variational_sensitivities.hpp) is made of these.
+template <template <class> class ModelT, class MatX, class MatP>
+void linearize_lagrangian(double t, const typename ModelT<double>::State& x, const typename ModelT<double>::Params& p,
+                          MatX& Px, MatP& Pp, MatX& Gx, MatP& Gp) {
+    using D = ModelT<double>;
+    constexpr int nx = D::nx, np = D::n_params, N = nx + np;
+    using AD = Eigen::AutoDiffScalar<Eigen::Matrix<double, N, 1>>;
+    const detail::Seeded<ModelT, AD> a(x, p, N);
+    typename ModelT<AD>::Config momenta, gradient;
+    ModelT<AD>::momenta(AD(t), a.q, a.qd, a.p, momenta);
+    ModelT<AD>::lagrangian_gradient(AD(t), a.q, a.qd, a.p, gradient);
+    detail::split_derivatives<nx, np>(momenta, Px, Pp);
+    detail::split_derivatives<nx, np>(gradient, Gx, Gp);
+}
+
 /// Sx = ∂s/∂x, Sp = ∂s/∂p and St = ∂s/∂t of a generated model's switching functions s(t, q, q̇; p) (the surfaces
 /// where its rhs() jumps or kinks) at (t, x; p), by the same forward differentiation: where a motion crosses one,
 /// the sensitivities jump by the saltation matrix (saltation.hpp).

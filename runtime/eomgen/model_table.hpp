@@ -36,7 +36,7 @@
 namespace eomgen {
 
 /// Raised when ModelTable's layout changes: a table of another layout is refused.
-constexpr std::uint32_t kModelTableAbi = 7;
+constexpr std::uint32_t kModelTableAbi = 8;
 
 /// One model as data and plain functions. Parameters live in an opaque block of params_size bytes that
 /// init_params fills with the model's defaults. Functions without constraints are null when n_constraints = 0.
@@ -104,6 +104,11 @@ struct ModelTable {
     /// forward differentiation (linearize_switching): the saltation of the sensitivities; null without switches and
     /// as `jacobian` is.
     int (*switching_jacobian)(double t, const double* x, const void* p, double* Sx, double* Sp, double* St);
+    /// Px = ∂P/∂x, Pp = ∂P/∂p of the momenta P = ∂L/∂q̇ and Gx, Gp of G = ∂L/∂q (nq × 2 nq and nq × n_params each,
+    /// column-major), by forward differentiation: the sensitivities of the variational integrator
+    /// (variational_sensitivities.hpp); null as `jacobian` is.
+    int (*lagrangian_jacobian)(double t, const double* x, const void* p, double* Px, double* Pp, double* Gx,
+                               double* Gp);
 };
 
 /// The table of generated model M (a Model<double> of a generated header). With `WithJacobian` the table's
@@ -159,6 +164,7 @@ const ModelTable& model_table() {
                 t.constraint_residual_jacobian = &W::constraint_residual_jacobian;
             }
             if constexpr (has_switching<M>::value) t.switching_jacobian = &W::switching_jacobian;
+            t.lagrangian_jacobian = &W::lagrangian_jacobian;
         }
         t.error_message = &W::error_message;
         if constexpr (declares_power<M>::value) t.power = &W::power;
@@ -402,6 +408,19 @@ class TableModel {
         if (!table().switching_jacobian)
             throw std::logic_error("the compiled model has no Jacobians (model_table<M, true> compiles them)");
         check(table().switching_jacobian(t, x.data(), p.data(), Sx.data(), Sp.data(), St.data()));
+    }
+
+    /// Px, Pp, Gx, Gp: the derivatives of the momenta and of ∂L/∂q by (q, q̇) and p, computed in the shared object
+    /// (variational_sensitivities.hpp).
+    static void lagrangian_jacobian(double t, const State& x, const Params& p, Eigen::MatrixXd& Px, Eigen::MatrixXd& Pp,
+                                    Eigen::MatrixXd& Gx, Eigen::MatrixXd& Gp) {
+        if (!table().lagrangian_jacobian)
+            throw std::logic_error("the compiled model has no Jacobians (model_table<M, true> compiles them)");
+        Px.resize(dof(), x.size());
+        Gx.resize(dof(), x.size());
+        Pp.resize(dof(), n_params);
+        Gp.resize(dof(), n_params);
+        check(table().lagrangian_jacobian(t, x.data(), p.data(), Px.data(), Pp.data(), Gx.data(), Gp.data()));
     }
 
     /// Jp = ∂ẋ/∂p (columns in param_names order), computed in the shared object (sensitivities.hpp asks for it).

@@ -11,6 +11,7 @@
 #include "eomgen/sample_csv.hpp"
 #include "eomgen/sensitivities.hpp"
 #include "eomgen/simulation_options.hpp"
+#include "eomgen/variational_sensitivities.hpp"
 
 #include <Eigen/Core>
 
@@ -71,8 +72,8 @@ std::vector<SensitivityLabel> sensitivity_labels(const Options& o) {
     return labels;
 }
 
-/// integrate_sensitivities (or its radau5 or rk4 form) by o's method, tolerances and steps (o.dt for rk4); dopri5,
-/// dop853, adams, radau5 or rk4 (UsageError otherwise).
+/// integrate_sensitivities (or its radau5, rk4 or variational form) by o's method, tolerances and steps (o.dt for rk4
+/// and symplectic); dopri5, dop853, adams, radau5, rk4 or symplectic (UsageError otherwise).
 template <class M>
 SensitivityResult integrate_sensitivities_by(const Options& o, const typename M::Params& params,
                                              const typename M::State& x0, double t_end,
@@ -90,6 +91,10 @@ SensitivityResult integrate_sensitivities_by(const Options& o, const typename M:
         return integrate_sensitivities_radau5<M>(params, 0.0, x0, t_end, columns, opt, events, sample_times);
     }
     if (o.method == "rk4") return integrate_sensitivities_rk4<M>(params, 0.0, x0, t_end, o.dt, columns, events, sample_times);
+    if (o.method == "symplectic") {
+        if (!events.empty()) throw UsageError("--until needs --method dopri5, dop853, adams, radau5 or rk4 (events use dense output)");
+        return integrate_sensitivities_symplectic<M>(params, 0.0, x0, t_end, o.dt, columns, sample_times);
+    }
     SensitivityResult r;
     if (!with_adaptive_method(o.method, [&](auto method) {
             using Method = decltype(method);
@@ -98,7 +103,7 @@ SensitivityResult integrate_sensitivities_by(const Options& o, const typename M:
             r = integrate_sensitivities<M, Method::template type>(params, 0.0, x0, t_end, columns, opt, events,
                                                                   sample_times);
         }))
-        throw UsageError("sensitivities need dopri5, dop853, adams, radau5 or rk4, not " + o.method);
+        throw UsageError("sensitivities need dopri5, dop853, adams, radau5, rk4 or symplectic, not " + o.method);
     return r;
 }
 
@@ -117,17 +122,19 @@ struct SensitivityRun {
  * member needs only the end). A constrained model's x0 is projected onto its constraints with --project-initial.
  * Throws UsageError for a bad option or column, SimulationError when the integration fails; writes nothing.
  */
-/// UsageError where o's method cannot integrate Model M's sensitivities: one without them (symplectic), or one whose
-/// steps do not end at switching surfaces (radau5, rk4) for a model that has them; --state-error-only with rk4.
+/// UsageError where o's method cannot integrate Model M's sensitivities: one whose steps do not end at switching
+/// surfaces (radau5, rk4, symplectic) for a model that has them; --state-error-only with a fixed step.
 template <class M>
 void check_sensitivity_method(const Options& o) {
-    if (!is_adaptive_method(o.method) && o.method != "radau5" && o.method != "rk4")
-        throw UsageError("--sensitivities needs dopri5, dop853, adams, radau5 or rk4, not " + o.method +
-                         (o.method == "symplectic" ? " (the variational integrator's sensitivities are not done)" : ""));
-    if (o.state_error_only && o.method == "rk4")
-        throw UsageError("--state-error-only: rk4 takes fixed steps (--dt) and has no error control");
+    const bool fixed_steps = o.method == "rk4" || o.method == "symplectic";
+    if (!is_adaptive_method(o.method) && o.method != "radau5" && !fixed_steps)
+        throw UsageError("--sensitivities needs dopri5, dop853, adams, radau5, rk4 or symplectic, not " + o.method);
+    if (o.state_error_only && fixed_steps)
+        throw UsageError("--state-error-only: " + o.method + " takes fixed steps (--dt) and has no error control");
+    if (o.method == "symplectic" && (constraint_count<M>() > 0 || M::has_generalized_forces))
+        throw UsageError("--method symplectic integrates unconstrained models without forces; use dopri5, dop853 or adams");
     if constexpr (has_switching<M>::value)
-        if (M::n_switches > 0 && (o.method == "radau5" || o.method == "rk4"))
+        if (M::n_switches > 0 && (o.method == "radau5" || fixed_steps))
             throw UsageError("--sensitivities: " + std::string(M::name) +
                              " has switching surfaces, where the sensitivities jump: " + o.method +
                              " does not end its steps there; use dopri5, dop853 or adams");
@@ -189,12 +196,19 @@ int run_sensitivities(const Options& o) {
               << (labels.size() == 1 ? "" : "s");
     if (o.method == "rk4")
         std::cout << ", fixed steps of " << o.dt << " (S is the derivative of RK4's own motion)";
+    else if (o.method == "symplectic")
+        std::cout << " (variational midpoint), fixed steps of " << o.dt
+                  << " (S is the derivative of the integrator's own motion)";
     else
         std::cout << (o.state_error_only ? ", the state alone in the error control" : " under the same error control")
                   << ", rtol " << o.rtol << ", atol " << o.atol;
     std::cout << (constraint_count<M>() > 0 ? "; no projection onto the constraints" : "") << "\n";
-    std::cout << "steps:   " << r.accepted_steps << " accepted, " << r.rejected_steps << " rejected, "
-              << r.rhs_evaluations << " right-hand sides (each with J and Jp)\n";
+    if (o.method == "symplectic")
+        std::cout << "steps:   " << r.accepted_steps << ", " << r.rhs_evaluations << " Newton iterations, "
+                  << r.jacobian_evaluations << " evaluations of the Lagrangian's derivatives\n";
+    else
+        std::cout << "steps:   " << r.accepted_steps << " accepted, " << r.rejected_steps << " rejected, "
+                  << r.rhs_evaluations << " right-hand sides (each with J and Jp)\n";
     const std::string s = time_unit<M>().empty() ? "" : " s";
     std::cout << "t:       " << r.t << s << "\n";
     for (Eigen::Index i = 0; i < r.x.size(); ++i)

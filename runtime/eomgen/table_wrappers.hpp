@@ -255,6 +255,18 @@ struct Wrappers {
             }
         });
     }
+    static int lagrangian_jacobian(double t, const double* x, const void* p, double* Px, double* Pp, double* Gx,
+                                   double* Gp) {
+        return guarded([&] {
+            Eigen::Matrix<double, M::nq, M::nx> px, gx;
+            Eigen::Matrix<double, M::nq, M::n_params> pp, gp;
+            linearize_lagrangian<detail::model_template<M>::template type>(t, read<State>(x), params(p), px, pp, gx, gp);
+            write(px, Px);
+            write(pp, Pp);
+            write(gx, Gx);
+            write(gp, Gp);
+        });
+    }
     static const char* error_message(double* t) {
         if (t) *t = last_error().t;
         return last_error().message.c_str();

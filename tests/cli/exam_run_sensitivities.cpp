@@ -196,7 +196,7 @@ TEST_CASE("eomgen run --sensitivities of a constrained model, and what it refuse
     check_close(last_row(csv2, dx0), central(model, states, "--init", "x", 0.6, 1e-4, {"--project-initial"}), 1e-6);
 }
 
-TEST_CASE("eomgen run --sensitivities by rk4, and with the state alone in the error control", "[run][sensitivities]") {
+TEST_CASE("eomgen run --sensitivities by rk4 and symplectic, and with the state alone in the error control", "[run][sensitivities]") {
     const fs::path model = write_whole(kWork, "spring_pendulum_s.toml", kSpringPendulum);
     const std::vector<std::string> states{"r", "phi", "r_dot", "phi_dot"};
     std::vector<std::string> dk;
@@ -212,6 +212,23 @@ TEST_CASE("eomgen run --sensitivities by rk4, and with the state alone in the er
     REQUIRE(r.code == 0);
     CHECK(r.output.find("fixed steps of 0.01") != std::string::npos);
     check_close(last_row(csv, dk), central(model, states, "--set", "k", 30, 30e-4, rk4), 1e-6);
+
+    // symplectic: the same for the variational integrator's own motion, through the table's derivatives of the
+    // momenta and of dL/dq, for a parameter and an initial rate.
+    const std::vector<std::string> symplectic{"--method", "symplectic", "--dt", "0.01"};
+    const fs::path vcsv = kWork / "spring_symplectic.csv";
+    std::vector<std::string> vargs{"run", model.string(), "--sensitivities", "k,x0:phi_dot", "--csv", vcsv.string()};
+    vargs.insert(vargs.end(), kTight.begin(), kTight.end());
+    vargs.insert(vargs.end(), symplectic.begin(), symplectic.end());
+    const Result v = eomgen(vargs);
+    INFO(v.output);
+    REQUIRE(v.code == 0);
+    CHECK(v.output.find("(variational midpoint), fixed steps of 0.01") != std::string::npos);
+    CHECK(v.output.find("steps:   200, ") != std::string::npos);
+    check_close(last_row(vcsv, dk), central(model, states, "--set", "k", 30, 30e-4, symplectic), 1e-6);
+    std::vector<std::string> dphidot;
+    for (const auto& s : states) dphidot.push_back("d" + s + "/dphi_dot(0)");
+    check_close(last_row(vcsv, dphidot), central(model, states, "--init", "phi_dot", 0.3, 1e-4, symplectic), 1e-6);
 
     // --state-error-only: fewer steps, S still close to the differences (at the accuracy of those steps).
     const fs::path both = kWork / "spring_both.csv", state = kWork / "spring_state.csv";
@@ -270,8 +287,10 @@ TEST_CASE("eomgen run --sensitivities: a user's mistakes", "[run][sensitivities]
         {{"--sensitivities", "kk"}, "has no parameter 'kk'; did you mean 'k'?"},
         {{"--sensitivities", "x0:rr"}, "no state 'rr'; did you mean 'r'?"},
         {{"--sensitivities", "k,k"}, "--sensitivities k: given twice"},
-        {{"--sensitivities", "k", "--method", "symplectic", "--dt", "0.01"},
-         "the variational integrator's sensitivities are not done"},
+        {{"--sensitivities", "k", "--method", "symplectic", "--dt", "0.01", "--until", "phi=0"},
+         "--until needs --method dopri5"},
+        {{"--sensitivities", "k", "--method", "symplectic", "--dt", "0.01", "--state-error-only"},
+         "symplectic takes fixed steps"},
         {{"--sensitivities", "k", "--method", "rk4", "--dt", "0.01", "--state-error-only"}, "rk4 takes fixed steps"},
     };
     for (const auto& [extra, message] : cases) {

@@ -4,6 +4,7 @@
  * and driven, stiff under radau5 — and the door's closing-time sensitivity against its closed form; what is refused.
  */
 #include "../approx.hpp"
+#include "differences_support.hpp"
 
 #include "eomgen/integrate.hpp"
 #include "eomgen/models/bead_on_hoop.hpp"
@@ -57,19 +58,9 @@ Eigen::VectorXd end_state(const typename M::Params& p, const typename M::State& 
 template <class M>
 Eigen::VectorXd difference(const typename M::Params& p, const typename M::State& x0, double t_end,
                            const SensitivityColumn& c, By by, double step) {
-    const auto values = M::param_values(p);
-    const double v = c.kind == SensitivityColumn::Kind::Parameter ? values[std::size_t(c.index)] : x0(c.index);
-    const double h = step * std::max(1.0, std::abs(v));
-    auto at = [&](double offset) {
-        typename M::Params q = p;
-        typename M::State y = x0;
-        if (c.kind == SensitivityColumn::Kind::Parameter)
-            M::set_param(q, M::param_names[std::size_t(c.index)], v + offset);
-        else
-            y(c.index) = v + offset;
-        return end_state<M>(q, y, t_end, by);
-    };
-    return (-at(2 * h) + 8 * at(h) - 8 * at(-h) + at(-2 * h)) / (12 * h);
+    const double h = step * std::max(1.0, std::abs(differences_support::column_value<M>(p, x0, c)));
+    return differences_support::column_difference<M>(
+        p, x0, c, h, [&](const typename M::Params& q, const typename M::State& y) { return end_state<M>(q, y, t_end, by); });
 }
 
 /// Integrates S of every column and compares each with central differences: the largest difference relative to

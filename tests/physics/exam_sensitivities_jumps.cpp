@@ -10,6 +10,8 @@
  *    followed along the surface (sliding_sensitivities.hpp; the differences follow each perturbed motion's sliding
  *    as eomgen run does, integrate_sliding).
  */
+#include "differences_support.hpp"
+
 #include "eomgen/constraints.hpp"
 #include "eomgen/errors.hpp"
 #include "eomgen/integrate.hpp"
@@ -64,19 +66,10 @@ Eigen::VectorXd end_state(const typename M::Params& p, typename M::State x0, dou
 template <class M>
 Eigen::VectorXd difference(const typename M::Params& p, const typename M::State& x0, double t_end,
                            const SensitivityColumn& c, double step = 2e-4) {
-    const auto values = M::param_values(p);
-    const double v = c.kind == SensitivityColumn::Kind::Parameter ? values[std::size_t(c.index)] : x0(c.index);
+    const double v = differences_support::column_value<M>(p, x0, c);
     const double h = step * std::max(0.1, std::abs(v));  // theta = 0.0234: a step of 1 % of it left 7e-8
-    auto at = [&](double offset) {
-        typename M::Params q = p;
-        typename M::State y = x0;
-        if (c.kind == SensitivityColumn::Kind::Parameter)
-            M::set_param(q, M::param_names[std::size_t(c.index)], v + offset);
-        else
-            y(c.index) = v + offset;
-        return end_state<M>(q, y, t_end);
-    };
-    return (-at(2 * h) + 8 * at(h) - 8 * at(-h) + at(-2 * h)) / (12 * h);
+    return differences_support::column_difference<M>(
+        p, x0, c, h, [&](const typename M::Params& q, const typename M::State& y) { return end_state<M>(q, y, t_end); });
 }
 
 /// S at t_end by dop853 against the differences, column by column (relative to the column's largest entry).
