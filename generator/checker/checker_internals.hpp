@@ -321,6 +321,7 @@ class Checker : public Comparisons {
         SourcePos where;      ///< the line's verdict
         std::string equation;
         bool forward = false;  ///< the definition comes later in the section: the line's own verdict is "not comparable"
+        bool squared = false;  ///< the name is a speed the text defines by its square (`v^2 = …`): `needed` is the root
     };
     std::vector<Blame> blames_;
     void blame_definition(const FullChain& c, std::size_t i, std::size_t j, const EquationCheck& r);

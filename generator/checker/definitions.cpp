@@ -253,4 +253,47 @@ GiNaC::ex dotted_definitions(const TextDefinitions& definitions, const GiNaC::ex
 }
 
 
+namespace {
+
+bool evidently_nonnegative(const GiNaC::ex& e, const Model& model) {
+    const auto parameter = [&](const GiNaC::ex& x) {
+        return std::any_of(model.parameters.begin(), model.parameters.end(),
+                           [&](const Parameter& p) { return x.is_equal(p.symbol); });
+    };
+    const auto factor = [&](const GiNaC::ex& f) {
+        if (GiNaC::is_a<GiNaC::numeric>(f)) return GiNaC::ex_to<GiNaC::numeric>(f).is_positive();
+        if (parameter(f)) return true;
+        if (!GiNaC::is_a<GiNaC::power>(f) || !GiNaC::is_a<GiNaC::numeric>(f.op(1))) return false;
+        const GiNaC::numeric n = GiNaC::ex_to<GiNaC::numeric>(f.op(1));
+        return (n.is_even() && n.is_positive()) || (parameter(f.op(0)) && n.is_rational());
+    };
+    const auto term = [&](const GiNaC::ex& t) {
+        if (!GiNaC::is_a<GiNaC::mul>(t)) return factor(t);
+        for (std::size_t i = 0; i < t.nops(); ++i)
+            if (!factor(t.op(i))) return false;
+        return true;
+    };
+    if (!GiNaC::is_a<GiNaC::add>(e)) return term(e);
+    for (std::size_t i = 0; i < e.nops(); ++i)
+        if (!term(e.op(i))) return false;
+    return true;
+}
+
+}  // namespace
+
+bool speed_squared(const GiNaC::ex& e, const Model& model) {
+    if (!evidently_nonnegative(e, model)) return false;
+    try {
+        // Factored, a sum must remain that is not squared: l^2(\dot\theta^2 + \sin^2\theta\,\dot\phi^2), not (l\dot\theta)^2.
+        const GiNaC::ex f = GiNaC::factor(GiNaC::expand(e));
+        const auto unsquared_sum = [](const GiNaC::ex& x) { return GiNaC::is_a<GiNaC::add>(x); };
+        if (unsquared_sum(f)) return true;
+        if (!GiNaC::is_a<GiNaC::mul>(f)) return false;
+        for (std::size_t i = 0; i < f.nops(); ++i)
+            if (unsquared_sum(f.op(i))) return true;
+    } catch (const std::exception&) {
+    }
+    return false;
+}
+
 }  // namespace eomgen::checker

@@ -162,6 +162,13 @@ class TextDefinitions {
     std::vector<std::pair<std::size_t, std::string>> heads_;
 };
 
+/// Whether `e` reads as a speed squared written out: ≥ 0 by its form wherever it is real (a sum of terms, each a
+/// positive number times even powers, `l^2\dot\theta^2`, `\sin^2\theta`, and the model's parameters, taken positive
+/// as lengths and masses are), and no square of one quantity (`\dot\varphi^2`, `(\dot x - l\dot\theta)^2`: the root
+/// of those is a velocity with a sign, which a text may go on to write as its name). `v^2 = \dot r^2 +
+/// r^2\dot\theta^2` is one: its name is then the speed, the positive root.
+bool speed_squared(const GiNaC::ex& e, const Model& model);
+
 /// `\dot{x}`, `\ddot{x}` (free names) of a name the text defines (`x = l \sin\theta`) in the model's quantities:
 /// the time derivative of its definition in force at file offset `at`, each noted in `notes`.
 GiNaC::ex dotted_definitions(const TextDefinitions& definitions, const GiNaC::ex& e, std::size_t at,

@@ -132,6 +132,39 @@ TEST_CASE("definitions: the square of a name set to a constant defines the name"
     for (const EquationCheck& e : moving.equations) CHECK(e.reason.find("\\sqrt") == std::string::npos);
 }
 
+TEST_CASE("definitions: a speed squared written out names the speed, and its uses blame it", "[checker][definitions]") {
+    // A spherical pendulum's bob: v² as the text writes it, then T = ½ m v² and L in v.
+    const char* const model = "models/damped_spherical_pendulum.toml";
+    const auto text = [](const std::string& v2) {
+        return "The bob's speed squared is\n\n$$v^2 = " + v2 +
+               "$$\n\nso that\n\n$$T = \\frac{1}{2} m v^2$$\n\nand\n\n$$L = \\frac{1}{2} m v^2 + mgl\\cos\\theta$$\n";
+    };
+    const eomgen::checker::CheckReport right =
+        eomgen::test::check_text(model, text("l^2\\dot\\theta^2 + l^2\\sin^2\\theta\\,\\dot\\phi^2"));
+    REQUIRE(right.equations.size() == 3);
+    for (const EquationCheck& e : right.equations) INFO(describe(e));
+    CHECK(right.equations[0].verdict == Verdict::Agrees);  // the definition, through its uses
+    CHECK(right.equations[0].compared_with == "its uses on lines 7, 11");
+    CHECK(right.equations[1].verdict == Verdict::Agrees);
+    CHECK(right.equations[2].verdict == Verdict::Agrees);
+    // cos where sin belongs: the definition disagrees, corrected in its own square; its uses hold with the correction.
+    const eomgen::checker::CheckReport wrong =
+        eomgen::test::check_text(model, text("l^2\\dot\\theta^2 + l^2\\cos^2\\theta\\,\\dot\\phi^2"));
+    REQUIRE(wrong.equations.size() == 3);
+    for (const EquationCheck& e : wrong.equations) INFO(describe(e));
+    CHECK(wrong.equations[0].verdict == Verdict::Disagrees);
+    CHECK(wrong.equations[0].corrected.rfind("v^2 = ", 0) == 0);
+    CHECK(wrong.equations[0].corrected.find("\\sin^{2} \\theta") != std::string::npos);
+    CHECK(wrong.equations[1].verdict == Verdict::NotComparable);
+    CHECK(wrong.equations[1].reason.find("the text's $v$ of line 3 is what disagrees") != std::string::npos);
+    // The square of one quantity (a velocity with a sign) names nothing: `l^2\dot\theta^2` stays the text's unknown.
+    const eomgen::checker::CheckReport single = eomgen::test::check_text(model, text("l^2\\dot\\theta^2"));
+    for (const EquationCheck& e : single.equations) {
+        INFO(describe(e));
+        CHECK(e.verdict == Verdict::NotComparable);
+    }
+}
+
 TEST_CASE("definitions: the positions a text defines agree through the rows that use them", "[checker][definitions]") {
     const char* const pendulum = "tests/checker/models/plane_pendulum.toml";
     // x, y used in T and V that agree with eomgen's; ẋ defined from x (an identity) and then used in T: the rows
