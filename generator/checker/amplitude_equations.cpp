@@ -119,6 +119,73 @@ std::optional<TrialSolution> trial_solution(const GiNaC::ex& left, const GiNaC::
     return std::nullopt;
 }
 
+namespace {
+
+/// √d with its even powers taken out, d a discriminant of K₀ and M₀, whose symbols are all parameters (the model's
+/// or the text's names for them: lengths, masses, taken positive): √(8 g² l²) = 2 g l √2.
+GiNaC::ex positive_root(const GiNaC::ex& d) {
+    GiNaC::ex outside = 1, inside = 1;
+    const auto take = [&](const GiNaC::ex& f) {
+        if (GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::symbol>(f.op(0)) &&
+            GiNaC::is_a<GiNaC::numeric>(f.op(1)) && GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_even()) {
+            outside *= GiNaC::pow(f.op(0), f.op(1) / 2);
+            return;
+        }
+        if (GiNaC::is_a<GiNaC::numeric>(f) && GiNaC::ex_to<GiNaC::numeric>(f).is_pos_integer() &&
+            GiNaC::ex_to<GiNaC::numeric>(f) < 1000000) {
+            long n = GiNaC::ex_to<GiNaC::numeric>(f).to_long(), k = 1;
+            for (long q = 2; q * q <= n; ++q)
+                while (n % (q * q) == 0) {
+                    n /= q * q;
+                    k *= q;
+                }
+            outside *= k;
+            inside *= n;
+            return;
+        }
+        inside *= f;
+    };
+    for (const GiNaC::ex& f : GiNaC::is_a<GiNaC::mul>(d) ? d : GiNaC::lst{d}) take(f);
+    return outside * GiNaC::sqrt(inside);
+}
+
+}  // namespace
+
+std::optional<TrialSolution> implied_amplitudes(const std::vector<const FreeName*>& names, const Model& model) {
+    const std::size_t n = model.coordinates.size();
+    if (n < 2) return std::nullopt;
+    std::string base;
+    std::vector<GiNaC::ex> amplitude(n, 0);
+    std::size_t named = 0;
+    for (const FreeName* f : names) {
+        if (!f || f->kind != NameKind::Unknown) return std::nullopt;
+        const auto [b, sub] = split_subscript(f->name);
+        if (b.empty() || (!base.empty() && b != base)) return std::nullopt;
+        base = b;
+        // The coordinate with this subscript (θ_{2} for A_{2}), else the sub-th coordinate of subscript-free ones.
+        std::size_t k = n;
+        for (std::size_t q = 0; q < n; ++q)
+            if (split_subscript(canonical_name(model.coordinates[q].latex)).second == sub) k = q;
+        if (k == n && sub.size() == 1 && sub[0] >= '1' && sub[0] <= '9' &&
+            std::none_of(model.coordinates.begin(), model.coordinates.end(), [](const Coordinate& c) {
+                return !split_subscript(canonical_name(c.latex)).first.empty();
+            }))
+            k = std::size_t(sub[0] - '1');
+        if (k >= n) return std::nullopt;
+        if (amplitude[k].is_zero()) ++named;
+        amplitude[k] = f->symbol;
+    }
+    if (named < 2) return std::nullopt;
+    TrialSolution trial;
+    trial.amplitude = std::move(amplitude);
+    std::string coordinates;
+    for (std::size_t k = 0; k < n; ++k)
+        if (!trial.amplitude[k].is_zero())
+            coordinates += std::string(coordinates.empty() ? "" : ", ") + "$" + model.coordinates[k].latex + "$";
+    trial.what = "the amplitudes $" + base + "_k$ read as those of " + coordinates + " (no trial solution written)";
+    return trial;
+}
+
 std::optional<std::vector<GiNaC::ex>> AmplitudeEquations::mode_shape(const GiNaC::ex& w2) const {
     // (K − w M) v = 0 with one component fixed to 1: drop a row and that column, solve the square rest, and
     // keep the first solution that satisfies the dropped row too (a null space of dimension 1).
@@ -180,8 +247,7 @@ bool AmplitudeEquations::ratio_correction(const GiNaC::ex& left, const GiNaC::ex
     const GiNaC::ex text_ratio = GiNaC::normal(-c[rhs] / c[lhs]);
     const std::string a = "$" + cmp.latex(trial.amplitude[lhs]) + "$", b = "$" + cmp.latex(trial.amplitude[rhs]) + "$";
     out.verdict = Verdict::Disagrees;
-    out.compared_with = "the mode of the trial solution of line " + std::to_string(trial.line) +
-                        " at the normal frequency $\\omega^2 = " + cmp.latex(w2) + "$";
+    out.compared_with = "the mode of " + trial.described() + " at the normal frequency $\\omega^2 = " + cmp.latex(w2) + "$";
     out.wrong_terms = {"in this mode " + a + " is $" + cmp.latex(ratio) + "$ times " + b + ", not $" +
                        cmp.latex(text_ratio) + "$ times"};
     out.corrected = (shown.empty() ? cmp.latex(trial.amplitude[lhs]) : shown) + " = " +
@@ -224,8 +290,8 @@ bool AmplitudeEquations::check_shape(const std::vector<GiNaC::ex>& v, const std:
         }
     }
     const std::vector<GiNaC::ex> scaled = scaled_at(ref);
-    out.compared_with = "the mode of the trial solution of line " + std::to_string(trial.line) +
-                        " at the normal frequency $\\omega^2 = " + cmp.latex(*stated) + "$";
+    out.compared_with = "the mode of " + trial.described() + " at the normal frequency $\\omega^2 = " +
+                        cmp.latex(*stated) + "$";
     out.notes.push_back("the mode's shape: the null vector of $K - \\omega^2 M$ there, up to its scale");
     if (wrong.empty()) {
         out.verdict = Verdict::Agrees;
@@ -304,6 +370,18 @@ bool AmplitudeEquations::check(const GiNaC::ex& left, const GiNaC::ex& right, co
         if (!ours) return false;
     }
     if (!prepare(cmp)) return false;
+    // K₀ and M₀ with the text's assumptions put in, for this check only.
+    struct Restore {
+        GiNaC::matrix &K, &M, K0, M0;
+        ~Restore() {
+            K = K0;
+            M = M0;
+        }
+    } restore{K_, M_, K_, M_};
+    if (!assumed_.empty()) {
+        K_ = GiNaC::ex_to<GiNaC::matrix>(K_.subs(assumed_));
+        M_ = GiNaC::ex_to<GiNaC::matrix>(M_.subs(assumed_));
+    }
     // r = c0 + Σ c_k A_k, the c free of the amplitudes.
     std::vector<GiNaC::ex> c(n, 0);
     GiNaC::exmap none;
@@ -331,7 +409,7 @@ bool AmplitudeEquations::check(const GiNaC::ex& left, const GiNaC::ex& right, co
             if (!trial.amplitude[k].is_zero()) e += GiNaC::normal(scale * row(i, w2, k)) * trial.amplitude[k];
         return e;
     };
-    const std::string trial_at = "the trial solution of line " + std::to_string(trial.line);
+    const std::string trial_at = trial.described();
     auto name = [&](std::size_t i) { return "$" + model_.coordinates[i].latex + "$"; };
     // c ∥ row i: c_k row_l = c_l row_k for every pair.
     auto parallel = [&](std::size_t i, const GiNaC::ex& w2) {
@@ -348,7 +426,8 @@ bool AmplitudeEquations::check(const GiNaC::ex& left, const GiNaC::ex& right, co
         }
         return any;
     };
-    // The frequencies of the modes: roots of det(K₀ − w M₀) from its linear factors.
+    // The frequencies of the modes: roots of det(K₀ − w M₀) from its linear and quadratic factors (a double
+    // pendulum's two, (2 ± √2) g/l with equal bobs, are no rational expressions).
     const GiNaC::symbol wv("w");
     std::vector<GiNaC::ex> roots;
     if (!has_omega) {
@@ -364,8 +443,14 @@ bool AmplitudeEquations::check(const GiNaC::ex& left, const GiNaC::ex& right, co
                 factors.push_back(det);
             for (GiNaC::ex f : factors) {
                 if (GiNaC::is_a<GiNaC::power>(f)) f = f.op(0);
-                if (!f.has(wv) || f.degree(wv) != 1) continue;
-                roots.push_back(GiNaC::normal(-f.coeff(wv, 0) / f.coeff(wv, 1)));
+                if (!f.has(wv) || f.degree(wv) > 2) continue;
+                if (f.degree(wv) == 1) {
+                    roots.push_back(GiNaC::normal(-f.coeff(wv, 0) / f.coeff(wv, 1)));
+                    continue;
+                }
+                const GiNaC::ex a = f.coeff(wv, 2), b = f.coeff(wv, 1), c = f.coeff(wv, 0);
+                const GiNaC::ex root = positive_root(GiNaC::factor(GiNaC::normal(b * b - 4 * a * c)));
+                for (int sign : {-1, 1}) roots.push_back(GiNaC::normal((-b + sign * root) / (2 * a)));
             }
         } catch (...) {
         }

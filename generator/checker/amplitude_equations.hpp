@@ -25,6 +25,10 @@ struct TrialSolution {
     std::size_t until = 0;             ///< ... to the end of its section
     int line = 0;
     std::string source;                ///< "x_j = A_j e^{i \omega t}"
+    /// How the reports name it: "" for "the trial solution of line N"; the amplitudes a text names without writing
+    /// a trial solution say so (implied_amplitudes).
+    std::string what;
+    std::string described() const { return what.empty() ? "the trial solution of line " + std::to_string(line) : what; }
 };
 
 /**
@@ -35,6 +39,14 @@ struct TrialSolution {
  */
 std::optional<TrialSolution> trial_solution(const GiNaC::ex& left, const GiNaC::ex& right, const Model& model,
                                             LatexContext& ctx);
+
+/**
+ * `A_2 = \sqrt{2} A_1` after the normal frequencies, with no trial solution written: the names of `names` (the text's
+ * unknowns in a link) as the amplitudes of the model's coordinates, when they are two or more names of one letter with
+ * the coordinates' subscripts (θ₁, θ₂ ↔ A_1, A_2), or, for coordinates without subscripts, 1 … n in their order. The
+ * frequency is left free (0). std::nullopt when the names are not such amplitudes.
+ */
+std::optional<TrialSolution> implied_amplitudes(const std::vector<const FreeName*>& names, const Model& model);
 
 /**
  * The amplitude equations of the model: with q = A f(t) and q̈ = −ω² q about q = 0 (an equilibrium of the model,
@@ -69,6 +81,10 @@ class AmplitudeEquations {
     bool check_shape(const std::vector<GiNaC::ex>& v, const std::string& name, const TrialSolution& trial,
                      const std::optional<GiNaC::ex>& stated, Comparisons& cmp, EquationCheck& out);
 
+    /// The text's assumptions on the parameters where the next checks are (`m_1 = m_2`): K₀ and M₀ are taken with
+    /// them put in, so that the frequencies and corrections read as the text's (empty: none).
+    void assume(GiNaC::exmap assumed) { assumed_ = std::move(assumed); }
+
   private:
     bool prepare(Comparisons& cmp);
     /// The mode's shape at ω² = w2: the null vector of K₀ − w2 M₀ (one component 1), when its null space is a line.
@@ -80,6 +96,7 @@ class AmplitudeEquations {
     const Model& model_;
     const std::vector<GiNaC::ex>& motion_;
     bool prepared_ = false, usable_ = false;
+    GiNaC::exmap assumed_;
     GiNaC::matrix K_, M_;  ///< about q = 0
 };
 

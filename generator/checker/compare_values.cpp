@@ -42,12 +42,34 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         if (const std::optional<GiNaC::ex> p = characteristic_polynomial(motion_, model_, trial->exponent);
             p && check_characteristic(a.value, b.value, *trial, *p, *this, r))
             return;
-    // The amplitudes of a trial solution (`x_j = A_j e^{i\omega t}`): rows of (K − ω² M) A = 0.
-    if (const TrialSolution* trial = discourse_->trial_at(c.relation_offsets[j - 1]);
-        trial && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
-        amplitudes_.check(a.value, b.value, L.side->source, R.side->source, written_names(L, R), *trial,
-                          discourse_->stated_frequency(c.relation_offsets[j - 1]), ctx_, *this, r))
-        return;
+    // The amplitudes of a trial solution (`x_j = A_j e^{i\omega t}`): rows of (K − ω² M) A = 0. After a normal
+    // frequency, `A_2 = \sqrt{2} A_1` with none written: the names with the coordinates' subscripts are the amplitudes.
+    const std::optional<GiNaC::ex> stated = discourse_->stated_frequency(c.relation_offsets[j - 1]);
+    std::optional<TrialSolution> implied;
+    const TrialSolution* trial = discourse_->trial_at(c.relation_offsets[j - 1]);
+    const auto about_modes = [&] {  // "For the slower mode the amplitudes are in the ratio"
+        const std::string prose = lead_in(d_, L.base + L.side->begin, 2);
+        return prose.find("mode") != std::string::npos || prose.find("amplitude") != std::string::npos;
+    };
+    if (!trial && (stated || about_modes())) {
+        std::vector<const FreeName*> names = a.unknown;
+        names.insert(names.end(), b.unknown.begin(), b.unknown.end());
+        if ((implied = implied_amplitudes(names, model_))) trial = &*implied;
+    }
+    if (trial && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty()) {
+        GiNaC::exmap assumed;  // `m_1 = m_2 = m`: the frequencies and corrections in the text's terms
+        for (const auto& [symbol, stated_value] : discourse_->conditions_at(c.relation_offsets[j - 1]))
+            if (std::any_of(model_.parameters.begin(), model_.parameters.end(),
+                            [&](const Parameter& q) { return symbol.is_equal(q.symbol); }))
+                assumed[symbol] = stated_value.first;
+        for (int round = 0; round < 3; ++round)  // m_1 = m_2, m_2 = m: each in the text's last name
+            for (auto& [symbol, value] : assumed) value = value.subs(assumed);
+        amplitudes_.assume(assumed);
+        const bool judged = amplitudes_.check(a.value, b.value, L.side->source, R.side->source, written_names(L, R),
+                                              *trial, stated, ctx_, *this, r);
+        amplitudes_.assume({});
+        if (judged) return;
+    }
     // `… = l_2 - y_3 \Rightarrow y_3 = …`, `\Rightarrow m = -\frac{m_3}{4}`: a name the text solves for from the
     // relation before (implication.cpp), a definition or a name an assumption made known (the common value).
     if (i == 0 && L.side->ok && b.ok && b.vectors.empty() && GiNaC::is_a<GiNaC::symbol>(L.side->value))

@@ -204,3 +204,30 @@ TEST_CASE("amplitudes: an exponential trial's characteristic equation and roots,
     const GiNaC::ex m = parameter("m"), l = parameter("l"), g = parameter("g"), c = parameter("c");
     CHECK(GiNaC::expand(*p - (m * l * l * lambda * lambda + c * lambda + m * g * l)).is_zero());
 }
+
+TEST_CASE("amplitudes: a mode's ratio written without a trial solution, under the text's assumptions",
+          "[checker][amplitudes]") {
+    // Equal bobs and rods, the frequencies, then "for the slower mode the amplitudes are in the ratio A_2 = √2 A_1":
+    // A_1, A_2 are read as the amplitudes of θ₁, θ₂ (their subscripts); the roots of a quadratic secular factor.
+    const auto text = [](const std::string& ratio) {
+        return "Take $m_1 = m_2 = m$ and $l_1 = l_2 = l$. The normal frequencies are\n\n"
+               "$$\\omega^2 = (2 \\pm \\sqrt{2})\\frac{g}{l}$$\n\n"
+               "For the slower mode the amplitudes are in the ratio\n\n$$" + ratio + "$$\n";
+    };
+    const auto last = [](const eomgen::checker::CheckReport& r) { return r.equations.back(); };
+    const EquationCheck right = last(eomgen::test::check_text("examples/double_pendulum.toml", text("A_2 = \\sqrt{2} A_1")));
+    INFO(eomgen::test::describe(right));
+    CHECK(right.verdict == Verdict::Agrees);
+    CHECK(right.compared_with.find("(no trial solution written)") != std::string::npos);
+    CHECK(right.compared_with.find("\\omega^2 = \\frac{2 g - g \\sqrt{2}}{l}") != std::string::npos);
+    const EquationCheck wrong = last(eomgen::test::check_text("examples/double_pendulum.toml", text("A_2 = 2 A_1")));
+    INFO(eomgen::test::describe(wrong));
+    CHECK(wrong.verdict == Verdict::Disagrees);
+    // Names of one letter with the coordinates' subscripts, but no word of modes or amplitudes and no frequency
+    // stated: not amplitudes.
+    const eomgen::checker::CheckReport areas =
+        eomgen::test::check_text("examples/double_pendulum.toml", "The two areas satisfy\n\n$$A_2 = 2 A_1$$\n");
+    REQUIRE(areas.equations.size() == 1);
+    CHECK(areas.equations[0].verdict == Verdict::NotComparable);
+}
+
