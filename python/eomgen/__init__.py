@@ -174,7 +174,8 @@ class Model:
         ({"alpha": "30 deg"}); `init` names states (q or q_dot). method: dopri5, dop853, adams, radau5, rk4 or
         symplectic (the last two with dt). `sensitivities` (as `eomgen run --sensitivities`: parameter names and
         "x0:STATE" for initial values) integrates S = dx/d(those) beside the state under the same error control
-        (dopri5, dop853, adams, radau5; rk4 with dt; docs/sensitivities.md): Solution.S and the rest;
+        (dopri5, dop853, adams, radau5; rk4 and symplectic with dt, the derivative of their own steps;
+        docs/sensitivities.md): Solution.S and the rest;
         state_error_only=True leaves S out of the step-size control (as --state-error-only). cache=False compiles
         afresh and keeps nothing. interpret=True runs the derived equations on eomgen's interpreter instead of
         compiling them (as `eomgen run --interpret`: no C++ compiler and no wait, each step slower; docs/interpreter.md)."""
