@@ -251,7 +251,7 @@ std::optional<LinearAlgebra::Value> LinearAlgebra::evaluate(const std::vector<Te
                 v.scalar = false;
             } else {  // Group, Det
                 std::vector<Term> inner;
-                if (!scan(source, f.inner_begin, f.inner_end, inner, why)) return std::nullopt;
+                if (!scan(source, f.inner_begin, f.inner_end, inner, why, f.letters)) return std::nullopt;
                 const auto x = evaluate(inner, source, base, cmp, why);
                 if (!x) return std::nullopt;
                 v = *x;

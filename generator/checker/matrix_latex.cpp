@@ -244,10 +244,20 @@ static bool bracketed(std::string_view s, std::pair<std::size_t, std::size_t> in
 }
 
 /// One factor starting at s[i] that is not scalar text, or false (i unchanged).
-static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Factor& f, std::string* why) {
+static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Factor& f, std::string* why,
+                        bool letters = false) {
     const std::size_t start = i;
     f = Factor{};
     f.begin = start;
+    // Inside `\det(…)`: a plain M, K, T or V, a letter alone, is the matrix of that name.
+    const auto letter = [&](std::size_t k) { return k < e && std::isalpha(static_cast<unsigned char>(s[k])); };
+    if (letters && std::string_view("MKTV").find(s[i]) != std::string_view::npos && !letter(i + 1) &&
+        (i == 0 || (!std::isalpha(static_cast<unsigned char>(s[i - 1])) && s[i - 1] != '\\'))) {
+        f.kind = Factor::Name;
+        f.key = std::string(1, s[i]);
+        f.end = ++i;
+        return true;
+    }
     // \left<d> … \right<d>
     if (starts_command(s, i, "\\left")) {
         std::size_t k = i + 5;
@@ -320,8 +330,20 @@ static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Facto
         Factor inner;
         std::size_t j = k;
         if (k >= e || !scan_factor(s, j, e, inner, why)) {
-            if (why->empty()) *why = "\\det of something that is not a matrix";
-            return false;
+            // `\det(K - \omega^2 M)`: a group of plain letters, the matrices of those names.
+            const std::size_t close = k < e && s[k] == '(' ? group_end(s, k) : std::string_view::npos;
+            if (!why->empty() || close == std::string_view::npos || close > e) {
+                if (why->empty()) *why = "\\det of something that is not a matrix";
+                return false;
+            }
+            const auto held = trimmed(s, k + 1, close - 1);
+            f.kind = Factor::Det;
+            f.letters = true;
+            f.inner_begin = held.first;
+            f.inner_end = held.second;
+            i = close;
+            f.end = close;
+            return true;
         }
         f.kind = Factor::Det;
         f.inner_begin = inner.kind == Factor::Group ? inner.inner_begin : inner.begin;
@@ -393,7 +415,8 @@ static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Facto
     return false;
 }
 
-bool scan(std::string_view s, std::size_t b, std::size_t e, std::vector<Term>& terms, std::string* why) {
+bool scan(std::string_view s, std::size_t b, std::size_t e, std::vector<Term>& terms, std::string* why,
+          bool matrix_letters) {
     terms.assign(1, Term{});
     std::size_t pending = std::string_view::npos;  // start of scalar text not yet a factor
     Factor::Op op = Factor::Juxtapose;
@@ -457,7 +480,7 @@ bool scan(std::string_view s, std::size_t b, std::size_t e, std::vector<Term>& t
         }
         Factor f;
         std::size_t j = i;
-        if (scan_factor(s, j, e, f, why)) {
+        if (scan_factor(s, j, e, f, why, matrix_letters)) {
             flush(i);
             f.op = op;
             op = Factor::Juxtapose;

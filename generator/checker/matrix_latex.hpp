@@ -22,6 +22,9 @@ struct Factor {
     std::size_t begin = 0, end = 0;                    ///< the factor in the side's source
     std::size_t inner_begin = 0, inner_end = 0;        ///< Group, Det: what it holds
     bool bars = false;                                  ///< Det: written between bars, `\left| … \right|`
+    /// Det, Group: the plain capital letters M, K, T, V inside name the matrices of those names (`\det(K -
+    /// \omega^2 M)`: what \det takes is a matrix, whatever its letters)
+    bool letters = false;
     std::string key;  ///< Name: `n_{1}` (whatever its decoration), `I`, `1`, `\hat{k}`
     Cells cells;      ///< Array, Tuple, DetArray
     /// `^T`, `^{\top}`, `^{\mathsf{T}}`, `^\intercal` after it: transposed (a tuple, read as a column already,
@@ -41,10 +44,11 @@ struct Term {
  * `\operatorname{det}` before a factor; `( … , … )` and `[ … , … ]` are tuples; `\mathbf`, `\boldsymbol`,
  * `\bm`,
  * `\vec`, `\underline`, `\overrightarrow`, `\hat` make names (with subscript and primes); `\cdot` and
- * `\times` set the next factor's product. False, with `why`, on a power or index of a matrix, an empty term,
- * an unknown environment.
+ * `\times` set the next factor's product; with `matrix_letters`, a plain M, K, T or V is a name too (the inside
+ * of `\det(…)`). False, with `why`, on a power or index of a matrix, an empty term, an unknown environment.
  */
-bool scan(std::string_view s, std::size_t b, std::size_t e, std::vector<Term>& terms, std::string* why);
+bool scan(std::string_view s, std::size_t b, std::size_t e, std::vector<Term>& terms, std::string* why,
+          bool matrix_letters = false);
 
 /// s holds an environment, a determinant or a vector name: linear algebra, not a scalar, reads it.
 bool mentions_array(std::string_view s);

@@ -223,6 +223,14 @@ TEST_CASE("amplitudes: a mode's ratio written without a trial solution, under th
     const EquationCheck wrong = last(eomgen::test::check_text("examples/double_pendulum.toml", text("A_2 = 2 A_1")));
     INFO(eomgen::test::describe(wrong));
     CHECK(wrong.verdict == Verdict::Disagrees);
+    // The secular equation on the matrices' plain names: \det takes a matrix, so K and M are the stiffness and mass
+    // matrices at rest.
+    const eomgen::checker::CheckReport det = eomgen::test::check_text(
+        "examples/double_pendulum.toml", "The frequencies solve\n\n$$\\det(K - \\omega^2 M) = 0$$\n");
+    REQUIRE(det.equations.size() == 1);
+    INFO(eomgen::test::describe(det.equations[0]));
+    CHECK(det.equations[0].verdict == Verdict::Agrees);
+    CHECK(det.equations[0].compared_with.rfind("the secular equation", 0) == 0);
     // Names of one letter with the coordinates' subscripts, but no word of modes or amplitudes and no frequency
     // stated: not amplitudes.
     const eomgen::checker::CheckReport areas =
