@@ -446,6 +446,9 @@ class Checker : public Comparisons {
     std::vector<CommonValue> common_values_;
     /// `side` with the common values in force at file offset `at` put in (`l` → l₂ after "take $l_1 = l_2 = l$").
     Side with_common_values(const Side& side, std::size_t at) const;
+    /// The text's assumptions on the model's parameters in force at file offset `at`, parameter → value (`m_1` →
+    /// m_2 and `m_2` → m after "take $m_1 = m_2 = m$"): each as the condition states it.
+    GiNaC::exmap parameter_assumptions(std::size_t at) const;
     bool verifying_ = false;
     void check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other, double tol,
                     EquationCheck& r);

@@ -57,12 +57,9 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         if ((implied = implied_amplitudes(names, model_))) trial = &*implied;
     }
     if (trial && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty()) {
-        GiNaC::exmap assumed;  // `m_1 = m_2 = m`: the frequencies and corrections in the text's terms
-        for (const auto& [symbol, stated_value] : discourse_->conditions_at(c.relation_offsets[j - 1]))
-            if (std::any_of(model_.parameters.begin(), model_.parameters.end(),
-                            [&](const Parameter& q) { return symbol.is_equal(q.symbol); }))
-                assumed[symbol] = stated_value.first;
-        for (int round = 0; round < 3; ++round)  // m_1 = m_2, m_2 = m: each in the text's last name
+        // `m_1 = m_2 = m`: the frequencies and corrections in the text's terms, each in its last name.
+        GiNaC::exmap assumed = parameter_assumptions(c.relation_offsets[j - 1]);
+        for (int round = 0; round < 3; ++round)
             for (auto& [symbol, value] : assumed) value = value.subs(assumed);
         amplitudes_.assume(assumed);
         const bool judged = amplitudes_.check(a.value, b.value, L.side->source, R.side->source, written_names(L, R),

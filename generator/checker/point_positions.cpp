@@ -111,12 +111,7 @@ void Checker::collect_positions(const std::vector<FullChain>& chains) {
     };
     const auto matches = [&](const Row& row, const ModelPoint& p) {
         // Under the text's assumptions on the parameters there ("take $l_1 = l_2 = l$", then `x_2 = x_1 + l\sin\theta_2`).
-        GiNaC::exmap assumed;
-        for (const auto& [symbol, stated] : discourse_->conditions_at(row.at))
-            if (std::any_of(model_.parameters.begin(), model_.parameters.end(),
-                            [&](const Parameter& q) { return symbol.is_equal(q.symbol); }))
-                assumed[symbol] = stated.first;
-        numbers_.pin(assumed);
+        numbers_.pin(parameter_assumptions(row.at));
         bool all = true;
         for (const auto& [axis, value] : row.components) all = all && equal(value, p.r[axis], 1e-9) == Tri::Yes;
         numbers_.pin({});

@@ -18,6 +18,15 @@ bool Checker::names_common_value(const FullChain& c, std::size_t j) const {
            discourse_->states_assumption(c.relation_offsets[j - 1]);
 }
 
+GiNaC::exmap Checker::parameter_assumptions(std::size_t at) const {
+    GiNaC::exmap assumed;
+    for (const auto& [symbol, stated] : discourse_->conditions_at(at))
+        if (std::any_of(model_.parameters.begin(), model_.parameters.end(),
+                        [&](const Parameter& q) { return symbol.is_equal(q.symbol); }))
+            assumed[symbol] = stated.first;
+    return assumed;
+}
+
 void Checker::collect_common_values(const std::vector<FullChain>& chains) {
     // A name the text wrote before the assumption is its own notation there (or a slip: misspelled_names.cpp).
     const auto used_before = [&](const std::string& name, std::size_t at) {
