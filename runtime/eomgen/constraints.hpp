@@ -5,6 +5,7 @@
 #include "eomgen/integrate.hpp"
 #include "eomgen/linear_solve.hpp"
 #include "eomgen/model_traits.hpp"
+#include "eomgen/sliding.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
@@ -261,6 +262,12 @@ struct ConstrainedResult {
  * residuals reached before each projection are reported; `observer` sees each projected sample. x0 is checked first (check_consistent) unless
  * `project_initial` is set, in which case it is projected. `events` are located within each segment as by
  * integrate(); a terminal one ends the run at the event (its state projected, and kept as the last sample).
+ *
+ * Where the motion would slide along a Switch event without a stop_at_switch of its own (static friction holds it:
+ * both sides of the jump push into the surface), it follows Filippov's sliding motion as integrate_sliding does,
+ * across the segments: each one-sided field is the constrained one, so their convex combination keeps the
+ * constraints' accelerations too, and the projection after each segment leaves s = 0 to the order of the drift it
+ * removes. The run's events say where sliding began ("<switch>: slides") and ended ("<switch>: leaves to s > 0").
  */
 template <class Model, template <class> class Method = Dopri5>
 ConstrainedResult<typename Model::State> integrate_constrained(const typename Model::Params& p,
@@ -278,6 +285,8 @@ ConstrainedResult<typename Model::State> integrate_constrained(const typename Mo
     else
         check_consistent<Model>(t0, x0, p);
     auto f = [&p](const Scalar& t, const State& x, State& xdot) { Model::rhs(t, x, p, xdot); };
+    const SlidingRules<State> rules = filippov_rules<State>(f, events);
+    SlidingCarry carry;
     ConstrainedResult<State> out;
     out.run.t = t0;
     out.run.x = x0;
@@ -286,8 +295,10 @@ ConstrainedResult<typename Model::State> integrate_constrained(const typename Mo
     State x = x0;
     for (const Scalar& next : times) {
         if (!(next > t)) continue;
-        const IntegrationResult<State> seg = integrate_with<Method>(f, t, x, next, opt, events);
+        const IntegrationResult<State> seg =
+            integrate_sliding_with<Method>(f, t, x, next, opt, events, rules, {}, {}, &carry);
         out.run.events.insert(out.run.events.end(), seg.events.begin(), seg.events.end());
+        out.run.switches.insert(out.run.switches.end(), seg.switches.begin(), seg.switches.end());
         out.run.accepted_steps += seg.accepted_steps;
         out.run.rejected_steps += seg.rejected_steps;
         out.run.rhs_evaluations += seg.rhs_evaluations;

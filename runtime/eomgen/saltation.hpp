@@ -16,8 +16,8 @@
  * extrapolated to it (sliding.hpp).
  *
  * A motion that does not cross but slides along the surface (ṡ⁻ > 0 > ṡ⁺: a door held by static friction) jumps
- * onto the sliding motion (sliding_sensitivities.hpp) where the run follows it; where it does not (a constrained
- * model), and where the motion only grazes the surface (ṡ = 0), there is no derivative from this formula:
+ * onto the sliding motion (sliding_sensitivities.hpp) where the run follows it; where it does not, and where the
+ * motion only grazes the surface (ṡ = 0), there is no derivative from this formula:
  * SimulationError at that time, with the surface's name.
  */
 #pragma once

@@ -28,8 +28,8 @@
  * moves the start as --project-initial would move it), and the linearized constraints then hold along the motion.
  * Its x0 must be consistent (InconsistentInitialConditions otherwise). Where a motion crosses a switching surface
  * (abs, sign, … in the model file) S jumps by the saltation matrix (saltation.hpp); a motion that slides along one
- * (sticks) is followed with its own variational equations by the adaptive methods (sliding_sensitivities.hpp), and
- * refused (SimulationError) at that time for a constrained model, as a plain run of one stops there.
+ * (sticks) is followed with its own variational equations by the adaptive methods (sliding_sensitivities.hpp), a
+ * constrained model's too (its one-sided fields and Jacobians are those of the constrained solve).
  */
 #pragma once
 
@@ -378,7 +378,7 @@ struct SensitivityRun {
     Eigen::VectorXd z0;
     std::vector<Event<Eigen::VectorXd>> augmented_events;
     std::vector<SensitivitySample> samples;
-    /// For an unconstrained model with switching surfaces: the sliding along each (sliding_sensitivities.hpp), whose
+    /// For a model with switching surfaces: the sliding along each (sliding_sensitivities.hpp), whose
     /// Switch events are the last of augmented_events.
     std::vector<std::shared_ptr<const SlidingVariations>> sliding;
 
@@ -409,8 +409,7 @@ struct SensitivityRun {
                                         e.event.direction, e.event.action});
         // Each switching surface ends the steps where the motion crosses it, and S jumps there (saltation.hpp).
         if constexpr (has_switching<M>::value) {
-            bool follows = true;  // as a plain run, only without constraints
-            if constexpr (is_constrained<M>::value) follows = M::n_constraints == 0;
+            const bool follows = true;  // as a plain run: the one-sided fields and Jacobians are the constrained ones
             const auto given_values = M::param_values(p);
             Eigen::VectorXd values(Eigen::Index(M::param_names.size()));
             for (std::size_t l = 0; l < M::param_names.size(); ++l) values(Eigen::Index(l)) = given_values[l];
@@ -503,8 +502,8 @@ struct SensitivityRun {
             std::ostringstream os;
             os.precision(15);
             os << "the motion sticks on the switching surface " << r.stopped_by << " = 0 at t = " << r.t
-               << " (both sides of its jump push into it, as static friction holds a door): the sensitivities of a "
-                  "motion that slides along a surface are not done";
+               << " (both sides of its jump push into it, as static friction holds a door): this method does not "
+                  "follow the sensitivities of a motion that slides along a surface; dopri5, dop853 and adams do";
             throw SimulationError(os.str(), r.t);
         }
         out.stop_reason = r.stop_reason;

@@ -78,10 +78,9 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
     };
 
     // Sticking (Filippov sliding along a jump of f, as friction holding a block to a belt) is followed by the
-    // explicit adaptive methods of unconstrained models (integrate_sliding). rk4 and radau5, and constrained models,
+    // explicit adaptive methods (integrate_sliding; integrate_constrained for constrained models). rk4 and radau5
     // stop where the motion would stick and say so, rather than chatter across the jump or give a wrong answer.
-    const bool constrained_run = constraint_count<M>() > 0 && is_adaptive_method(o.method);
-    const bool follows_sticking = !constrained_run && o.method != "rk4" && o.method != "radau5";
+    const bool follows_sticking = o.method != "rk4" && o.method != "radau5";
     const std::vector<std::string> sticking_names =
         follows_sticking ? std::vector<std::string>{}
                          : eomgen::stop_where_sliding(events, [&params](const double& t, const State& x, State& xdot) {
@@ -92,8 +91,7 @@ Trajectory<M> simulate(const Options& o, const typename M::Params& params, const
         os.precision(15);
         os << "the motion sticks on " << surface << " at t = " << t
            << " (both sides of its jump push into it, as static friction holds a block): "
-           << (constrained_run ? "sticking is followed in models without constraints only"
-                               : "--method " + o.method + " does not follow sticking; dopri5, dop853 and adams do")
+           << "--method " << o.method << " does not follow sticking; dopri5, dop853 and adams do"
            << " (docs/model_files.md, Sticking)";
         throw eomgen::SimulationError(os.str(), t);
     };

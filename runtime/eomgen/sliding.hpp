@@ -150,12 +150,20 @@ struct SlidingRules {
     std::function<void(std::size_t event, const Scalar& t, State& x)> arrive;  ///< empty: nothing
 };
 
+/// Which of its events a run slides along where it ends (none: it does not), so that a run continued from there (a
+/// constrained run's next segment, after its projection onto the constraints) goes on sliding.
+struct SlidingCarry {
+    static constexpr std::size_t none = static_cast<std::size_t>(-1);
+    std::size_t surface = none;
+};
+
 /**
  * As integrate_with<Method>, where the Switch events that `rules` follows may also be where the motion slides: at
  * each crossing of one, if the surface holds the motion, the run goes on with the rules' field until one of its exits,
  * then with f again. The result holds the whole run; its events include, for each sliding interval, "<switch>:
  * slides" where it starts and its exit ("<switch>: leaves to s > 0", …) where it ends, and its counters add up the
- * segments'.
+ * segments'. With `carry`, a run whose last call ended sliding starts sliding along the same surface (no new
+ * "slides" event), and `carry` says where this one ended.
  */
 template <template <class> class Method, class System, class State>
 IntegrationResult<State> integrate_sliding_with(
@@ -163,7 +171,7 @@ IntegrationResult<State> integrate_sliding_with(
     const typename detail::NonDeduced<typename Method<State>::Options>::type& options,
     std::vector<Event<State>> events, const SlidingRules<State>& rules,
     const std::vector<typename State::Scalar>& sample_times = {},
-    const typename detail::NonDeduced<Observer<State>>::type& observer = {}) {
+    const typename detail::NonDeduced<Observer<State>>::type& observer = {}, SlidingCarry* carry = nullptr) {
     using Scalar = typename State::Scalar;
     for (std::size_t i = 0; i < events.size(); ++i)
         if (rules.follows[i])
@@ -175,7 +183,8 @@ IntegrationResult<State> integrate_sliding_with(
     Scalar t = t0;
     State x = x0;
     constexpr std::size_t none = static_cast<std::size_t>(-1);
-    std::size_t sliding = none;
+    std::size_t sliding = carry && carry->surface < events.size() && rules.follows[carry->surface] ? carry->surface
+                                                                                                    : none;
     const Scalar dir = t_end >= t0 ? Scalar(1) : Scalar(-1);
     // A start on a surface that holds the motion (a door released at rest against its hinges' friction): sliding
     // from t0.
@@ -222,7 +231,10 @@ IntegrationResult<State> integrate_sliding_with(
         x = r.x;
         total.t = t;
         total.x = x;
-        if (r.stop_reason == StopReason::ReachedEnd) break;
+        if (r.stop_reason == StopReason::ReachedEnd) {
+            if (carry) carry->surface = sliding;
+            break;
+        }
         std::size_t which = none;
         for (std::size_t i = 0; i < events.size() && which == none; ++i)
             if (events[i].name == r.stopped_by) which = i;
@@ -239,9 +251,38 @@ IntegrationResult<State> integrate_sliding_with(
         }
         total.stop_reason = StopReason::TerminalEvent;
         total.stopped_by = r.stopped_by;
+        if (carry) carry->surface = sliding;
         break;
     }
     return total;
+}
+
+/**
+ * The rules that follow Filippov's sliding along each Switch event of `events` without a stop_at_switch of its own
+ * (SlidingSurface of `field`); the others are left as they are. The rules hold copies of `field` and the events'
+ * functions, and may outlive them.
+ */
+template <class State>
+SlidingRules<State> filippov_rules(const typename SlidingSurface<State>::Field& field,
+                                   const std::vector<Event<State>>& events) {
+    using Scalar = typename State::Scalar;
+    const auto surfaces = std::make_shared<std::vector<std::shared_ptr<SlidingSurface<State>>>>(events.size());
+    SlidingRules<State> rules;
+    rules.follows.assign(events.size(), false);
+    for (std::size_t i = 0; i < events.size(); ++i)
+        if (events[i].action == EventAction::Switch && !events[i].stop_at_switch) {
+            (*surfaces)[i] = std::make_shared<SlidingSurface<State>>(field, events[i].g);
+            rules.follows[i] = true;
+        }
+    rules.holds = [surfaces](std::size_t i, const Scalar& t, const State& x) { return (*surfaces)[i]->attracting(t, x); };
+    rules.field = [surfaces](std::size_t i) -> typename SlidingRules<State>::Field {
+        const auto surface = (*surfaces)[i];
+        return [surface](const Scalar& t, const State& x, State& xdot) { surface->sliding_field(t, x, xdot); };
+    };
+    std::vector<std::string> names;
+    for (const Event<State>& e : events) names.push_back(e.name);
+    rules.exits = [surfaces, names](std::size_t i) { return (*surfaces)[i]->exits(names[i]); };
+    return rules;
 }
 
 /**
@@ -260,22 +301,7 @@ IntegrationResult<State> integrate_sliding(
     const typename SlidingSurface<State>::Field field = [&f](const Scalar& t, const State& x, State& xdot) {
         f(t, x, xdot);
     };
-    std::vector<std::shared_ptr<SlidingSurface<State>>> surfaces(events.size());
-    SlidingRules<State> rules;
-    rules.follows.assign(events.size(), false);
-    for (std::size_t i = 0; i < events.size(); ++i)
-        if (events[i].action == EventAction::Switch && !events[i].stop_at_switch) {
-            surfaces[i] = std::make_shared<SlidingSurface<State>>(field, events[i].g);
-            rules.follows[i] = true;
-        }
-    rules.holds = [&surfaces](std::size_t i, const Scalar& t, const State& x) { return surfaces[i]->attracting(t, x); };
-    rules.field = [&surfaces](std::size_t i) -> typename SlidingRules<State>::Field {
-        const auto surface = surfaces[i];
-        return [surface](const Scalar& t, const State& x, State& xdot) { surface->sliding_field(t, x, xdot); };
-    };
-    std::vector<std::string> names;
-    for (const Event<State>& e : events) names.push_back(e.name);
-    rules.exits = [&surfaces, names](std::size_t i) { return surfaces[i]->exits(names[i]); };
+    const SlidingRules<State> rules = filippov_rules(field, events);
     return integrate_sliding_with<Method>(f, t0, x0, t_end, options, std::move(events), rules, sample_times, observer);
 }
 
