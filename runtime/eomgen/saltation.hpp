@@ -62,6 +62,24 @@ void switching_jacobians(double t, const typename M::State& x, const typename M:
         linearize_switching<detail::model_template<M>::template type>(t, x, p, Sx, Sp, St);
 }
 
+/// Switching surface k of Model M with its one-sided fields (SlidingSurface), on plain vectors; `p` must outlive it.
+template <class M>
+SlidingSurface<Eigen::VectorXd> model_surface(const typename M::Params& p, int k) {
+    return SlidingSurface<Eigen::VectorXd>(
+        [&p](const double& t, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) {
+            const typename M::State ys(y);
+            typename M::State f = ys;
+            M::rhs(t, ys, p, f);
+            ydot = f;
+        },
+        [&p, k](const double& t, const Eigen::VectorXd& y) {
+            const typename M::State ys(y);
+            typename M::Switches s;
+            M::switching(t, positions<M::nq>(ys), velocities<M::nq>(ys), p, s);
+            return double(s(k));
+        });
+}
+
 /**
  * The saltation of switching surface k of Model M for the sensitivities' columns: `parameter_of[c]` is column c's
  * parameter index (−1 for an initial value's). apply(t, x, S) replaces S⁻ by S⁺ at a crossing at (t, x).
@@ -77,20 +95,7 @@ class Saltation {
     void apply(double t, const Eigen::VectorXd& x, Eigen::MatrixXd& S) const {
         const typename M::Params& p = p_;
         const int k = k_;
-        SlidingSurface<Eigen::VectorXd> surface(
-            [&p](const double& tt, const Eigen::VectorXd& y, Eigen::VectorXd& ydot) {
-                const typename M::State ys(y);
-                typename M::State f = ys;
-                M::rhs(tt, ys, p, f);
-                ydot = f;
-            },
-            [&p, k](const double& tt, const Eigen::VectorXd& y) {
-                const typename M::State ys(y);
-                typename M::Switches s;
-                M::switching(tt, positions<M::nq>(ys), velocities<M::nq>(ys), p, s);
-                return double(s(k));
-            });
-        const auto sides = surface.sides(t, x);
+        const auto sides = model_surface<M>(p, k).sides(t, x);
         const Eigen::VectorXd jump = sides.minus - sides.plus;
         const double scale = 1 + sides.minus.cwiseAbs().maxCoeff() + sides.plus.cwiseAbs().maxCoeff();
         if (jump.cwiseAbs().maxCoeff() <= 1e-10 * scale) return;  // a kink: f is continuous, S does not jump

@@ -36,12 +36,14 @@
 #include "eomgen/consistent_sensitivities.hpp"
 #include "eomgen/constraints.hpp"
 #include "eomgen/errors.hpp"
+#include "eomgen/grazing.hpp"
 #include "eomgen/integrate.hpp"
 #include "eomgen/linearize.hpp"
 #include "eomgen/model_jacobian.hpp"
 #include "eomgen/model_traits.hpp"
 #include "eomgen/radau5.hpp"
 #include "eomgen/saltation.hpp"
+#include "eomgen/sensitivity_types.hpp"
 #include "eomgen/sliding_sensitivities.hpp"
 
 #include <Eigen/Core>
@@ -60,92 +62,6 @@
 #include <vector>
 
 namespace eomgen {
-
-/// One column of S: the derivative with respect to a parameter (index in param_names) or to an initial value
-/// (index in state_names: q, then q̇).
-struct SensitivityColumn {
-    enum class Kind { Parameter, InitialValue };
-    Kind kind = Kind::Parameter;
-    int index = 0;
-};
-
-/// The column of parameter `name` (std::invalid_argument when `names` has none).
-template <class Names>
-SensitivityColumn parameter_column(const Names& names, const std::string& name) {
-    for (std::size_t i = 0; i < names.size(); ++i)
-        if (name == names[i]) return {SensitivityColumn::Kind::Parameter, int(i)};
-    throw std::invalid_argument("no parameter '" + name + "'");
-}
-
-/// The column of the initial value of state `name` (a coordinate or NAME_dot).
-template <class Names>
-SensitivityColumn initial_column(const Names& names, const std::string& name) {
-    for (std::size_t i = 0; i < names.size(); ++i)
-        if (name == names[i]) return {SensitivityColumn::Kind::InitialValue, int(i)};
-    throw std::invalid_argument("no state '" + name + "'");
-}
-
-/**
- * An event for integrate_sensitivities: `event.g(t, x)` of the model's state, and, where it is known, its
- * gradient (g_t, g_x) at (t, x) for the event time's sensitivity. Without one, g_t and g_x are taken by central
- * differences (steps of 1e-5 relative: about 1e-10 relative error for a smooth g).
- */
-struct SensitivityEvent {
-    Event<Eigen::VectorXd> event;
-    std::function<void(double t, const Eigen::VectorXd& x, double& g_t, Eigen::RowVectorXd& g_x)> gradient = {};
-};
-
-/// The event where state i crosses `value` (g = x_i − value), with its exact gradient.
-inline SensitivityEvent state_crossing(std::string name, int i, double value,
-                                       EventDirection direction = EventDirection::Both,
-                                       EventAction action = EventAction::Stop) {
-    SensitivityEvent e;
-    e.event = {std::move(name), [i, value](const double&, const Eigen::VectorXd& x) { return x(i) - value; },
-               direction, action};
-    e.gradient = [i](double, const Eigen::VectorXd& x, double& g_t, Eigen::RowVectorXd& g_x) {
-        g_t = 0;
-        g_x = Eigen::RowVectorXd::Zero(x.size());
-        g_x(i) = 1;
-    };
-    return e;
-}
-
-/// The state and S at a requested time, and the declared outputs with theirs.
-struct SensitivitySample {
-    double t = 0;
-    Eigen::VectorXd x;
-    Eigen::MatrixXd S;  ///< nx × columns
-    Eigen::VectorXd y;  ///< the declared outputs ([outputs] of the model file): empty where there are none
-    Eigen::MatrixXd Y;  ///< ∂y/∂(columns) = Yx S + Yp (n_outputs × columns)
-    Eigen::VectorXd lambda;  ///< a constrained model's multipliers: empty without constraints
-    Eigen::MatrixXd L;       ///< ∂λ/∂(columns) = Lx S + Lp (n_constraints × columns)
-};
-
-/// A located event with the sensitivities of its time and of the state there.
-struct SensitivityEventHit {
-    std::string name;
-    double t = 0;
-    Eigen::VectorXd x;
-    Eigen::MatrixXd S;       ///< ∂x/∂(columns) at fixed t = t*
-    Eigen::RowVectorXd dt;   ///< ∂t⁎/∂(columns) = −g_x S / (g_t + g_x ẋ) (g does not depend on p)
-    Eigen::MatrixXd dx;      ///< the total derivative of the state at the event, S + ẋ dt
-};
-
-/// What integrate_sensitivities returns: integrate()'s result for the state, with S beside it.
-struct SensitivityResult {
-    double t = 0;
-    Eigen::VectorXd x;
-    Eigen::MatrixXd S;
-    std::vector<SensitivitySample> samples;
-    SensitivitySample end;  ///< where the run ended (t, x, S as above) with the outputs' and multipliers' sensitivities
-    std::vector<SensitivityEventHit> events;
-    /// Where the motion crossed a switching surface and S jumped by the saltation matrix: the surface and the time.
-    std::vector<std::pair<std::string, double>> switches;
-    StopReason stop_reason = StopReason::ReachedEnd;
-    std::string stopped_by;
-    std::size_t accepted_steps = 0, rejected_steps = 0, rhs_evaluations = 0;
-    std::size_t jacobian_evaluations = 0;  ///< of J and Jp (each rhs evaluation of the augmented system has one)
-};
 
 namespace detail {
 
@@ -379,12 +295,15 @@ struct SensitivityRun {
     std::vector<Event<Eigen::VectorXd>> augmented_events;
     std::vector<SensitivitySample> samples;
     /// For a model with switching surfaces: the sliding along each (sliding_sensitivities.hpp), whose
-    /// Switch events are the last of augmented_events.
+    /// Switch events are the last of augmented_events; and the touches that cross nothing (grazing.hpp), within the
+    /// resolution of the run's tolerances (set by the caller that has them).
     std::vector<std::shared_ptr<const SlidingVariations>> sliding;
+    GrazeWatch<M> grazing;
+    double rtol = 0, atol = 0;
 
     SensitivityRun(const typename M::Params& p, double t0, const typename M::State& x0,
                    const std::vector<SensitivityColumn>& columns, const std::vector<SensitivityEvent>& given)
-        : system(p, x0.size(), columns), events(given) {
+        : system(p, x0.size(), columns), events(given), grazing(p, x0.size()) {
         check_sensitivity_columns<M>(t0, x0, p, columns);
         if constexpr (is_constrained<M>::value)
             if (M::n_constraints > 0) check_consistent<M>(t0, x0, p);
@@ -409,6 +328,7 @@ struct SensitivityRun {
                                         e.event.direction, e.event.action});
         // Each switching surface ends the steps where the motion crosses it, and S jumps there (saltation.hpp).
         if constexpr (has_switching<M>::value) {
+            for (Event<Eigen::VectorXd>& e : grazing.events()) augmented_events.push_back(std::move(e));
             const bool follows = true;  // as a plain run: the one-sided fields and Jacobians are the constrained ones
             const auto given_values = M::param_values(p);
             Eigen::VectorXd values(Eigen::Index(M::param_names.size()));
@@ -512,9 +432,11 @@ struct SensitivityRun {
         out.rejected_steps = r.rejected_steps;
         out.rhs_evaluations = r.rhs_evaluations;
         out.jacobian_evaluations = system.jacobian_evaluations();
+        if constexpr (has_switching<M>::value)
+            for (auto& graze : grazing.grazes(r.events, rtol, atol)) out.switches.push_back(std::move(graze));
         for (const auto& hit : r.events) {
             if (!given(hit.name)) {  // where sliding began or ended ("…: slides", "…: leaves to s > 0")
-                out.switches.emplace_back(hit.name, hit.t);
+                if (!is_touch_event(hit.name)) out.switches.emplace_back(hit.name, hit.t);
                 continue;
             }
             const SensitivitySample s = split(hit.t, hit.x);
@@ -532,6 +454,8 @@ struct SensitivityRun {
             h.dx = s.S + xdot * h.dt;
             out.events.push_back(std::move(h));
         }
+        std::stable_sort(out.switches.begin(), out.switches.end(),
+                         [](const auto& a, const auto& b) { return a.second < b.second; });
         return out;
     }
 };
@@ -545,15 +469,18 @@ SensitivityResult integrate_sensitivities(const typename M::Params& p, double t0
                                           const std::vector<SensitivityEvent>& events,
                                           const std::vector<double>& sample_times) {
     detail::SensitivityRun<M> run(p, t0, x0, columns, events);
+    run.rtol = options.rtol;
+    run.atol = options.atol;
     detail::AugmentedRhs f = run.rhs();
     if (run.sliding.empty())
         return run.finish(integrate_with<Method>(f, t0, run.z0, t_end, options, run.augmented_events, sample_times,
                                                  run.observer()));
     std::vector<std::string> names;
     for (const Event<Eigen::VectorXd>& e : run.augmented_events) names.push_back(e.name);
-    const SlidingRules<Eigen::VectorXd> rules =
+    SlidingRules<Eigen::VectorXd> rules =
         sliding_sensitivity_rules(run.sliding, run.augmented_events.size() - run.sliding.size(),
                                   run.augmented_events.size(), names, x0.size());
+    for (const std::string& name : names) rules.idle_while_sliding.push_back(is_touch_event(name));
     return run.finish(integrate_sliding_with<Method>(f, t0, run.z0, t_end, options, run.augmented_events, rules,
                                                      sample_times, run.observer()));
 }

@@ -253,6 +253,13 @@ int run_sensitivities(const Options& o) {
     }
     std::cout << "stopped: " << (r.stop_reason == StopReason::TerminalEvent ? "at event " + r.stopped_by : "at t_end")
               << "\n";
+    const std::string grazes = ": grazes";
+    for (const auto& [name, at] : r.switches)
+        if (name.size() > grazes.size() && name.compare(name.size() - grazes.size(), grazes.size(), grazes) == 0)
+            std::cerr << "warning: the motion grazes " << name.substr(0, name.size() - grazes.size()) << " = 0 at t = "
+                      << at << s << " without crossing it: a motion with other values of the columns may cross it "
+                      << "there, where S has no derivative, and S after it is that of motions that do not cross "
+                      << "(docs/sensitivities.md, Grazing)\n";
 
     if (o.csv.empty()) return kExitOk;
     // S's columns (each column's states), then the outputs' (each column's outputs), then the multipliers'.

@@ -148,6 +148,9 @@ struct SlidingRules {
     std::function<Field(std::size_t event)> field;
     std::function<std::vector<Event<State>>(std::size_t event)> exits;
     std::function<void(std::size_t event, const Scalar& t, State& x)> arrive;  ///< empty: nothing
+    /// Per event (or empty: none): left out while the motion slides, where it means nothing (a graze's watch on ṡ,
+    /// grazing.hpp, whose f is not the sliding one).
+    std::vector<bool> idle_while_sliding;
 };
 
 /// Which of its events a run slides along where it ends (none: it does not), so that a run continued from there (a
@@ -216,8 +219,10 @@ IntegrationResult<State> integrate_sliding_with(
         } else {
             const typename SlidingRules<State>::Field slide = rules.field(sliding);
             std::vector<Event<State>> during;
-            for (const Event<State>& e : events)
-                if (e.action != EventAction::Switch) during.push_back(e);
+            for (std::size_t i = 0; i < events.size(); ++i)
+                if (events[i].action != EventAction::Switch &&
+                    !(i < rules.idle_while_sliding.size() && rules.idle_while_sliding[i]))
+                    during.push_back(events[i]);
             for (Event<State>& e : rules.exits(sliding)) during.push_back(std::move(e));
             r = integrate_with<Method>(slide, t, x, t_end, options, during, times, watch);
         }

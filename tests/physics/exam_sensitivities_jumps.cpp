@@ -18,6 +18,7 @@
 #include "eomgen/models/block_on_belt.hpp"
 #include "eomgen/models/friction_door.hpp"
 #include "eomgen/models/friction_pendulum_cartesian.hpp"
+#include "eomgen/models/grazing_oscillator.hpp"
 #include "eomgen/models/hoop_driven.hpp"
 #include "eomgen/models/pendulum_cartesian.hpp"
 #include "eomgen/sensitivities.hpp"
@@ -190,6 +191,8 @@ TEST_CASE("a motion that sticks on a switching surface is followed along it, and
     REQUIRE(leaves.size() == 1);
     CHECK(slides[0] == Approx(0.179357449149907).epsilon(1e-9));  // eomgen run's times for the same motion
     CHECK(leaves[0] == Approx(0.675794716081633).epsilon(1e-9));
+    CHECK(when(belt, "sign(v - x'): grazes").empty());  // its arrival and exit touch the surface: no grazes
+    CHECK(when(held, "sign(psi'): grazes").empty());
     // Released at the belt's speed: stuck from the start, S made tangent to the surface there. While it is carried,
     // x = x(0) + v t whatever the rest: ∂x/∂v = t, ∂x/∂x(0) = 1, ∂ẋ/∂v = 1, every other entry 0 (a changed ẋ(0)
     // is caught again at once, moving x only to second order; differences, which see that, are no reference here).
@@ -220,8 +223,60 @@ TEST_CASE("a constrained motion that sticks is followed along its surface on the
     columns.push_back(eomgen::initial_column(C::state_names, "x"));
     const auto r = check_columns<C>(C::Params{}, C::default_state(), 5.0, columns);
     int slides = 0;
-    for (const auto& [name, at] : r.switches) slides += name == "sign(x*y' - y*x'): slides" ? 1 : 0;
+    for (const auto& [name, at] : r.switches) {
+        slides += name == "sign(x*y' - y*x'): slides" ? 1 : 0;
+        CHECK(name.find("grazes") == std::string::npos);
+    }
     CHECK(slides >= 2);
+}
+
+TEST_CASE("a touch of a switching surface that crosses nothing is reported as a graze", "[sensitivities]") {
+    // The block that slipped off the belt at t1 = 0.675794716 s left it tangentially (ẋ = v, ẍ = 0) and, undamped,
+    // comes back to the belt's speed exactly so one period 2π/√(k/m) later: ẋ touches v without crossing it.
+    using B = eomgen::models::block_on_belt::Model<double>;
+    eomgen::Dop853Options<double> o;
+    o.rtol = kRtol;
+    o.atol = kAtol;
+    const auto r = eomgen::integrate_sensitivities<B, eomgen::Dop853>(
+        B::Params{}, 0.0, B::default_state(), 3.0, {eomgen::parameter_column(B::param_names, "mu")}, o);
+    std::vector<double> grazes;
+    for (const auto& [name, at] : r.switches) {
+        INFO(name << " at t = " << at);
+        CHECK(name.find("touches") == std::string::npos);  // the watch's own events are not reported
+        if (name == "sign(v - x'): grazes") grazes.push_back(at);
+    }
+    REQUIRE(grazes.size() == 1);
+    const double period = 2 * M_PI / std::sqrt(B::Params{}.k / B::Params{}.m);
+    CHECK(grazes[0] == Approx(0.675794716081633 + period).epsilon(1e-7));
+    // In time order: the crossing where it arrives, slides, leaves, grazes.
+    REQUIRE(r.switches.size() == 4);
+    CHECK(std::is_sorted(r.switches.begin(), r.switches.end(),
+                         [](const auto& a, const auto& b) { return a.second < b.second; }));
+}
+
+TEST_CASE("a graze of a kink is no graze of a jump", "[sensitivities]") {
+    // sin(t) touches x = a = 1 at t = π/2: where the force beyond it is continuous (c_kink max(x − a, 0)) nearby motions
+    // still have a derivative and nothing is reported; where it jumps (c_jump > 0) the graze is.
+    using G = eomgen::models::grazing_oscillator::Model<double>;
+    static_assert(G::n_switches == 1, "max(x - a, 0) and heaviside(a - x) switch on one surface");
+    eomgen::Dop853Options<double> o;
+    o.rtol = kRtol;
+    o.atol = kAtol;
+    const auto grazes = [&](const G::Params& p) {
+        const auto r = eomgen::integrate_sensitivities<G, eomgen::Dop853>(
+            p, 0.0, G::default_state(), 2.0, {eomgen::parameter_column(G::param_names, "a")}, o);
+        std::vector<double> t;
+        for (const auto& [name, at] : r.switches)
+            if (name == std::string(G::switch_names[0]) + ": grazes") t.push_back(at);  // one surface: x = a
+        return t;
+    };
+    G::Params kink;
+    CHECK(grazes(kink).empty());
+    G::Params jump;
+    jump.c_jump = 0.5;
+    const std::vector<double> at = grazes(jump);
+    REQUIRE(at.size() == 1);
+    CHECK(at[0] == Approx(M_PI / 2).epsilon(1e-8));
 }
 
 TEST_CASE("what the sensitivities refuse at switching surfaces", "[sensitivities]") {
