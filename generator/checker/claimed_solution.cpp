@@ -1,9 +1,12 @@
 /** @file claimed_solution.cpp  A claimed solution q_k(t) put into the equation of motion of q_k. */
 #include "checker/claimed_solution.hpp"
+#include "checker/constrained_motion.hpp"
 #include "checker/state_symbols.hpp"
 
 #include "mechanics/pole_free_subs.hpp"
 
+#include <algorithm>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -44,7 +47,7 @@ bool linear_in_its_names(const GiNaC::ex& F, const LatexContext& ctx) {
 
 bool check_claimed_solution(const GiNaC::ex& left, const GiNaC::ex& right, const Model& model, const Equations& eq,
                             const std::vector<GiNaC::ex>& motion, const LatexContext& ctx, Comparisons& cmp,
-                            EquationCheck& r, const GiNaC::exmap& stated) {
+                            EquationCheck& r, const GiNaC::exmap& stated, ClaimedMotion* claimed) {
     const GiNaC::ex& t = model.t;
     for (const auto& [q, written] : {std::pair(left, right), std::pair(right, left)}) {
         const GiNaC::ex F = stated.empty() ? written : written.subs(stated);
@@ -105,6 +108,30 @@ bool check_claimed_solution(const GiNaC::ex& left, const GiNaC::ex& right, const
             return false;
         }
         if (holds_state(residual, model)) return false;  // the equation still holds other coordinates
+        // What the rows after it that use its constants are read on (check_on_claimed_motion).
+        const auto record = [&](bool solves) {
+            if (!claimed) return;
+            const GiNaC::symbol& ts = GiNaC::ex_to<GiNaC::symbol>(t);
+            claimed->coordinate = k;
+            claimed->at = at;
+            claimed->at[model.coordinates[k].q] = F;
+            claimed->at[model.coordinates[k].qd] = GiNaC::diff(F, ts);
+            claimed->at[model.coordinates[k].qdd] = GiNaC::diff(F, ts, 2);
+            claimed->constants.clear();
+            std::vector<GiNaC::ex> stack{F};
+            while (!stack.empty()) {
+                const GiNaC::ex x = stack.back();
+                stack.pop_back();
+                if (const FreeName* f = ctx.free_name_of(x); f && f->kind == NameKind::Unknown) {
+                    if (std::none_of(claimed->constants.begin(), claimed->constants.end(),
+                                     [&](const GiNaC::ex& c) { return c.is_equal(x); }))
+                        claimed->constants.push_back(x);
+                    continue;
+                }
+                for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
+            }
+            claimed->solves = solves;
+        };
         const std::string name = "$" + model.coordinates[k].latex + "$";
         const std::string compared = "the equation of motion for " + name +
                                      (at.size() > 3 ? " on the constraints" : "") + ", with this as its solution";
@@ -112,6 +139,7 @@ bool check_claimed_solution(const GiNaC::ex& left, const GiNaC::ex& right, const
             r.compared_with = compared;
             r.verdict = Verdict::Agrees;
             r.reason = "it solves the equation of motion for " + name + " at every $t$";
+            record(true);
             return true;
         }
         if (first_order.is_equal(1)) {
@@ -119,6 +147,7 @@ bool check_claimed_solution(const GiNaC::ex& left, const GiNaC::ex& right, const
             r.verdict = Verdict::Agrees;
             r.reason = "it solves the equation of motion for " + name +
                        " to first order in its terms in $t$ (a small oscillation about where they vanish), not exactly";
+            record(true);
             return true;
         }
         // A name of the text inside a function of t (Ω' in cos(Ω' t − δ), defined later, or a phase) could make it
@@ -135,9 +164,52 @@ bool check_claimed_solution(const GiNaC::ex& left, const GiNaC::ex& right, const
         r.difference = cmp.latex(shown);
         r.wrong_terms = {"put into the equation of motion for " + name + " it leaves $" + cmp.latex(shown) +
                          "$, not 0: it is not a solution"};
+        record(false);
         return true;
     }
     return false;
+}
+
+bool check_on_claimed_motion(const GiNaC::ex& a, const GiNaC::ex& b, const ClaimedMotion& claimed,
+                             const Model& model, const Equations& eq, const std::vector<GiNaC::symbol>& multipliers,
+                             int sign, Comparisons& cmp, double tol, EquationCheck& r) {
+    // The multipliers at the claimed state: solved from the constrained equations there.
+    std::vector<std::pair<GiNaC::symbol, GiNaC::ex>> solved;
+    for (std::size_t k = 0; k < multipliers.size(); ++k) {
+        if (!(a - b).has(multipliers[k])) continue;
+        const std::optional<GiNaC::ex> value = solved_multiplier(model, eq, k);
+        if (!value) return false;
+        solved.emplace_back(multipliers[k], *value);
+    }
+    const auto on_motion = [&](int s) -> std::optional<bool> {
+        GiNaC::exmap with;
+        for (const auto& [l, v] : solved) with[l] = s * v;
+        const std::optional<GiNaC::ex> x = subs_unless_pole((a - b).subs(with), claimed.at);
+        if (!x || holds_state(*x, model)) return std::nullopt;
+        return cmp.same(*x, 0, tol);
+    };
+    std::optional<bool> holds = on_motion(sign < 0 ? -1 : 1);
+    if (holds && !*holds && sign == 0 && !solved.empty()) {
+        const std::optional<bool> other = on_motion(-1);
+        if (other && *other) holds = other;
+    }
+    if (!holds) return false;
+    const std::string motion = "$" + claimed.source + "$ (line " + std::to_string(claimed.line) + ")";
+    r.compared_with = "the motion " + motion + " the text claims, put in";
+    if (claimed.solves) {
+        r.verdict = *holds ? Verdict::Agrees : Verdict::Disagrees;
+        r.reason = *holds ? "it holds on that motion at every $t$ (checked at sample points)"
+                          : "it does not hold on that motion (checked at sample points)";
+        if (!*holds) r.wrong_terms = {"on the motion " + motion + " the two sides differ"};
+        return true;
+    }
+    r.verdict = Verdict::Disagrees;
+    r.wrong_terms = {*holds ? "it follows from " + motion +
+                                  ", which is not a motion of the model (it does not solve the equation of motion "
+                                  "for $" + model.coordinates[claimed.coordinate].latex + "$): it carries that error"
+                            : "it rests on " + motion +
+                                  ", which is not a motion of the model, and does not hold on it either"};
+    return true;
 }
 
 }  // namespace eomgen::checker

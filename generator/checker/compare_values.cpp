@@ -5,6 +5,19 @@
 
 namespace eomgen::checker::detail {
 
+const ClaimedMotion* Checker::claimed_motion_at(std::size_t at, const Prepared& a, const Prepared& b) const {
+    const ClaimedMotion* found = nullptr;
+    for (const ClaimedMotion& m : claimed_motions_)
+        if (m.from < at && at < m.until) found = &m;
+    if (!found || (a.unknown.empty() && b.unknown.empty())) return nullptr;
+    for (const Prepared* p : {&a, &b})
+        for (const FreeName* f : p->unknown)
+            if (std::none_of(found->constants.begin(), found->constants.end(),
+                             [&](const GiNaC::ex& k) { return k.is_equal(f->symbol); }))
+                return nullptr;
+    return found;
+}
+
 void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a_read,
                            const Prepared& b_read, double tol, EquationCheck& r) {
     Prepared a = a_read, b = b_read;
@@ -78,10 +91,18 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
     // `x_2 = x + l\sin\theta`: a coordinate of a point the model gives (point_positions.cpp).
     if (check_position(c, j, false, r)) return;
     // `s(t) = s_0\cos(\omega t)`: a solution the text claims for a coordinate, put into its equation of motion.
-    if (a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
-        check_claimed_solution(a.value, b.value, model_, eq_, motion_, ctx_, *this, r,
-                               discourse_->stated_frequencies(c.relation_offsets[j - 1])))
-        return;
+    if (a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty()) {
+        ClaimedMotion claim;
+        if (check_claimed_solution(a.value, b.value, model_, eq_, motion_, ctx_, *this, r,
+                                   discourse_->stated_frequencies(c.relation_offsets[j - 1]), &claim)) {
+            claim.line = r.where.line;
+            claim.source = L.side->source + " = " + R.side->source;
+            claim.from = c.relation_offsets[j - 1];
+            claim.until = c.section >= 0 ? d_.sections[std::size_t(c.section)].end : std::string::npos;
+            claimed_motions_.push_back(std::move(claim));
+            return;
+        }
+    }
     // `\rho^2\dot\varphi = c_0`, where the text introduces c_0 (named_constants.cpp).
     if (named_constants_.count(R.base + R.side->begin)) {
         // On a particular motion of the model ([[motions]]) the motion says which constant it is.
@@ -115,6 +136,12 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         if (def.empty() && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty() &&
             on_motion(c, i, j, a.value, b.value, tol, r))
             return;
+        // `… = \lambda` with the s_0 of `s(t) = s_0\cos(\omega t)` before it: on the motion the text claimed.
+        if (def.empty() && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty())
+            if (const ClaimedMotion* claim = claimed_motion_at(c.relation_offsets[j - 1], a, b);
+                claim && check_on_claimed_motion(a.value, b.value, *claim, model_, eq_, multipliers_,
+                                                 multiplier_sign_, *this, tol, r))
+                return;
         std::vector<std::string> unknown, vectors;
         auto describe = [&](const PSide& s, const Prepared& p) {
             for (const FreeName* f : p.vectors) {

@@ -73,3 +73,37 @@ TEST_CASE("solutions: with the frequency the text has stated, x = A cos(omega t)
     REQUIRE(wrong.equations.size() == 2);
     CHECK(wrong.equations[1].verdict == Verdict::Disagrees);
 }
+
+TEST_CASE("solutions: the rows after a claimed solution that use its constants are read on that motion",
+          "[checker][solutions]") {
+    // A solution: its rate agrees on it, a wrong rate disagrees there; the multiplier (the drive's torque, the φ
+    // equation on φ = ωt: λ = 2 m s ṡ ω + m g s cos ωt) at s = s_0 cosh ωt + … agrees.
+    const CheckReport right = eomgen::test::check_text(
+        kRod, "$$s(t) = s_0 \\cosh(\\omega t) + \\frac{g}{2\\omega^2}\\sin(\\omega t)$$\n\n"
+              "$$\\dot s = s_0\\omega\\sinh(\\omega t) + \\frac{g}{2\\omega}\\cos(\\omega t)$$\n\n"
+              "$$\\dot s = s_0\\omega\\cosh(\\omega t)$$\n\n"
+              "$$2 m \\omega^2 s_0^2\\cosh(\\omega t)\\sinh(\\omega t) + 2 m g s_0 \\cosh(\\omega t)\\cos(\\omega t) + "
+              "m g s_0 \\sinh(\\omega t)\\sin(\\omega t) + \\frac{m g^2}{\\omega^2}\\sin(\\omega t)\\cos(\\omega t) "
+              "= \\lambda$$\n");
+    REQUIRE(right.equations.size() == 4);
+    INFO(eomgen::test::describe(right.equations[3]));
+    CHECK(right.equations[0].verdict == Verdict::Agrees);
+    CHECK(right.equations[1].verdict == Verdict::Agrees);
+    CHECK(right.equations[1].compared_with.find("the motion $s(t) = s_0 \\cosh") != std::string::npos);
+    CHECK(right.equations[2].verdict == Verdict::Disagrees);
+    CHECK(right.equations[3].verdict == Verdict::Agrees);
+    // Not a solution: a row that holds on it carries its error, and says so.
+    const CheckReport wrong = eomgen::test::check_text(
+        kRod, "$$s(t) = s_0 \\cos(\\omega t)$$\n\n$$\\dot s = -s_0\\omega\\sin(\\omega t)$$\n\n"
+              "$$-2ms_0^2\\omega^2\\cos(\\omega t)\\sin(\\omega t) +mgs_0\\cos^2(\\omega t)=\\lambda$$\n");
+    REQUIRE(wrong.equations.size() == 3);
+    for (const std::size_t k : {1u, 2u}) {
+        INFO(eomgen::test::describe(wrong.equations[k]));
+        CHECK(wrong.equations[k].verdict == Verdict::Disagrees);
+        REQUIRE(wrong.equations[k].wrong_terms.size() == 1);
+        CHECK(wrong.equations[k].wrong_terms[0].find("it carries that error") != std::string::npos);
+    }
+    // Without the claim, s_0 is a name the text never gave a meaning.
+    const EquationCheck alone = one(kRod, "$$\\dot s = -s_0\\omega\\sin(\\omega t)$$\n");
+    CHECK(alone.verdict == Verdict::NotComparable);
+}
