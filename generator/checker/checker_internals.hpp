@@ -544,10 +544,7 @@ class Checker : public Comparisons {
             if (s.begin <= at && at < s.end) titles.push_back(s.title);
         return motions_.check(a, b, c.sides[i].side->source, titles, *this, tol, r);
     }
-    /// The solutions the text claimed, judged (claimed_solution.hpp), and the latest in force at `at` whose constants
-    /// are every name of a and b the model does not know.
-    std::vector<ClaimedMotion> claimed_motions_;
-    const ClaimedMotion* claimed_motion_at(std::size_t at, const Prepared& a, const Prepared& b) const;
+    std::vector<ClaimedMotion> claimed_motions_;  ///< the solutions the text claimed, judged (claimed_solution.hpp)
     NormalModesCheck modes_;       ///< ω² and secular equations against the model's normal modes
     AmplitudeEquations amplitudes_{model_, motion_};  ///< rows of (K − ω² M) A = 0 for a trial solution
     /// The rows' roles besides claims (discourse.hpp), read from all rows before any is compared.

@@ -170,6 +170,20 @@ bool check_claimed_solution(const GiNaC::ex& left, const GiNaC::ex& right, const
     return false;
 }
 
+const ClaimedMotion* claimed_motion_at(const std::vector<ClaimedMotion>& claimed, std::size_t at,
+                                       const std::vector<const FreeName*>& a, const std::vector<const FreeName*>& b) {
+    const ClaimedMotion* found = nullptr;
+    for (const ClaimedMotion& m : claimed)
+        if (m.from < at && at < m.until) found = &m;
+    if (!found || (a.empty() && b.empty())) return nullptr;
+    for (const auto* names : {&a, &b})
+        for (const FreeName* f : *names)
+            if (std::none_of(found->constants.begin(), found->constants.end(),
+                             [&](const GiNaC::ex& k) { return k.is_equal(f->symbol); }))
+                return nullptr;
+    return found;
+}
+
 bool check_on_claimed_motion(const GiNaC::ex& a, const GiNaC::ex& b, const ClaimedMotion& claimed,
                              const Model& model, const Equations& eq, const std::vector<GiNaC::symbol>& multipliers,
                              int sign, Comparisons& cmp, double tol, EquationCheck& r) {

@@ -44,6 +44,11 @@ bool check_claimed_solution(const GiNaC::ex& left, const GiNaC::ex& right, const
                             const std::vector<GiNaC::ex>& motion, const LatexContext& ctx, Comparisons& cmp,
                             EquationCheck& r, const GiNaC::exmap& stated = {}, ClaimedMotion* claimed = nullptr);
 
+/// The latest of `claimed` in force at `at` (after its link, in its section) whose constants are every name in `a`
+/// and `b` (the names of a row the model does not know); nullptr when there is none, or the row has no such name.
+const ClaimedMotion* claimed_motion_at(const std::vector<ClaimedMotion>& claimed, std::size_t at,
+                                       const std::vector<const FreeName*>& a, const std::vector<const FreeName*>& b);
+
 /**
  * Judges `a = b` on a motion the text claimed before it (`claimed`: it fills `coordinate`, `at`, `constants` and
  * `solves` of the claim it judges), when the names of the text in a and b are all constants of that motion:

@@ -5,19 +5,6 @@
 
 namespace eomgen::checker::detail {
 
-const ClaimedMotion* Checker::claimed_motion_at(std::size_t at, const Prepared& a, const Prepared& b) const {
-    const ClaimedMotion* found = nullptr;
-    for (const ClaimedMotion& m : claimed_motions_)
-        if (m.from < at && at < m.until) found = &m;
-    if (!found || (a.unknown.empty() && b.unknown.empty())) return nullptr;
-    for (const Prepared* p : {&a, &b})
-        for (const FreeName* f : p->unknown)
-            if (std::none_of(found->constants.begin(), found->constants.end(),
-                             [&](const GiNaC::ex& k) { return k.is_equal(f->symbol); }))
-                return nullptr;
-    return found;
-}
-
 void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, const Prepared& a_read,
                            const Prepared& b_read, double tol, EquationCheck& r) {
     Prepared a = a_read, b = b_read;
@@ -138,7 +125,8 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         // `… = \lambda` with the s_0 of `s(t) = s_0\cos(\omega t)` before it: on the motion the text claimed.
         if (def.empty() && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty())
-            if (const ClaimedMotion* claim = claimed_motion_at(c.relation_offsets[j - 1], a, b);
+            if (const ClaimedMotion* claim =
+                    claimed_motion_at(claimed_motions_, c.relation_offsets[j - 1], a.unknown, b.unknown);
                 claim && check_on_claimed_motion(a.value, b.value, *claim, model_, eq_, multipliers_,
                                                  multiplier_sign_, *this, tol, r))
                 return;
