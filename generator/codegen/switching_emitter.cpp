@@ -5,6 +5,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <utility>
+
 namespace eomgen::codegen {
 namespace {
 
@@ -40,14 +43,37 @@ std::vector<SwitchingSurface> dynamics_switches(const Equations& eq) {
 
 }  // namespace
 
+void canonical_switches(std::vector<SwitchingSurface> found, MathPrinter& printer, SwitchingCode& c) {
+    std::vector<std::pair<std::string, SwitchingSurface>> named;
+    for (SwitchingSurface& w : found) {
+        std::string best;
+        for (const GiNaC::ex& f : w.functions.empty() ? std::vector<GiNaC::ex>{w.function} : w.functions) {
+            SwitchingSurface one{surface_of(f), f, {f}};
+            const std::string name = switch_name(one, printer);
+            if (best.empty() || name < best) {
+                best = name;
+                w.function = f;
+                w.s = one.s;
+            }
+        }
+        named.emplace_back(best, std::move(w));
+    }
+    std::sort(named.begin(), named.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    c.surfaces.clear();
+    c.names.clear();
+    for (auto& [name, w] : named) {
+        c.names.push_back(name);
+        c.surfaces.push_back(std::move(w));
+    }
+}
+
 SwitchingCode switching_code(const Model& model, const Equations& eq, MathPrinter& printer) {
     SwitchingCode c;
     c.include_runtime = uses_nonsmooth(model, eq);
     // M and the constraints' terms are derived from what uses_nonsmooth() reads: without abs, sign, heaviside,
     // max or min there, they have none (and their n² entries need no walk).
     if (!c.include_runtime) return c;
-    c.surfaces = dynamics_switches(eq);
-    for (const SwitchingSurface& w : c.surfaces) c.names.push_back(switch_name(w, printer));
+    canonical_switches(dynamics_switches(eq), printer, c);
     return c;
 }
 

@@ -36,4 +36,12 @@ struct SwitchingCode {
 
 SwitchingCode switching_code(const Model& model, const Equations& eq, MathPrinter& printer);
 
+/**
+ * `c.surfaces` and `c.names` from the surfaces `found`, in an order and with names that do not depend on the order
+ * they were found in: each surface is named by the function on it whose printed name comes first (max(0, x - a) and
+ * heaviside(a - x) share one), its s is that function's (its argument, or a − b), and the surfaces are sorted by
+ * name. (GiNaC's stored order of terms, which a walk meets them in, changes from one process to the next.)
+ */
+void canonical_switches(std::vector<SwitchingSurface> found, MathPrinter& printer, SwitchingCode& c);
+
 }  // namespace eomgen::codegen

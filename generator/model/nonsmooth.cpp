@@ -261,15 +261,20 @@ void collect_surfaces(const ex& e, std::vector<SwitchingSurface>& out, std::unor
     if (e.nops() == 0 || !walked.insert(&GiNaC::ex_to<GiNaC::basic>(e)).second) return;
     StoredTerms::for_each_child(e, [&](const ex& child) { collect_surfaces(child, out, walked); });
     if (!is_nonsmooth_function(e)) return;
-    const ex s = e.nops() == 2 ? ex(e.op(0) - e.op(1)) : e.op(0);
+    const ex s = surface_of(e);
     if (GiNaC::is_exactly_a<numeric>(s)) return;
-    const bool seen = std::any_of(out.begin(), out.end(), [&](const SwitchingSurface& x) {
+    const auto seen = std::find_if(out.begin(), out.end(), [&](const SwitchingSurface& x) {
         return (x.s - s).expand().is_zero() || (x.s + s).expand().is_zero();
     });
-    if (!seen) out.push_back({s, e});
+    if (seen == out.end())
+        out.push_back({s, e, {e}});
+    else if (std::none_of(seen->functions.begin(), seen->functions.end(), [&](const ex& f) { return f.is_equal(e); }))
+        seen->functions.push_back(e);
 }
 
 }  // namespace
+
+ex surface_of(const ex& function) { return function.nops() == 2 ? ex(function.op(0) - function.op(1)) : function.op(0); }
 
 std::vector<SwitchingSurface> switching_surfaces(const std::vector<ex>& exprs) {
     std::vector<SwitchingSurface> out;

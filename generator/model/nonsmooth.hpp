@@ -43,8 +43,12 @@ GiNaC::ex real_roots(const GiNaC::ex& e);
 /// A switching surface: where s = 0 the function f (one of e's non-smooth functions) has a kink or a jump.
 struct SwitchingSurface {
     GiNaC::ex s;         ///< the surface's function: the argument of abs, sign, heaviside; a − b for max(a, b)
-    GiNaC::ex function;  ///< the function as written in e
+    GiNaC::ex function;  ///< the function as written in e (the first met)
+    std::vector<GiNaC::ex> functions;  ///< every distinct function of e on this surface, `function` first
 };
+
+/// The surface a non-smooth function brings: its argument, or a − b for max(a, b) and min(a, b).
+GiNaC::ex surface_of(const GiNaC::ex& function);
 
 /// The distinct switching surfaces of the expressions, in first-appearance order (an argument and its negative are
 /// one surface).

@@ -2,6 +2,8 @@
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/expr_dag.hpp"
 #include "codegen/math_printer.hpp"
+#include "codegen/switching_emitter.hpp"
+#include "model/nonsmooth.hpp"
 #include "model/expression_parser.hpp"
 
 #include <catch2/catch.hpp>
@@ -48,6 +50,30 @@ TEST_CASE("GiNaC's sign choices do not change the emitted code", "[cse][determin
     // sin(x − y) = −sin(y − x), cos(x − y) = cos(y − x).
     REQUIRE(f.body({{"r", GiNaC::sin(f.x - f.y)}}) == f.body({{"r", -GiNaC::sin(f.y - f.x)}}));
     REQUIRE(f.body({{"r", GiNaC::cos(f.x - f.y) * f.a}}) == f.body({{"r", f.a * GiNaC::cos(f.y - f.x)}}));
+}
+
+TEST_CASE("a header's switching surfaces do not depend on the order they were met in", "[switching][determinism]") {
+    Fixture f;
+    MathPrinter printer(f.table);
+    // max(0, x − a) and heaviside(a − x) share the surface x = a; sign(y) is another one. GiNaC's stored order of
+    // terms, which the walk meets them in, changes from one process to the next: met either way, the header is one.
+    const GiNaC::ex kink = eomgen::real_max(0, f.x - f.a), jump = eomgen::heaviside(f.a - f.x), turn = eomgen::sign(f.y);
+    using eomgen::SwitchingSurface;
+    const std::vector<SwitchingSurface> one{{f.x - f.a, kink, {kink, jump}}, {f.y, turn, {turn}}};
+    const std::vector<SwitchingSurface> other{{f.y, turn, {turn}}, {f.a - f.x, jump, {jump, kink}}};
+    SwitchingCode a, b;
+    canonical_switches(one, printer, a);
+    canonical_switches(other, printer, b);
+    REQUIRE(a.names == std::vector<std::string>{"heaviside(a - x)", "sign(y)"});
+    REQUIRE(b.names == a.names);
+    REQUIRE(a.surfaces.size() == 2);
+    for (std::size_t k = 0; k < 2; ++k) {
+        CHECK(a.surfaces[k].s.is_equal(b.surfaces[k].s));
+        CHECK(a.surfaces[k].function.is_equal(b.surfaces[k].function));
+    }
+    // The surface's s is the named function's own argument (its sign says which side is which).
+    CHECK((a.surfaces[0].s - (f.a - f.x)).expand().is_zero());
+    CHECK(a.comment(printer) == b.comment(printer));
 }
 
 TEST_CASE("shared subexpressions are computed once, powers are products", "[cse]") {
