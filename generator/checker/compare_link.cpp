@@ -1,6 +1,7 @@
 /** @file compare_link.cpp  One link a = b judged: its role, the comparisons (compare_values.cpp) and the
  * corrections checked before they are printed. */
 #include "checker/checker_internals.hpp"
+#include "checker/generic_expansion.hpp"
 #include "checker/indefinite_integral.hpp"
 
 namespace eomgen::checker::detail {
@@ -183,6 +184,13 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
            << std::setprecision(3) << terms << " terms (at most " << static_cast<long>(kMaxExpandedTerms) << ")";
         r.reason = os.str();
         return r;
+    }
+    // `\cos\alpha \approx 1 - \frac{\alpha^2}{2}`: a series in a small quantity the model does not know.
+    if (rel == Relation::Approx && a.vectors.empty() && b.vectors.empty() && a.units.empty() && b.units.empty()) {
+        std::vector<const FreeName*> unknown = a.unknown;
+        unknown.insert(unknown.end(), b.unknown.begin(), b.unknown.end());
+        if (check_generic_expansion(a.value, b.value, L.side->source, R.side->source, unknown, model_, *this, r))
+            return r;
     }
     double tol = std::max(1e-9, L.side->rounding + R.side->rounding);
     if (rel == Relation::Approx) tol = std::max(tol, 1e-2);

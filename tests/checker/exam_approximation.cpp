@@ -190,3 +190,28 @@ TEST_CASE("changes of variable: notes on the pendulum on a cart near the upright
             CHECK(e.wrong_terms[0].find("(a flipped sign)") != std::string::npos);
         }
 }
+
+TEST_CASE("approximations: a series in a small quantity of the text's own, not of the model", "[checker][approximation]") {
+    const CheckReport r = eomgen::test::check_text(
+        "tests/checker/models/plane_pendulum.toml",
+        "For small $\\alpha$, $\\cos\\alpha \\approx 1 - \\alpha^2$, $\\sin x \\approx x - x^3/6$ and "
+        "$(1+u)^{-1/2} \\approx 1 - \\frac{u}{2} + \\frac{3u^2}{8}$; also $\\sqrt{1+\\epsilon} \\approx 1 + \\epsilon$, "
+        "$\\frac{1}{1 - 2y} \\approx 1 + 2y$ and $\\sin x \\approx x - x^3/5$; $\\cos\\beta \\approx 1$, $\\sin\\beta \\approx 1$.\n");
+    REQUIRE(r.equations.size() == 8);
+    const Verdict expected[] = {Verdict::Disagrees, Verdict::Agrees, Verdict::Agrees, Verdict::Disagrees,
+                                Verdict::Agrees,    Verdict::Disagrees, Verdict::Agrees, Verdict::Disagrees};
+    for (std::size_t k = 0; k < 8; ++k) {
+        INFO(describe(r.equations[k]));
+        CHECK(r.equations[k].verdict == expected[k]);
+        CHECK(r.equations[k].compared_with.find("Taylor expansion about") != std::string::npos);
+    }
+    // Judged to the order kept, not within the 1 % a number is: sin 1 = 0.841 and 1 − 1/5 = 0.8 differ by 5 %, but
+    // 1 − 1/6 = 0.833 is within 1 % of it and was taken for an identity.
+    CHECK(r.equations[1].reason == "agrees to third order in $x$");
+    CHECK(r.equations[5].wrong_terms.at(0) == "the $x^{3}$ term should be $-\\frac{1}{6} x^{3}$, not $-\\frac{1}{5} x^{3}$");
+    // The slip named and the truncation corrected by rising powers, the other side as written.
+    CHECK(r.equations[0].wrong_terms.at(0) ==
+          "the $\\alpha^{2}$ term should be $-\\frac{1}{2} \\alpha^{2}$, not $-\\alpha^{2}$");
+    CHECK(r.equations[0].corrected == "\\cos\\alpha \\approx 1 - \\frac{1}{2} \\alpha^{2}");
+    CHECK(r.equations[3].corrected == "\\sqrt{1+\\epsilon} \\approx 1 + \\frac{1}{2} \\epsilon");
+}
