@@ -24,6 +24,16 @@ namespace eomgen::checker {
 /// letter at most.
 bool names_a_constant(const std::string& name);
 
+/**
+ * `U = m g r` where eomgen's V is −m g (l − r), `V = m g l (1 - \cos\theta)`: a potential energy whose zero the text
+ * takes elsewhere. After a comparison of the text's `text` with eomgen's V (`truth`) that disagreed: true (r set to
+ * agree, the constant said) when text − truth is a constant (free of q, q̇, q̈ and t, not 0) and the text writes no
+ * constant term or its V vanishes where the coordinates do; false otherwise (r untouched, but for a note when the
+ * two differ by a constant all the same: a constant term written wrong, harmless to the motion).
+ */
+bool potential_with_another_zero(const GiNaC::ex& text, const GiNaC::ex& truth, const Model& model, Comparisons& cmp,
+                                 double tol, EquationCheck& r);
+
 bool check_additive_constant(const GiNaC::ex& a, const GiNaC::ex& b, int constant_side, const Model& model,
                              Comparisons& cmp, double tol, EquationCheck& r);
 

@@ -242,6 +242,10 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
             check_separated_lagrangian(a_is_L ? b.value : a.value, eq_.L, model_, *this, alt))
             return alt;
     }
+    // `U = mgr` where eomgen's V = −m g (l − r): the same potential, its zero elsewhere.
+    if (r.verdict == Verdict::Disagrees && r.compared_with == "$V$" && !approx && a.has_truth_label != b.has_truth_label)
+        potential_with_another_zero(a.has_truth_label ? b.value : a.value, a.has_truth_label ? a.value : b.value, model_,
+                                    *this, tol, r);
     // ∂H/∂θ after the text wrote H in velocities: the reading it set up (at fixed θ̇) when Hamilton's disagrees.
     if (r.verdict == Verdict::Disagrees && velocity_h_line_ > 0 && rel_at > velocity_h_at_ &&
         (hamilton_.has_hamiltonian(L.side->value) || hamilton_.has_hamiltonian(R.side->value))) {

@@ -96,7 +96,9 @@ bool sets_initial_value(const std::string& name, const GiNaC::ex& value, const M
     if (!real_number(value)) return false;
     for (const Coordinate& c : model.coordinates)
         for (const std::string& spelled : {c.latex, c.name})
-            if (!spelled.empty() && name == canonical_name(spelled) + "_{0}") return true;
+            if (!spelled.empty() && (name == canonical_name(spelled) + "_{0}" || name == canonical_name(spelled) + "(0)" ||
+                                     name == "\\dot{" + canonical_name(spelled) + "}(0)"))
+                return true;
     return false;
 }
 

@@ -35,7 +35,8 @@ bool names_an_instant(const GiNaC::ex& a, const GiNaC::ex& b, const Model& model
 
 /**
  * True when `name = value` gives a coordinate's initial value: `name` (canonical LaTeX) is a coordinate's name with
- * the subscript 0 (`x_{0}`, `\theta_{0}`) and `value` a number (`x_0 = 1`, "start at distance 1").
+ * the subscript 0 (`x_{0}`, `\theta_{0}`), or it or its rate at 0 (`\theta(0)`, `\dot{x}(0)`), and `value` a number
+ * (`x_0 = 1`, "start at distance 1", `\theta(0) = 0`).
  */
 bool sets_initial_value(const std::string& name, const GiNaC::ex& value, const Model& model);
 

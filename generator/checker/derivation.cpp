@@ -115,6 +115,26 @@ void split_display(const std::string& file, const Block& b, int block, std::vect
     // `\left\{ \begin{array}…\end{array} \right.` (a system of equations), to the one whose rows are equations.
     for (int depth = 0; depth < 4; ++depth) {
         std::size_t k = i;
+        // Plain TeX's `\cases{T_1 = … \\ U_1 = …}` and `\eqalign{…}`: rows, as a cases environment's.
+        bool plain = false;
+        for (const char* cmd : {"\\cases", "\\eqalign"}) {
+            const std::size_t n = std::string_view(cmd).size();
+            if (!starts_with(s, k, cmd) || (k + n < s.size() && std::isalpha(static_cast<unsigned char>(s[k + n]))))
+                continue;
+            std::size_t w = k + n;
+            while (w < body_end && std::isspace(static_cast<unsigned char>(s[w]))) ++w;
+            if (w >= body_end || s[w] != '{') break;
+            const std::size_t e = skip_group(s, w);
+            if (e > body_end || e < w + 2 || s[e - 1] != '}') break;
+            blank(s, k, w + 1);
+            blank(s, e - 1, e);
+            body_begin = w + 1;
+            body_end = e - 1;
+            rows_env = plain = true;
+            env = "cases";
+            break;
+        }
+        if (plain) break;
         bool wrapped = false;
         for (const char* wrap : {"\\left\\{", "\\left\\lbrace", "\\left."})
             if (starts_with(s, k, wrap)) {

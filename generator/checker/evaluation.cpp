@@ -18,6 +18,17 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
         return time_derivative(inner, model_);
     }
     if (is_ex_the_function(e, pdiff)) {
+        // `\frac{\partial}{\partial t}\frac{\partial L}{\partial \dot r}`: ∂/∂t of a derivative by a velocity is the
+        // Euler–Lagrange equation's d/dt, written with a ∂ (as a partial by t it would be 0 there, or nearly).
+        if (e.op(1).is_equal(model_.t) && is_ex_the_function(e.op(0), pdiff) &&
+            std::any_of(model_.coordinates.begin(), model_.coordinates.end(),
+                        [&](const Coordinate& c) { return e.op(0).op(1).is_equal(c.qd); })) {
+            const std::string note = "reads $\\frac{\\partial}{\\partial t}$ of a derivative by a velocity as the "
+                                     "Euler–Lagrange equation's $\\frac{d}{dt}$";
+            if (std::find(operator_notes_.begin(), operator_notes_.end(), note) == operator_notes_.end())
+                operator_notes_.push_back(note);
+            return resolve_operators(ddt(e.op(0)));
+        }
         // By a coordinate, the text's constants of the motion (J = p_φ) are held fixed, put in after (definitions.hpp).
         GiNaC::exmap held;
         const bool by_coordinate = std::any_of(model_.coordinates.begin(), model_.coordinates.end(),

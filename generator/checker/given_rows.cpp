@@ -13,9 +13,10 @@ bool Checker::given_value(const Prepared& a, const Prepared& b, EquationCheck& r
     for (const auto& [name, value] : {std::pair(a.value, b.value), std::pair(b.value, a.value)})
         if (const FreeName* f = GiNaC::is_a<GiNaC::symbol>(name) ? ctx_.free_name_of(name) : nullptr;
             f && sets_initial_value(f->name, value, model_)) {
-            // (The name is the coordinate's with `_{0}`.)
+            // (The name is the coordinate's with `_{0}`, or it or its rate with `(0)`.)
+            const bool at_zero = f->name.size() > 3 && f->name.compare(f->name.size() - 3, 3, "(0)") == 0;
             not_judged(r, Role::ChosenValue, "a value the text chooses: the initial value of " +
-                                                 m(f->name.substr(0, f->name.size() - 4)));
+                                                 m(f->name.substr(0, f->name.size() - (at_zero ? 3 : 4))));
             return true;
         }
     return false;

@@ -426,7 +426,6 @@ GiNaC::ex Parser::left_right(std::size_t at) {
     if (!d) fail(at, "\\left needs a delimiter");
     const std::string delim = d->text;
     ++pos_;
-    if (delim == "\\|" || delim == "\\Vert" || delim == "\\lVert") fail(at, "a norm \\| \\| is not read");
     const int saved_abs = abs_depth_;
     abs_depth_ = 0;
     const int transposed_before = transposed_;

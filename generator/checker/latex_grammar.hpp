@@ -266,8 +266,9 @@ class Parser {
 
     /// Reads a name at pos_ into n (accents, base, subscripts, primes). False when there is none.
     /// A `^{\prime 2}` leaves the exponent 2 in pending_power_.
-    /// The name in the braces of the command at token `at` (\dot{x}, \mathbf{r}, \bar{m}); moves past it.
-    NameParts argument_name(std::size_t at, const char* what);
+    /// The name in the braces of the command at token `at` (\dot{x}, \mathbf{r}, \bar{m}); moves past it. With
+    /// `power_inside`, a power after the name inside the braces (`\dot{r^2}`) is left in pending_power_, with a note.
+    NameParts argument_name(std::size_t at, const char* what, bool power_inside = false);
 
     bool read_name(NameParts& n);
 

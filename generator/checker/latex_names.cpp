@@ -5,6 +5,7 @@
 #include "checker/units.hpp"
 
 #include <algorithm>
+#include <sstream>
 
 namespace eomgen::checker::parsing {
 
@@ -27,7 +28,7 @@ bool Parser::starts_name(const Token* t) const {
 /// Reads a name at pos_ into n (accents, base, subscripts, primes). False when there is none.
 /// A `^{\prime 2}` leaves the exponent 2 in pending_power_.
 /// The name in the braces of the command at token `at` (\dot{x}, \mathbf{r}, \bar{m}); moves past it.
-NameParts Parser::argument_name(std::size_t at, const char* what) {
+NameParts Parser::argument_name(std::size_t at, const char* what, bool power_inside) {
     ++pos_;
     const auto r = argument_range(t_[at].text);
     NameParts inner;
@@ -35,6 +36,21 @@ NameParts Parser::argument_name(std::size_t at, const char* what) {
         r.first, r.second,
         [&] {
             if (!read_name(inner)) fail(r.first, t_[at].text + " of an expression is not read");
+            // `\dot{r^2}` for ṙ² (the accent over the power, as some write it; the rate of r² is written
+            // \frac{d}{dt}(r^2) or \dot{(r^2)}): the power is the name's, after its dots.
+            if (power_inside && is_char(peek(), "^") && !has_pending_power_) {
+                const std::size_t power_at = pos_;
+                ++pos_;
+                pending_power_ = superscript(power_at);
+                has_pending_power_ = true;
+                std::ostringstream power;
+                power << pending_power_;
+                const std::string x = inner.canonical(), p = "^{" + power.str() + "}";
+                const std::string note = "reads $" + t_[at].text + "{" + x + p + "}$ as $" + t_[at].text + "{" + x +
+                                         "}" + p + "$ (the accent written over the power)";
+                if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end())
+                    side_.notes.push_back(note);
+            }
             return 0;
         },
         what);
@@ -61,7 +77,7 @@ bool Parser::read_name(NameParts& n) {
             }
         } else if (w == "dot" || w == "ddot" || w == "dddot") {
             const int d = w == "dot" ? 1 : (w == "ddot" ? 2 : 3);
-            const NameParts inner = argument_name(at, "the accent");
+            const NameParts inner = argument_name(at, "the accent", true);
             n = inner;
             n.dots += d;
         } else if (is_one_of(t->text, {"\\mathbf", "\\boldsymbol", "\\bm", "\\vec", "\\hat",
@@ -217,6 +233,31 @@ GiNaC::ex Parser::name_value() {
             const std::size_t pat = pos_;
             ++pos_;
             return GiNaC::exp(superscript(pat));
+        }
+    }
+    // `\theta(0)`, `\dot x(0)`: a coordinate or its rate at an instant (a number written right after it, no space):
+    // a value of its own, the text's name for it (an initial condition), not the coordinate times that number.
+    if (pos_ + 2 < end_ && is_char(peek(), "(") && t_[pos_ - 1].offset + t_[pos_ - 1].length == t_[pos_].offset) {
+        std::size_t q = pos_ + 1;
+        std::string digits;
+        while (q < end_ && (t_[q].kind == Tok::Digit || is_char(&t_[q], "."))) digits += t_[q++].text;
+        NameParts plain = n;
+        plain.dots = 0;
+        plain.primes = 0;
+        const auto it = ctx_.names.find(plain.canonical());
+        if (!digits.empty() && q < end_ && is_char(&t_[q], ")") && !has_pending_power_ && it != ctx_.names.end() &&
+            std::any_of(ctx_.coordinates.begin(), ctx_.coordinates.end(),
+                        [&](const GiNaC::ex& c) { return c.is_equal(it->second); })) {
+            pos_ = q + 1;
+            const std::string full = n.canonical() + "(" + digits + ")";
+            side_.uses.push_back({full, offset_of(at)});
+            GiNaC::ex v = ctx_.free_symbol(full, NameKind::Unknown);
+            if (is_char(peek(), "^")) {
+                const std::size_t pat = pos_;
+                ++pos_;
+                v = power(v, superscript(pat), pat);
+            }
+            return v;
         }
     }
     // `V'(\theta)`, `I_p''(\theta)`: the derivative by the coordinate of the name as a function of it (a label, or

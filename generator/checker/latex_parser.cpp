@@ -135,9 +135,11 @@ std::vector<RelationAt> relations_in(const std::vector<Token>& t, const std::vec
 
 Side make_side(std::string_view text, const std::vector<Token>& t, std::size_t b, std::size_t e,
                LatexContext& ctx) {
-    // Trailing punctuation ends sentences, not formulas.
-    while (e > b && t[e - 1].kind == Tok::Char &&
-           (t[e - 1].text == "." || t[e - 1].text == "," || t[e - 1].text == ";"))
+    // Trailing punctuation ends sentences, not formulas (`x = A\cos(\omega t):` before the display it leads into).
+    while (e > b && ((t[e - 1].kind == Tok::Char && (t[e - 1].text == "." || t[e - 1].text == "," ||
+                                                     t[e - 1].text == ";" || t[e - 1].text == ":")) ||
+                     (t[e - 1].space && e - 1 > b && t[e - 2].kind == Tok::Char &&
+                      (t[e - 2].text == "." || t[e - 2].text == "," || t[e - 2].text == ";" || t[e - 2].text == ":"))))
         --e;
     while (b < e && t[b].space) ++b;
     while (e > b && t[e - 1].space) --e;

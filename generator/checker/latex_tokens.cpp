@@ -327,6 +327,14 @@ std::vector<Token> tokenize_text(std::string_view s) {
                     i = (k < s.size() && s[k] == '{') ? skip_braces(s, k) : j;
                     continue;
                 }
+                // `\lvert x \rvert`, `\Vert \dot p \Vert`, `\arrowvert`: bars, as `|` (a norm of a scalar is its absolute
+                // value; a vector's is refused where the vector is).
+                if (is_one_of(w, {"\\vert", "\\lvert", "\\rvert", "\\Vert", "\\lVert", "\\rVert", "\\arrowvert",
+                                  "\\Arrowvert"})) {
+                    out.push_back({Tok::Char, "|", i, j - i, "", false});
+                    i = j;
+                    continue;
+                }
                 Token t{Tok::Word, w, i, j - i, "", false};
                 if (w == "\\quad" || w == "\\qquad") t.space = true;
                 if (takes_raw_argument(w)) {
@@ -357,6 +365,12 @@ std::vector<Token> tokenize_text(std::string_view s) {
                 // `m\_1`: Markdown's escaped underscore, a subscript in the math it renders.
                 if (d == '_') {
                     out.push_back({Tok::Char, "_", i, 2, "", false});
+                    i = j + 1;
+                    continue;
+                }
+                // `\|\dot p\|`: a norm's bars, as `|`.
+                if (d == '|') {
+                    out.push_back({Tok::Char, "|", i, 2, "", false});
                     i = j + 1;
                     continue;
                 }

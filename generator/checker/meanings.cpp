@@ -27,6 +27,30 @@ std::string trim(const std::string& s) {
     return b < a ? "" : s.substr(a, b - a + 1);
 }
 
+/// Whether every term of `value` (split at its top-level + and −) holds a velocity (`\dot`).
+bool every_term_has_velocity(const std::string& value) {
+    int depth = 0;
+    std::string term;
+    bool any = false;
+    const auto done = [&]() {
+        const std::string t = trim(term);
+        term.clear();
+        if (t.empty()) return true;
+        any = true;
+        return t.find("\\dot") != std::string::npos;
+    };
+    for (const char c : value) {
+        if (c == '{' || c == '(' || c == '[') ++depth;
+        if (c == '}' || c == ')' || c == ']') --depth;
+        if (depth == 0 && (c == '+' || c == '-')) {
+            if (!done()) return false;
+            continue;
+        }
+        term += c;
+    }
+    return done() && any;
+}
+
 }  // namespace
 
 std::vector<TextMeaning> text_meanings(const Derivation& d, const std::vector<const MathRow*>& rows) {
@@ -62,6 +86,28 @@ std::vector<TextMeaning> text_meanings(const Derivation& d, const std::vector<co
             m.last_line = d.position(section_end > 0 ? section_end - 1 : 0).line;
             out.push_back(std::move(m));
         };
+        // `V^2 = \dot{X}^2 + \dot{Y}^2`: a label's square written in the velocities, every term of it, is the square
+        // of another quantity of the text's (a speed): no one writes eomgen's V, T or L squared so.
+        for (const char* sq : {"^{2}", "^2"}) {
+            const std::size_t n = std::strlen(sq);
+            if (name.size() <= n || name.compare(name.size() - n, n, sq) != 0) continue;
+            const std::string letter = trim(name.substr(0, name.size() - n));
+            if (letter.size() != 1 || std::string("VUTLHEh").find(letter) == std::string::npos) break;
+            if (!every_term_has_velocity(value)) break;
+            TextMeaning m;
+            m.name = letter;
+            m.value = "\\sqrt{" + value + "}";
+            m.noun = letter == "V" || letter == "U" ? "speed (its square is written in the velocities)"
+                                                    : "quantity whose square it writes in the velocities";
+            m.begin = begin;
+            m.end = end;
+            m.line = d.position(begin + std::min(row->text.find('='), row->text.size())).line;
+            const std::size_t section_end = row->section >= 0 ? d.sections[std::size_t(row->section)].end : d.text.size();
+            m.last_line = d.position(section_end > 0 ? section_end - 1 : 0).line;
+            out.push_back(std::move(m));
+            break;
+        }
+        if (!out.empty() && out.back().begin == begin) continue;
         // T = 2π/ω, T = 2π√(l/g): a period, whatever the sentence says.
         std::string compact;
         for (char ch : value)

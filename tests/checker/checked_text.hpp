@@ -46,6 +46,13 @@ inline std::string describe(const checker::EquationCheck& e) {
     return s;
 }
 
+/// Every verdict of a report, one describe() each, for INFO().
+inline std::string describe_all(const checker::CheckReport& r) {
+    std::string s;
+    for (const checker::EquationCheck& e : r.equations) s += describe(e) + "\n";
+    return s;
+}
+
 /// Whether one of the verdict's notes contains `part`.
 inline bool has_note(const checker::EquationCheck& e, const std::string& part) {
     for (const std::string& n : e.notes)

@@ -1,0 +1,104 @@
+/** @file exam_published_notation.cpp  Notation from the corpus' newer texts (docs/checker.md, "The LaTeX people
+ * publish"): an accent over a power, a colon ending the math, norms and the other bars, plain TeX's \cases, a
+ * coordinate at an instant, ∂/∂t for the Euler–Lagrange d/dt, a letter whose square is written in velocities, and
+ * a potential with its zero elsewhere. Each against the plane pendulum (models/pendulum.toml: φ; m, l, g). */
+#include "checked_text.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <string>
+
+namespace {
+
+using eomgen::checker::CheckReport;
+using eomgen::checker::EquationCheck;
+using eomgen::checker::Role;
+using eomgen::checker::Verdict;
+
+const char* const kModel = "models/pendulum.toml";
+
+}  // namespace
+
+TEST_CASE("published notation: an accent over a power, a final colon, norms and \\cases", "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+$$T = \frac12 m l^2 \dot{\phi^2}$$
+
+At the top, $\phi = \pi:$
+
+$$\|\dot\phi\|^2 = \lvert\dot\phi\rvert^2 = \left\Vert \dot\phi \right\Vert^2 = \dot\phi^2$$
+
+$$\cases{ T = \frac12 m l^2\dot\phi^2 \\ V = -mgl\cos\phi }$$
+)");
+    INFO(eomgen::test::describe_all(r));
+    REQUIRE(r.equations.size() == 7);
+    CHECK(r.equations[0].verdict == Verdict::Agrees);
+    CHECK(eomgen::test::has_note(r.equations[0], "as $\\dot{\\phi}^{2}$ (the accent written over the power)"));
+    CHECK(r.equations[1].verdict == Verdict::NotJudged);
+    CHECK(r.equations[1].role == Role::Condition);
+    for (std::size_t k = 2; k < 7; ++k) CHECK(r.equations[k].verdict == Verdict::Agrees);
+    CHECK(r.equations[5].compared_with == "$T$");
+    CHECK(r.equations[6].compared_with == "$V$");
+}
+
+TEST_CASE("published notation: a coordinate at an instant is its initial value, not a product",
+          "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, "$$\\phi(0) = 0.1$$ and $\\dot\\phi(0) = 0$; also $\\phi(0) = 0$.\n");
+    INFO(eomgen::test::describe_all(r));
+    REQUIRE(r.equations.size() == 3);
+    for (const EquationCheck& e : r.equations) {
+        CHECK(e.verdict == Verdict::NotJudged);
+        CHECK(e.role == Role::ChosenValue);
+    }
+    CHECK(r.equations[1].reason == "a value the text chooses: the initial value of $\\dot{\\phi}$");
+}
+
+TEST_CASE("published notation: d/dt written as a partial derivative in the Euler-Lagrange equation",
+          "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(
+        kModel, "$$\\frac{\\partial L}{\\partial \\phi} - \\frac{\\partial}{\\partial t}\\left(\\frac{\\partial L}{\\partial "
+                "\\dot\\phi}\\right) = 0$$\n\n$$\\frac{\\partial}{\\partial t} l = 0$$\n");
+    INFO(eomgen::test::describe_all(r));
+    REQUIRE(r.equations.size() == 2);
+    CHECK(r.equations[0].verdict == Verdict::Agrees);
+    CHECK(r.equations[0].compared_with == "the Euler–Lagrange equation for $\\phi$");
+    CHECK(eomgen::test::has_note(r.equations[0], "as the Euler–Lagrange equation's $\\frac{d}{dt}$"));
+    // Anything else by t stays a partial derivative.
+    CHECK(!eomgen::test::has_note(r.equations[1], "Euler–Lagrange"));
+}
+
+TEST_CASE("published notation: a label letter whose square is written in the velocities is the text's speed",
+          "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+The bob is at $X = l\sin\phi$, $Y = -l\cos\phi$; its speed squared is $V^2 = \dot{X}^2 + \dot{Y}^2 = l^2\dot\phi^2$.
+
+The potential energy is $U = -mgl\cos\phi$.
+)");
+    INFO(eomgen::test::describe_all(r));
+    bool speed = false;
+    for (const EquationCheck& e : r.equations) {
+        CHECK(e.verdict != Verdict::Disagrees);
+        if (e.equation.rfind("V^2 = \\dot{X}^2", 0) == 0) {
+            CHECK(e.verdict == Verdict::NotJudged);
+            CHECK(e.reason.find("the text's $V$ is the speed") != std::string::npos);
+            speed = true;
+        }
+    }
+    CHECK(speed);
+}
+
+TEST_CASE("published notation: a potential with its zero elsewhere agrees, a constant term written wrong does not",
+          "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(
+        kModel, "The potential energy: $V = mgl(1-\\cos\\phi)$, $U = -mgl\\cos\\phi + mgl$ and $V = 2mgl - mgl\\cos\\phi$.\n");
+    INFO(eomgen::test::describe_all(r));
+    REQUIRE(r.equations.size() == 3);
+    CHECK(r.equations[0].verdict == Verdict::Agrees);
+    CHECK(r.equations[0].reason.find("up to the constant") != std::string::npos);
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    // V = 2mgl − mgl cos φ vanishes nowhere a reader would take for its zero, and writes a constant: flagged, and told
+    // that the constant changes no equation of motion.
+    CHECK(r.equations[2].verdict == Verdict::Disagrees);
+    CHECK(eomgen::test::has_note(r.equations[2], "changes no equation of motion"));
+}
