@@ -123,7 +123,10 @@ def score_entry(key, report, text=""):
             s["false_alarms"].append(line)
         if not vs and line not in problem_lines:
             s["silent"].append(line)
-        elif vs and all(v["verdict"] in ("not comparable", "not judged") for v in vs):
+        elif not vs or all(v["verdict"] == "not read" for v in vs):
+            # Not read (a problem with its place, or a row's "not read"): said, so not silent, and not compared.
+            s["not_comparable"].append(line)
+        elif all(v["verdict"] in ("not comparable", "not judged", "not read") for v in vs):
             # A row the checker took for a definition, an assumption or a condition is not judged; that is right
             # only where the key says it is not a claim. A claim taken for one was not compared: not comparable.
             if all(v["verdict"] == "not judged" for v in vs) and all(e["role"] in NOT_CLAIMS for e in es):
