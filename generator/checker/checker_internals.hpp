@@ -217,6 +217,7 @@ class Checker : public Comparisons {
 
     // ----- evaluation
     GiNaC::ex resolve_operators(const GiNaC::ex& e) const;
+    GiNaC::ex with_dotted_definitions(const GiNaC::ex& e) const;  ///< ẋ of the text's x = A cos ωt: its derivative
     Prepared prepare(const PSide& s, const GiNaC::ex* exclude_part = nullptr);
     std::string where(std::size_t file_offset) const {
         const SourcePos p = d_.position(file_offset);
@@ -405,6 +406,9 @@ class Checker : public Comparisons {
     void apply_confirmations(std::vector<EquationCheck>& equations) const;
     /// The link compared with what the sentence before its display calls it (labels.hpp).
     void check_prose_label(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r);
+    /// `K = …` under "the kinetic energy is": a letter introduced for the labelled quantity, compared with it.
+    bool introduces_labelled_quantity(const FullChain& c, std::size_t i, std::size_t j, const ProseLabel& label,
+                                      EquationCheck& r);
     /// Parses r.corrected back with the names of its line and checks it (correction_check.hpp); a correction
     /// that does not agree is withheld, with a note.
     void verify_correction(const FullChain& c, std::size_t j, EquationCheck& r);
@@ -425,8 +429,10 @@ class Checker : public Comparisons {
     // ----- rows that give rather than claim (given_rows.cpp)
     /// `t = 0`, `t = t_c` (an instant), `x_0 = 1` (an initial value): not judged, with the role.
     bool given_value(const Prepared& a, const Prepared& b, EquationCheck& r);
-    /// `T = T_C + T_P` with a part never given a value: a definition naming the parts.
-    bool names_parts(const PSide& L, const PSide& R, EquationCheck& r);
+    /// `T = T_C + T_P` with a part never given a value (or, `valued`, parts whose sum disagrees): naming the parts.
+    bool names_parts(const PSide& L, const PSide& R, EquationCheck& r, bool valued = false);
+    bool is_share_of(const GiNaC::ex& value, const GiNaC::ex& whole, double tol);  ///< its terms are terms of whole
+    bool a_part_is_wrong(const PSide& s, double tol);  ///< s a sum of parts, one of whose values is no share of its whole
 
     // ----- names stated outside the text's definitions (stated_names.cpp)
     /// The user's symbol-map entry for the name a side is, alone (`I` with `--map I='m k^2'`), in force on its line.

@@ -226,6 +226,15 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
     const bool approx = rel == Relation::Approx;
     if (approx && approximation(rel_at, L.side->source, R.side->source, a, b, true, r)) return r;
     check_values(c, i, j, a, b, tol, r);
+    // `K = K_{cm} + K_{p}` with a part's value wrong where the text gives it: that line is the slip, not the split
+    // (with every part right, a split that misses a part is the slip, and disagrees).
+    if (r.verdict == Verdict::Disagrees && (a_part_is_wrong(L, tol) || a_part_is_wrong(R, tol)) &&
+        names_parts(L, R, r, true)) {
+        r.difference.clear();
+        r.wrong_terms.clear();
+        r.corrected.clear();
+        return r;
+    }
     if (r.verdict == Verdict::Disagrees && r.compared_with == "$L$") {  // L + dF/dt: the same equations
         EquationCheck alt;
         alt.where = r.where;
@@ -278,94 +287,6 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
             return alt;
     }
     return r;
-}
-
-namespace {
-
-/// The quantity a row names on its left: `L(\theta, \dot{\theta})` → L (the letter as a function), `p_\theta`.
-std::string head_letter(const std::string& source) {
-    std::string head = trimmed(source);
-    if (const std::size_t paren = head.find('('); paren != std::string::npos && !head.empty() && head.back() == ')')
-        head = trimmed(head.substr(0, paren));
-    return head;
-}
-
-/// The letters that name a quantity of the motion, with a word a sentence naming that quantity holds.
-constexpr std::pair<const char*, const char*> kSelfLabels[] = {
-    {"T", "kinetic"},    {"K", "kinetic"},     {"V", "potential"},  {"U", "potential"},           {"L", "lagrangian"},
-    {"H", "hamiltonian"}, {"E", "energy"},     {"\\mathcal{L}", "lagrangian"}, {"\\mathscr{L}", "lagrangian"}};
-
-/// A letter that names a quantity of the motion (T, V, L, H, E, a momentum p_q).
-bool is_quantity_letter(const std::string& head) {
-    if (head.rfind("p_", 0) == 0 && head.size() <= 12 && head.find_first_of("=+-*/ ") == std::string::npos) return true;
-    return std::any_of(std::begin(kSelfLabels), std::end(kSelfLabels), [&](const auto& l) { return head == l.first; });
-}
-
-}  // namespace
-
-int Checker::display_heads(std::size_t at) const {
-    int block = -1;
-    for (const MathRow& row : d_.rows)
-        if (row.display && row.offset <= at && at <= row.offset + row.text.size()) block = row.block;
-    if (block < 0) return 0;
-    std::set<std::string> heads;
-    for (const MathRow& row : d_.rows) {
-        if (!row.display || row.block != block) continue;
-        const std::size_t eq = row.text.find('=');
-        if (eq == std::string::npos) continue;
-        std::string head = head_letter(row.text.substr(0, eq));
-        if (!head.empty() && head.front() == '&') head = trimmed(head.substr(1));
-        if (is_quantity_letter(head)) heads.insert(head);
-    }
-    return int(heads.size());
-}
-
-void Checker::check_prose_label(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r) {
-    // A row in a letter the text has just given another meaning (`p_\theta = L`) is about that quantity, not
-    // about what the sentence before the display names.
-    for (const std::string& n : r.notes)
-        if (n.find(", as the text names it on line ") != std::string::npos) return;
-    const auto coordinate = [this](const std::string& latex) {
-        LatexContext ctx = ctx_;
-        const Side s = parse_expression(latex, ctx);
-        for (std::size_t k = 0; s.ok && k < model_.dof(); ++k)
-            if (s.value.is_equal(model_.coordinates[k].q)) return int(k);
-        return -1;
-    };
-    // A chain that names its quantity on the left (`T &= …` under "the kinetic energy T and the potential energy
-    // U are") is labelled by its own letter when the sentence names that quantity too, not by the last quantity
-    // the sentence names. (A sentence that names only another one still disagrees with it.)
-    const std::string head = head_letter(c.sides[0].side->source);
-    bool self_labelled = false;
-    for (const auto& [letter, noun] : kSelfLabels)
-        if (head == letter) {
-            self_labelled = lead_in(d_, c.relation_offsets[j - 1], 2).find(noun) != std::string::npos;
-            break;
-        }
-    try {  // what GiNaC throws on a strange input leaves the verdict as it is
-        const auto label = label_before(d_, c.relation_offsets[j - 1], coordinate, model_);
-        if (!label) return;
-        // `L(\theta, \dot\theta) = \frac{1}{2}I_{p}\dot\theta^2 - V` under "the kinetic energy is purely rotational:":
-        // the Lagrangian built from the energy the sentence describes. And a display whose rows begin with letters
-        // of different quantities (`L = …`, `p_\theta = …`): one label before it cannot name them all, and each row
-        // names its own.
-        const bool lagrangian = head == "L" || head == "\\mathcal{L}" || head == "\\mathscr{L}";
-        if (lagrangian && (label->kind == LabelKind::Kinetic || label->kind == LabelKind::Potential))
-            self_labelled = true;
-        if (is_quantity_letter(head) && display_heads(c.sides[0].base + c.sides[0].side->begin) > 1)
-            self_labelled = true;
-        Prepared a = prepare(c.sides[i]), b = prepare(c.sides[j]);
-        if (!a.comparable() || !b.comparable()) return;
-        GiNaC::exmap zero;  // `= \text{const}`: any constant
-        for (const Prepared* p : {&a, &b})
-            for (const GiNaC::ex& k : p->constants) zero[k] = 0;
-        const double tol = std::max(1e-9, c.sides[i].side->rounding + c.sides[j].side->rounding);
-        EquationCheck labelled = r;
-        check_label(*label, a.value.subs(zero), b.value.subs(zero), model_, eq_, *this, tol, labelled);
-        if (self_labelled && labelled.verdict == Verdict::Disagrees && r.verdict != Verdict::Disagrees) return;
-        r = std::move(labelled);
-    } catch (const std::exception&) {
-    }
 }
 
 bool Checker::approximation_stated(const FullChain& c, std::size_t i, std::size_t j) const {
@@ -438,16 +359,9 @@ void Checker::verify_correction(const FullChain& c, std::size_t j, EquationCheck
     r.corrected.clear();
 }
 
-void Checker::check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other,
-                         double tol, EquationCheck& r) {
-    std::string name;
-    GiNaC::ex whole;
-    is_part(part, &name, &whole);
-    const std::string whole_name = name.substr(0, 1);
-    r.compared_with = m(name) + ", a part of " + m(whole_name);
-    // Its terms are terms of T (or V): then it is a part of it.
+bool Checker::is_share_of(const GiNaC::ex& value, const GiNaC::ex& whole, double tol) {
     std::vector<GiNaC::ex> wt, pt;
-    const GiNaC::ex we = whole.expand(), pe = other.value.expand();
+    const GiNaC::ex we = whole.expand(), pe = value.expand();
     if (GiNaC::is_a<GiNaC::add>(we))
         for (const GiNaC::ex& t : we) wt.push_back(t);
     else
@@ -464,7 +378,29 @@ void Checker::check_part(const GiNaC::ex& part, const std::string& part_source, 
             if (!used[k] && same_signature(signature(t), signature(wt[k]), tol)) found = used[k] = true;
         subset = subset && found;
     }
-    if (subset) {
+    return subset;
+}
+
+bool Checker::a_part_is_wrong(const PSide& s, double tol) {
+    if (!s.side->ok || !GiNaC::is_a<GiNaC::add>(s.side->value)) return false;
+    for (const GiNaC::ex& part : s.side->value) {
+        GiNaC::ex whole;
+        const auto value = part_value_.find(part);
+        if (is_part(part, nullptr, &whole) && value != part_value_.end() && !is_share_of(value->second, whole, tol))
+            return true;
+    }
+    return false;
+}
+
+void Checker::check_part(const GiNaC::ex& part, const std::string& part_source, const Prepared& other,
+                         double tol, EquationCheck& r) {
+    std::string name;
+    GiNaC::ex whole;
+    is_part(part, &name, &whole);
+    const std::string whole_name = name.substr(0, 1);
+    r.compared_with = m(name) + ", a part of " + m(whole_name);
+    // Its terms are terms of T (or V): then it is a part of it.
+    if (is_share_of(other.value, whole, tol)) {
         r.verdict = Verdict::Agrees;
         r.reason = "its terms are terms of eomgen's " + m(whole_name);
         return;

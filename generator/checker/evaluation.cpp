@@ -8,11 +8,21 @@ namespace eomgen::checker::detail {
 
 // ------------------------------------------------------------------------------------------- evaluation
 
+GiNaC::ex Checker::with_dotted_definitions(const GiNaC::ex& e) const {
+    std::vector<std::string> notes;
+    const GiNaC::ex v = dotted_definitions(definitions_, e, current_offset_, ctx_, model_, notes);
+    for (const std::string& n : notes)
+        if (std::find(operator_notes_.begin(), operator_notes_.end(), n) == operator_notes_.end())
+            operator_notes_.push_back(n);
+    return v;
+}
+
 GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
     // A name inside a derivative is its definition in the text, or the derivative cannot be evaluated.
     if (is_ex_the_function(e, ddt)) {
-        const GiNaC::ex inner =
-            hamilton_.in_velocities(resolve_operators(definitions_.expand(e.op(0), current_offset_)));
+        // (ẋ of a name the text defines, x = A cos ωt, inside it: the derivative of its definition.)
+        const GiNaC::ex inner = hamilton_.in_velocities(
+            with_dotted_definitions(resolve_operators(definitions_.expand(e.op(0), current_offset_))));
         if (TextDefinitions::has_vector(inner, ctx_)) return ddt(inner);  // kept: vectors are not compared
         TextDefinitions::require_defined(inner, ctx_, "time derivative");
         return time_derivative(inner, model_);
@@ -33,8 +43,9 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
         GiNaC::exmap held;
         const bool by_coordinate = std::any_of(model_.coordinates.begin(), model_.coordinates.end(),
                                                [&](const Coordinate& c) { return e.op(1).is_equal(c.q); });
-        const GiNaC::ex inner = resolve_operators(by_coordinate ? definitions_.expand_holding(e.op(0), current_offset_, held)
-                                                                : definitions_.expand(e.op(0), current_offset_));
+        const GiNaC::ex inner = with_dotted_definitions(resolve_operators(
+            by_coordinate ? definitions_.expand_holding(e.op(0), current_offset_, held)
+                          : definitions_.expand(e.op(0), current_offset_)));
         if (!held.empty()) {
             const GiNaC::ex d = GiNaC::diff(inner, GiNaC::ex_to<GiNaC::symbol>(e.op(1))).subs(held);
             return resolve_operators(d);

@@ -22,7 +22,7 @@ bool Checker::given_value(const Prepared& a, const Prepared& b, EquationCheck& r
     return false;
 }
 
-bool Checker::names_parts(const PSide& L, const PSide& R, EquationCheck& r) {
+bool Checker::names_parts(const PSide& L, const PSide& R, EquationCheck& r, bool valued) {
     const auto part_sum = [&](const PSide& x) {
         if (!x.side->ok || !GiNaC::is_a<GiNaC::add>(x.side->value)) return false;
         for (std::size_t q = 0; q < x.side->value.nops(); ++q)
@@ -35,9 +35,11 @@ bool Checker::names_parts(const PSide& L, const PSide& R, EquationCheck& r) {
     const PSide& whole = right ? L : R;
     const PSide& parts = right ? R : L;
     r.compared_with.clear();
+    // (With every part given a value, a sum that misses eomgen's is a wrong part: judged where the text gives it.)
     not_judged(r, Role::Definition, "a definition: the text splits " + m(trimmed(whole.side->source)) +
                                         " into the parts " + m(trimmed(parts.side->source)) +
-                                        ", not all of which it gives a value");
+                                        (valued ? ", each judged where the text gives its value"
+                                                : ", not all of which it gives a value"));
     return true;
 }
 

@@ -449,13 +449,17 @@ std::string canonical_name(std::string_view latex) {
 }
 
 std::optional<PositionName> position_name(const std::string& canonical) {
-    if (canonical.empty() || (canonical[0] != 'x' && canonical[0] != 'y' && canonical[0] != 'z')) return std::nullopt;
+    if (canonical.empty()) return std::nullopt;
+    // `X, Y` (a point's coordinates in capitals, beside a support's x): another point than x, y's.
+    const bool capital = canonical[0] == 'X' || canonical[0] == 'Y' || canonical[0] == 'Z';
+    if (!capital && canonical[0] != 'x' && canonical[0] != 'y' && canonical[0] != 'z') return std::nullopt;
     PositionName p;
-    p.axis = canonical[0] - 'x';
+    p.axis = canonical[0] - (capital ? 'X' : 'x');
+    if (capital) p.point = "(capitals)";
     if (canonical.size() == 1) return p;
     // `x_{2}`, `y_{bob}`: one group of braces after the underscore, nothing else.
     if (canonical.size() < 5 || canonical.compare(1, 2, "_{") != 0 || canonical.back() != '}') return std::nullopt;
-    p.point = canonical.substr(3, canonical.size() - 4);
+    p.point += canonical.substr(3, canonical.size() - 4);
     if (p.point.find_first_of("{}\\ ") != std::string::npos) return std::nullopt;
     return p;
 }

@@ -150,8 +150,8 @@ std::string canonical_name(std::string_view latex);
 
 /// A name the text gives one coordinate of a point: x, y or z alone or with a subscript (`x_{2}`, `y_{bob}`).
 struct PositionName {
-    int axis = 0;       ///< 0, 1, 2 for x, y, z
-    std::string point;  ///< the subscript, "" for none: `x_{2}` and `y_{2}` are one point's
+    int axis = 0;       ///< 0, 1, 2 for x, y, z (or X, Y, Z)
+    std::string point;  ///< the subscript, "" for none: `x_{2}` and `y_{2}` are one point's; "(capitals)" before it for X, Y, Z
 };
 
 /// The axis and the point of a canonical name (`x_{2}` → 0, "2"); nullopt for any other name.

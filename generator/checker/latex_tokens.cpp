@@ -25,6 +25,8 @@ bool is_ignored_word(const std::string& w) {
             "\\Bigr",         "\\biggl",      "\\biggr",       "\\Biggl",  "\\Biggr",    "\\bigm",
             "\\Bigm",         "\\nonumber",   "\\notag",       "\\middle", "\\mathopen", "\\mathclose",
             "\\strut",        "\\allowbreak", "\\nobreak",
+            // Plain TeX's font switches (`{\rm const}`): the letters after them are read as they are.
+            "\\rm", "\\it", "\\bf", "\\sf", "\\tt",
             // Struck-out factors the text shows cancelling (`\cancel{m}\ddot q = \cancel{m} g`): the factor is
             // still there, in its group.
             "\\cancel", "\\bcancel", "\\xcancel"});
@@ -470,6 +472,11 @@ std::vector<Token> tokenize_text(std::string_view s) {
         out.push_back({Tok::Char, std::string(1, char(c)), i, 1, "", false});
         ++i;
     }
+    // `\frac{{\partial}{L}}{\partial{\dot{y}}}`: a ∂ in braces of its own is the ∂ (the braces dropped).
+    for (std::size_t k = 0; k + 2 < out.size(); ++k)
+        if (out[k].kind == Tok::Char && out[k].text == "{" && out[k + 1].kind == Tok::Word &&
+            out[k + 1].text == "\\partial" && out[k + 2].kind == Tok::Char && out[k + 2].text == "}")
+            out.erase(out.begin() + std::ptrdiff_t(k + 2)), out.erase(out.begin() + std::ptrdiff_t(k));
     return out;
 }
 

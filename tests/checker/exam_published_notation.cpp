@@ -102,3 +102,72 @@ TEST_CASE("published notation: a potential with its zero elsewhere agrees, a con
     CHECK(r.equations[2].verdict == Verdict::Disagrees);
     CHECK(eomgen::test::has_note(r.equations[2], "changes no equation of motion"));
 }
+
+TEST_CASE("published notation: a letter introduced for the quantity its sentence names is compared with it",
+          "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+The kinetic energy of the bob is
+
+$$K = \frac12 m l^2\dot\phi^2$$
+
+and, written again with a slip, the kinetic energy is
+
+$$K = \frac12 m l\dot\phi^2$$
+
+with $\Omega = \dot\phi$ a plain abbreviation.
+)");
+    INFO(eomgen::test::describe_all(r));
+    REQUIRE(r.equations.size() == 3);
+    CHECK(r.equations[0].verdict == Verdict::Agrees);
+    CHECK(r.equations[0].compared_with == "$T$");
+    CHECK(eomgen::test::has_note(r.equations[0], "the text's $K$, introduced here for the quantity its sentence names (“The kinetic energy”, line 3)"));
+    CHECK(r.equations[1].verdict == Verdict::Disagrees);
+    CHECK(r.equations[1].corrected == "K = \\frac{1}{2} m l^{2} \\dot{\\phi}^{2}");
+    CHECK(r.equations[2].verdict == Verdict::NotJudged);
+}
+
+TEST_CASE("published notation: a split into parts is judged at the parts, unless every part is right",
+          "[checker][readings]") {
+    // An Atwood machine whose pulley turns: T = ½ m₁ẋ² + ½ m₂ẋ² + ½ I ẋ²/a².
+    const char* atwood = "tests/checker/corpus/atwood_pulley_inertia_farside/model.toml";
+    const CheckReport wrong_part = eomgen::test::check_text(
+        atwood, "$$T = T_1 + T_2$$\n\n$$T_1 = \\frac12 m_1\\dot x^2$$\n\n"
+                "$$T_2 = \\frac12 m_2\\dot x^2 + I\\frac{\\dot x^2}{a^2}$$\n");
+    INFO(eomgen::test::describe_all(wrong_part));
+    REQUIRE(wrong_part.equations.size() == 3);
+    CHECK(wrong_part.equations[0].verdict == Verdict::NotJudged);
+    CHECK(wrong_part.equations[0].reason.find("each judged where the text gives its value") != std::string::npos);
+    CHECK(wrong_part.equations[2].verdict == Verdict::Disagrees);
+    // Both parts right, the pulley's left out: the split is the slip.
+    const CheckReport missing = eomgen::test::check_text(
+        atwood, "$$T = T_1 + T_2$$\n\n$$T_1 = \\frac12 m_1\\dot x^2$$\n\n$$T_2 = \\frac12 m_2\\dot x^2$$\n");
+    INFO(eomgen::test::describe_all(missing));
+    REQUIRE(missing.equations.size() == 3);
+    CHECK(missing.equations[0].verdict == Verdict::Disagrees);
+    CHECK(missing.equations[1].verdict == Verdict::Agrees);
+    CHECK(missing.equations[2].verdict == Verdict::Agrees);
+}
+
+TEST_CASE("published notation: font switches, a braced partial, capitals for a point, the rate of a defined name",
+          "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+$$V = -mgl\cos\phi + {\rm const}$$
+
+$$\frac{{\partial}{L}}{\partial{\dot\phi}} = m l^2 \dot\phi$$
+
+The bob is at $(X, Y) = (l\sin\phi, -l\cos\phi)$, and with $u = l\sin\phi$,
+
+$$\frac{d}{dt}(m\dot u) = m l\ddot\phi\cos\phi - m l\dot\phi^2\sin\phi$$
+)");
+    INFO(eomgen::test::describe_all(r));
+    REQUIRE(r.equations.size() == 6);
+    CHECK(r.equations[0].verdict == Verdict::Agrees);
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    CHECK(r.equations[2].verdict == Verdict::Agrees);
+    CHECK(r.equations[2].compared_with.find("the position of the model's point") != std::string::npos);
+    CHECK(r.equations[3].verdict == Verdict::Agrees);
+    CHECK(r.equations[5].verdict == Verdict::Agrees);
+    CHECK(eomgen::test::has_note(r.equations[5], "$\\dot{u}$ is the time derivative of $u$"));
+}
