@@ -69,7 +69,7 @@ def run_check(eomgen, d):
 
 # The key's roles of rows that are not claims (README.md): never judged true or false.
 NOT_CLAIMS = ("definition", "given", "condition", "trial")
-RELATION = re.compile(r"=|<|>|\\(approx|simeq|equiv|leq?|geq?|neq?|cong|propto|sim)(?![A-Za-z])")
+RELATION = re.compile(r"=|<|>|\\(approx|simeq|equiv|leq?|geq?|neq?|cong|propto|sim|ll|gg)(?![A-Za-z])")
 
 
 def relation_line(lines, n):
