@@ -134,6 +134,13 @@ std::optional<std::size_t> small_motion_stated_before(const Derivation& d, std::
         for (const char* what : {"oscillation", "angle", "amplitude", "vibration", "displacement"})
             if (after.find(what) != std::string::npos) return k;
     }
+    // "approximating $\sin(\varphi) = \varphi$", "with the approximation $\sin\theta \approx \theta$": the text makes
+    // the angle small from there on.
+    for (std::size_t k = s.find("approximat"); k != std::string::npos; k = s.find("approximat", k + 10)) {
+        const std::string after = s.substr(k + 10, 40);
+        for (const char* trig : {"sin", "cos", "tan"})
+            if (after.find(trig) != std::string::npos) return k;
+    }
     return std::nullopt;
 }
 

@@ -40,8 +40,8 @@ std::vector<std::size_t> small_coordinates_in_prose(const Derivation& d, std::si
 
 /**
  * Where the text, before file offset `at`, says the motion is small ("makes small oscillations", "small
- * angles", "small amplitude", "small vibrations", "small displacements"), as a file offset; std::nullopt when it
- * does not. An equation after it that would disagree is compared as the approximation it may be.
+ * angles", "small amplitude", "small vibrations", "small displacements", or "approximating" a sine, cosine or
+ * tangent: `approximating $\sin\varphi = \varphi$`), as a file offset; std::nullopt when it does not. An equation after it that would disagree is compared as the approximation it may be.
  */
 std::optional<std::size_t> small_motion_stated_before(const Derivation& d, std::size_t at);
 

@@ -274,7 +274,9 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
             return alt;
         }
     }
-    if (!approx && r.verdict == Verdict::Disagrees) {
+    // (Not comparable as it stands, `\sin(\varphi) = \varphi` after "approximating": the approximation, where it holds.)
+    const bool as_written = r.verdict == Verdict::NotComparable && a.comparable() && b.comparable();
+    if (!approx && (r.verdict == Verdict::Disagrees || as_written)) {
         EquationCheck alt;
         alt.where = r.where;
         alt.section = r.section;
@@ -283,7 +285,7 @@ EquationCheck Checker::check_link(const FullChain& c, std::size_t i, std::size_t
         // Its verdict stands, agreeing or not, where the text says it approximates: it calls the coordinates small
         // ("linearizing", "for small θ"), or writes the deviation from the point of a change of variable.
         if (approximation(rel_at, L.side->source, R.side->source, a, b, false, alt) &&
-            (alt.verdict == Verdict::Agrees || approximation_stated(c, i, j)))
+            (alt.verdict == Verdict::Agrees || (!as_written && approximation_stated(c, i, j))))
             return alt;
     }
     return r;
@@ -293,6 +295,8 @@ bool Checker::approximation_stated(const FullChain& c, std::size_t i, std::size_
     const std::size_t at = c.relation_offsets[j - 1];
     const ExpansionPoints points = expansion_points(at);
     if (!small_coordinates_in_prose(d_, at, model_, points).empty()) return true;
+    // "… makes small oscillations" (or "approximating $\sin\varphi = \varphi$") before it in the text.
+    if (small_motion_stated_before(d_, at)) return true;
     for (const std::size_t k : {i, j})
         for (const NameUse& u : c.sides[k].side->uses)
             for (const std::string& deviation : points.deviation)

@@ -171,3 +171,24 @@ $$\frac{d}{dt}(m\dot u) = m l\ddot\phi\cos\phi - m l\dot\phi^2\sin\phi$$
     CHECK(r.equations[5].verdict == Verdict::Agrees);
     CHECK(eomgen::test::has_note(r.equations[5], "$\\dot{u}$ is the time derivative of $u$"));
 }
+
+TEST_CASE("published notation: approximating a sine in the prose makes the angle small from there on",
+          "[checker][readings]") {
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+With the Euler-Lagrange equation, and approximating $sin(\phi)=\phi$, one gets
+
+$$\ddot{\phi} + \frac{g}{l}\phi = 0$$
+
+and with a slip
+
+$$\ddot{\phi} + \frac{g}{2l}\phi = 0$$
+)");
+    INFO(eomgen::test::describe_all(r));
+    REQUIRE(r.equations.size() == 3);
+    CHECK(r.equations[0].verdict == Verdict::Agrees);
+    CHECK(r.equations[0].reason == "agrees to first order in $\\phi$");
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    CHECK(r.equations[2].verdict == Verdict::Disagrees);
+    CHECK(r.equations[2].compared_with.find("expanded about $\\phi = 0$") != std::string::npos);
+}
