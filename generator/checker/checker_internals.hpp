@@ -35,8 +35,6 @@
 #include "codegen/math_printer.hpp"
 #include "mechanics/pole_free_subs.hpp"
 #include "mechanics/results.hpp"
-
-#include <tuple>
 #include "mechanics/trig_rewrite.hpp"
 
 #include <Eigen/Dense>
@@ -53,10 +51,9 @@
 #include <random>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 namespace eomgen::checker::detail {
-
-
 
 /// `latex` as inline math in a report: `$…$`, a side broken over lines (a display's rows) on one line.
 inline std::string m(const std::string& latex) {
@@ -76,7 +73,6 @@ inline std::string m(const std::string& latex) {
 }
 
 enum class Tri { No, Yes, Unknown };
-
 
 /// A side of a link with where its row starts in the file.
 /// A side the parser refused for its `\pm` or `\mp` (both_signs.cpp).
@@ -572,7 +568,6 @@ class Checker : public Comparisons {
     std::string printed_value(const Prepared& ref, const PSide& ref_side, const Prepared& text);
 };
 
-
 /// Whether e holds abs, sign, heaviside, max or min (the model's, or GiNaC's abs and csgn from the text's |x|).
 inline bool has_nonsmooth(const GiNaC::ex& e) {
     if (GiNaC::is_a<GiNaC::function>(e)) {
@@ -600,6 +595,5 @@ class SignedStates {
   private:
     std::function<void()> restore_;
 };
-
 
 }  // namespace eomgen::checker::detail
