@@ -152,8 +152,34 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
     // After a condition (`s = \frac{1}{2h}`: "halfway along the first turn"), a value free of the state that the
     // paragraph gives a name (`y = r\cos\pi`) is that name's value at the point, not its definition: it holds
     // to the end of the paragraph only.
+    // "lets $\ddot{x} = a_x$": a name first written on the right of `=` that the sentence introduces is defined by
+    // the left side, in force after it to the end of the section; a value the text states for it later
+    // (`a_y = -g`) is then a claim about it, not a new definition.
+    std::set<std::string> named_on_the_right;
+    const auto name_on_the_right = [&](const FullChain& c) {
+        if (c.sides.size() != 2 || c.relations[0] != Relation::Equal || !c.sides[1].side->ok) return false;
+        const GiNaC::ex named = c.sides[1].side->value;
+        const FreeName* f = GiNaC::is_a<GiNaC::symbol>(named) ? ctx_.free_name_of(named) : nullptr;
+        if (!f || f->kind != NameKind::Unknown || is_part(named) || is_constant_name(f->name)) return false;
+        const std::size_t at = c.sides[1].base + c.sides[1].side->begin;
+        if (!introduces_name(d_, at) || definitions_.value_at(named, at)) return false;
+        // (Never written before: a name the text used already is not introduced here.)
+        for (const FullChain& e : chains)
+            for (const PSide& s : e.sides)
+                for (const NameUse& u : s.side->uses)
+                    if (u.name == f->name && s.base + u.offset < at) return false;
+        const Prepared p = prepare(c.sides[0]);
+        if (!p.comparable() || !p.units.empty() || p.value.has(named)) return false;
+        const std::size_t until = c.section >= 0 ? d_.sections[std::size_t(c.section)].end : std::string::npos;
+        definitions_.add(named, f->name, p.value, at, d_.position(at).line, until, trimmed(c.sides[0].side->source),
+                         c.sides[0].base + c.sides[0].side->begin, false, nullptr,
+                         c.section >= 0 ? d_.sections[std::size_t(c.section)].begin : 0);
+        named_on_the_right.insert(f->name);
+        return true;
+    };
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2 || !c.sides[0].side->ok) continue;
+        if (name_on_the_right(c)) continue;
         // `\omega_0^2 = g/l`: the square of a name set to a constant (or to a speed squared) defines the name as its
         // positive root (a frequency, a rate), so that `\ddot\varphi + \omega_0^2 \sin\varphi = 0` after it is compared.
         const GiNaC::ex written = c.sides[0].side->value;
@@ -162,6 +188,9 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
         const GiNaC::ex head = squared ? written.op(0) : written;
         const FreeName* f = ctx_.free_name_of(head);
         if (!f || f->kind != NameKind::Unknown || is_part(head) || is_constant_name(f->name)) continue;
+        if (named_on_the_right.count(f->name) &&
+            definitions_.value_at(head, c.sides[0].base + c.sides[0].side->begin))
+            continue;
         for (std::size_t k = c.sides.size(); k-- > 1;) {
             // `\gamma < \omega_0`: only a side the name equals (every relation before it `=`) is its value.
             if (std::any_of(c.relations.begin(), c.relations.begin() + std::ptrdiff_t(k),

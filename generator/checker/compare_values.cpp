@@ -163,6 +163,11 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
         if (!def.empty() && !frequency_claim) {
             r.notes.erase(std::remove_if(r.notes.begin(), r.notes.end(), frequency_note), r.notes.end());
             describe(R, b);
+            // ("lets $\ddot x = a_x$": the name it defines is no unknown of its value.)
+            const std::string named = m(def.substr(0, def.find(" = ")));
+            unknown.erase(std::remove_if(unknown.begin(), unknown.end(),
+                                         [&](const std::string& u) { return u.rfind(named + " (", 0) == 0; }),
+                          unknown.end());
             std::string reason = "a definition: the text's abbreviation $" + def + "$ for the rest of its " +
                                  (at_a_point_.count(L.base + L.side->begin)
                                       ? "paragraph (its value at the point the text considers)"

@@ -192,3 +192,34 @@ $$\ddot{\phi} + \frac{g}{2l}\phi = 0$$
     CHECK(r.equations[2].verdict == Verdict::Disagrees);
     CHECK(r.equations[2].compared_with.find("expanded about $\\phi = 0$") != std::string::npos);
 }
+
+TEST_CASE("published notation: a name the sentence introduces on the right of = is defined by the left side",
+          "[checker][definitions]") {
+    // "let $\ddot\phi = \alpha$": α is the text's name for the angular acceleration from there on; an equation in
+    // it is compared (and a wrong one flagged), and a value stated for it later is a claim, not a new definition.
+    const CheckReport r = eomgen::test::check_text(kModel, R"(# Pendulum
+
+We let $\ddot\phi = \alpha$, so that
+
+$$m l^2 \alpha = -m g l \sin\phi$$
+
+$$m l \alpha = -m g \cos\phi$$
+
+At the bottom, $\phi = 0$, we get $\alpha = 0$.
+
+Elsewhere $\gamma$ is a number of the text's, and we let $\ddot\phi = \gamma$.
+)");
+    INFO(eomgen::test::describe_all(r));
+    REQUIRE(r.equations.size() >= 5);
+    CHECK(r.equations[0].verdict == Verdict::NotJudged);
+    CHECK(r.equations[0].role == Role::Definition);
+    CHECK(r.equations[0].reason == "a definition: the text's abbreviation $\\alpha = \\ddot\\phi$ for the rest of its section");
+    CHECK(r.equations[1].verdict == Verdict::Agrees);
+    CHECK(r.equations[2].verdict == Verdict::Disagrees);
+    CHECK(r.equations[4].verdict == Verdict::Agrees);
+    CHECK(eomgen::test::has_note(r.equations[4], "using $\\alpha = \\ddot\\phi$ (line 3)"));
+    // (γ was written before the sentence that "lets" it: no definition there.)
+    REQUIRE(r.equations.size() == 6);
+    CHECK(r.equations[5].role != Role::Definition);
+    CHECK(r.equations[5].verdict == Verdict::NotComparable);
+}
