@@ -5,6 +5,7 @@ A key builds the system's Lagrangian from its own kinematics, and decides each l
 accelerations are replaced by their solution), `same` (two expressions are identical) or its own SymPy.
 """
 import json
+import os
 import sys
 
 import sympy as sp
@@ -23,10 +24,32 @@ def d(q, k=1):
     return sp.diff(q, t, k)
 
 
+def _numerically_nonzero(e):
+    """e is clearly not 0 at one of three fixed random points (derivatives, coordinates, then symbols given values in
+    [0.3, 1.3]): then no simplifier need try to prove it 0, which can take minutes (bead_rotating_rod's λ)."""
+    import random
+    rng = random.Random(28)
+    for _ in range(3):
+        x = e
+        try:
+            for group in (sorted(x.atoms(sp.Derivative), key=lambda v: -v.derivative_count),
+                          None, None):
+                atoms = group if group is not None else (x.atoms(sp.core.function.AppliedUndef) or x.free_symbols)
+                x = x.subs({a: rng.uniform(0.3, 1.3) for a in atoms})
+            value = complex(sp.N(x, 30))
+        except Exception:  # pragma: no cover - a value that cannot be evaluated proves nothing
+            return False
+        if value == value and abs(value) > 1e-8:  # (not NaN)
+            return True
+    return False
+
+
 def _simplified_zero(e):
     e = sp.expand(e)
     if e == 0:
         return True
+    if _numerically_nonzero(e):
+        return False
     for f in (sp.simplify, lambda x: sp.trigsimp(sp.expand_trig(x)), lambda x: sp.simplify(sp.expand_trig(sp.expand(x)))):
         try:
             if f(e) == 0:
@@ -39,6 +62,17 @@ def _simplified_zero(e):
 def same(a, b):
     """a and b are the same expression (of coordinates, their derivatives and parameters)."""
     return _simplified_zero(sp.sympify(a) - sp.sympify(b))
+
+
+def derivation_lines(entry_dir):
+    """The lines of the entry's derivation.md (split at newlines), as line_of() and locator() take them."""
+    with open(os.path.join(entry_dir, "derivation.md"), encoding="utf-8") as fh:
+        return fh.read().split("\n")
+
+
+def locator(lines):
+    """at(snippet, nth=1): line_of() on these lines, as each key writes its key.line(at(...), ...)."""
+    return lambda snippet, nth=1: line_of(lines, snippet, nth)
 
 
 def line_of(lines, snippet, nth=1):

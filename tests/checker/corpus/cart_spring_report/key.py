@@ -6,11 +6,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.dirname(HERE))
 from keylib import *  # noqa: E402,F401,F403
 
-TEXT = open(os.path.join(HERE, "derivation.md"), encoding="utf-8").read().split("\n")
-
-
-def at(snippet, nth=1):
-    return line_of(TEXT, snippet, nth)
+TEXT = derivation_lines(HERE)
+at = locator(TEXT)
 
 
 x, th = coords("x", "theta")
