@@ -148,6 +148,25 @@ void Checker::apply_map(int line) {
 
 // ---------------------------------------------------------------------------------------------- checking
 
+void Checker::add_label(const std::string& name, const GiNaC::ex& truth, const std::string& what) {
+    const GiNaC::symbol s(name, name);
+    if (auto own = ctx_.names.find(name); own != ctx_.names.end()) {  // the model's own names come first
+        // (A parameter with the letter, a rod's length L, is still the label where only the label makes sense:
+        // shadowed_labels.cpp.)
+        if (std::any_of(model_.parameters.begin(), model_.parameters.end(),
+                        [&](const Parameter& p) { return own->second.is_equal(p.symbol); }) &&
+            !shadowed_labels_.count(own->second)) {
+            shadowed_labels_[own->second] = ShadowedLabel{s, what};
+            truth_[s] = truth;
+            label_what_[s] = what;
+        }
+        return;
+    }
+    ctx_.names[name] = s;
+    truth_[s] = truth;
+    label_what_[s] = what;
+}
+
 void Checker::collect_definitions(const std::vector<FullChain>& chains) {
     // After a condition (`s = \frac{1}{2h}`: "halfway along the first turn"), a value free of the state that the
     // paragraph gives a name (`y = r\cos\pi`) is that name's value at the point, not its definition: it holds
@@ -156,6 +175,14 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
     // the left side, in force after it to the end of the section; a value the text states for it later
     // (`a_y = -g`) is then a claim about it, not a new definition.
     std::set<std::string> named_on_the_right;
+    const auto dotted_defined_name = [&](const std::string& name, std::size_t at) {
+        const auto f = ctx_.free_names.find(name);
+        if (f == ctx_.free_names.end() || (name.rfind("\\dot{", 0) != 0 && name.rfind("\\ddot{", 0) != 0)) return false;
+        std::vector<std::string> notes;
+        const GiNaC::ex derivative = dotted_definitions(definitions_, f->second.symbol, at, ctx_, model_, notes);
+        definitions_.take_uses();
+        return !derivative.is_equal(f->second.symbol);
+    };
     const auto name_on_the_right = [&](const FullChain& c) {
         if (c.sides.size() != 2 || c.relations[0] != Relation::Equal || !c.sides[1].side->ok) return false;
         const GiNaC::ex named = c.sides[1].side->value;
@@ -191,6 +218,9 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
         if (named_on_the_right.count(f->name) &&
             definitions_.value_at(head, c.sides[0].base + c.sides[0].side->begin))
             continue;
+        // `\dot{x_p} = …` after `x_p = x + L\sin\theta`: a claim about that definition's derivative
+        // (check_derivative_of_definition), not a new name.
+        if (dotted_defined_name(f->name, c.sides[0].base + c.sides[0].side->begin)) continue;
         for (std::size_t k = c.sides.size(); k-- > 1;) {
             // `\gamma < \omega_0`: only a side the name equals (every relation before it `=`) is its value.
             if (std::any_of(c.relations.begin(), c.relations.begin() + std::ptrdiff_t(k),
@@ -368,6 +398,20 @@ CheckReport Checker::run() {
         parsed.push_back({&row, parse_math(row.text, ctx_)});
         ctx_.names = saved;
     }
+    // `L = T - V` with a rod's length L: the first side is the Lagrangian there (shadowed_labels.hpp).
+    ExSet labels;
+    for (const auto& [symbol, value] : truth_) labels.insert(symbol);
+    for (Parsed& p : parsed)
+        for (Chain& ch : p.chains) {
+            if (ch.sides.size() < 2 || !ch.sides[0].ok) continue;
+            std::vector<GiNaC::ex> others;
+            for (std::size_t k = 1; k < ch.sides.size(); ++k)
+                if (ch.sides[k].ok) others.push_back(ch.sides[k].value);
+            if (const ShadowedLabel* l = label_on_the_left(ch.sides[0].value, others, shadowed_labels_, labels, model_)) {
+                ch.sides[0].notes.push_back(shadowed_label_note(ch.sides[0].value, *l));
+                ch.sides[0].value = l->label;
+            }
+        }
     std::vector<FullChain> chains;
     const MathRow* previous_display = nullptr;
     for (const Parsed& p : parsed) {

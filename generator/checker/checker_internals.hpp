@@ -31,6 +31,7 @@
 #include "checker/point_positions.hpp"
 #include "checker/printed_numbers.hpp"
 #include "checker/sample_points.hpp"
+#include "checker/shadowed_labels.hpp"
 #include "codegen/cpp_emitter.hpp"
 #include "codegen/math_printer.hpp"
 #include "mechanics/pole_free_subs.hpp"
@@ -200,13 +201,8 @@ class Checker : public Comparisons {
         if (c.empty()) c = latex;
         ctx_.names.emplace(c, value);
     }
-    void add_label(const std::string& name, const GiNaC::ex& truth, const std::string& what) {
-        if (ctx_.names.count(name)) return;  // the model's own names come first
-        const GiNaC::symbol s(name, name);
-        ctx_.names[name] = s;
-        truth_[s] = truth;
-        label_what_[s] = what;
-    }
+    /// `name` stands for eomgen's `truth` unless the model uses the letter (a parameter L is shadowed_labels_).
+    void add_label(const std::string& name, const GiNaC::ex& truth, const std::string& what);
     void setup_names();
     /// The map's entries for every line (line 0), or those scoped to the text's `line`.
     void apply_map(int line = 0);
@@ -342,6 +338,8 @@ class Checker : public Comparisons {
     /// `\frac{d}{dt}\frac{\partial L}{\partial \dot q} - \frac{\partial L}{\partial q} = 0` with q none of the model's
     /// coordinates: judged with q as each of them in turn (generic_coordinate.cpp). False when it is no such link.
     bool check_generic_coordinate(const FullChain& c, std::size_t i, std::size_t j, bool bridge, EquationCheck& r);
+    /// `\dot{x_p} = …` after `x_p = …`: compared with the derivative of that definition (definition_uses.cpp).
+    bool check_derivative_of_definition(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r);
     /// Side k of c, not comparable for one name the text writes only there, agrees with the nearest comparable side
     /// of its chain once exactly one like-named parameter the text uses elsewhere stands in its place (`m` for
     /// M_2): that link, disagreeing, with the parameter written in (misspelled_names.cpp).
@@ -486,6 +484,7 @@ class Checker : public Comparisons {
     trig::Hints hints_;  ///< what is printed is rewritten towards: the author's angle sums (set per link)
     ExMap<GiNaC::ex> truth_;          ///< label symbol → eomgen's value
     ExMap<std::string> label_what_;   ///< label symbol → what it is, for the report
+    ExMap<ShadowedLabel> shadowed_labels_;  ///< a parameter written with a label's letter (a length L) → the label
     ExSet bare_only_;                 ///< labels that count only as a whole side (h, H)
     ExSet result_labels_;             ///< labels of the model's declared results
     ExMap<GiNaC::ex> part_value_;     ///< part symbol → its value in the text

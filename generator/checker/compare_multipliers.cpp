@@ -51,6 +51,25 @@ bool Checker::check_multipliers(const PSide& L, const PSide& R, const GiNaC::ex&
                 wrong = wrong && holds && !*holds;
             }
             if (!wrong) break;
+            // `\dot\theta = \sqrt{\frac{g}{r}\cos\theta - \frac{\lambda}{Mr}}`: a root the text takes for the positive
+            // rate holds on the motions where that rate is positive; squared, on every one.
+            const GiNaC::ex root = GiNaC::pow(GiNaC::wild(0), GiNaC::numeric(1, 2));
+            if (a.has(root) || b.has(root) || a.has(1 / root) || b.has(1 / root)) {
+                const GiNaC::ex squared = (a * a - b * b).expand();
+                // (With the sign of λ the text has taken in this section, where it has taken one.)
+                const bool kept = multiplier_sign_ != 0 && r.section == multiplier_sign_section_;
+                for (int sign : {1, -1}) {
+                    if (kept && sign != multiplier_sign_) continue;
+                    const std::optional<bool> holds =
+                        holds_on_constrained_motion(squared, model_, eq_, tol, multipliers_, sign, numbers_.pinned());
+                    if (!holds || !*holds) continue;
+                    r.verdict = Verdict::Agrees;
+                    r.compared_with = "the equations of motion with the constraint forces";
+                    r.reason = "it holds on every motion, with the constraints put in, after squaring both sides (the "
+                               "sign of the root is not checked)" + within;
+                    return true;
+                }
+            }
             r.verdict = Verdict::Disagrees;
             r.compared_with = "the equations of motion with the constraint forces";
             r.reason = "it holds on no motion, with either sign of the multiplier (checked at sample states)";

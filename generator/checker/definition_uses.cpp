@@ -28,18 +28,28 @@ EquationCheck Checker::check_link_noting_uses(const FullChain& c, std::size_t i,
     if (r.verdict == Verdict::NotComparable && (r.reason.rfind("unknown symbol", 0) == 0 ||
                                                r.reason.rfind("the partial derivative of", 0) == 0 ||
                                                r.reason.rfind("the time derivative of", 0) == 0)) {
-        const std::size_t blames = blames_.size(), disagreeing = disagreeing_uses_.size();
-        const int sign = multiplier_sign_, sign_line = multiplier_sign_line_;
-        const std::string sign_section = multiplier_sign_section_;
-        definitions_.set_forward(true);
-        EquationCheck later = safe_check_link(c, i, j, bridge);
-        definitions_.set_forward(false);
-        if (later.verdict == Verdict::Agrees) {
-            later.notes.push_back("with a value the text gives the name only later in its section");
-            r = std::move(later);
-        } else {  // what the attempt set up is undone, but for what the later value is blamed for (apply_blames)
-            for (std::size_t k = blames; k < blames_.size(); ++k) blames_[k].forward = true;
-            for (std::size_t k = disagreeing; k < disagreeing_uses_.size(); ++k) disagreeing_uses_[k].forward = true;
+        // (Then one an earlier section gave it, taken only where the link then agrees.)
+        for (const bool later_in_section : {true, false}) {
+            const std::size_t blames = blames_.size(), disagreeing = disagreeing_uses_.size();
+            const int sign = multiplier_sign_, sign_line = multiplier_sign_line_;
+            const std::string sign_section = multiplier_sign_section_;
+            (later_in_section ? definitions_.set_forward(true) : definitions_.set_backward(true));
+            EquationCheck other = safe_check_link(c, i, j, bridge);
+            definitions_.set_forward(false);
+            definitions_.set_backward(false);
+            if (other.verdict == Verdict::Agrees) {
+                other.notes.push_back(later_in_section ? "with a value the text gives the name only later in its section"
+                                                       : "with a value an earlier section gives the name");
+                r = std::move(other);
+                break;
+            }
+            // What the attempt set up is undone, but for what the later value is blamed for (apply_blames).
+            for (std::size_t k = blames; k < blames_.size(); ++k) blames_[k].forward = later_in_section;
+            if (!later_in_section) blames_.erase(blames_.begin() + std::ptrdiff_t(blames), blames_.end());
+            for (std::size_t k = disagreeing; k < disagreeing_uses_.size(); ++k)
+                disagreeing_uses_[k].forward = later_in_section;
+            if (!later_in_section)
+                disagreeing_uses_.erase(disagreeing_uses_.begin() + std::ptrdiff_t(disagreeing), disagreeing_uses_.end());
             multiplier_sign_ = sign;
             multiplier_sign_line_ = sign_line;
             multiplier_sign_section_ = sign_section;
@@ -60,6 +70,31 @@ EquationCheck Checker::check_link_noting_uses(const FullChain& c, std::size_t i,
              (u.value.has(model_.t) && GiNaC::normal(u.value / model_.t).has(model_.t))))  // not a new time τ = c t
             confirmed_by_[u.head].insert(r.where.line);
     return r;
+}
+
+bool Checker::check_derivative_of_definition(const FullChain& c, std::size_t i, std::size_t j, EquationCheck& r) {
+    // One side is a dotted name alone whose undotted name the text defined in the model's quantities (the note
+    // dotted_definitions leaves): the row states that derivative, and it is compared with it.
+    for (const bool left : {true, false}) {
+        const PSide& named = c.sides[left ? i : j];
+        const FreeName* f = named.side->ok ? ctx_.free_name_of(named.side->value) : nullptr;
+        if (!f) continue;
+        const Prepared p = prepare(named), other = prepare(c.sides[left ? j : i]);
+        if (!p.comparable() || !other.comparable()) return false;
+        const std::string prefix = m(f->name) + " is the time derivative of ";
+        const auto note = std::find_if(p.notes.begin(), p.notes.end(),
+                                       [&](const std::string& n) { return n.rfind(prefix, 0) == 0; });
+        if (note == p.notes.end() || equal(p.value, other.value, 1e-9) != Tri::No) continue;
+        r.verdict = Verdict::Disagrees;
+        r.compared_with = note->substr(prefix.size() - std::string("the time derivative of ").size());
+        r.reason = "the text's " + m(f->name) + " is not the time derivative of its definition";
+        const Diagnosis dg = compare_to(other.value, p.value, 1e-9);
+        r.difference = dg.difference;
+        r.wrong_terms = dg.lines;
+        r.corrected = left ? named.side->source + " = " + latex(p.value) : latex(p.value) + " = " + named.side->source;
+        return true;
+    }
+    return false;
 }
 
 void Checker::apply_confirmations(std::vector<EquationCheck>& equations) const {

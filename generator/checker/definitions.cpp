@@ -37,6 +37,9 @@ const TextDefinitions::Definition* TextDefinitions::in_force(const std::vector<D
     if (override_active_ && !list.empty() && list.front().name == override_.name) return &override_;
     for (const Definition& d : list)
         if (d.offset < at && (!in_section || at < d.until) && (!best || d.offset > best->offset)) best = &d;
+    if (!best && backward_)  // the last abbreviation before `at`, in an earlier section
+        for (const Definition& d : list)
+            if (d.offset < at && d.until > d.offset && (!best || d.offset > best->offset)) best = &d;
     if (!best && forward_)  // the first abbreviation after `at` in its section
         for (const Definition& d : list)
             if (d.offset > at && at >= d.section_begin && d.until > d.offset && at < d.until &&

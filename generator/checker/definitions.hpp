@@ -50,6 +50,9 @@ class TextDefinitions {
     /// While on, an abbreviation the text gives only later in the section of a use is in force there too, when none
     /// is before it (`I` in `I\ddot\theta = -\lambda r`, "the moment of inertia … is $I = \frac12 m r^2$" after).
     void set_forward(bool on) const { forward_ = on; }
+    /// While on, an abbreviation an earlier section gave is in force after it too, when none is in the use's own
+    /// section (`F_x` of a section "Forces" in the next section's `… = F_x`).
+    void set_backward(bool on) const { backward_ = on; }
     bool has_conserved() const { return !held_values_.empty(); }
 
     /**
@@ -152,6 +155,7 @@ class TextDefinitions {
     mutable std::vector<Use> uses_;
     mutable bool holding_ = false;
     mutable bool forward_ = false;
+    mutable bool backward_ = false;
     GiNaC::exmap held_values_;  ///< each held symbol, its value
     std::map<GiNaC::ex, std::string, GiNaC::ex_is_less> held_notes_;  ///< each held symbol, what the note says
     std::set<std::string> suspended_;

@@ -32,6 +32,10 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
             with_dotted_definitions(resolve_operators(definitions_.expand(e.op(0), current_offset_))));
         if (TextDefinitions::has_vector(inner, ctx_)) return ddt(inner);  // kept: vectors are not compared
         TextDefinitions::require_defined(inner, ctx_, "time derivative");
+        // (λ̇: a multiplier changes along the motion, and is no function of the state here: not 0.)
+        if (std::any_of(multipliers_.begin(), multipliers_.end(), [&](const GiNaC::symbol& l) { return inner.has(l); }))
+            throw std::runtime_error("the time derivative of a constraint's multiplier is not read (it changes along "
+                                     "the motion)");
         return time_derivative(inner, model_);
     }
     if (is_ex_the_function(e, pdiff)) {
@@ -154,7 +158,8 @@ Prepared Checker::prepare(const PSide& s, const GiNaC::ex* exclude_part) {
     }
     for (const std::string& n : side.notes) p.notes.push_back(n);
     // A letter the text has given another quantity's meaning (`p_\theta = L`): that quantity, outside ∂·/∂·.
-    const GiNaC::ex value = discourse_ ? discourse_->renamed(side.value, s.base + side.begin, p.notes) : side.value;
+    GiNaC::ex value = discourse_ ? discourse_->renamed(side.value, s.base + side.begin, p.notes) : side.value;
+    value = labels_under_derivatives(value, shadowed_labels_, model_, p.notes);  // ∂L/∂ẋ with a length L
     try {
         GiNaC::exmap subs;
         ExSet symbols;

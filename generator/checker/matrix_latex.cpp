@@ -22,6 +22,9 @@ static bool starts_command(std::string_view s, std::size_t i, std::string_view c
     return k >= s.size() || !std::isalpha(static_cast<unsigned char>(s[k]));
 }
 
+/// A space, a tab or a line break (a display's matrix is often written over several lines).
+static bool spacing(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
+
 bool blank(std::string_view s) {
     for (std::size_t i = 0; i < s.size(); ++i) {
         const char c = s[i];
@@ -152,7 +155,8 @@ static std::vector<std::pair<std::size_t, std::size_t>> comma_pieces(std::string
 
 bool mentions_array(std::string_view s) {
     if (s.find("\\begin{") != std::string_view::npos || s.find("\\det") != std::string_view::npos ||
-        s.find("operatorname{det}") != std::string_view::npos)
+        s.find("operatorname{det}") != std::string_view::npos || s.find("\\text{det}") != std::string_view::npos ||
+        s.find("\\mathrm{det}") != std::string_view::npos)
         return true;
     for (std::size_t k = s.find("det"); k != std::string_view::npos; k = s.find("det", k + 1))  // `det\left(`
         if ((k == 0 || !std::isalpha(static_cast<unsigned char>(s[k - 1]))) && s.substr(k + 3, 5) == "\\left")
@@ -180,7 +184,7 @@ static std::string undecorated(std::string_view arg) {
             const std::string cmd = c;
             if (s.rfind(cmd, 0) != 0) continue;
             std::size_t k = cmd.size();
-            while (k < s.size() && s[k] == ' ') ++k;
+            while (k < s.size() && spacing(s[k])) ++k;
             if (k < s.size() && s[k] == '{') {
                 const std::size_t e = group_end(s, k);
                 if (e == s.size()) {
@@ -261,7 +265,7 @@ static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Facto
     // \left<d> … \right<d>
     if (starts_command(s, i, "\\left")) {
         std::size_t k = i + 5;
-        while (k < e && s[k] == ' ') ++k;
+        while (k < e && spacing(s[k])) ++k;
         std::string open;
         if (k < e && s[k] == '\\') {
             std::size_t w = k + 1;
@@ -280,7 +284,7 @@ static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Facto
         }
         if (r >= e) return false;
         std::size_t after = r + 6;
-        while (after < e && s[after] == ' ') ++after;
+        while (after < e && spacing(s[after])) ++after;
         if (after < e && s[after] == '\\') {
             std::size_t w = after + 1;
             while (w < e && std::isalpha(static_cast<unsigned char>(s[w]))) ++w;
@@ -318,15 +322,17 @@ static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Facto
         f.end = end;
         return true;
     }
-    // `\det`, `\operatorname{det}`, or `det` without its backslash before a bracket (`det\left(…\right)`, as
-    // notebooks write it).
+    // `\det`, `\operatorname{det}`, `\text{det}`, `\mathrm{det}`, or `det` without its backslash before a bracket
+    // (`det\left(…\right)`, as notebooks write it).
     const bool bare_det = s.substr(i, 3) == "det" && (i == 0 || (!std::isalpha(static_cast<unsigned char>(s[i - 1])) &&
                                                                   s[i - 1] != '\\')) &&
                           i + 3 < e && (s[i + 3] == '(' || s[i + 3] == '\\' || s[i + 3] == ' ');
-    const bool det = starts_command(s, i, "\\det") || s.substr(i, 18) == "\\operatorname{det}" || bare_det;
-    if (det) {
-        std::size_t k = i + (bare_det ? 3 : s[i + 1] == 'd' ? 4 : 18);
-        while (k < e && s[k] == ' ') ++k;
+    std::size_t det_length = bare_det ? 3 : starts_command(s, i, "\\det") ? 4 : 0;
+    for (const std::string_view word : {"\\operatorname{det}", "\\text{det}", "\\mathrm{det}"})
+        if (det_length == 0 && s.substr(i, word.size()) == word) det_length = word.size();
+    if (det_length > 0) {
+        std::size_t k = i + det_length;
+        while (k < e && spacing(s[k])) ++k;
         Factor inner;
         std::size_t j = k;
         if (k >= e || !scan_factor(s, j, e, inner, why)) {
@@ -355,7 +361,7 @@ static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Facto
     for (const char* c : kVectorCommands) {
         if (!starts_command(s, i, c)) continue;
         std::size_t k = i + std::string_view(c).size();
-        while (k < e && s[k] == ' ') ++k;
+        while (k < e && spacing(s[k])) ++k;
         std::size_t arg_end = k;
         if (k < e && s[k] == '{') {
             arg_end = group_end(s, k);
@@ -372,10 +378,10 @@ static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Facto
         std::size_t end = arg_end;
         std::string sub;
         std::size_t u = end;
-        while (u < e && s[u] == ' ') ++u;
+        while (u < e && spacing(s[u])) ++u;
         if (u < e && s[u] == '_') {
             std::size_t v = u + 1;
-            while (v < e && s[v] == ' ') ++v;
+            while (v < e && spacing(s[v])) ++v;
             if (v < e && s[v] == '{') {
                 const std::size_t ge = group_end(s, v);
                 if (ge == std::string_view::npos || ge > e) return false;
@@ -389,7 +395,7 @@ static bool scan_factor(std::string_view s, std::size_t& i, std::size_t e, Facto
         // Primes: r' is another vector than r.
         std::string primes;
         for (std::size_t p = end;;) {
-            while (p < e && s[p] == ' ') ++p;
+            while (p < e && spacing(s[p])) ++p;
             if (p < e && s[p] == '\'') {
                 primes += "'";
                 end = ++p;
@@ -459,7 +465,7 @@ bool scan(std::string_view s, std::size_t b, std::size_t e, std::vector<Term>& t
             // `^T`, `^{T}`, `^\top`, `^{\mathsf{T}}`, `^\intercal`: the transpose.
             if (c == '^') {
                 std::size_t k = i + 1;
-                while (k < e && s[k] == ' ') ++k;
+                while (k < e && spacing(s[k])) ++k;
                 const std::string_view rest = s.substr(k, e - k);
                 for (const char* t : {"{\\mathsf{T}}", "{\\mathrm{T}}", "{\\top}", "{\\intercal}", "{T}", "\\top",
                                       "\\intercal", "T"}) {

@@ -77,7 +77,11 @@ void Checker::collect_named_constants(const std::vector<FullChain>& chains) {
         // constant once more (another quantity said to be conserved, or the same one approximated).
         bool again = false;
         for (const auto& [offset, known] : named_constants_) again = again || known == f->name;
-        if (definitions_.value_at(name, at) && !again) continue;
+        // (Or defined in an earlier section: `… = F_x` after a section "Forces" that gave F_x.)
+        definitions_.set_backward(true);
+        const bool defined = definitions_.value_at(name, at) != nullptr;
+        definitions_.set_backward(false);
+        if (defined && !again) continue;
         const PSide& quantity = c.sides[k - 1];
         const Prepared p = prepare(quantity);
         if (!p.comparable() || !p.units.empty() || p.value.has(name) || !quantity_of_motion(p.value, model_)) continue;

@@ -125,16 +125,26 @@ TEST_CASE("definitions: a definition of a name the model knows that contradicts 
     CHECK(at_line(r, 5).verdict == Verdict::Agrees);  // the line after it, on the conical motion
 }
 
-TEST_CASE("definitions: an abbreviation holds for the rest of its section only", "[checker][definitions]") {
+TEST_CASE("definitions: an abbreviation holds for the rest of its section, and after it only where a line then agrees",
+          "[checker][definitions]") {
     const CheckReport r = eomgen::test::check_text(
         "tests/checker/models/spherical_pendulum.toml",
         "# One\n\nWrite $k = g/l$.\n\n$$ \\ddot\\theta = \\sin\\theta\\cos\\theta\\,\\dot\\phi^2 - k\\sin\\theta $$\n\n"
-        "# Two\n\n$$ \\ddot\\theta = \\sin\\theta\\cos\\theta\\,\\dot\\phi^2 - k\\sin\\theta $$\n");
+        "# Two\n\n$$ \\ddot\\theta = \\sin\\theta\\cos\\theta\\,\\dot\\phi^2 - k\\sin\\theta $$\n\n"
+        "$$ \\ddot\\theta = \\sin\\theta\\cos\\theta\\,\\dot\\phi^2 + k\\sin\\theta $$\n");
     const EquationCheck& in = at_line(r, 5);
     INFO(eomgen::test::describe(in));
     CHECK(in.verdict == Verdict::Agrees);
+    CHECK_FALSE(has_note(in, "with a value an earlier section gives the name"));
+    // In section Two, k is not defined: an earlier section's value is taken only as a second reading that agrees
+    // (a text whose forces are defined in a section before its equations), and said; a line it would make wrong is
+    // not judged with it (k may mean something else there).
     const EquationCheck& out = at_line(r, 9);
     INFO(eomgen::test::describe(out));
-    CHECK(out.verdict == Verdict::NotComparable);  // k is not defined in section Two
-    CHECK_FALSE(has_note(out, "using"));
+    CHECK(out.verdict == Verdict::Agrees);
+    CHECK(has_note(out, "with a value an earlier section gives the name"));
+    const EquationCheck& other = at_line(r, 11);
+    INFO(eomgen::test::describe(other));
+    CHECK(other.verdict == Verdict::NotComparable);
+    CHECK_FALSE(has_note(other, "using"));
 }
