@@ -168,16 +168,14 @@ void Checker::add_label(const std::string& name, const GiNaC::ex& truth, const s
 }
 
 void Checker::collect_definitions(const std::vector<FullChain>& chains) {
-    // After a condition (`s = \frac{1}{2h}`: "halfway along the first turn"), a value free of the state that the
-    // paragraph gives a name (`y = r\cos\pi`) is that name's value at the point, not its definition: it holds
-    // to the end of the paragraph only.
     // "lets $\ddot{x} = a_x$": a name first written on the right of `=` that the sentence introduces is defined by
     // the left side, in force after it to the end of the section; a value the text states for it later
     // (`a_y = -g`) is then a claim about it, not a new definition.
     std::set<std::string> named_on_the_right;
     const auto dotted_defined_name = [&](const std::string& name, std::size_t at) {
         const auto f = ctx_.free_names.find(name);
-        if (f == ctx_.free_names.end() || (name.rfind("\\dot{", 0) != 0 && name.rfind("\\ddot{", 0) != 0)) return false;
+        if (f == ctx_.free_names.end() || (name.rfind("\\dot{", 0) != 0 && name.rfind("\\ddot{", 0) != 0))
+            return false;
         std::vector<std::string> notes;
         const GiNaC::ex derivative = dotted_definitions(definitions_, f->second.symbol, at, ctx_, model_, notes);
         definitions_.take_uses();
@@ -204,6 +202,9 @@ void Checker::collect_definitions(const std::vector<FullChain>& chains) {
         named_on_the_right.insert(f->name);
         return true;
     };
+    // After a condition (`s = \frac{1}{2h}`: "halfway along the first turn"), a value free of the state that the
+    // paragraph gives a name (`y = r\cos\pi`) is that name's value at the point, not its definition: it holds
+    // to the end of the paragraph only.
     for (const FullChain& c : chains) {
         if (c.sides.size() < 2 || !c.sides[0].side->ok) continue;
         if (name_on_the_right(c)) continue;
@@ -407,7 +408,8 @@ CheckReport Checker::run() {
             std::vector<GiNaC::ex> others;
             for (std::size_t k = 1; k < ch.sides.size(); ++k)
                 if (ch.sides[k].ok) others.push_back(ch.sides[k].value);
-            if (const ShadowedLabel* l = label_on_the_left(ch.sides[0].value, others, shadowed_labels_, labels, model_)) {
+            if (const ShadowedLabel* l =
+                    label_on_the_left(ch.sides[0].value, others, shadowed_labels_, labels, model_)) {
                 ch.sides[0].notes.push_back(shadowed_label_note(ch.sides[0].value, *l));
                 ch.sides[0].value = l->label;
             }

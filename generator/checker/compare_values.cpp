@@ -530,7 +530,7 @@ void Checker::check_values(const FullChain& c, std::size_t i, std::size_t j, con
             return;
         }
     }
-    if (check_derivative_of_definition(c, i, j, r)) return;  // `\dot{x_p} = …` after `x_p = …` (definition_uses.cpp)
+    if (check_derivative_of_definition(c, i, j, r)) return;  // `\dot{x_p} = …` after `x_p = …`
     const bool chain_link = c.sides.size() >= 3;
     if (chain_link) {
         r.verdict = Verdict::Disagrees;

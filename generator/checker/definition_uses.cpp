@@ -38,8 +38,9 @@ EquationCheck Checker::check_link_noting_uses(const FullChain& c, std::size_t i,
             definitions_.set_forward(false);
             definitions_.set_backward(false);
             if (other.verdict == Verdict::Agrees) {
-                other.notes.push_back(later_in_section ? "with a value the text gives the name only later in its section"
-                                                       : "with a value an earlier section gives the name");
+                other.notes.push_back(later_in_section
+                                          ? "with a value the text gives the name only later in its section"
+                                          : "with a value an earlier section gives the name");
                 r = std::move(other);
                 break;
             }
@@ -49,7 +50,8 @@ EquationCheck Checker::check_link_noting_uses(const FullChain& c, std::size_t i,
             for (std::size_t k = disagreeing; k < disagreeing_uses_.size(); ++k)
                 disagreeing_uses_[k].forward = later_in_section;
             if (!later_in_section)
-                disagreeing_uses_.erase(disagreeing_uses_.begin() + std::ptrdiff_t(disagreeing), disagreeing_uses_.end());
+                disagreeing_uses_.erase(disagreeing_uses_.begin() + std::ptrdiff_t(disagreeing),
+                                        disagreeing_uses_.end());
             multiplier_sign_ = sign;
             multiplier_sign_line_ = sign_line;
             multiplier_sign_section_ = sign_section;

@@ -114,8 +114,8 @@ bool explains_formula_before(const Derivation& d, std::size_t offset) {
 bool introduces_name(const Derivation& d, std::size_t offset) {
     const std::string sentence = lead_in(d, offset, 1);
     const auto letter = [](char ch) { return std::isalpha(static_cast<unsigned char>(ch)) != 0; };
-    for (const char* cue : {"let", "lets", "letting", "define", "defining", "introduce", "introducing", "denote", "denoting", "call",
-                            "write", "writing"}) {
+    for (const char* cue : {"let", "lets", "letting", "define", "defining", "introduce", "introducing", "denote",
+                            "denoting", "call", "write", "writing"}) {
         const std::string w = cue;
         for (std::size_t k = sentence.find(w); k != std::string::npos; k = sentence.find(w, k + 1))
             if ((k == 0 || !letter(sentence[k - 1])) &&

@@ -37,7 +37,9 @@ GiNaC::ex labels_under_derivatives(const GiNaC::ex& e, const detail::ExMap<Shado
         std::vector<std::string>& notes;
         Each(const detail::ExMap<ShadowedLabel>& s, const Model& m, std::vector<std::string>& n)
             : shadowed(s), model(m), notes(n) {}
-        GiNaC::ex operator()(const GiNaC::ex& x) override { return labels_under_derivatives(x, shadowed, model, notes); }
+        GiNaC::ex operator()(const GiNaC::ex& x) override {
+            return labels_under_derivatives(x, shadowed, model, notes);
+        }
     } each(shadowed, model, notes);
     return e.map(each);
 }
