@@ -6,21 +6,12 @@
 
 namespace eomgen::checker::detail {
 
-namespace {
-
-/// Adds `note` to `notes` unless it is there.
-void add_once(std::vector<std::string>& notes, const std::string& note) {
-    if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(note);
-}
-
-}  // namespace
-
 // ------------------------------------------------------------------------------------------- evaluation
 
 GiNaC::ex Checker::with_dotted_definitions(const GiNaC::ex& e) const {
     std::vector<std::string> notes;
     const GiNaC::ex v = dotted_definitions(definitions_, e, current_offset_, ctx_, model_, notes);
-    for (const std::string& n : notes) add_once(operator_notes_, n);
+    for (const std::string& n : notes) add_note_once(operator_notes_, n);
     return v;
 }
 
@@ -46,7 +37,7 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
                         [&](const Coordinate& c) { return e.op(0).op(1).is_equal(c.qd); })) {
             const std::string note = "reads $\\frac{\\partial}{\\partial t}$ of a derivative by a velocity as the "
                                      "Euler–Lagrange equation's $\\frac{d}{dt}$";
-            add_once(operator_notes_, note);
+            add_note_once(operator_notes_, note);
             return resolve_operators(ddt(e.op(0)));
         }
         // By a coordinate, the text's constants of the motion (J = p_φ) are held fixed, put in after (definitions.hpp).
@@ -90,7 +81,7 @@ GiNaC::ex Checker::resolve_operators(const GiNaC::ex& e) const {
         TextDefinitions::require_defined(inner, ctx_, "derivative by a new time");
         // A change of the time variable, not a quantity the text defines: the side is compared as an equation of
         // motion, not as that definition's derivative (the uses are said in a note).
-        for (const std::string& n : definitions_.take_used()) add_once(operator_notes_, n);
+        for (const std::string& n : definitions_.take_used()) add_note_once(operator_notes_, n);
         return time_derivative(inner, model_) / c;
     }
     if (is_ex_the_function(e, limat)) {  // \lim_{x \to a} f: f at a, or its series' constant term there

@@ -123,7 +123,7 @@ GiNaC::ex Parser::postfix(GiNaC::ex base) {
             ++pos_;
             base = ddt(base);
             const std::string note = "a prime after a bracket read as its time derivative";
-            if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end()) side_.notes.push_back(note);
+            add_note_once(side_.notes, note);
         } else if (is_char(t, "_")) {
             fail(pos_, "a subscript after an expression (not a name) is not read");
         } else {
@@ -326,8 +326,7 @@ GiNaC::ex Parser::bracket_group() {
         // its author meant, said in a note.
         if (!t && end_ < t_.size() && is_char(&t_[end_], "}")) {
             const std::string note = "reads the '" + open + "' that is not closed as closed at the end of its group";
-            if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end())
-                side_.notes.push_back(note);
+            add_note_once(side_.notes, note);
             return e;
         }
         // `\left( -k(-M\omega^2 + k \right))`: the bracket's closer typed after the \right that follows it. Closed
@@ -449,7 +448,7 @@ GiNaC::ex Parser::left_right(std::size_t at) {
         if (!is_char(peek(), ")")) fail(at, "a '(' inside this \\left ... \\right is not closed");
         ++pos_;
         const std::string note = "reads a ')' typed after \\right as closing the '(' before it";
-        if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end()) side_.notes.push_back(note);
+        add_note_once(side_.notes, note);
     }
     if ((delim == "|" || delim == "\\vert" || delim == "\\lvert")) return eomgen::real_abs(e);
     if (delim == "." && (rdelim == "|" || rdelim == "\\vert" || rdelim == "\\rvert")) return evaluation_bar(at, e);

@@ -48,8 +48,7 @@ NameParts Parser::argument_name(std::size_t at, const char* what, bool power_ins
                 const std::string x = inner.canonical(), p = "^{" + power.str() + "}";
                 const std::string note = "reads $" + t_[at].text + "{" + x + p + "}$ as $" + t_[at].text + "{" + x +
                                          "}" + p + "$ (the accent written over the power)";
-                if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end())
-                    side_.notes.push_back(note);
+                add_note_once(side_.notes, note);
             }
             return 0;
         },
@@ -281,7 +280,7 @@ GiNaC::ex Parser::name_value() {
                 if (value.is_equal(*q)) by = name;
             const std::string note =
                 "$" + n.canonical() + "(" + by + ")$ read as the derivative by it along the motion (d/dt over its rate)";
-            if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end()) side_.notes.push_back(note);
+            add_note_once(side_.notes, note);
         } else if (ctx_.free_name_of(v) == nullptr && !label) {
             pos_ = after;  // `m(\theta)`: a parameter times θ
             v = resolve(n, at);
@@ -347,7 +346,7 @@ GiNaC::ex Parser::resolve(const NameParts& n, std::size_t at) {
             GiNaC::ex v = q->second;
             for (int i = 0; i < n.primes; ++i) v = ddt(v);
             const std::string note = "primes on a coordinate read as time derivatives ($" + full + "$)";
-            if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end()) side_.notes.push_back(note);
+            add_note_once(side_.notes, note);
             return v;
         }
     }
@@ -366,7 +365,7 @@ GiNaC::ex Parser::resolve(const NameParts& n, std::size_t at) {
     if (const FreeName* same = ctx_.subscript_case_variant(full, n.kind)) {
         const std::string note = "reads $" + full + "$ as $" + same->name +
                                  "$, the same name but for the case of its subscript, as the text writes both";
-        if (std::find(side_.notes.begin(), side_.notes.end(), note) == side_.notes.end()) side_.notes.push_back(note);
+        add_note_once(side_.notes, note);
         return same->symbol;
     }
     return ctx_.free_symbol(full, n.kind);

@@ -78,6 +78,13 @@ struct NameUse {
     std::size_t offset = 0;  ///< byte offset into the parsed text
 };
 
+/// Adds `note` to a side's or a verdict's notes unless it is there already (a reading said once).
+inline void add_note_once(std::vector<std::string>& notes, const std::string& note) {
+    for (const std::string& n : notes)
+        if (n == note) return;
+    notes.push_back(note);
+}
+
 /// One side of a relation: `a` in `a = b = c`.
 struct Side {
     std::size_t begin = 0, end = 0;  ///< byte range of the side in the parsed text (trimmed)

@@ -14,20 +14,12 @@ std::string shadowed_label_note(const GiNaC::ex& parameter, const ShadowedLabel&
            "$ written with the same letter";
 }
 
-namespace {
-
-void add_once(std::vector<std::string>& notes, const std::string& note) {
-    if (std::find(notes.begin(), notes.end(), note) == notes.end()) notes.push_back(note);
-}
-
-}  // namespace
-
 GiNaC::ex labels_under_derivatives(const GiNaC::ex& e, const detail::ExMap<ShadowedLabel>& shadowed,
                                    const Model& model, std::vector<std::string>& notes) {
     if (shadowed.empty() || e.nops() == 0) return e;
     if (is_ex_the_function(e, pdiff) && state_symbol(e.op(1), model)) {
         if (const auto it = shadowed.find(e.op(0)); it != shadowed.end()) {
-            add_once(notes, shadowed_label_note(e.op(0), it->second));
+            add_note_once(notes, shadowed_label_note(e.op(0), it->second));
             return pdiff(it->second.label, e.op(1));
         }
     }
